@@ -1,0 +1,30 @@
+// The mesh type procex hands out: an OpenMesh polygon mesh in double precision
+// whose faces carry where they came from.
+#pragma once
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include "core/mesh/surface.h"
+
+namespace procex {
+
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+// Names of the persistent face properties every procex mesh carries.
+inline constexpr const char* kSourceEdgeProperty = "procex:source_edge";  // int
+inline constexpr const char* kFaceKindProperty = "procex:face_kind";      // FaceKind
+
+// Turns a surface into a mesh. Faces with holes are split into simple planar
+// polygons; every piece keeps its face's kind and source edge. Throws
+// MeshError naming the face and its vertices if OpenMesh refuses a face.
+Mesh build_mesh(const Surface& surface);
+
+// Per-face property accessors (the properties exist on any mesh build_mesh made).
+int source_edge(const Mesh& mesh, Mesh::FaceHandle f);
+FaceKind face_kind(const Mesh& mesh, Mesh::FaceHandle f);
+
+}  // namespace procex

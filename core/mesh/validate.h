@@ -1,0 +1,34 @@
+// Property checks on a mesh: what tests assert and what users can ask for.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+
+namespace procex {
+
+struct ValidationOptions {
+  // Distance tolerance; <= 0 means "relative to the mesh's bounding box".
+  double tolerance = -1.0;
+  bool check_self_intersections = true;
+};
+
+struct ValidationReport {
+  bool closed = false;       // no boundary half-edges
+  bool manifold = false;     // every edge has two faces, every vertex one fan
+  bool oriented = false;     // neighbouring faces agree on orientation, volume > 0
+  bool planar = false;       // each face within tolerance of its own plane
+  bool self_intersection_free = false;
+  double volume = 0.0;       // signed; positive for an outward-facing solid
+  double max_planarity_error = 0.0;
+  std::vector<std::string> problems;  // one line each, naming faces / vertices
+
+  bool ok() const {
+    return closed && manifold && oriented && planar && self_intersection_free;
+  }
+};
+
+ValidationReport validate(const Mesh& mesh, const ValidationOptions& options = {});
+
+}  // namespace procex

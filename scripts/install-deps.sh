@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages procex builds, tests and benchmarks with.
+# Idempotent: packages already present are left alone, so a second run is quick.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ clang libclang-rt-14-dev ccache pkg-config
+  googletest libgtest-dev libgmock-dev libbenchmark-dev
+  libglm-dev libopenmesh-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinygltf-dev
+  libglfw3-dev libimgui-dev libstb-dev libgl1-mesa-dev libgl1-mesa-dri mesa-utils
+  xvfb xauth xdotool x11-apps netpbm
+  libcgal-dev
+  nodejs
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "procex: installing ${missing[*]}"
+for attempt in 1 2 3; do
+  $sudo apt-get update && break
+  sleep 20
+done
+DEBIAN_FRONTEND=noninteractive $sudo apt-get -o DPkg::Lock::Timeout=300 install -y --no-install-recommends "${missing[@]}"

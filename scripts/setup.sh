@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The README's two commands:
+#   scripts/setup.sh sample   install what is missing, build, run the shipped sample recipe
+#   scripts/setup.sh test     install what is missing, build, run every test (also under ASan+UBSan)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=${1:-sample}
+jobs=${PROCEX_JOBS:-$(nproc)}
+
+scripts/install-deps.sh
+
+configure_and_build() { # dir, extra cmake args...
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+}
+
+case "$mode" in
+  sample)
+    configure_and_build build -DCMAKE_BUILD_TYPE=Release
+    mkdir -p out
+    build/app/cli/procex roof samples/footprints/sample_block.geojson --angle 40 \
+      -o out/sample_block.obj --report out/sample_block.report.json
+    echo "wrote out/sample_block.obj and out/sample_block.report.json"
+    ;;
+  test)
+    configure_and_build build -DCMAKE_BUILD_TYPE=Release
+    ctest --test-dir build --output-on-failure -j "$jobs"
+    if [ "${PROCEX_SKIP_SANITIZERS:-0}" != 1 ]; then
+      configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DPROCEX_SANITIZE=ON -DPROCEX_BENCH=OFF
+      ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE slow
+    fi
+    ;;
+  *)
+    echo "usage: scripts/setup.sh [sample|test]" >&2
+    exit 2
+    ;;
+esac
