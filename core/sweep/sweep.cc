@@ -1,11 +1,104 @@
+// The driver loop (paper 4.1 and appendix C): fill the queue with potential
+// events, then repeatedly take every event at the lowest height, resolve it
+// against the live loops, and stop when no loop is left (or at the cap).
 #include "core/sweep/sweep.h"
 
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
 #include "core/geom/error.h"
+#include "core/sweep/cap_event.h"
+#include "core/sweep/event_queue.h"
+#include "core/sweep/intersection_event.h"
+#include "core/sweep/surface_output.h"
 
 namespace procex {
+namespace {
 
-Surface sweep(const Footprint&, const SweepOptions&) {
-  throw SweepError("sweep engine not built yet", 0.0, {});
+engine::Tolerances tolerances_for(const Footprint& fp) {
+  glm::dvec2 lo{1e300}, hi{-1e300};
+  for (const Loop& l : fp.loops)
+    for (glm::dvec2 p : l.points) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(extent > 0.0) || !std::isfinite(extent)) throw InputError("footprint has no extent");
+  return {extent};
+}
+
+double slope_of(double angle_deg) {
+  if (!(angle_deg >= -90.0 && angle_deg <= 90.0)) throw InputError("edge angle outside [-90, 90] degrees");
+  const double k = std::tan(angle_deg * M_PI / 180.0);
+  return std::clamp(k, -engine::Tolerances::max_slope, engine::Tolerances::max_slope);
+}
+
+void load(engine::State& st, const Footprint& fp) {
+  engine::FaceGroup base;
+  base.kind = FaceKind::Base;
+  base.outward = {0.0, 0.0, -1.0};
+  st.base_face = static_cast<int>(st.faces.size());
+  st.faces.push_back(base);
+  for (std::size_t li = 0; li < fp.loops.size(); ++li) {
+    const Loop& loop = fp.loops[li];
+    const std::size_t n = loop.points.size();
+    if (n < 3 || loop.edges.size() != n)
+      throw InputError("loop needs at least 3 vertices and one edge spec per vertex", static_cast<int>(li));
+    const auto v0 = static_cast<std::uint32_t>(st.vertices.size());
+    for (glm::dvec2 p : loop.points) st.add_vertex({p, 0.0});
+    const int e0 = static_cast<int>(st.edges.size());
+    for (std::size_t j = 0; j < n; ++j) {
+      const glm::dvec2 a = loop.points[j], b = loop.points[(j + 1) % n];
+      const double len = glm::length(b - a);
+      if (!(len > 0.0)) throw InputError("zero-length edge", static_cast<int>(li), static_cast<int>(j));
+      st.add_edge(a, 0.0, (b - a) / len, slope_of(loop.edges[j].angle_deg), loop.edges[j].id);
+      const auto va = v0 + static_cast<std::uint32_t>(j), vb = v0 + static_cast<std::uint32_t>((j + 1) % n);
+      st.faces[st.edges.back().face].half_edges.push_back({va, vb});
+      st.faces[st.base_face].half_edges.push_back({vb, va});
+    }
+    const int c0 = static_cast<int>(st.corners.size());
+    for (std::size_t j = 0; j < n; ++j) {
+      const int prev = e0 + static_cast<int>((j + n - 1) % n), next = e0 + static_cast<int>(j);
+      st.add_corner(prev, next, v0 + static_cast<std::uint32_t>(j));
+    }
+    for (std::size_t j = 0; j < n; ++j) st.link(c0 + static_cast<int>(j), c0 + static_cast<int>((j + 1) % n));
+  }
+}
+
+}  // namespace
+
+Surface sweep(const Footprint& footprint, const SweepOptions& options) {
+  engine::State st(tolerances_for(footprint), options);
+  load(st, footprint);
+  engine::EventQueue queue;
+  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) queue.schedule(st, c);
+
+  const std::size_t n = st.corners.size();
+  const std::size_t budget = 64 * n * n + 4096;  // generous; a runaway sweep must stop
+  std::size_t steps = 0;
+  while (!queue.empty()) {
+    const double z = queue.next_height();
+    if (options.max_height && z > *options.max_height) break;
+    if (z > st.tol().runaway_height()) break;
+    if (++steps > budget) {
+      throw SweepError("sweep: event budget exhausted at height " + std::to_string(st.height), st.height, {});
+    }
+    st.height = std::max(st.height, z);
+    resolve_intersections(st, queue, queue.pop_cluster(st.tol().height()));
+  }
+  const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
+  if (open) {
+    if (!options.max_height) {
+      throw SweepError(
+          "sweep: the roof does not close (vertical or outward-leaning edges rise forever); give a maximum height",
+          st.height, {});
+    }
+    engine::cap_at(st, std::max(st.height, *options.max_height));
+  }
+  return engine::build_surface(st);
 }
 
 }  // namespace procex

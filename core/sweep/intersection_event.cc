@@ -1,0 +1,253 @@
+// Paper 4.3: validate potential events, cluster them by height (delta2, done by
+// the queue) and by position (delta3), build chains of the corners meeting at
+// each cluster and rewire: intra-chain corners are removed, consecutive chains
+// are joined by a new corner (inter-chain), in the order the chains' edges
+// leave the collision point.
+#include "core/sweep/intersection_event.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/error.h"
+#include "core/sweep/ambiguity.h"
+
+namespace procex::engine {
+namespace {
+
+struct Collision {
+  glm::dvec2 p;
+  std::vector<int> edges;
+  std::vector<int> corners;
+};
+
+// A run of consecutive corners at the collision point, or (for a split) an
+// edge passing through it: the wavefront arrives along in_edge from in_corner
+// and leaves along out_edge towards out_corner.
+struct Chain {
+  int in_edge, in_corner, out_edge, out_corner;
+};
+
+// The span of edge e (corner s to s.next) that contains p at the current height.
+int span_through(State& st, int e, glm::dvec2 p, double reach) {
+  const Edge& edge = st.edges[e];
+  for (int s : st.spans(e)) {
+    const int t = st.corners[s].next;
+    if (t == kNone) continue;
+    if (std::abs(edge.plane.signed_distance(p, st.height)) > reach) continue;
+    const double ts = glm::dot(st.position(s, st.height) - p, edge.dir);
+    const double tt = glm::dot(st.position(t, st.height) - p, edge.dir);
+    if (ts <= st.tol().span_margin() && tt >= -st.tol().span_margin()) return s;
+  }
+  return kNone;
+}
+
+std::optional<Collision> validate(State& st, const Candidate& c) {
+  const Corner& k = st.corners[c.corner];
+  if (!k.alive) return std::nullopt;
+  if (c.edge == kNone) {
+    if (k.next != c.next || !st.corners[c.next].alive) return std::nullopt;
+    return Collision{c.p, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
+  }
+  if (c.edge == k.prev_edge || c.edge == k.next_edge) return std::nullopt;
+  if (span_through(st, c.edge, c.p, st.tol().position()) == kNone) return std::nullopt;
+  return Collision{c.p, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
+}
+
+// Union of collisions closer than delta3 in the plan, in first-member order.
+std::vector<std::vector<int>> cluster(const std::vector<Collision>& cs, double radius) {
+  std::vector<int> parent(cs.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  // Grid of cell size `radius`: only neighbouring cells can hold partners.
+  std::unordered_map<long long, std::vector<int>> grid;
+  auto key = [](long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; };
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
+    const long long gx = static_cast<long long>(std::floor(cs[i].p.x / radius));
+    const long long gy = static_cast<long long>(std::floor(cs[i].p.y / radius));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        auto it = grid.find(key(gx + dx, gy + dy));
+        if (it == grid.end()) continue;
+        for (int j : it->second)
+          if (glm::length(cs[i].p - cs[j].p) <= radius) parent[find(i)] = find(j);
+      }
+    grid[key(gx, gy)].push_back(i);
+  }
+  std::vector<std::vector<int>> groups;
+  std::unordered_map<int, int> group_of;
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
+    auto [it, fresh] = group_of.try_emplace(find(i), static_cast<int>(groups.size()));
+    if (fresh) groups.emplace_back();
+    groups[it->second].push_back(i);
+  }
+  return groups;
+}
+
+[[noreturn]] void fail(const State& st, const std::string& what, glm::dvec2 p, const std::vector<int>& edges) {
+  std::vector<int> ids;
+  for (int e : edges) ids.push_back(st.edges[e].source_id);
+  std::ostringstream msg;
+  msg << "sweep: " << what << " at (" << p.x << ", " << p.y << ") height " << st.height << ", edges";
+  for (int id : ids) msg << ' ' << id;
+  throw SweepError(msg.str(), st.height, ids);
+}
+
+// A loop with no area left (two corners, or all edges on one line) ends here:
+// its spans become horizontal ridges.
+bool close_if_degenerate(State& st, int start) {
+  std::vector<int> loop;
+  int c = start;
+  bool collinear = true;
+  const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
+  do {
+    loop.push_back(c);
+    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > Tolerances::parallel_sin) collinear = false;
+    c = st.corners[c].next;
+    if (loop.size() > st.corners.size()) fail(st, "corrupt loop", st.position(start, st.height), {});
+  } while (c != start);
+  if (loop.size() > 2 && !collinear) return false;
+  std::vector<std::uint32_t> v;
+  for (int x : loop) v.push_back(st.vertex_now(x));
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    st.emit_top(st.corners[loop[i]].next_edge, v[i], v[(i + 1) % loop.size()]);
+    st.corners[loop[i]].alive = false;
+  }
+  return true;
+}
+
+void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {
+  const double z = st.height;
+  const double near = 10.0 * st.tol().position();
+  glm::dvec2 p{0.0};
+  std::vector<int> edges;
+  std::vector<char> at(st.corners.size(), 0);
+  std::vector<int> at_p;
+  auto mark = [&](int c) {
+    if (at[c]) return;
+    at[c] = 1;
+    at_p.push_back(c);
+    edges.push_back(st.corners[c].prev_edge);
+    edges.push_back(st.corners[c].next_edge);
+  };
+  for (int m : members) p += cs[m].p;
+  p /= static_cast<double>(members.size());
+  for (int m : members) {
+    // An earlier cluster at this height may have consumed this collision.
+    if (!std::all_of(cs[m].corners.begin(), cs[m].corners.end(), [&](int c) { return st.corners[c].alive; }))
+      continue;
+    for (int c : cs[m].corners) mark(c);
+    edges.insert(edges.end(), cs[m].edges.begin(), cs[m].edges.end());
+  }
+  if (at_p.empty()) return;
+
+  // Every live corner of a participating edge that sits at p takes part too.
+  for (std::size_t scanned = 0; scanned < edges.size(); ++scanned) {
+    for (int s : st.spans(edges[scanned])) {
+      for (int c : {s, st.corners[s].next}) {
+        if (c != kNone && st.corners[c].alive && !at[c] && glm::length(st.position(c, z) - p) <= near) mark(c);
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+  // Runs of consecutive corners at p, and edges cut through the middle.
+  std::vector<Chain> chains;
+  std::sort(at_p.begin(), at_p.end());
+  for (int c : at_p) {
+    if (at[st.corners[c].prev]) continue;
+    int last = c;
+    while (at[st.corners[last].next]) last = st.corners[last].next;
+    chains.push_back({st.corners[c].prev_edge, st.corners[c].prev, st.corners[last].next_edge, st.corners[last].next});
+  }
+  for (int e : edges) {
+    bool touches = false;
+    for (int s : st.spans(e)) touches = touches || at[s] || at[st.corners[s].next];
+    if (touches) continue;
+    const int s = span_through(st, e, p, near);
+    if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
+  }
+
+  const std::uint32_t v = st.add_vertex({p, z});
+  for (int c : at_p) {
+    st.emit_trajectory(c, v);
+    st.corners[c].alive = false;
+  }
+  if (chains.empty()) return;  // whole loops collapsed to this point
+
+  // Order the rays leaving p: each outgoing edge is joined to the next incoming
+  // edge counter-clockwise; the wedge between them is inside the solid.
+  struct Ray {
+    double angle;
+    bool in;
+    int chain;
+  };
+  std::vector<Ray> rays;
+  for (int i = 0; i < static_cast<int>(chains.size()); ++i) {
+    const glm::dvec2 din = -st.edges[chains[i].in_edge].dir, dout = st.edges[chains[i].out_edge].dir;
+    rays.push_back({std::atan2(din.y, din.x), true, i});
+    rays.push_back({std::atan2(dout.y, dout.x), false, i});
+  }
+  std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
+    if (a.angle != b.angle) return a.angle < b.angle;
+    if (a.in != b.in) return !a.in;  // zero-width wedges count as inside: they pinch off
+    return a.chain < b.chain;
+  });
+  // Near-equal angles: put outgoing before incoming, as for exact ties.
+  const double tie = 1e-12;
+  for (std::size_t i = 0; i + 1 < rays.size(); ++i)
+    if (rays[i].in && !rays[i + 1].in && rays[i + 1].angle - rays[i].angle < tie) std::swap(rays[i], rays[i + 1]);
+  if (rays.size() >= 2 && rays.back().in && !rays.front().in &&
+      rays.front().angle + 2.0 * M_PI - rays.back().angle < tie) {
+    std::rotate(rays.begin(), rays.begin() + 1, rays.end());
+  }
+  std::size_t first_out = 0;
+  while (first_out < rays.size() && rays[first_out].in) ++first_out;
+  std::vector<int> made;
+  for (std::size_t i = 0; i < rays.size(); i += 2) {
+    const Ray& out = rays[(first_out + i) % rays.size()];
+    const Ray& in = rays[(first_out + i + 1) % rays.size()];
+    if (out.in || !in.in) fail(st, "chains do not alternate around the collision", p, edges);
+    const Chain& cin = chains[in.chain];
+    const Chain& cout = chains[out.chain];
+    const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
+    st.link(cin.in_corner, n);
+    st.link(n, cout.out_corner);
+    made.push_back(n);
+  }
+
+  std::vector<int> live;
+  for (int n : made) {
+    if (!st.corners[n].alive || close_if_degenerate(st, n)) continue;
+    if (ambiguous(st, n)) {
+      for (int r : resolve_ambiguity(st, n))
+        if (st.corners[r].alive && !close_if_degenerate(st, r)) live.push_back(r);
+    } else {
+      live.push_back(n);
+    }
+  }
+  for (int n : live) {
+    if (!st.corners[n].alive) continue;
+    queue.schedule(st, n);
+    queue.schedule_edge_event(st, st.corners[n].prev);
+  }
+}
+
+}  // namespace
+
+void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candidate>& batch) {
+  std::vector<Collision> cs;
+  for (const Candidate& c : batch)
+    if (auto col = validate(st, c)) cs.push_back(std::move(*col));
+  for (const auto& members : cluster(cs, st.tol().position())) resolve_cluster(st, queue, cs, members);
+}
+
+}  // namespace procex::engine

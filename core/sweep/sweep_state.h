@@ -1,0 +1,107 @@
+// The sweep's live state: the planes (p-edges) and the corners that link them
+// into loops on the sweep plane, plus the output half-edges each face collects.
+// Indices, not pointers; corners and edges are never erased, only marked dead,
+// so iteration order (and therefore output) is deterministic.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/mesh/surface.h"
+#include "core/sweep/plane.h"
+#include "core/sweep/sweep.h"
+#include "core/sweep/tolerances.h"
+
+namespace procex::engine {
+
+inline constexpr int kNone = -1;
+
+// A p-edge: one plane of one footprint edge.
+struct Edge {
+  Plane plane;
+  glm::dvec2 dir{1.0, 0.0};  // unit direction of the edge in the plan
+  std::int32_t source_id = -1;
+  int face = kNone;          // output face group this plane's region belongs to
+  std::vector<int> spans;    // corners s with s.next_edge == this (maybe stale; filter)
+};
+
+// A corner: the moving point between prev_edge and next_edge on the sweep plane.
+struct Corner {
+  int prev_edge = kNone, next_edge = kNone;
+  int prev = kNone, next = kNone;  // neighbouring corners in the loop
+  std::uint32_t origin = 0;        // output vertex where this corner started
+  // Corners between parallel coplanar edges move along this vertical plane,
+  // perpendicular to the edges, instead of along the (undefined) line of the two.
+  std::optional<Plane> guide;
+  bool alive = true;
+};
+
+// A directed boundary edge of an output face, seen from outside the solid.
+struct HalfEdge {
+  std::uint32_t from, to;
+};
+
+struct FaceGroup {
+  FaceKind kind = FaceKind::Side;
+  std::int32_t source_edge = -1;
+  glm::dvec3 outward{0.0, 0.0, 1.0};  // unit normal pointing out of the solid
+  glm::dvec3 origin{0.0};             // any point on the face's plane
+  std::vector<HalfEdge> half_edges;
+};
+
+class State {
+ public:
+  State(const Tolerances& tol, const SweepOptions& options) : tol_(tol), options_(options) {}
+
+  const Tolerances& tol() const { return tol_; }
+  const SweepOptions& options() const { return options_; }
+
+  std::vector<Edge> edges;
+  std::vector<Corner> corners;
+  std::vector<glm::dvec3> vertices;
+  std::vector<FaceGroup> faces;
+  int base_face = kNone;
+  double height = 0.0;  // the sweep plane's current height
+  bool any_outward = false;  // some plane leans outward: convex corners can split too
+
+  int add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, std::int32_t source_id);
+  int add_corner(int prev_edge, int next_edge, std::uint32_t origin);
+  std::uint32_t add_vertex(glm::dvec3 p);
+  void link(int a, int b) {  // corner a is followed by corner b
+    corners[a].next = b;
+    corners[b].prev = a;
+  }
+
+  // A corner moves along the line where two planes meet: its guide (if any) or
+  // its previous edge's plane, and its next edge's plane.
+  const Plane& plane_before(int c) const {
+    const Corner& k = corners[c];
+    return k.guide ? *k.guide : edges[k.prev_edge].plane;
+  }
+  const Plane& plane_after(int c) const {
+    const Corner& k = corners[c];
+    return k.guide ? *k.guide : edges[k.next_edge].plane;
+  }
+  // Where a corner is on the sweep plane at height z.
+  glm::dvec2 position(int c, double z) const;
+  bool reflex(int c) const;
+
+  // Output: a corner's trajectory from its origin up to vertex v, shared by the
+  // faces of its two edges. The corner is not killed.
+  void emit_trajectory(int c, std::uint32_t v);
+  // Output: the span of edge e from corner s to corner t ends here, horizontally
+  // between the vertices vs and vt.
+  void emit_top(int e, std::uint32_t vs, std::uint32_t vt);
+  // The vertex of corner c at the current height (its origin if it started here).
+  std::uint32_t vertex_now(int c);
+
+  // Live spans of an edge: corners s with s.next_edge == e (stale entries dropped).
+  const std::vector<int>& spans(int e);
+
+ private:
+  Tolerances tol_;
+  SweepOptions options_;
+};
+
+}  // namespace procex::engine
