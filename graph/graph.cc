@@ -1,0 +1,336 @@
+#include "graph/graph.h"
+
+#include <algorithm>
+#include <set>
+
+namespace procex {
+
+namespace {
+
+std::string q(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+// Shifts the port index of pseudo-node links above `removed` down by one.
+void renumber_after_removal(std::map<PortRef, PortRef>& links, NodeId pseudo, std::uint32_t removed, bool as_source) {
+  std::map<PortRef, PortRef> out;
+  for (const auto& link : links) {
+    PortRef to = link.first, from = link.second;
+    PortRef& p = as_source ? from : to;
+    if (p.node == pseudo && p.port > removed) --p.port;
+    out.emplace(to, from);
+  }
+  links = std::move(out);
+}
+
+}  // namespace
+
+Result<NodeId> Graph::add_node(std::string_view type_name, NodeId id, const NodeRegistry& registry) {
+  auto type = registry.find(type_name);
+  if (!type) {
+    std::string msg = "unknown node type " + q(type_name);
+    if (std::string near = registry.closest_name(type_name); !near.empty()) msg += "; did you mean " + q(near) + "?";
+    return Status::error(msg);
+  }
+  return add_node(std::move(type), id);
+}
+
+Result<NodeId> Graph::add_node(std::shared_ptr<const NodeType> type, NodeId id) {
+  if (!type) return Status::error("add_node: no node type given");
+  if (id == 0) id = next_id_;
+  if (id > kMaxNodeId) return Status::error("node id " + std::to_string(id) + " is out of range (1.." + std::to_string(kMaxNodeId) + ")");
+  if (nodes_.count(id)) return Status::error("node id " + std::to_string(id) + " is already taken");
+  Node n;
+  n.id = id;
+  n.params = type->decl.default_params();
+  n.type = std::move(type);
+  nodes_.emplace(id, std::move(n));
+  next_id_ = std::max(next_id_, id + 1);
+  return id;
+}
+
+Result<NodeId> Graph::add_group_node(std::string_view group_name, NodeId id) {
+  auto it = groups_.find(group_name);
+  if (it == groups_.end()) return Status::error("no group named " + q(group_name) + " in this recipe");
+  Result<NodeId> r = add_node(it->second.type, id);
+  if (r) nodes_.at(*r).group = it->second.name;
+  return r;
+}
+
+Status Graph::remove_node(NodeId id) {
+  if (!nodes_.erase(id)) return Status::error("no node " + std::to_string(id));
+  std::erase_if(links_, [id](const auto& l) { return l.first.node == id || l.second.node == id; });
+  std::erase_if(exposed_, [id](const ExposedParam& p) { return p.node == id; });
+  return Status::ok();
+}
+
+Status Graph::restore_node(Node node) {
+  if (!node.type) return Status::error("restore_node: node has no type");
+  if (node.id == 0 || node.id > kMaxNodeId || nodes_.count(node.id))
+    return Status::error("node id " + std::to_string(node.id) + " is invalid or taken");
+  next_id_ = std::max(next_id_, node.id + 1);
+  nodes_.emplace(node.id, std::move(node));
+  return Status::ok();
+}
+
+const Node* Graph::node(NodeId id) const {
+  auto it = nodes_.find(id);
+  return it == nodes_.end() ? nullptr : &it->second;
+}
+
+Status Graph::set_param(NodeId id, std::string_view param, Value v) {
+  const Node* n = node(id);
+  if (!n) return Status::error("no node " + std::to_string(id));
+  auto i = n->decl().param_index(param);
+  if (!i) return Status::error("node " + std::to_string(id) + " (" + n->type->name() + ") has no parameter " + q(param));
+  return set_param(id, *i, std::move(v));
+}
+
+Status Graph::set_param(NodeId id, std::size_t param, Value v) {
+  auto it = nodes_.find(id);
+  if (it == nodes_.end()) return Status::error("no node " + std::to_string(id));
+  Node& n = it->second;
+  if (param >= n.params.size()) return Status::error("node " + std::to_string(id) + " has no parameter #" + std::to_string(param));
+  if (Status s = n.decl().params()[param].check(v); !s) return s;
+  n.params[param] = std::move(v);
+  return Status::ok();
+}
+
+Status Graph::set_editor_state(NodeId id, EditorState s) {
+  auto it = nodes_.find(id);
+  if (it == nodes_.end()) return Status::error("no node " + std::to_string(id));
+  it->second.editor = std::move(s);
+  return Status::ok();
+}
+
+const ValueType* Graph::output_type(PortRef p) const {
+  if (p.node == kGraphInputs) return p.port < inputs_.size() ? inputs_[p.port].type : nullptr;
+  const Node* n = node(p.node);
+  if (!n || p.port >= n->decl().outputs().size()) return nullptr;
+  return n->decl().outputs()[p.port].type;
+}
+
+const ValueType* Graph::input_type(PortRef p) const {
+  if (p.node == kGraphOutputs) return p.port < outputs_.size() ? outputs_[p.port].type : nullptr;
+  const Node* n = node(p.node);
+  if (!n || p.port >= n->decl().inputs().size()) return nullptr;
+  return n->decl().inputs()[p.port].type;
+}
+
+std::string Graph::port_name(PortRef p, bool is_output) const {
+  if (p.node == kGraphInputs && is_output && p.port < inputs_.size()) return "@" + inputs_[p.port].name;
+  if (p.node == kGraphOutputs && !is_output && p.port < outputs_.size()) return "@" + outputs_[p.port].name;
+  const Node* n = node(p.node);
+  if (n) {
+    const auto& ports = is_output ? n->decl().outputs() : n->decl().inputs();
+    if (p.port < ports.size()) return std::to_string(p.node) + "." + ports[p.port].name;
+  }
+  return std::to_string(p.node) + ".#" + std::to_string(p.port);
+}
+
+bool Graph::reaches(NodeId from, NodeId to) const {
+  // Walks upstream from `to`: inputs of a node are contiguous in links_.
+  std::vector<NodeId> stack{to};
+  std::set<NodeId> seen;
+  while (!stack.empty()) {
+    const NodeId n = stack.back();
+    stack.pop_back();
+    if (n == from) return true;
+    if (!seen.insert(n).second) continue;
+    for (auto it = links_.lower_bound(PortRef{n, 0}); it != links_.end() && it->first.node == n; ++it)
+      stack.push_back(it->second.node);
+  }
+  return false;
+}
+
+Status Graph::can_connect(PortRef from, PortRef to) const {
+  const ValueType* ft = output_type(from);
+  if (!ft) return Status::error("there is no output " + port_name(from, true) + " to link from");
+  const ValueType* tt = input_type(to);
+  if (!tt) return Status::error("there is no input " + port_name(to, false) + " to link to");
+  if (auto it = links_.find(to); it != links_.end())
+    return Status::error("input " + port_name(to, false) + " is already fed by " + port_name(it->second, true) +
+                         "; disconnect it first");
+  if (!ValueType::can_link(*ft, *tt))
+    return Status::error("cannot link " + port_name(from, true) + " (" + ft->name() + ") to " + port_name(to, false) +
+                         " (" + tt->name() + "): the types differ");
+  const bool real_ends = from.node != kGraphInputs && to.node != kGraphOutputs;
+  if (real_ends && reaches(to.node, from.node))
+    return Status::error("linking " + port_name(from, true) + " to " + port_name(to, false) +
+                         " would make a cycle: node " + std::to_string(from.node) + " already depends on node " +
+                         std::to_string(to.node));
+  return Status::ok();
+}
+
+Status Graph::connect(PortRef from, PortRef to) {
+  if (Status s = can_connect(from, to); !s) return s;
+  links_.emplace(to, from);
+  return Status::ok();
+}
+
+Status Graph::connect(NodeId from, std::string_view output, NodeId to, std::string_view input) {
+  const Node* a = node(from);
+  const Node* b = node(to);
+  if (!a || !b) return Status::error("no node " + std::to_string(a ? to : from));
+  auto o = a->decl().output_index(output);
+  if (!o) return Status::error("node " + std::to_string(from) + " (" + a->type->name() + ") has no output " + q(output));
+  auto i = b->decl().input_index(input);
+  if (!i) return Status::error("node " + std::to_string(to) + " (" + b->type->name() + ") has no input " + q(input));
+  return connect(PortRef{from, static_cast<std::uint32_t>(*o)}, PortRef{to, static_cast<std::uint32_t>(*i)});
+}
+
+Status Graph::disconnect(PortRef to) {
+  if (!links_.erase(to)) return Status::error("input " + port_name(to, false) + " has no link");
+  return Status::ok();
+}
+
+std::optional<PortRef> Graph::source(PortRef to) const {
+  auto it = links_.find(to);
+  if (it == links_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<Link> Graph::links_from(NodeId node) const {
+  std::vector<Link> out;
+  for (const auto& [to, from] : links_)
+    if (from.node == node) out.push_back(Link{from, to});
+  return out;
+}
+
+namespace {
+template <class Port>
+Status check_interface_port(const std::vector<Port>& existing, const Port& p, const char* what) {
+  if (!is_identifier(p.name)) return Status::error(std::string(what) + " name " + q(p.name) + " is not an identifier ([a-z][a-z0-9_]*)");
+  if (!p.type) return Status::error(std::string(what) + " " + q(p.name) + " has no type");
+  for (const Port& e : existing)
+    if (e.name == p.name) return Status::error("there is already a " + std::string(what) + " named " + q(p.name));
+  return Status::ok();
+}
+}  // namespace
+
+Status Graph::add_input(GraphInput in) {
+  if (Status s = check_interface_port(inputs_, in, "graph input"); !s) return s;
+  if (!in.default_value.empty() && in.default_value.type() != in.type)
+    return Status::error("graph input " + q(in.name) + " is " + in.type->name() + " but its default is " +
+                         in.default_value.type()->name());
+  inputs_.push_back(std::move(in));
+  return Status::ok();
+}
+
+Status Graph::add_output(GraphOutput out) {
+  if (Status s = check_interface_port(outputs_, out, "graph output"); !s) return s;
+  outputs_.push_back(std::move(out));
+  return Status::ok();
+}
+
+Status Graph::remove_input(std::string_view name) {
+  auto i = input_index(name);
+  if (!i) return Status::error("no graph input " + q(name));
+  const auto port = static_cast<std::uint32_t>(*i);
+  std::erase_if(links_, [port](const auto& l) { return l.second.node == kGraphInputs && l.second.port == port; });
+  renumber_after_removal(links_, kGraphInputs, port, /*as_source=*/true);
+  inputs_.erase(inputs_.begin() + static_cast<std::ptrdiff_t>(*i));
+  return Status::ok();
+}
+
+Status Graph::remove_output(std::string_view name) {
+  auto i = output_index(name);
+  if (!i) return Status::error("no graph output " + q(name));
+  const auto port = static_cast<std::uint32_t>(*i);
+  links_.erase(PortRef{kGraphOutputs, port});
+  renumber_after_removal(links_, kGraphOutputs, port, /*as_source=*/false);
+  outputs_.erase(outputs_.begin() + static_cast<std::ptrdiff_t>(*i));
+  return Status::ok();
+}
+
+std::optional<std::size_t> Graph::input_index(std::string_view name) const {
+  for (std::size_t i = 0; i < inputs_.size(); ++i)
+    if (inputs_[i].name == name) return i;
+  return std::nullopt;
+}
+
+std::optional<std::size_t> Graph::output_index(std::string_view name) const {
+  for (std::size_t i = 0; i < outputs_.size(); ++i)
+    if (outputs_[i].name == name) return i;
+  return std::nullopt;
+}
+
+Status Graph::expose_param(ExposedParam p) {
+  if (!is_identifier(p.name)) return Status::error("exposed parameter name " + q(p.name) + " is not an identifier");
+  for (const ExposedParam& e : exposed_)
+    if (e.name == p.name) return Status::error("there is already an exposed parameter named " + q(p.name));
+  const Node* n = node(p.node);
+  if (!n) return Status::error("exposed parameter " + q(p.name) + " refers to missing node " + std::to_string(p.node));
+  if (p.param >= n->params.size())
+    return Status::error("exposed parameter " + q(p.name) + ": node " + std::to_string(p.node) + " has no parameter #" +
+                         std::to_string(p.param));
+  exposed_.push_back(std::move(p));
+  return Status::ok();
+}
+
+Status Graph::unexpose_param(std::string_view name) {
+  if (!std::erase_if(exposed_, [name](const ExposedParam& e) { return e.name == name; }))
+    return Status::error("no exposed parameter " + q(name));
+  return Status::ok();
+}
+
+Status Graph::add_group(std::string name, std::shared_ptr<const Graph> body, std::string file) {
+  if (!is_identifier(name)) return Status::error("group name " + q(name) + " is not an identifier ([a-z][a-z0-9_]*)");
+  if (groups_.count(name)) return Status::error("there is already a group named " + q(name));
+  auto type = make_group_type(name, std::move(body));
+  if (!type) return type.status();
+  groups_.emplace(name, GroupDef{name, *type, std::move(file)});
+  return Status::ok();
+}
+
+Status Graph::remove_group(std::string_view name) {
+  auto it = groups_.find(name);
+  if (it == groups_.end()) return Status::error("no group named " + q(name));
+  for (const auto& [id, n] : nodes_)
+    if (n.group == name) return Status::error("group " + q(name) + " is still used by node " + std::to_string(id));
+  groups_.erase(it);
+  return Status::ok();
+}
+
+std::vector<Diagnostic> Graph::validate() const {
+  std::vector<Diagnostic> out;
+  for (const auto& [id, n] : nodes_) {
+    const auto& inputs = n.decl().inputs();
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+      if (!inputs[i].optional && !links_.count(PortRef{id, static_cast<std::uint32_t>(i)}))
+        out.push_back({Severity::kError, {id}, n.type->name(), "input " + q(inputs[i].name) + " is not connected"});
+  }
+  for (std::size_t i = 0; i < outputs_.size(); ++i)
+    if (!links_.count(PortRef{kGraphOutputs, static_cast<std::uint32_t>(i)}))
+      out.push_back({Severity::kError, {}, {}, "graph output " + q(outputs_[i].name) + " is not connected"});
+  for (const auto& [name, g] : groups_) {
+    for (Diagnostic d : g.type->body->validate()) {
+      d.message = "in group " + q(name) + ": " + d.message;
+      out.push_back(std::move(d));
+    }
+  }
+  return out;
+}
+
+Result<std::shared_ptr<const NodeType>> make_group_type(std::string name, std::shared_ptr<const Graph> body) {
+  if (!body) return Status::error("group " + q(name) + " has no body");
+  auto t = std::make_shared<NodeType>();
+  t->decl = NodeDecl(name, 1);
+  t->decl.doc(body->metadata.description).category("Groups");
+  for (const GraphInput& in : body->inputs()) t->decl.add_input(in.name, *in.type).doc(in.doc).optional(!in.default_value.empty());
+  for (const GraphOutput& out : body->outputs()) t->decl.add_output(out.name, *out.type).doc(out.doc);
+  for (const ExposedParam& e : body->exposed_params()) {
+    const Node& inner = *body->node(e.node);
+    ParamDecl p = inner.decl().params()[e.param];
+    ParamBuilder b = t->decl.add_param(e.name, *p.type);
+    b.default_value_of(inner.params[e.param]).unit(p.unit).doc(p.doc);
+    if (p.min) b.min(*p.min);
+    if (p.max) b.max(*p.max);
+    // Enum choices live on the declaration; copy them with the rest.
+    const_cast<ParamDecl&>(t->decl.params().back()).choices = p.choices;
+  }
+  if (Status s = t->decl.validate(); !s) return Status::error("group " + q(name) + ": " + s.message());
+  t->body = std::move(body);
+  t->key = Hasher().str("group").str(name).result();
+  return std::shared_ptr<const NodeType>(std::move(t));
+}
+
+}  // namespace procex

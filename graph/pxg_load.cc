@@ -1,0 +1,469 @@
+// Reading .pxg files. Everything in a file is untrusted: each check names the
+// file and a JSON pointer (or line and column for syntax errors).
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/pxg.h"
+#include "graph/pxg_migrate.h"
+
+namespace procex {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+PxgError::PxgError(std::string file, std::string where, std::string message)
+    : std::runtime_error(file + (where.empty() ? "" : ": " + where) + ": " + message),
+      file_(std::move(file)),
+      where_(std::move(where)),
+      message_(std::move(message)) {}
+
+namespace {
+
+std::string line_column(std::string_view text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// JSON pointer escaping of one reference token (RFC 6901).
+std::string token(std::string_view key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+struct Loader {
+  const PxgOptions& options;
+  fs::path root;                       // group files must stay inside
+  std::vector<fs::path> chain;         // files being loaded, for cycles between libraries
+  std::vector<std::string> warnings;
+
+  [[noreturn]] void fail(const std::string& file, const std::string& where, const std::string& message) const {
+    throw PxgError(file, where, message);
+  }
+
+  // Refuses nesting beyond the limit before the JSON parser sees it.
+  void check_depth(std::string_view text, const std::string& file) const {
+    std::size_t depth = 0;
+    bool in_string = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const char c = text[i];
+      if (in_string) {
+        if (escaped) escaped = false;
+        else if (c == '\\') escaped = true;
+        else if (c == '"') in_string = false;
+      } else if (c == '"') {
+        in_string = true;
+      } else if (c == '[' || c == '{') {
+        if (++depth > options.limits.max_depth)
+          fail(file, line_column(text, i), "nesting deeper than " + std::to_string(options.limits.max_depth) + " levels");
+      } else if ((c == ']' || c == '}') && depth > 0) {
+        --depth;
+      }
+    }
+  }
+
+  Graph parse_file_text(std::string_view text, const fs::path& path, std::size_t group_depth) {
+    const std::string file = path.string();
+    if (text.size() > options.limits.max_file_bytes)
+      fail(file, "", "file is " + std::to_string(text.size()) + " bytes; the limit is " +
+                         std::to_string(options.limits.max_file_bytes));
+    check_depth(text, file);
+    json j;
+    try {
+      j = json::parse(text);
+    } catch (const json::parse_error& e) {
+      std::string what = e.what();
+      // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "; keep the reason.
+      if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
+      fail(file, line_column(text, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + what);
+    }
+    if (!j.is_object()) fail(file, "", "expected a JSON object at the top");
+    auto format = j.find("format");
+    if (format == j.end() || !format->is_string() || *format != kPxgFormat)
+      fail(file, "/format", std::string("not a procex recipe: expected \"format\": \"") + kPxgFormat + "\"");
+    auto version = j.find("version");
+    if (version == j.end() || !version->is_number_integer()) fail(file, "/version", "expected an integer version");
+    const std::int64_t v = version->get<std::int64_t>();
+    if (v > kPxgVersion)
+      fail(file, "/version", "written by a newer procex (format version " + std::to_string(v) + "); this build reads up to " +
+                                 std::to_string(kPxgVersion));
+    if (v < 1) fail(file, "/version", "unknown format version " + std::to_string(v));
+    if (v < kPxgVersion) {
+      detail::migrate_pxg(j, static_cast<int>(v), [&](const std::string& ptr, const std::string& msg) { fail(file, ptr, msg); });
+      warnings.push_back(file + ": migrated from format version " + std::to_string(v) + " to " + std::to_string(kPxgVersion) +
+                         "; saving writes the new version");
+    }
+    for (const auto& [key, value] : j.items()) {
+      static const std::set<std::string, std::less<>> kKnown = {"format", "version", "metadata", "inputs", "outputs", "nodes",
+                                                                "links", "exposed", "groups", "editor"};
+      if (!kKnown.count(key)) warnings.push_back(file + ": /" + token(key) + ": unknown key ignored");
+    }
+    return read_graph(j, "", path, group_depth);
+  }
+
+  Graph load_file(const fs::path& path, const std::string& from_file, const std::string& where, std::size_t group_depth) {
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) fail(from_file, where, "cannot read " + path.string() + ": " + ec.message());
+    if (size > options.limits.max_file_bytes)
+      fail(path.string(), "", "file is " + std::to_string(size) + " bytes; the limit is " +
+                                  std::to_string(options.limits.max_file_bytes));
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) fail(from_file, where, "cannot read " + path.string());
+    return parse_file_text(text.str(), path, group_depth);
+  }
+
+  // ---- typed access with pointers ----
+
+  struct Ctx {
+    const std::string& file;
+    std::string ptr;
+  };
+
+  const json& member(const json& obj, const char* key, const Ctx& c, json::value_t type, bool required = true) const {
+    static const json kNull;
+    auto it = obj.find(key);
+    if (it == obj.end()) {
+      if (required) fail(c.file, c.ptr, std::string("missing \"") + key + "\"");
+      return kNull;
+    }
+    const bool ok = type == json::value_t::number_integer ? it->is_number_integer() : it->type() == type;
+    if (!ok) fail(c.file, c.ptr + "/" + key, std::string("expected ") + json(type).type_name() + ", got " + it->type_name());
+    return *it;
+  }
+
+  std::string string_member(const json& obj, const char* key, const Ctx& c, bool required = true) const {
+    const json& s = member(obj, key, c, json::value_t::string, required);
+    if (s.is_null()) return {};
+    std::string out = s.get<std::string>();
+    if (out.size() > options.limits.max_string)
+      fail(c.file, c.ptr + "/" + key, "string of " + std::to_string(out.size()) + " bytes is too long");
+    return out;
+  }
+
+  const json& array_member(const json& obj, const char* key, const Ctx& c, std::size_t limit) const {
+    static const json kEmpty = json::array();
+    auto it = obj.find(key);
+    if (it == obj.end()) return kEmpty;
+    if (!it->is_array()) fail(c.file, c.ptr + "/" + key, std::string("expected an array, got ") + it->type_name());
+    if (it->size() > limit)
+      fail(c.file, c.ptr + "/" + key, std::to_string(it->size()) + " entries; the limit is " + std::to_string(limit));
+    return *it;
+  }
+
+  const ValueType& value_type_named(const std::string& name, const Ctx& c) const {
+    const ValueType* t = ValueTypeRegistry::global().find(name);
+    if (!t) {
+      std::string known;
+      for (const ValueType* v : ValueTypeRegistry::global().all()) known += (known.empty() ? "" : ", ") + v->name();
+      fail(c.file, c.ptr, "unknown value type '" + name + "' (known: " + known + ")");
+    }
+    return *t;
+  }
+
+  Value value_from(const ValueType& type, const json& j, const Ctx& c) const {
+    try {
+      return type.from_json(j);
+    } catch (const std::invalid_argument& e) {
+      fail(c.file, c.ptr, "bad " + type.name() + " value: " + e.what());
+    }
+  }
+
+  // ---- the graph ----
+
+  Graph read_graph(const json& j, const std::string& base, const fs::path& path, std::size_t group_depth) {
+    const std::string file = path.string();
+    Graph g;
+    if (auto m = j.find("metadata"); m != j.end()) {
+      Ctx c{file, base + "/metadata"};
+      if (!m->is_object()) fail(file, c.ptr, "expected an object");
+      g.metadata.name = string_member(*m, "name", c, false);
+      g.metadata.description = string_member(*m, "description", c, false);
+      g.metadata.author = string_member(*m, "author", c, false);
+    }
+    read_groups(g, j, base, path, group_depth);
+    read_interface(g, j, base, file);
+    std::map<NodeId, std::string> node_ptr;
+    read_nodes(g, j, base, file, node_ptr);
+    read_links(g, j, base, file);
+    read_exposed(g, j, base, file);
+    read_editor(g, j, base, file);
+    return g;
+  }
+
+  void read_groups(Graph& g, const json& j, const std::string& base, const fs::path& path, std::size_t group_depth) {
+    const std::string file = path.string();
+    const json& groups = array_member(j, "groups", Ctx{file, base}, options.limits.max_nodes);
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      Ctx c{file, base + "/groups/" + std::to_string(i)};
+      const json& e = groups[i];
+      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+      const std::string name = string_member(e, "name", c);
+      if (group_depth + 1 > options.limits.max_group_depth)
+        fail(file, c.ptr, "groups nested deeper than " + std::to_string(options.limits.max_group_depth) + " levels");
+      std::shared_ptr<const Graph> body;
+      std::string ref;
+      if (e.contains("file")) {
+        ref = string_member(e, "file", c);
+        body = std::make_shared<const Graph>(load_library(ref, file, c.ptr + "/file", group_depth + 1));
+      } else if (e.contains("graph")) {
+        const json& inner = member(e, "graph", c, json::value_t::object);
+        body = std::make_shared<const Graph>(read_graph(inner, c.ptr + "/graph", path, group_depth + 1));
+      } else {
+        fail(file, c.ptr, "a group needs \"file\" (a library file) or \"graph\" (embedded)");
+      }
+      if (Status s = g.add_group(name, body, ref); !s) fail(file, c.ptr, s.message());
+    }
+  }
+
+  Graph load_library(const std::string& ref, const std::string& file, const std::string& where, std::size_t group_depth) {
+    const fs::path rel(ref);
+    if (ref.empty() || rel.is_absolute() || rel.has_root_name())
+      fail(file, where, "group file '" + ref + "' must be a path relative to the recipe's folder");
+    const fs::path from_dir = fs::path(file).parent_path();
+    std::error_code ec;
+    const fs::path target = fs::weakly_canonical(fs::absolute(from_dir / rel), ec);
+    if (ec) fail(file, where, "cannot resolve group file '" + ref + "': " + ec.message());
+    const auto [root_end, target_it] = std::mismatch(root.begin(), root.end(), target.begin(), target.end());
+    if (root_end != root.end())
+      fail(file, where, "group file '" + ref + "' lies outside the recipe's folder " + root.string());
+    if (std::find(chain.begin(), chain.end(), target) != chain.end())
+      fail(file, where, "group file '" + ref + "' includes itself (through " + std::to_string(chain.size()) + " files)");
+    chain.push_back(target);
+    Graph g = load_file(target, file, where, group_depth);
+    chain.pop_back();
+    return g;
+  }
+
+  void read_interface(Graph& g, const json& j, const std::string& base, const std::string& file) {
+    const json& inputs = array_member(j, "inputs", Ctx{file, base}, 4096);
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      Ctx c{file, base + "/inputs/" + std::to_string(i)};
+      if (!inputs[i].is_object()) fail(file, c.ptr, "expected an object");
+      GraphInput in;
+      in.name = string_member(inputs[i], "name", c);
+      in.type = &value_type_named(string_member(inputs[i], "type", c), Ctx{file, c.ptr + "/type"});
+      in.doc = string_member(inputs[i], "doc", c, false);
+      if (auto d = inputs[i].find("default"); d != inputs[i].end()) in.default_value = value_from(*in.type, *d, Ctx{file, c.ptr + "/default"});
+      if (Status s = g.add_input(std::move(in)); !s) fail(file, c.ptr, s.message());
+    }
+    const json& outputs = array_member(j, "outputs", Ctx{file, base}, 4096);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+      Ctx c{file, base + "/outputs/" + std::to_string(i)};
+      if (!outputs[i].is_object()) fail(file, c.ptr, "expected an object");
+      GraphOutput out;
+      out.name = string_member(outputs[i], "name", c);
+      out.type = &value_type_named(string_member(outputs[i], "type", c), Ctx{file, c.ptr + "/type"});
+      out.doc = string_member(outputs[i], "doc", c, false);
+      if (Status s = g.add_output(std::move(out)); !s) fail(file, c.ptr, s.message());
+    }
+  }
+
+  void read_nodes(Graph& g, const json& j, const std::string& base, const std::string& file, std::map<NodeId, std::string>& seen) {
+    const json& nodes = array_member(j, "nodes", Ctx{file, base}, options.limits.max_nodes);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      Ctx c{file, base + "/nodes/" + std::to_string(i)};
+      const json& e = nodes[i];
+      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+      auto id_it = e.find("id");
+      if (id_it == e.end() || !id_it->is_number_unsigned() || id_it->get<std::uint64_t>() == 0 ||
+          id_it->get<std::uint64_t>() > kMaxNodeId)
+        fail(file, c.ptr + "/id", "expected a node id from 1 to " + std::to_string(kMaxNodeId));
+      const auto id = static_cast<NodeId>(id_it->get<std::uint64_t>());
+      if (auto prev = seen.find(id); prev != seen.end())
+        fail(file, c.ptr + "/id", "duplicate node id " + std::to_string(id) + " (also at " + prev->second + ")");
+      seen.emplace(id, c.ptr);
+      Result<NodeId> added = NodeId{0};
+      if (e.contains("group")) {
+        const std::string group = string_member(e, "group", c);
+        added = g.add_group_node(group, id);
+        if (!added) fail(file, c.ptr + "/group", added.message());
+      } else {
+        const std::string type = string_member(e, "type", c);
+        auto t = options.registry->find(type);
+        if (!t) {
+          std::string msg = "unknown node type '" + type + "'";
+          if (std::string near = options.registry->closest_name(type); !near.empty()) msg += "; did you mean '" + near + "'?";
+          fail(file, c.ptr + "/type", msg);
+        }
+        const json& version = member(e, "version", c, json::value_t::number_integer);
+        const std::int64_t v = version.get<std::int64_t>();
+        if (v > t->version())
+          fail(file, c.ptr + "/version", "node type '" + type + "' version " + std::to_string(v) +
+                                             " is newer than this build's version " + std::to_string(t->version()));
+        if (v < 1) fail(file, c.ptr + "/version", "node versions start at 1");
+        if (v < t->version())
+          warnings.push_back(file + ": " + c.ptr + ": '" + type + "' saved at version " + std::to_string(v) + ", now " +
+                             std::to_string(t->version()) + "; parameters were matched by name");
+        added = g.add_node(t, id);
+        if (!added) fail(file, c.ptr, added.message());
+      }
+      read_params(g, id, e, c);
+    }
+  }
+
+  void read_params(Graph& g, NodeId id, const json& e, const Ctx& c) {
+    auto params = e.find("params");
+    if (params == e.end()) return;
+    const std::string ptr = c.ptr + "/params";
+    if (!params->is_object()) fail(c.file, ptr, "expected an object of parameter values");
+    const NodeDecl& decl = g.node(id)->decl();
+    for (const auto& [name, value] : params->items()) {
+      const std::string pp = ptr + "/" + token(name);
+      auto index = decl.param_index(name);
+      if (!index) {
+        std::string msg = "'" + decl.type_name() + "' has no parameter '" + name + "'";
+        std::string best;
+        std::size_t best_d = 3;
+        for (const ParamDecl& p : decl.params())
+          if (std::size_t d = edit_distance(name, p.name); d < best_d) best = p.name, best_d = d;
+        if (!best.empty()) msg += "; did you mean '" + best + "'?";
+        fail(c.file, pp, msg);
+      }
+      const ParamDecl& p = decl.params()[*index];
+      Value v = value_from(*p.type, value, Ctx{c.file, pp});
+      if (Status s = g.set_param(id, *index, std::move(v)); !s) fail(c.file, pp, s.message());
+    }
+  }
+
+  // "12.result" / "@name" to a port; is_output says which side of the link.
+  PortRef parse_end(const Graph& g, const json& j, const Ctx& c, bool is_output) const {
+    if (!j.is_string()) fail(c.file, c.ptr, "expected \"node.port\" or \"@name\"");
+    const std::string s = j.get<std::string>();
+    if (!s.empty() && s[0] == '@') {
+      const std::string name = s.substr(1);
+      auto i = is_output ? g.input_index(name) : g.output_index(name);
+      if (!i) fail(c.file, c.ptr, std::string("no graph ") + (is_output ? "input" : "output") + " named '" + name + "'");
+      return PortRef{is_output ? kGraphInputs : kGraphOutputs, static_cast<std::uint32_t>(*i)};
+    }
+    const auto dot = s.find('.');
+    if (dot == std::string::npos || dot == 0 || dot > 10 || !std::all_of(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(dot), [](char ch) { return ch >= '0' && ch <= '9'; }))
+      fail(c.file, c.ptr, "'" + s + "' is not \"node.port\" or \"@name\"");
+    const std::uint64_t id = std::stoull(s.substr(0, dot));
+    const std::string port = s.substr(dot + 1);
+    const Node* n = id <= kMaxNodeId ? g.node(static_cast<NodeId>(id)) : nullptr;
+    if (!n) fail(c.file, c.ptr, "dangling link: there is no node " + std::to_string(id));
+    auto i = is_output ? n->decl().output_index(port) : n->decl().input_index(port);
+    if (!i)
+      fail(c.file, c.ptr, "node " + std::to_string(id) + " (" + n->type->name() + ") has no " + (is_output ? "output" : "input") +
+                              " '" + port + "'");
+    return PortRef{static_cast<NodeId>(id), static_cast<std::uint32_t>(*i)};
+  }
+
+  void read_links(Graph& g, const json& j, const std::string& base, const std::string& file) {
+    const json& links = array_member(j, "links", Ctx{file, base}, options.limits.max_links);
+    for (std::size_t i = 0; i < links.size(); ++i) {
+      Ctx c{file, base + "/links/" + std::to_string(i)};
+      const json& l = links[i];
+      if (!l.is_object() || !l.contains("from") || !l.contains("to")) fail(file, c.ptr, "expected {\"from\": ..., \"to\": ...}");
+      const PortRef from = parse_end(g, l["from"], Ctx{file, c.ptr + "/from"}, true);
+      const PortRef to = parse_end(g, l["to"], Ctx{file, c.ptr + "/to"}, false);
+      if (Status s = g.connect(from, to); !s) fail(file, c.ptr, s.message());
+    }
+  }
+
+  void read_exposed(Graph& g, const json& j, const std::string& base, const std::string& file) {
+    const json& exposed = array_member(j, "exposed", Ctx{file, base}, 4096);
+    for (std::size_t i = 0; i < exposed.size(); ++i) {
+      Ctx c{file, base + "/exposed/" + std::to_string(i)};
+      const json& e = exposed[i];
+      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+      ExposedParam p;
+      p.name = string_member(e, "name", c);
+      const json& node = member(e, "node", c, json::value_t::number_integer);
+      const std::int64_t id = node.get<std::int64_t>();
+      const Node* n = id > 0 && id <= kMaxNodeId ? g.node(static_cast<NodeId>(id)) : nullptr;
+      if (!n) fail(file, c.ptr + "/node", "there is no node " + std::to_string(id));
+      p.node = static_cast<NodeId>(id);
+      const std::string param = string_member(e, "param", c);
+      auto index = n->decl().param_index(param);
+      if (!index) fail(file, c.ptr + "/param", "node " + std::to_string(id) + " has no parameter '" + param + "'");
+      p.param = static_cast<std::uint32_t>(*index);
+      if (Status s = g.expose_param(std::move(p)); !s) fail(file, c.ptr, s.message());
+    }
+  }
+
+  void read_editor(Graph& g, const json& j, const std::string& base, const std::string& file) {
+    auto editor = j.find("editor");
+    if (editor == j.end()) return;
+    Ctx c{file, base + "/editor"};
+    if (!editor->is_object()) fail(file, c.ptr, "expected an object");
+    auto nodes = editor->find("nodes");
+    if (nodes == editor->end()) return;
+    if (!nodes->is_object()) fail(file, c.ptr + "/nodes", "expected an object keyed by node id");
+    for (const auto& [key, e] : nodes->items()) {
+      Ctx n{file, c.ptr + "/nodes/" + token(key)};
+      NodeId id = 0;
+      if (key.empty() || key.size() > 10 || !std::all_of(key.begin(), key.end(), [](char ch) { return ch >= '0' && ch <= '9'; }) ||
+          std::stoull(key) > kMaxNodeId || !g.node(id = static_cast<NodeId>(std::stoull(key))))
+        fail(file, n.ptr, "editor state for a node that does not exist");
+      if (!e.is_object()) fail(file, n.ptr, "expected an object");
+      EditorState s;
+      auto number = [&](const char* k) {
+        auto it = e.find(k);
+        if (it == e.end()) return 0.0;
+        if (!it->is_number()) fail(file, n.ptr + "/" + k, "expected a number");
+        return it->get<double>();
+      };
+      s.x = number("x");
+      s.y = number("y");
+      s.comment = string_member(e, "comment", n, false);
+      if (auto col = e.find("collapsed"); col != e.end()) {
+        if (!col->is_boolean()) fail(file, n.ptr + "/collapsed", "expected true or false");
+        s.collapsed = col->get<bool>();
+      }
+      (void)g.set_editor_state(id, std::move(s));
+    }
+  }
+};
+
+fs::path root_for(const fs::path& file, const PxgOptions& options) {
+  std::error_code ec;
+  fs::path root = options.root.empty() ? fs::absolute(file, ec).parent_path() : options.root;
+  fs::path canonical = fs::weakly_canonical(root, ec);
+  return ec ? root : canonical;
+}
+
+void hand_over_warnings(const Loader& l, const PxgOptions& options) {
+  if (options.warnings) options.warnings->insert(options.warnings->end(), l.warnings.begin(), l.warnings.end());
+}
+
+}  // namespace
+
+Graph parse_pxg(std::string_view text, const fs::path& file, const PxgOptions& options) {
+  Loader l{options, root_for(file, options), {}, {}};
+  std::error_code ec;
+  l.chain.push_back(fs::weakly_canonical(fs::absolute(file, ec), ec));
+  Graph g = l.parse_file_text(text, file, 0);
+  hand_over_warnings(l, options);
+  return g;
+}
+
+Graph load_pxg(const fs::path& file, const PxgOptions& options) {
+  Loader l{options, root_for(file, options), {}, {}};
+  std::error_code ec;
+  l.chain.push_back(fs::weakly_canonical(fs::absolute(file, ec), ec));
+  Graph g = l.load_file(file, file.string(), "", 0);
+  hand_over_warnings(l, options);
+  return g;
+}
+
+}  // namespace procex

@@ -1,0 +1,112 @@
+// Writing .pxg files: canonical JSON (sorted keys, nodes by id, links by
+// destination) so that saving the same graph twice gives the same bytes.
+#include <atomic>
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/pxg.h"
+
+namespace procex {
+
+namespace {
+
+using json = nlohmann::json;
+
+json param_json(const Value& v) {
+  json j;
+  v.type()->to_json(v.raw(), j);
+  return j;
+}
+
+std::string link_end(const Graph& g, PortRef p, bool is_output) { return g.port_name(p, is_output); }
+
+json graph_json(const Graph& g) {
+  json j = json::object();
+  j["metadata"] = {{"name", g.metadata.name}, {"description", g.metadata.description}, {"author", g.metadata.author}};
+  json inputs = json::array();
+  for (const GraphInput& in : g.inputs()) {
+    json e = {{"name", in.name}, {"type", in.type->name()}, {"doc", in.doc}};
+    if (!in.default_value.empty()) e["default"] = param_json(in.default_value);
+    inputs.push_back(std::move(e));
+  }
+  j["inputs"] = std::move(inputs);
+  json outputs = json::array();
+  for (const GraphOutput& out : g.outputs()) outputs.push_back({{"name", out.name}, {"type", out.type->name()}, {"doc", out.doc}});
+  j["outputs"] = std::move(outputs);
+
+  json nodes = json::array();
+  json editor = json::object();
+  for (const auto& [id, n] : g.nodes()) {
+    json e = {{"id", id}};
+    if (n.group.empty()) {
+      e["type"] = n.type->name();
+      e["version"] = n.type->version();
+    } else {
+      e["group"] = n.group;
+    }
+    json params = json::object();
+    const auto& decls = n.decl().params();
+    for (std::size_t i = 0; i < decls.size(); ++i) params[decls[i].name] = param_json(n.params[i]);
+    e["params"] = std::move(params);
+    nodes.push_back(std::move(e));
+    editor[std::to_string(id)] = {{"x", n.editor.x}, {"y", n.editor.y}, {"comment", n.editor.comment}, {"collapsed", n.editor.collapsed}};
+  }
+  j["nodes"] = std::move(nodes);
+
+  json links = json::array();
+  for (const auto& [to, from] : g.links()) links.push_back({{"from", link_end(g, from, true)}, {"to", link_end(g, to, false)}});
+  j["links"] = std::move(links);
+
+  json exposed = json::array();
+  for (const ExposedParam& e : g.exposed_params())
+    exposed.push_back({{"name", e.name}, {"node", e.node}, {"param", g.node(e.node)->decl().params()[e.param].name}});
+  j["exposed"] = std::move(exposed);
+
+  json groups = json::array();
+  for (const auto& [name, def] : g.groups()) {
+    if (def.file.empty()) groups.push_back({{"name", name}, {"graph", graph_json(*def.type->body)}});
+    else groups.push_back({{"name", name}, {"file", def.file}});
+  }
+  j["groups"] = std::move(groups);
+  j["editor"] = {{"nodes", std::move(editor)}};
+  return j;
+}
+
+}  // namespace
+
+std::string to_pxg(const Graph& g) {
+  json j = graph_json(g);
+  j["format"] = kPxgFormat;
+  j["version"] = kPxgVersion;
+  return j.dump(2) + "\n";
+}
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view text) {
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path tmp = file;
+  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.flush();
+    if (!out) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error(file.string() + ": cannot write (temporary file " + tmp.string() + " failed)");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error(file.string() + ": cannot replace the file: " + ec.message());
+  }
+}
+
+void save_pxg(const Graph& g, const std::filesystem::path& file) { write_file_atomically(file, to_pxg(g)); }
+
+}  // namespace procex
