@@ -12,6 +12,8 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/geom/error.h"
 #include "core/sweep/ambiguity.h"
@@ -21,6 +23,7 @@ namespace {
 
 struct Collision {
   glm::dvec2 p;
+  double z;
   std::vector<int> edges;
   std::vector<int> corners;
 };
@@ -51,15 +54,17 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
   if (!k.alive) return std::nullopt;
   if (c.edge == kNone) {
     if (k.next != c.next || !st.corners[c.next].alive) return std::nullopt;
-    return Collision{c.p, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
+    return Collision{c.p, c.z, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
   }
   if (c.edge == k.prev_edge || c.edge == k.next_edge) return std::nullopt;
   if (span_through(st, c.edge, c.p, st.tol().position()) == kNone) return std::nullopt;
-  return Collision{c.p, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
+  return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
 }
 
-// Union of collisions closer than delta3 in the plan, in first-member order.
-std::vector<std::vector<int>> cluster(const std::vector<Collision>& cs, double radius) {
+// Clusters collisions at one height closer than delta3 in the plan, in
+// first-member order.
+std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collision>& cs) {
+  const double radius = st.tol().position();
   std::vector<int> parent(cs.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int i) {
@@ -89,6 +94,27 @@ std::vector<std::vector<int>> cluster(const std::vector<Collision>& cs, double r
     groups[it->second].push_back(i);
   }
   return groups;
+}
+
+// The point nearest (least squares) to all planes of a cluster: each output
+// vertex then lies on every face it bounds, however the cluster's members
+// scattered. Falls back to the cluster's mean where the planes do not pin a point.
+glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, glm::dvec2 mean, double near) {
+  glm::dmat3 a(0.0);
+  glm::dvec3 b(0.0);
+  for (int e : edges) {
+    const Plane& pl = st.edges[e].plane;
+    const glm::dvec3 n{pl.n, -pl.k};
+    const double len2 = glm::dot(n, n);
+    a += glm::outerProduct(n, n) / len2;
+    b += n * (pl.c / len2);
+  }
+  const glm::dvec3 fallback{mean, st.height};
+  const double det = glm::determinant(a);
+  if (!(std::abs(det) > 1e-9)) return fallback;
+  const glm::dvec3 x = glm::inverse(a) * b;
+  if (glm::length(glm::dvec2(x) - mean) > near || std::abs(x.z - st.height) > 10.0 * st.tol().height()) return fallback;
+  return x;
 }
 
 [[noreturn]] void fail(const State& st, const std::string& what, glm::dvec2 p, const std::vector<int>& edges) {
@@ -125,7 +151,6 @@ bool close_if_degenerate(State& st, int start) {
 
 void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {
   const double z = st.height;
-  const double near = 10.0 * st.tol().position();
   glm::dvec2 p{0.0};
   std::vector<int> edges;
   std::vector<char> at(st.corners.size(), 0);
@@ -139,6 +164,9 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   };
   for (int m : members) p += cs[m].p;
   p /= static_cast<double>(members.size());
+  // Corners count as at p within the cluster's own spread.
+  double near = 10.0 * st.tol().position();
+  for (int m : members) near = std::max(near, 2.0 * glm::length(cs[m].p - p));
   for (int m : members) {
     // An earlier cluster at this height may have consumed this collision.
     if (!std::all_of(cs[m].corners.begin(), cs[m].corners.end(), [&](int c) { return st.corners[c].alive; }))
@@ -176,7 +204,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
   }
 
-  const std::uint32_t v = st.add_vertex({p, z});
+  const std::uint32_t v = st.add_vertex(meeting_point(st, edges, p, near));
   for (int c : at_p) {
     st.emit_trajectory(c, v);
     st.corners[c].alive = false;
@@ -215,7 +243,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   for (std::size_t i = 0; i < rays.size(); i += 2) {
     const Ray& out = rays[(first_out + i) % rays.size()];
     const Ray& in = rays[(first_out + i + 1) % rays.size()];
-    if (out.in || !in.in) fail(st, "chains do not alternate around the collision", p, edges);
+    if (out.in || !in.in) { if (getenv("PXDEBUG")) { for (auto& r : rays) fprintf(stderr, "ray %.17g in=%d chain=%d\n", r.angle, r.in, r.chain); for (auto& c : chains) fprintf(stderr, "chain in_e=%d in_c=%d out_e=%d out_c=%d\n", c.in_edge, c.in_corner, c.out_edge, c.out_corner);} fail(st, "chains do not alternate around the collision", p, edges); }
     const Chain& cin = chains[in.chain];
     const Chain& cout = chains[out.chain];
     const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
@@ -247,7 +275,22 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   std::vector<Collision> cs;
   for (const Candidate& c : batch)
     if (auto col = validate(st, c)) cs.push_back(std::move(*col));
-  for (const auto& members : cluster(cs, st.tol().position())) resolve_cluster(st, queue, cs, members);
+  // Each cluster is resolved at its own height, lowest first: a corner that
+  // races along a nearly horizontal line can cover real distance within delta2.
+  auto groups = cluster(st, cs);
+  std::vector<double> zs;
+  for (const auto& g : groups) {
+    double z = 0.0;
+    for (int m : g) z += cs[m].z;
+    zs.push_back(z / static_cast<double>(g.size()));
+  }
+  std::vector<std::size_t> order(groups.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return zs[a] < zs[b]; });
+  for (std::size_t g : order) {
+    st.height = std::max(st.height, zs[g]);
+    resolve_cluster(st, queue, cs, groups[g]);
+  }
 }
 
 }  // namespace procex::engine
