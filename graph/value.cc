@@ -1,6 +1,7 @@
 #include "graph/value.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -43,8 +44,9 @@ void double_to_json(const double& v, json& j) { j = v; }
 double double_from_json(const json& j) { return number_from_json(j); }
 void int_to_json(const std::int64_t& v, json& j) { j = v; }
 std::int64_t int_from_json(const json& j) {
-  if (j.is_number_integer()) return j.get<std::int64_t>();  // also covers in-range unsigned
-  if (j.is_number_unsigned()) throw std::invalid_argument("integer too large");
+  if (j.is_number_unsigned() && j.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
+    throw std::invalid_argument("integer too large");
+  if (j.is_number_integer()) return j.get<std::int64_t>();
   throw std::invalid_argument("expected an integer, got " + json_kind(j));
 }
 void bool_to_json(const bool& v, json& j) { j = v; }

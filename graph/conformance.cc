@@ -1,0 +1,145 @@
+#include "graph/conformance.h"
+
+#include <nlohmann/json.hpp>
+
+#include "graph/evaluator.h"
+#include "graph/pxg.h"
+
+namespace procex {
+
+namespace {
+
+double moved(double v, const ParamDecl& p, double step) {
+  if (!p.max || v + step <= *p.max) return v + step;
+  if (!p.min || v - step >= *p.min) return v - step;
+  return (*p.min + *p.max) / 2 == v ? *p.min : (*p.min + *p.max) / 2;
+}
+
+Value sample_for(const ValueType* t, const SampleInputs& samples) {
+  if (auto it = samples.find(t); it != samples.end()) return it->second;
+  if (t == &value_type<double>()) return Value::make(1.5);
+  if (t == &value_type<std::int64_t>()) return Value::make<std::int64_t>(3);
+  if (t == &value_type<bool>()) return Value::make(true);
+  if (t == &value_type<std::string>()) return Value::make(std::string("sample"));
+  if (t == &value_type<Vec2>()) return Value::make(Vec2{1, 2});
+  if (t == &value_type<Vec3>()) return Value::make(Vec3{1, 2, 3});
+  if (t->is_any()) return Value::make(2.5);
+  return {};
+}
+
+}  // namespace
+
+Value vary_param(const ParamDecl& p) {
+  const Value& d = p.default_value;
+  if (const double* v = d.get_if<double>()) {
+    double x = moved(*v, p, 1.0);
+    if (x == *v) x = moved(*v, p, 1e-3);
+    return x == *v ? Value() : Value::make(x);
+  }
+  if (const std::int64_t* v = d.get_if<std::int64_t>()) {
+    const auto x = static_cast<std::int64_t>(moved(static_cast<double>(*v), p, 1.0));
+    return x == *v ? Value() : Value::make<std::int64_t>(x);
+  }
+  if (const bool* v = d.get_if<bool>()) return Value::make(!*v);
+  if (const std::string* v = d.get_if<std::string>()) return Value::make(*v + "x");
+  if (const Vec2* v = d.get_if<Vec2>()) return Value::make(Vec2{v->x + 1, v->y});
+  if (const Vec3* v = d.get_if<Vec3>()) return Value::make(Vec3{v->x + 1, v->y, v->z});
+  if (const EnumValue* v = d.get_if<EnumValue>()) {
+    for (const std::string& c : p.choices)
+      if (c != v->choice) return Value::make(EnumValue{c});
+    return {};
+  }
+  // Other types through their JSON form: lists lose their last item, or repeat their first.
+  if (p.type->has_json()) {
+    nlohmann::json j;
+    p.type->to_json(d.raw(), j);
+    if (j.is_array() && !j.empty()) {
+      nlohmann::json shorter = j;
+      shorter.erase(shorter.size() - 1);
+      try {
+        return p.type->from_json(shorter);
+      } catch (const std::invalid_argument&) {
+        return {};
+      }
+    }
+  }
+  return {};
+}
+
+std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples) {
+  std::vector<std::string> problems;
+  const std::string who = "node type '" + type.name() + "': ";
+  const NodeDecl& decl = type.decl;
+  Graph g;
+  const NodeId id = g.add_node(std::shared_ptr<const NodeType>(std::shared_ptr<const NodeType>{}, &type)).value();
+  Bindings bindings;
+  for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
+    const PortDecl& in = decl.inputs()[i];
+    Value v = sample_for(in.type, samples);
+    if (v.empty()) {
+      problems.push_back(who + "no sample value for input '" + in.name + "' of type " + in.type->name());
+      return problems;
+    }
+    const std::string name = "in_" + in.name;
+    (void)g.add_input(GraphInput{name, in.type->is_any() ? v.type() : in.type, {}, {}});
+    (void)g.connect(PortRef{kGraphInputs, i}, PortRef{id, i});
+    bindings[name] = v;
+  }
+  for (std::uint32_t o = 0; o < decl.outputs().size(); ++o) {
+    (void)g.add_output(GraphOutput{"out_" + decl.outputs()[o].name, decl.outputs()[o].type, {}});
+    (void)g.connect(PortRef{id, o}, PortRef{kGraphOutputs, o});
+  }
+
+  ResultCache cache(64 << 20);
+  Evaluator ev(cache, "conformance");
+  auto hashes = [&](const Graph& graph) {
+    std::vector<Hash128> out;
+    for (const OutputResult& r : ev.hash_outputs(graph, bindings).outputs) out.push_back(r.hash);
+    return out;
+  };
+  const auto base = hashes(g);
+
+  // Defaults evaluate: errors are allowed (reported on the node), escapes are not.
+  EvalResult r = ev.evaluate(g, bindings);
+  for (const OutputResult& o : r.outputs)
+    if (o.hash != base[&o - r.outputs.data()]) problems.push_back(who + "evaluation and hashing disagree on " + o.name);
+
+  for (std::size_t p = 0; p < decl.params().size(); ++p) {
+    const ParamDecl& pd = decl.params()[p];
+    Value other = vary_param(pd);
+    if (other.empty()) continue;  // a single-choice enum or a pinned range: nothing to vary
+    Graph changed = g;
+    if (Status s = changed.set_param(id, p, other); !s) {
+      problems.push_back(who + "varied parameter '" + pd.name + "' refused: " + s.message());
+      continue;
+    }
+    const auto h = hashes(changed);
+    for (std::size_t o = 0; o < h.size(); ++o) {
+      const bool passes = decl.pass_through() && (decl.pass_through()(changed.node(id)->params, o) ||
+                                                  decl.pass_through()(g.node(id)->params, o));
+      if (h[o] == base[o] && !passes)
+        problems.push_back(who + "changing parameter '" + pd.name + "' leaves the hash of output '" +
+                           decl.outputs()[o].name + "' unchanged");
+    }
+    // Round trip of the changed graph too: the varied value must survive the file.
+    const std::string text = to_pxg(changed);
+    try {
+      Graph back = parse_pxg(text, "conformance.pxg");
+      if (to_pxg(back) != text) problems.push_back(who + "file round trip with '" + pd.name + "' changed is not byte-identical");
+      if (hashes(back) != h) problems.push_back(who + "file round trip with '" + pd.name + "' changed moves the hash");
+    } catch (const PxgError& e) {
+      problems.push_back(who + "file round trip failed: " + e.what());
+    }
+  }
+  const std::string text = to_pxg(g);
+  try {
+    Graph back = parse_pxg(text, "conformance.pxg");
+    if (to_pxg(back) != text) problems.push_back(who + "file round trip is not byte-identical");
+    if (hashes(back) != base) problems.push_back(who + "file round trip moves the hash");
+  } catch (const PxgError& e) {
+    problems.push_back(who + "file round trip failed: " + e.what());
+  }
+  return problems;
+}
+
+}  // namespace procex

@@ -1,0 +1,30 @@
+// conformance.h -- generic checks every node type must pass (Gaffer-style):
+// each parameter moves the output hash, defaults evaluate without crashing,
+// and a .pxg round trip keeps the hash and the bytes.
+//
+// Used by tests/graph for its test nodes and by tests/nodes for every
+// registered node:  for (auto& t : NodeRegistry::global().all())
+//                     EXPECT_EQ(check_node_type(*t, samples), std::vector<std::string>{});
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "graph/registry.h"
+#include "graph/value.h"
+
+namespace procex {
+
+// A sample value for every input type the node types under test use
+// (built-in number, vector and string types have defaults).
+using SampleInputs = std::map<const ValueType*, Value>;
+
+// Problems found, one sentence each; empty when the type conforms.
+std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples);
+
+// A different valid value for the parameter (next enum choice, flipped bool,
+// a number moved within its range, ...), or an empty Value when none exists.
+Value vary_param(const ParamDecl& p);
+
+}  // namespace procex

@@ -1,0 +1,280 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <thread>
+
+#include "graph/evaluator.h"
+#include "tests/graph/test_graphs.h"
+#include "tests/graph/test_nodes.h"
+
+namespace procex {
+namespace {
+
+using test::add;
+using test::constant;
+using test::link;
+
+class EvaluatorTest : public ::testing::Test {
+ protected:
+  void SetUp() override { test::reset_evaluations(); }
+  ResultCache cache{64 << 20};
+  Evaluator ev{cache, "test-engine-1"};
+};
+
+TEST_F(EvaluatorTest, EvaluatesADiamond) {
+  test::Diamond d = test::diamond();
+  EvalResult r = ev.evaluate(d.g, {});
+  ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics[0].to_string());
+  EXPECT_EQ(r.output("result")->get<double>(), (1 + 2) * (3 + 4));
+  EXPECT_EQ(r.stats.computed(), 7u);
+  EXPECT_EQ(test::evaluations(), 7);
+}
+
+TEST_F(EvaluatorTest, PullsOnlyWhatTheRequestNeeds) {
+  test::Diamond d = test::diamond();
+  test::output(d.g, "left", d.add1);
+  EvalResult r = ev.evaluate(d.g, {}, {"left"});
+  EXPECT_EQ(r.output("left")->get<double>(), 3.0);
+  EXPECT_EQ(test::evaluations(), 3);  // c1, c2, add1
+  // A cached downstream result spares its whole upstream.
+  ev.evaluate(d.g, {}, {"result"});
+  test::reset_evaluations();
+  EvalResult again = ev.evaluate(d.g, {}, {"result"});
+  EXPECT_EQ(test::evaluations(), 0);
+  ASSERT_EQ(again.stats.nodes.size(), 1u);
+  EXPECT_EQ(again.stats.nodes[0].outcome, NodeOutcome::kCacheHit);
+}
+
+TEST_F(EvaluatorTest, GraphInputsBindWithDefaultsAndTypeChecks) {
+  Graph g;
+  ASSERT_TRUE(g.add_input(GraphInput{"x", &value_type<double>(), "", {}}));
+  ASSERT_TRUE(g.add_input(GraphInput{"y", &value_type<double>(), "", Value::make(10.0)}));
+  const NodeId a = add(g, "test.Add");
+  ASSERT_TRUE(g.connect(PortRef{kGraphInputs, 0}, PortRef{a, 0}));
+  ASSERT_TRUE(g.connect(PortRef{kGraphInputs, 1}, PortRef{a, 1}));
+  test::output(g, "sum", a);
+  EXPECT_EQ(ev.evaluate(g, {{"x", Value::make(1.0)}}).output("sum")->get<double>(), 11.0);
+  EXPECT_EQ(ev.evaluate(g, {{"x", Value::make(1.0)}, {"y", Value::make(2.0)}}).output("sum")->get<double>(), 3.0);
+
+  EvalResult unbound = ev.evaluate(g, {});
+  EXPECT_EQ(unbound.output("sum"), nullptr);
+  ASSERT_FALSE(unbound.diagnostics.empty());
+  EXPECT_EQ(unbound.diagnostics[0].to_string(), "error: node 1 (test.Add): graph input 'x' is not bound and has no default");
+
+  EvalResult wrong = ev.evaluate(g, {{"x", Value::make(std::string("1"))}, {"z", Value::make(1.0)}});
+  EXPECT_FALSE(wrong.ok());
+  std::string all;
+  for (const Diagnostic& d : wrong.diagnostics) all += d.to_string() + "\n";
+  EXPECT_NE(all.find("no graph input named 'z'"), std::string::npos) << all;
+  EXPECT_NE(all.find("graph input 'x' takes float but was bound to string"), std::string::npos) << all;
+}
+
+TEST_F(EvaluatorTest, FailuresStayOnTheirBranch) {
+  //  c(-1) -> fail -> add -> "bad"
+  //  c(2)  -> add2 -> "good"
+  Graph g;
+  const NodeId neg = constant(g, -1);
+  const NodeId f = add(g, "test.Fail");
+  const NodeId a = add(g, "test.Add");
+  link(g, neg, 0, f, 0);
+  link(g, f, 0, a, 0);
+  test::output(g, "bad", a);
+  const NodeId two = constant(g, 2);
+  const NodeId a2 = add(g, "test.Add");
+  link(g, two, 0, a2, 0);
+  test::output(g, "good", a2);
+  EvalResult r = ev.evaluate(g, {});
+  EXPECT_EQ(r.output("good")->get<double>(), 2.0);
+  EXPECT_EQ(r.output("bad"), nullptr);
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].to_string(), "error: node 2 (test.Fail): failed on purpose");
+  EXPECT_EQ(r.diagnostics[1].to_string(),
+            "error: node 3 (test.Add): input failed: 'a' comes from node 2 (test.Fail), which has no result");
+  EXPECT_EQ(r.stats.find({f})->outcome, NodeOutcome::kFailed);
+  EXPECT_EQ(r.stats.find({a})->outcome, NodeOutcome::kInputFailed);
+
+  // Errors are not cached: the failing node runs again.
+  test::reset_evaluations();
+  ev.evaluate(g, {});
+  EXPECT_EQ(test::evaluations_of("test.Fail"), 1);
+  EXPECT_EQ(test::evaluations_of("test.Add"), 0);
+
+  // Exceptions become node errors too.
+  ASSERT_TRUE(g.set_param(f, "how", Value::make(EnumValue{"throw"})));
+  EvalResult thrown = ev.evaluate(g, {}, {"bad"});
+  EXPECT_EQ(thrown.diagnostics[0].to_string(), "error: node 2 (test.Fail): thrown on purpose");
+}
+
+TEST_F(EvaluatorTest, WarningsSurviveTheCache) {
+  Graph g;
+  const NodeId zero = constant(g, 0);
+  const NodeId f = add(g, "test.Fail");
+  link(g, zero, 0, f, 0);
+  test::output(g, "out", f);
+  for (int i = 0; i < 2; ++i) {
+    EvalResult r = ev.evaluate(g, {});
+    ASSERT_TRUE(r.output("out"));
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].to_string(), "warning: node 2 (test.Fail): x is zero");
+  }
+  EXPECT_EQ(test::evaluations_of("test.Fail"), 1);
+}
+
+TEST_F(EvaluatorTest, PassThroughHandsOnTheInputHash) {
+  Graph g;
+  const NodeId c = constant(g, 4);
+  const NodeId s = add(g, "test.Switch");
+  link(g, c, 0, s, 0);
+  test::output(g, "through", s);
+  test::output(g, "direct", c);
+  ASSERT_TRUE(g.set_param(s, "enabled", Value::make(false)));
+  EvalResult r = ev.evaluate(g, {});
+  EXPECT_EQ(r.outputs[0].hash, r.outputs[1].hash);
+  EXPECT_EQ(r.output("through")->get<double>(), 4.0);
+  EXPECT_EQ(test::evaluations_of("test.Switch"), 0);
+  EXPECT_EQ(r.stats.find({s})->outcome, NodeOutcome::kPassThrough);
+  ASSERT_TRUE(g.set_param(s, "enabled", Value::make(true)));
+  EvalResult on = ev.evaluate(g, {});
+  EXPECT_NE(on.outputs[0].hash, on.outputs[1].hash);
+  EXPECT_EQ(on.output("through")->get<double>(), 8.0);
+}
+
+TEST_F(EvaluatorTest, HashesDependOnTheEngineSalt) {
+  test::Diamond d = test::diamond();
+  Evaluator other(cache, "test-engine-2");
+  EXPECT_NE(ev.hash_outputs(d.g, {}).outputs[0].hash, other.hash_outputs(d.g, {}).outputs[0].hash);
+  EXPECT_EQ(ev.hash_outputs(d.g, {}).outputs[0].hash, ev.evaluate(d.g, {}).outputs[0].hash);
+  EXPECT_EQ(test::evaluations(), 7);  // hash_outputs computes nothing
+}
+
+TEST_F(EvaluatorTest, EditorStateIsNotHashed) {
+  test::Diamond d = test::diamond();
+  const Hash128 before = ev.hash_outputs(d.g, {}).outputs[0].hash;
+  ASSERT_TRUE(d.g.set_editor_state(d.add1, EditorState{100, -50, "note", true}));
+  d.g.metadata.name = "renamed";
+  EXPECT_EQ(ev.hash_outputs(d.g, {}).outputs[0].hash, before);
+}
+
+TEST_F(EvaluatorTest, CancellationStopsAndCachesNothingPartial) {
+  Graph g;
+  const NodeId c = constant(g, 1);
+  NodeId prev = c;
+  for (int i = 0; i < 4; ++i) {
+    const NodeId s = add(g, "test.Slow");
+    ASSERT_TRUE(g.set_param(s, "steps", Value::make<std::int64_t>(100000)));
+    link(g, prev, 0, s, 0);
+    prev = s;
+  }
+  test::output(g, "out", prev);
+  EvalOptions options;
+  std::thread canceller([&] {
+    while (test::evaluations_of("test.Slow") == 0) std::this_thread::yield();
+    options.cancel.cancel();
+  });
+  EvalResult r = ev.evaluate(g, {}, {}, options);
+  canceller.join();
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.output("out"), nullptr);
+  EXPECT_EQ(r.stats.count(NodeOutcome::kCancelled), 4u);
+  EXPECT_EQ(test::evaluations_of("test.Slow"), 1);  // later nodes never started
+  EXPECT_EQ(cache.counters().entries, 1u);          // only the constant
+}
+
+TEST_F(EvaluatorTest, CacheIsBoundedInBytes) {
+  ResultCache small(4 * (ResultCache::kEntryOverhead + 64));
+  Evaluator e(small, "x");
+  Graph g = test::add_tree(16);
+  EvalResult r = e.evaluate(g, {});
+  ASSERT_TRUE(r.ok());
+  const CacheCounters c = small.counters();
+  EXPECT_LE(c.bytes, c.capacity);
+  EXPECT_GT(c.evictions, 0u);
+  EXPECT_LT(c.entries, 31u);
+  // The most recent results are the ones kept: a re-evaluation hits at the root.
+  test::reset_evaluations();
+  e.evaluate(g, {});
+  EXPECT_EQ(test::evaluations(), 0);
+}
+
+TEST_F(EvaluatorTest, ParallelAndSerialAgree) {
+  Graph g = test::add_tree(200);
+  EvalOptions serial;
+  serial.parallel = false;
+  ResultCache other(64 << 20);
+  Evaluator e2(other, "test-engine-1");
+  EvalResult a = ev.evaluate(g, {});
+  EvalResult b = e2.evaluate(g, {}, {}, serial);
+  ASSERT_TRUE(a.ok());
+  EXPECT_EQ(a.output("root")->get<double>(), 199.0 * 200.0 / 2);
+  EXPECT_EQ(a.output("root")->get<double>(), b.output("root")->get<double>());
+  EXPECT_EQ(a.outputs[0].hash, b.outputs[0].hash);
+}
+
+TEST_F(EvaluatorTest, GroupsEvaluateWithExposedParametersAndShareTheCache) {
+  auto body = std::make_shared<Graph>();
+  ASSERT_TRUE(body->add_input(GraphInput{"x", &value_type<double>(), "", {}}));
+  const NodeId inner = add(*body, "test.Add");
+  ASSERT_TRUE(body->connect(PortRef{kGraphInputs, 0}, PortRef{inner, 0}));
+  test::output(*body, "y", inner);
+  ASSERT_TRUE(body->expose_param(ExposedParam{"factor", inner, 0}));
+
+  Graph g;
+  ASSERT_TRUE(g.add_group("scaler", body));
+  const NodeId c = constant(g, 2);
+  const NodeId g1 = g.add_group_node("scaler").value();
+  const NodeId g2 = g.add_group_node("scaler").value();
+  link(g, c, 0, g1, 0);
+  link(g, c, 0, g2, 0);
+  ASSERT_TRUE(g.set_param(g2, "factor", Value::make(5.0)));
+  test::output(g, "one", g1);
+  test::output(g, "five", g2);
+  EvalResult r = ev.evaluate(g, {});
+  ASSERT_TRUE(r.ok()) << r.diagnostics[0].to_string();
+  EXPECT_EQ(r.output("one")->get<double>(), 2.0);
+  EXPECT_EQ(r.output("five")->get<double>(), 10.0);
+  EXPECT_NE(r.stats.find({g2, inner}), nullptr);  // inner nodes report under the instance's path
+
+  // A second instance with the same inputs and parameters is a cache hit, not a recompute.
+  const NodeId g3 = g.add_group_node("scaler").value();
+  link(g, c, 0, g3, 0);
+  test::output(g, "again", g3);
+  test::reset_evaluations();
+  EvalResult r2 = ev.evaluate(g, {}, {"again"});
+  EXPECT_EQ(r2.output("again")->get<double>(), 2.0);
+  EXPECT_EQ(test::evaluations(), 0);
+}
+
+TEST_F(EvaluatorTest, StatsPrintATable) {
+  test::Diamond d = test::diamond();
+  EvalResult r = ev.evaluate(d.g, {});
+  std::ostringstream out;
+  r.stats.print(out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("node"), std::string::npos);
+  EXPECT_NE(text.find("test.Mul"), std::string::npos);
+  EXPECT_NE(text.find("7 nodes: 7 computed, 0 cache hits"), std::string::npos) << text;
+  for (const NodeStats& s : r.stats.nodes) EXPECT_EQ(s.memory, sizeof(double));
+}
+
+TEST_F(EvaluatorTest, PortRequestsPreviewAnyNode) {
+  test::Diamond d = test::diamond();
+  const PortRef ports[] = {PortRef{d.add2, 0}};
+  EvalResult r = ev.evaluate_ports(d.g, {}, ports);
+  ASSERT_EQ(r.outputs.size(), 1u);
+  EXPECT_EQ(r.outputs[0].name, "6.sum");
+  EXPECT_EQ(r.outputs[0].value.get<double>(), 7.0);
+  EXPECT_EQ(test::evaluations(), 3);
+}
+
+TEST_F(EvaluatorTest, UnknownOutputsAndUnconnectedOutputsAreReported) {
+  Graph g;
+  ASSERT_TRUE(g.add_output(GraphOutput{"nothing", &value_type<double>(), ""}));
+  EvalResult r = ev.evaluate(g, {}, {"nothing", "missing"});
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].to_string(), "error: the graph has no output named 'missing'");
+  EXPECT_EQ(r.diagnostics[1].to_string(), "error: output 'nothing': nothing is connected");
+}
+
+}  // namespace
+}  // namespace procex
