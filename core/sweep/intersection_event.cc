@@ -127,7 +127,8 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, glm::dv
 }
 
 // A loop with no area left (two corners, or all edges on one line) ends here:
-// its spans become horizontal ridges.
+// its spans become horizontal ridges. On a line, a span's ridge passes through
+// every other corner of the loop that lies on it, so faces meet vertex to vertex.
 bool close_if_degenerate(State& st, int start) {
   std::vector<int> loop;
   int c = start;
@@ -141,11 +142,35 @@ bool close_if_degenerate(State& st, int start) {
   } while (c != start);
   if (loop.size() > 2 && !collinear) return false;
   std::vector<std::uint32_t> v;
-  for (int x : loop) v.push_back(st.vertex_now(x));
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    st.emit_top(st.corners[loop[i]].next_edge, v[i], v[(i + 1) % loop.size()]);
-    st.corners[loop[i]].alive = false;
+  std::vector<double> along;
+  for (int x : loop) {
+    const glm::dvec2 px = st.position(x, st.height);
+    std::uint32_t id = st.vertex_now(x);
+    for (std::size_t j = 0; j < v.size(); ++j)
+      if (glm::length(glm::dvec2(st.vertices[v[j]]) - px) <= st.tol().position()) id = v[j];
+    v.push_back(id);
+    along.push_back(glm::dot(px, d0));
   }
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const std::size_t j = (i + 1) % loop.size();
+    // The ridge runs from the span's end back to its start, through the corners between.
+    std::vector<std::pair<double, std::uint32_t>> path;
+    const double lo = std::min(along[i], along[j]), hi = std::max(along[i], along[j]);
+    for (std::size_t m = 0; m < loop.size(); ++m)
+      if (v[m] != v[i] && v[m] != v[j] && along[m] > lo && along[m] < hi) path.push_back({along[m], v[m]});
+    std::sort(path.begin(), path.end());
+    if (along[j] > along[i]) std::reverse(path.begin(), path.end());
+    path.erase(std::unique(path.begin(), path.end(),
+                           [](const auto& a, const auto& b) { return a.second == b.second; }),
+               path.end());
+    std::uint32_t from = v[j];
+    for (const auto& [t, id] : path) {
+      st.emit_top(st.corners[loop[i]].next_edge, id, from);
+      from = id;
+    }
+    st.emit_top(st.corners[loop[i]].next_edge, v[i], from);
+  }
+  for (int x : loop) st.corners[x].alive = false;
   return true;
 }
 
@@ -177,10 +202,22 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   if (at_p.empty()) return;
 
   // Every live corner of a participating edge that sits at p takes part too.
+  // A corner between two participating planes that cross is at p by logic:
+  // its line meets the sweep plane in one point, and both planes pass through
+  // p. Computing its position instead would be ill-conditioned when the
+  // planes are nearly parallel.
+  auto participates = [&](int e) { return std::find(edges.begin(), edges.end(), e) != edges.end(); };
+  auto is_at_p = [&](int c) {
+    const Corner& k = st.corners[c];
+    if (!k.guide && participates(k.prev_edge) && participates(k.next_edge) &&
+        std::abs(cross(st.edges[k.prev_edge].dir, st.edges[k.next_edge].dir)) > Tolerances::parallel_sin)
+      return true;
+    return glm::length(st.position(c, z) - p) <= near;
+  };
   for (std::size_t scanned = 0; scanned < edges.size(); ++scanned) {
     for (int s : st.spans(edges[scanned])) {
       for (int c : {s, st.corners[s].next}) {
-        if (c != kNone && st.corners[c].alive && !at[c] && glm::length(st.position(c, z) - p) <= near) mark(c);
+        if (c != kNone && st.corners[c].alive && !at[c] && is_at_p(c)) mark(c);
       }
     }
   }
@@ -205,6 +242,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   }
 
   const std::uint32_t v = st.add_vertex(meeting_point(st, edges, p, near));
+  if (getenv("PXTRACE")) { fprintf(stderr, "cluster v%u h=%.12g p=(%.9f,%.9f) atP:", v, st.height, p.x, p.y); for (int c : at_p) fprintf(stderr, " c%d(%d>%d)", c, st.corners[c].prev_edge, st.corners[c].next_edge); fprintf(stderr, " chains:"); for (auto& ch : chains) fprintf(stderr, " [%d..%d]", ch.in_edge, ch.out_edge); fprintf(stderr, "\n"); }
   for (int c : at_p) {
     st.emit_trajectory(c, v);
     st.corners[c].alive = false;
