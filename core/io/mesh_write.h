@@ -23,7 +23,7 @@ struct NamedMesh {
 void write_obj(const std::filesystem::path& path, const Mesh& mesh);
 void write_obj(const std::filesystem::path& path, const std::vector<NamedMesh>& meshes);
 
-// ASCII PLY (double x y z; faces as vertex_indices lists with int
+// ASCII PLY (double x y z; faces as int vertex_indices lists with int
 // procex_source_edge and uchar procex_face_kind). Several meshes are written
 // as one vertex/face list, in order, with an int procex_group face property
 // giving the mesh's position in the list.

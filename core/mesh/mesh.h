@@ -27,4 +27,15 @@ Mesh build_mesh(const Surface& surface);
 int source_edge(const Mesh& mesh, Mesh::FaceHandle f);
 FaceKind face_kind(const Mesh& mesh, Mesh::FaceHandle f);
 
+// The property handles themselves, for loops over many faces (each lookup by
+// name walks the mesh's property list). Invalid if the mesh lacks them.
+OpenMesh::FPropHandleT<int> source_edge_property(const Mesh& mesh);
+OpenMesh::FPropHandleT<FaceKind> face_kind_property(const Mesh& mesh);
+
+// Adds both properties to a mesh made some other way (no-op if present).
+void add_face_properties(Mesh& mesh);
+
+// "base", "side" or "cap".
+const char* face_kind_name(FaceKind kind);
+
 }  // namespace procex

@@ -1,0 +1,360 @@
+#include "core/geom/convex_partition.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/predicates.h"
+
+namespace procex {
+
+namespace {
+
+using Index = std::uint32_t;
+constexpr Index kNone = std::numeric_limits<Index>::max();
+
+// A vertex of the shrinking ring that the ear clipper walks. After bridging,
+// one input vertex can appear as two nodes (both ends of a bridge).
+struct Node {
+  Index vertex;
+  Index prev, next;
+};
+
+// Turn at b on the way a -> b -> c: +1 left, -1 right, 0 straight on, and
+// 2 for a reversal (c back along b -> a), which is never convex.
+int turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const int o = orient2d(a, b, c);
+  if (o != 0) return o;
+  return glm::dot(b - a, c - b) > 0.0 ? 0 : 2;
+}
+
+bool convex_turn(int t) { return t == 0 || t == 1; }
+
+class Partitioner {
+ public:
+  explicit Partitioner(const std::vector<std::vector<glm::dvec2>>& loops) {
+    for (const auto& loop : loops) points_.insert(points_.end(), loop.begin(), loop.end());
+    Index start = 0;
+    std::vector<Index> hole_starts;
+    std::vector<Index> hole_sizes;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      const Index n = static_cast<Index>(loops[i].size());
+      const Index first = static_cast<Index>(nodes_.size());
+      for (Index k = 0; k < n; ++k) nodes_.push_back({start + k, first + (k + n - 1) % n, first + (k + 1) % n});
+      if (i > 0 && n > 0) {
+        hole_starts.push_back(first);
+        hole_sizes.push_back(n);
+      }
+      start += n;
+    }
+    if (loops.empty() || loops[0].size() < 3) return;
+    head_ = 0;
+    size_ = static_cast<Index>(loops[0].size());
+    bridge_holes(hole_starts, hole_sizes);
+  }
+
+  std::vector<std::vector<Index>> run() {
+    if (head_ == kNone) return {};
+    clip_ears();
+    merge_pieces();
+    std::vector<std::vector<Index>> out;
+    for (auto& piece : pieces_)
+      if (!piece.empty()) out.push_back(std::move(piece));
+    return out;
+  }
+
+ private:
+  const glm::dvec2& pos(Index node) const { return points_[nodes_[node].vertex]; }
+
+  int turn_at(Index node) const { return turn(pos(nodes_[node].prev), pos(node), pos(nodes_[node].next)); }
+
+  // Eberly's bridging: holes in order of decreasing rightmost x; from each
+  // hole's rightmost vertex M, a ray to +x hits the current outer ring; the
+  // bridge goes to the hit edge's far endpoint unless a reflex vertex inside
+  // the triangle (M, hit, endpoint) blocks it, in which case to the blocking
+  // vertex with the smallest angle to the ray.
+  void bridge_holes(const std::vector<Index>& starts, const std::vector<Index>& sizes) {
+    std::vector<std::pair<Index, glm::dvec2>> holes;  // rightmost node, its position
+    for (std::size_t h = 0; h < starts.size(); ++h) {
+      Index best = starts[h];
+      for (Index k = starts[h]; k < starts[h] + sizes[h]; ++k) {
+        const glm::dvec2 p = pos(k), q = pos(best);
+        if (p.x > q.x || (p.x == q.x && p.y < q.y)) best = k;
+      }
+      holes.push_back({best, pos(best)});
+    }
+    std::sort(holes.begin(), holes.end(), [](const auto& a, const auto& b) {
+      return a.second.x != b.second.x ? a.second.x > b.second.x : a.second.y < b.second.y;
+    });
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+      const Index m = holes[h].first;
+      const Index p = find_bridge(m);
+      splice(p, m, sizes[h]);
+    }
+  }
+
+  Index find_bridge(Index m) const {
+    const glm::dvec2 mp = pos(m);
+    double best_x = std::numeric_limits<double>::infinity();
+    Index best = kNone;
+    glm::dvec2 hit{};
+    Index node = head_;
+    do {
+      const Index nx = nodes_[node].next;
+      const glm::dvec2 a = pos(node), b = pos(nx);
+      // The outer ring is counter-clockwise, so from inside the ray to +x
+      // leaves through an edge going upwards.
+      if (a.y <= mp.y && mp.y <= b.y && a.y != b.y) {
+        const double x = a.x + (mp.y - a.y) * (b.x - a.x) / (b.y - a.y);
+        if (x >= mp.x && x < best_x) {
+          best_x = x;
+          hit = {x, mp.y};
+          if (x == a.x && a.y == mp.y) {
+            best = node;
+          } else if (x == b.x && b.y == mp.y) {
+            best = nx;
+          } else {
+            best = a.x > b.x ? node : nx;
+          }
+        }
+      }
+      node = nx;
+    } while (node != head_);
+    if (best == kNone) throw std::invalid_argument("a hole is not inside the outer loop");
+    if (pos(best) == hit) return pick_duplicate(best, mp);
+
+    // Reflex vertices inside the triangle (M, hit, P) would hide P from M.
+    const glm::dvec2 pp = pos(best);
+    const glm::dvec2 tri[3] = {mp, hit, pp};
+    const bool ccw = orient2d(tri[0], tri[1], tri[2]) > 0;
+    double best_tan = std::numeric_limits<double>::infinity();
+    double best_dist = std::numeric_limits<double>::infinity();
+    Index chosen = best;
+    node = head_;
+    do {
+      const glm::dvec2 q = pos(node);
+      if (node != best && q != pp && turn_at(node) != 1 && q.x >= mp.x) {
+        const int o1 = orient2d(tri[0], tri[1], q), o2 = orient2d(tri[1], tri[2], q), o3 = orient2d(tri[2], tri[0], q);
+        const bool inside = ccw ? (o1 >= 0 && o2 >= 0 && o3 >= 0) : (o1 <= 0 && o2 <= 0 && o3 <= 0);
+        if (inside) {
+          const double dx = q.x - mp.x;
+          const double t = dx > 0.0 ? std::abs(q.y - mp.y) / dx : std::numeric_limits<double>::infinity();
+          const double dist = glm::dot(q - mp, q - mp);
+          if (t < best_tan || (t == best_tan && dist < best_dist)) {
+            best_tan = t;
+            best_dist = dist;
+            chosen = node;
+          }
+        }
+      }
+      node = nodes_[node].next;
+    } while (node != head_);
+    return pick_duplicate(chosen, mp);
+  }
+
+  // Among the nodes at the same position as p (an earlier bridge doubled it),
+  // the one whose interior wedge contains the direction to m.
+  Index pick_duplicate(Index p, const glm::dvec2& m) const {
+    if (in_wedge(p, m)) return p;
+    const glm::dvec2 pp = pos(p);
+    Index node = head_;
+    do {
+      if (node != p && pos(node) == pp && in_wedge(node, m)) return node;
+      node = nodes_[node].next;
+    } while (node != head_);
+    return p;
+  }
+
+  bool in_wedge(Index node, const glm::dvec2& q) const {
+    const glm::dvec2 a = pos(nodes_[node].prev), b = pos(node), c = pos(nodes_[node].next);
+    if (orient2d(a, b, c) >= 0) return orient2d(b, c, q) >= 0 && orient2d(a, b, q) >= 0;
+    return orient2d(b, c, q) >= 0 || orient2d(a, b, q) >= 0;
+  }
+
+  // p -> m -> (around the hole) -> m' -> p' -> old next of p.
+  void splice(Index p, Index m, Index hole_size) {
+    const Index p_next = nodes_[p].next;
+    const Index m_prev = nodes_[m].prev;
+    const Index m2 = static_cast<Index>(nodes_.size());
+    nodes_.push_back({nodes_[m].vertex, m_prev, m2 + 1});
+    nodes_.push_back({nodes_[p].vertex, m2, p_next});
+    nodes_[m_prev].next = m2;
+    nodes_[p_next].prev = m2 + 1;
+    nodes_[p].next = m;
+    nodes_[m].prev = p;
+    size_ += hole_size + 2;
+  }
+
+  bool is_ear(Index v) const {
+    const Index p = nodes_[v].prev, n = nodes_[v].next;
+    const glm::dvec2 a = pos(p), b = pos(v), c = pos(n);
+    if (orient2d(a, b, c) <= 0) return false;
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    for (Index q = nodes_[n].next; q != p; q = nodes_[q].next) {
+      const glm::dvec2 s = pos(q);
+      if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) continue;
+      if (s == a || s == b || s == c) continue;
+      if (orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) return false;
+    }
+    return true;
+  }
+
+  bool ring_is_convex() const {
+    Index node = head_;
+    do {
+      if (!convex_turn(turn_at(node))) return false;
+      node = nodes_[node].next;
+    } while (node != head_);
+    return true;
+  }
+
+  void remove(Index v) {
+    const Index p = nodes_[v].prev, n = nodes_[v].next;
+    nodes_[p].next = n;
+    nodes_[n].prev = p;
+    if (head_ == v) head_ = n;
+    --size_;
+  }
+
+  void emit_ring() {
+    std::vector<Index> piece;
+    Index node = head_;
+    do {
+      piece.push_back(nodes_[node].vertex);
+      node = nodes_[node].next;
+    } while (node != head_);
+    pieces_.push_back(std::move(piece));
+  }
+
+  // Ear clipping that leaves straight vertices alone and stops as soon as
+  // what remains is convex.
+  void clip_ears() {
+    Index node = head_;
+    Index stop = node;  // a full lap back here without progress ends the lap
+    while (size_ > 3) {
+      // Nodes at the same input vertex next to each other (the two ends of a
+      // bridge, once everything between them is clipped) collapse into one.
+      if (nodes_[nodes_[node].next].vertex == nodes_[node].vertex) {
+        const Index n = nodes_[node].next;
+        if (stop == n) stop = node;
+        remove(n);
+        continue;
+      }
+      if (is_ear(node)) {
+        pieces_.push_back({nodes_[nodes_[node].prev].vertex, nodes_[node].vertex, nodes_[nodes_[node].next].vertex});
+        const Index next = nodes_[node].next;
+        remove(node);
+        node = stop = next;
+        continue;
+      }
+      node = nodes_[node].next;
+      if (node != stop) continue;
+      if (ring_is_convex()) break;
+      // No ear on a whole lap: the input is not a simple polygon (or is one
+      // only up to rounding). Clip any strictly convex vertex to make progress.
+      Index forced = kNone;
+      Index q = head_;
+      do {
+        if (turn_at(q) == 1) forced = q;
+        q = nodes_[q].next;
+      } while (q != head_ && forced == kNone);
+      if (forced == kNone) break;
+      pieces_.push_back({nodes_[nodes_[forced].prev].vertex, nodes_[forced].vertex, nodes_[nodes_[forced].next].vertex});
+      node = stop = nodes_[forced].next;
+      remove(forced);
+    }
+    emit_ring();
+  }
+
+  // Hertel-Mehlhorn: drop every diagonal whose removal keeps both of its
+  // pieces' union convex, longest diagonals first.
+  void merge_pieces() {
+    std::map<std::pair<Index, Index>, std::size_t> edge_piece;
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+      const auto& piece = pieces_[i];
+      for (std::size_t k = 0; k < piece.size(); ++k) edge_piece[{piece[k], piece[(k + 1) % piece.size()]}] = i;
+    }
+    struct Diagonal {
+      Index a, b;
+      double length2;
+    };
+    std::vector<Diagonal> diagonals;
+    for (const auto& [edge, piece] : edge_piece) {
+      if (edge.first < edge.second && edge_piece.count({edge.second, edge.first})) {
+        const glm::dvec2 d = points_[edge.second] - points_[edge.first];
+        diagonals.push_back({edge.first, edge.second, glm::dot(d, d)});
+      }
+    }
+    std::stable_sort(diagonals.begin(), diagonals.end(),
+                     [](const Diagonal& x, const Diagonal& y) { return x.length2 > y.length2; });
+    std::vector<std::size_t> owner(pieces_.size());
+    std::iota(owner.begin(), owner.end(), std::size_t{0});
+    auto find = [&owner](std::size_t i) {
+      while (owner[i] != i) i = owner[i] = owner[owner[i]];
+      return i;
+    };
+    for (const Diagonal& d : diagonals) {
+      const std::size_t pa = find(edge_piece[{d.a, d.b}]), pb = find(edge_piece[{d.b, d.a}]);
+      if (pa == pb) continue;
+      std::vector<Index> merged;
+      if (!try_merge(pieces_[pa], pieces_[pb], d.a, d.b, merged)) continue;
+      pieces_[pa] = std::move(merged);
+      pieces_[pb].clear();
+      owner[pb] = pa;
+    }
+  }
+
+  // x holds a -> b and y holds b -> a; their union without that edge, if convex.
+  bool try_merge(const std::vector<Index>& x, const std::vector<Index>& y, Index a, Index b,
+                 std::vector<Index>& merged) const {
+    const std::size_t nx = x.size(), ny = y.size();
+    std::size_t ia = nx, jb = ny;
+    for (std::size_t k = 0; k < nx; ++k)
+      if (x[k] == a && x[(k + 1) % nx] == b) ia = k;
+    for (std::size_t k = 0; k < ny; ++k)
+      if (y[k] == b && y[(k + 1) % ny] == a) jb = k;
+    if (ia == nx || jb == ny) return false;
+    // merged = b, ..., a (around x), then y's vertices strictly between a and b.
+    merged.clear();
+    for (std::size_t k = 1; k <= nx; ++k) merged.push_back(x[(ia + k) % nx]);
+    for (std::size_t k = 2; k < ny; ++k) merged.push_back(y[(jb + k) % ny]);
+    const std::size_t n = merged.size();
+    const std::size_t at_a = nx - 1, at_b = 0;
+    for (std::size_t k : {at_a, at_b}) {
+      const glm::dvec2& prev = points_[merged[(k + n - 1) % n]];
+      const glm::dvec2& next = points_[merged[(k + 1) % n]];
+      if (!convex_turn(turn(prev, points_[merged[k]], next))) return false;
+    }
+    std::vector<Index> sorted = merged;
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+
+  std::vector<glm::dvec2> points_;
+  std::vector<Node> nodes_;
+  Index head_ = kNone;
+  Index size_ = 0;
+  std::vector<std::vector<Index>> pieces_;
+};
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops) {
+  return Partitioner(loops).run();
+}
+
+bool is_convex(const std::vector<glm::dvec2>& loop) {
+  const std::size_t n = loop.size();
+  if (n < 3) return false;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!convex_turn(turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]))) return false;
+  return true;
+}
+
+}  // namespace procex

@@ -1,0 +1,28 @@
+// Splitting a planar polygon with holes into convex polygons that use only its
+// own vertices: the holes are bridged into the outer loop, the result is
+// ear-clipped, and the triangles are merged back into convex pieces as long as
+// they stay convex (Hertel-Mehlhorn), so the pieces are few and large.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace procex {
+
+// loops[0] is the outer boundary, counter-clockwise; loops[1..] are holes,
+// clockwise, inside it. A vertex is named by its position in the
+// concatenation of the loops (loop 0's vertices first). Each piece is
+// counter-clockwise; straight (collinear) vertices stay in the pieces, so
+// neighbouring faces still share them. Best effort on invalid input
+// (self-intersecting loops, holes outside): always terminates, every vertex
+// of the input is used, but pieces may then overlap.
+// Throws std::invalid_argument if a hole cannot be bridged (it is not inside the outer loop).
+std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops);
+
+// Whether a single loop (counter-clockwise) is convex: no clockwise turn and
+// no reversal; straight vertices allowed.
+bool is_convex(const std::vector<glm::dvec2>& loop);
+
+}  // namespace procex

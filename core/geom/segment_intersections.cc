@@ -1,0 +1,107 @@
+#include "core/geom/segment_intersections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/predicates.h"
+
+namespace procex {
+
+namespace {
+
+// Consecutive segments i -> j share i.b == j.a; they overlap beyond it only
+// if j turns straight back along i.
+bool consecutive_overlap(const Segment2& i, const Segment2& j) {
+  return orient2d(i.a, i.b, j.b) == 0 && glm::dot(i.b - i.a, j.b - j.a) < 0.0;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
+                                                                            const std::vector<std::size_t>& next,
+                                                                            std::size_t max_pairs) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  const std::size_t n = segments.size();
+  if (n < 2) return out;
+  double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
+  for (const Segment2& s : segments) {
+    lo_x = std::min({lo_x, s.a.x, s.b.x});
+    lo_y = std::min({lo_y, s.a.y, s.b.y});
+    hi_x = std::max({hi_x, s.a.x, s.b.x});
+    hi_y = std::max({hi_y, s.a.y, s.b.y});
+  }
+  // About one segment per cell on a square-ish grid.
+  const double span = std::max({hi_x - lo_x, hi_y - lo_y, std::numeric_limits<double>::min()});
+  const std::int64_t cells = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::sqrt(static_cast<double>(n))));
+  const double cell = span / static_cast<double>(cells) * (1.0 + 1e-9);
+  auto cell_of = [&](double v, double lo) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((v - lo) / cell), 0, cells - 1);
+  };
+  struct Range {
+    std::int64_t x0, x1, y0, y1;
+  };
+  std::vector<Range> ranges(n);
+  std::vector<std::pair<std::int64_t, std::size_t>> entries;  // (cell key, segment)
+  entries.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Segment2& s = segments[i];
+    Range r{cell_of(std::min(s.a.x, s.b.x), lo_x), cell_of(std::max(s.a.x, s.b.x), lo_x),
+            cell_of(std::min(s.a.y, s.b.y), lo_y), cell_of(std::max(s.a.y, s.b.y), lo_y)};
+    ranges[i] = r;
+    for (std::int64_t x = r.x0; x <= r.x1; ++x)
+      for (std::int64_t y = r.y0; y <= r.y1; ++y) entries.push_back({x * cells + y, i});
+  }
+  std::sort(entries.begin(), entries.end());
+  for (std::size_t begin = 0; begin < entries.size();) {
+    std::size_t end = begin;
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    const std::int64_t cx = entries[begin].first / cells, cy = entries[begin].first % cells;
+    for (std::size_t p = begin; p < end; ++p) {
+      for (std::size_t q = p + 1; q < end; ++q) {
+        std::size_t i = entries[p].second, j = entries[q].second;
+        if (i > j) std::swap(i, j);
+        const Range &ri = ranges[i], &rj = ranges[j];
+        // Test each pair once: in the lowest cell both segments' boxes cover.
+        if (std::max(ri.x0, rj.x0) != cx || std::max(ri.y0, rj.y0) != cy) continue;
+        const Segment2 &si = segments[i], &sj = segments[j];
+        const bool i_then_j = !next.empty() && next[i] == j;
+        const bool j_then_i = !next.empty() && next[j] == i;
+        bool hit;
+        if (i_then_j && j_then_i) {
+          hit = consecutive_overlap(si, sj) || consecutive_overlap(sj, si);  // a two-edge loop
+        } else if (i_then_j) {
+          hit = consecutive_overlap(si, sj);
+        } else if (j_then_i) {
+          hit = consecutive_overlap(sj, si);
+        } else {
+          hit = segments_intersect(si.a, si.b, sj.a, sj.b);
+        }
+        if (!hit) continue;
+        out.push_back({i, j});
+        if (out.size() >= max_pairs) return out;
+      }
+    }
+    begin = end;
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+LoopSegments loop_segments(const std::vector<std::vector<glm::dvec2>>& loops) {
+  LoopSegments out;
+  for (const auto& loop : loops) {
+    const std::size_t first = out.segments.size(), n = loop.size();
+    out.first.push_back(first);
+    for (std::size_t k = 0; k < n; ++k) {
+      out.segments.push_back({loop[k], loop[(k + 1) % n]});
+      out.next.push_back(first + (k + 1) % n);
+    }
+  }
+  return out;
+}
+
+}  // namespace procex

@@ -1,0 +1,39 @@
+// Finding which of many 2D segments touch or cross, in about O(n log n) for
+// the inputs procex sees (footprint loops, face outlines): segments are
+// bucketed in a uniform grid and only segments sharing a cell are compared,
+// with the exact predicates of predicates.h.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace procex {
+
+struct Segment2 {
+  glm::dvec2 a, b;
+};
+
+// Pairs (i, j), i < j, of segments that share at least one point. Segments
+// that follow each other (next[i] == j: segment i ends where j starts, as in
+// a loop) share that endpoint by design and are reported only if they also
+// overlap (the loop doubles back on itself). next may be empty (no chains);
+// otherwise next[i] is the segment following i, or SIZE_MAX for none.
+// Stops after max_pairs pairs.
+std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
+                                                                            const std::vector<std::size_t>& next,
+                                                                            std::size_t max_pairs = 64);
+
+// The segments of closed loops, with next[] linking each loop's edges in a
+// cycle; first[k] is the index of loop k's first edge.
+struct LoopSegments {
+  std::vector<Segment2> segments;
+  std::vector<std::size_t> next;
+  std::vector<std::size_t> first;
+};
+LoopSegments loop_segments(const std::vector<std::vector<glm::dvec2>>& loops);
+
+}  // namespace procex

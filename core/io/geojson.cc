@@ -1,0 +1,181 @@
+#include "core/io/geojson.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "core/io/io_error.h"
+#include "core/io/json_read.h"
+
+namespace procex {
+
+using nlohmann::json;
+using io_detail::array_at;
+using io_detail::ValueProblem;
+
+namespace {
+
+// A GeoJSON ring: positions, the last repeating the first (RFC 7946); the
+// closing vertex is dropped, an unclosed ring is taken as implicitly closed.
+std::vector<glm::dvec2> read_ring(const json& ring, const std::string& pointer) {
+  array_at(ring, pointer);
+  std::vector<glm::dvec2> points;
+  points.reserve(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) points.push_back(io_detail::point_in(ring, pointer, i));
+  if (points.size() >= 2 && points.front() == points.back()) points.pop_back();
+  return points;
+}
+
+void read_polygon(const json& rings, const std::string& pointer, std::size_t polygon, GeoJsonFeature& out) {
+  array_at(rings, pointer);
+  if (rings.empty()) throw ValueProblem{pointer, "a polygon needs at least one ring"};
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    out.loops.push_back(read_ring(rings[r], pointer + "/" + std::to_string(r)));
+    out.polygon_of_loop.push_back(polygon);
+  }
+}
+
+void read_geometry(const json& geometry, const std::string& pointer, GeoJsonFeature& out) {
+  if (geometry.is_null()) throw ValueProblem{pointer, "the feature has no geometry"};
+  if (!geometry.is_object()) throw ValueProblem{pointer, "geometry must be an object"};
+  const auto type = geometry.find("type");
+  if (type == geometry.end() || !type->is_string()) throw ValueProblem{pointer + "/type", "geometry has no type"};
+  const auto coords = geometry.find("coordinates");
+  const std::string cpointer = pointer + "/coordinates";
+  if (coords == geometry.end()) throw ValueProblem{cpointer, "geometry has no coordinates"};
+  const std::string& t = type->get_ref<const std::string&>();
+  if (t == "Polygon") {
+    read_polygon(*coords, cpointer, 0, out);
+  } else if (t == "MultiPolygon") {
+    array_at(*coords, cpointer);
+    if (coords->empty()) throw ValueProblem{cpointer, "a MultiPolygon needs at least one polygon"};
+    for (std::size_t p = 0; p < coords->size(); ++p) read_polygon((*coords)[p], cpointer + "/" + std::to_string(p), p, out);
+  } else {
+    throw ValueProblem{pointer + "/type", "geometry type '" + t + "' is not a Polygon or MultiPolygon"};
+  }
+}
+
+void read_angles(const json& value, const std::string& pointer, GeoJsonFeature& out) {
+  array_at(value, pointer);
+  if (value.size() != out.loops.size())
+    throw ValueProblem{pointer, "expected one angle list per ring (" + std::to_string(out.loops.size()) + "), found " +
+                                    std::to_string(value.size())};
+  out.edge_angles.resize(out.loops.size());
+  for (std::size_t r = 0; r < value.size(); ++r) {
+    const std::string rpointer = pointer + "/" + std::to_string(r);
+    const json& list = array_at(value[r], rpointer);
+    if (list.size() != out.loops[r].size())
+      throw ValueProblem{rpointer, "ring " + std::to_string(r) + " has " + std::to_string(out.loops[r].size()) +
+                                       " edges but " + std::to_string(list.size()) + " angles"};
+    out.edge_angles[r].reserve(list.size());
+    for (std::size_t k = 0; k < list.size(); ++k) out.edge_angles[r].push_back(io_detail::number_in(list, rpointer, k));
+  }
+}
+
+std::string feature_id(const json& feature, std::size_t index) {
+  auto text_of = [](const json& v) -> std::string {
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number()) return v.dump();
+    return {};
+  };
+  if (const auto id = feature.find("id"); id != feature.end()) {
+    if (std::string s = text_of(*id); !s.empty()) return s;
+  }
+  if (const auto props = feature.find("properties"); props != feature.end() && props->is_object()) {
+    if (const auto id = props->find("id"); id != props->end()) {
+      if (std::string s = text_of(*id); !s.empty()) return s;
+    }
+  }
+  return std::to_string(index);
+}
+
+void read_feature(const json& feature, const std::string& pointer, const GeoJsonReadOptions& options,
+                  GeoJsonFeature& out) {
+  if (!feature.is_object()) throw ValueProblem{pointer, "a feature must be an object"};
+  const auto type = feature.find("type");
+  if (type == feature.end() || *type != "Feature") throw ValueProblem{pointer + "/type", "type must be \"Feature\""};
+  const auto props = feature.find("properties");
+  if (props != feature.end() && !props->is_null()) {
+    if (!props->is_object()) throw ValueProblem{pointer + "/properties", "properties must be an object or null"};
+    for (const auto& [key, value] : props->items()) out.properties.emplace(key, value.dump());
+  }
+  const auto geometry = feature.find("geometry");
+  if (geometry == feature.end()) throw ValueProblem{pointer + "/geometry", "the feature has no geometry"};
+  read_geometry(*geometry, pointer + "/geometry", out);
+  if (options.angles_property.empty()) return;
+  const std::string apointer = pointer + "/properties/" + io_detail::pointer_token(options.angles_property);
+  const json* angles = nullptr;
+  if (props != feature.end() && props->is_object()) {
+    if (const auto it = props->find(options.angles_property); it != props->end()) angles = &*it;
+  }
+  if (angles) {
+    read_angles(*angles, apointer, out);
+  } else if (options.require_angles) {
+    throw ValueProblem{apointer, "the feature has no '" + options.angles_property + "' property"};
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> GeoJsonFeature::property_text(const std::string& name) const {
+  const auto it = properties.find(name);
+  if (it == properties.end()) return std::nullopt;
+  if (it->second.empty() || it->second.front() != '"') return it->second;
+  return json::parse(it->second).get<std::string>();
+}
+
+std::optional<double> GeoJsonFeature::property_number(const std::string& name) const {
+  const std::optional<std::string> text = property_text(name);
+  if (!text || text->empty()) return std::nullopt;
+  const char* begin = text->c_str();
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {
+  const json doc = io_detail::parse_json(text, source);
+  if (!doc.is_object()) throw IoError(source + ": the document is not a JSON object", source, "");
+  const auto type = doc.find("type");
+  if (type == doc.end() || *type != "FeatureCollection")
+    throw IoError(source + ": /type must be \"FeatureCollection\"", source, "/type");
+  const auto features = doc.find("features");
+  if (features == doc.end() || !features->is_array())
+    throw IoError(source + ": /features must be an array", source, "/features");
+
+  GeoJsonCollection out;
+  for (const auto& [key, value] : doc.items()) {
+    if (key != "type" && key != "features") out.members.emplace(key, value.dump());
+  }
+  out.features.reserve(features->size());
+  for (std::size_t i = 0; i < features->size(); ++i) {
+    const json& feature = (*features)[i];
+    const std::string pointer = "/features/" + std::to_string(i);
+    GeoJsonFeature f;
+    f.index = i;
+    f.id = feature.is_object() ? feature_id(feature, i) : std::to_string(i);
+    try {
+      read_feature(feature, pointer, options, f);
+      out.features.push_back(std::move(f));
+    } catch (const ValueProblem& problem) {
+      out.errors.push_back({i, f.id, problem.pointer,
+                            source + ": feature " + f.id + " at " + problem.pointer + ": " + problem.message});
+    }
+  }
+  return out;
+}
+
+GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options) {
+  return parse_geojson(io_detail::read_text_file(path), options, path.string());
+}
+
+Footprint to_footprint(const GeoJsonFeature& feature, double default_angle_deg) {
+  Footprint fp = make_footprint(feature.loops, default_angle_deg);
+  if (!feature.edge_angles.empty()) {
+    for (std::size_t r = 0; r < fp.loops.size(); ++r)
+      for (std::size_t k = 0; k < fp.loops[r].edges.size(); ++k) fp.loops[r].edges[k].angle_deg = feature.edge_angles[r][k];
+  }
+  return fp;
+}
+
+}  // namespace procex

@@ -1,0 +1,424 @@
+#include "core/mesh/validate.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/geom/convex_partition.h"
+#include "core/geom/polygon3.h"
+#include "core/geom/segment_intersections.h"
+#include "core/geom/tolerances.h"
+
+namespace procex {
+
+namespace {
+
+// Problems listed per kind before the rest are only counted.
+constexpr std::size_t kMaxProblemsPerKind = 20;
+// Pairs of intersecting triangles looked for before the check stops.
+constexpr std::size_t kMaxIntersectionPairs = 64;
+
+glm::dvec3 to_glm(const Mesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+class Problems {
+ public:
+  explicit Problems(std::vector<std::string>& out) : out_(out) {}
+  void add(const std::string& kind, const std::string& text) {
+    if (++counts_[kind] <= kMaxProblemsPerKind) out_.push_back(text);
+  }
+  ~Problems() {
+    for (const auto& [kind, count] : counts_)
+      if (count > kMaxProblemsPerKind)
+        out_.push_back("... and " + std::to_string(count - kMaxProblemsPerKind) + " more " + kind + " problems");
+  }
+
+ private:
+  std::vector<std::string>& out_;
+  std::map<std::string, std::size_t> counts_;
+};
+
+std::string fmt_number(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+std::string fmt_point(const glm::dvec3& p) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return s.str();
+}
+
+// Vertices at bit-identical positions share one id, so a face whose
+// neighbours were stitched through copies of their vertices (as OBJ readers
+// do with faces OpenMesh refuses) is still seen next to them.
+std::vector<std::uint32_t> weld_positions(const Mesh& mesh) {
+  struct Hash {
+    std::size_t operator()(const std::array<double, 3>& p) const {
+      std::size_t h = 0;
+      for (double v : p) h = h * 1000003u ^ std::hash<double>()(v);
+      return h;
+    }
+  };
+  std::unordered_map<std::array<double, 3>, std::uint32_t, Hash> ids;
+  std::vector<std::uint32_t> welded(mesh.n_vertices());
+  for (const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    welded[v.idx()] = ids.try_emplace({p[0], p[1], p[2]}, static_cast<std::uint32_t>(ids.size())).first->second;
+  }
+  return welded;
+}
+
+void check_topology(const Mesh& mesh, const std::vector<std::uint32_t>& welded, ValidationReport& r, Problems& problems) {
+  r.closed = true;
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    r.closed = false;
+    const auto opposite = mesh.opposite_halfedge_handle(h);
+    problems.add("closed", "edge (" + std::to_string(mesh.from_vertex_handle(h).idx()) + ", " +
+                               std::to_string(mesh.to_vertex_handle(h).idx()) + ") has a face on one side only (face " +
+                               std::to_string(mesh.face_handle(opposite).idx()) + "): the mesh is not closed");
+  }
+
+  // A vertex whose faces form one fan has at most one gap (one outgoing
+  // boundary half-edge); OpenMesh links several fans through their gaps.
+  bool fans_ok = true;
+  std::vector<int> gaps(mesh.n_vertices(), 0);
+  for (const auto h : mesh.halfedges())
+    if (mesh.is_boundary(h)) ++gaps[mesh.from_vertex_handle(h).idx()];
+  for (const auto v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) {
+      fans_ok = false;
+      problems.add("manifold", "vertex " + std::to_string(v.idx()) + " belongs to no face");
+    } else if (gaps[v.idx()] > 1) {
+      fans_ok = false;
+      problems.add("manifold", "vertex " + std::to_string(v.idx()) + " joins several separate fans of faces");
+    }
+  }
+
+  // Directed edges between welded positions: each must be used once, and
+  // each undirected edge by exactly two faces.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<int>> directed;
+  for (const auto f : mesh.faces())
+    for (const auto h : mesh.fh_range(f))
+      directed[{welded[mesh.from_vertex_handle(h).idx()], welded[mesh.to_vertex_handle(h).idx()]}].push_back(f.idx());
+  bool edges_ok = true, directions_ok = true;
+  for (const auto& [edge, faces] : directed) {
+    const auto back = directed.find({edge.second, edge.first});
+    const std::size_t total = faces.size() + (back == directed.end() ? 0 : back->second.size());
+    if (total > 2 && edge.first < edge.second) {
+      edges_ok = false;
+      problems.add("manifold", "edge between welded vertices " + std::to_string(edge.first) + " and " +
+                                   std::to_string(edge.second) + " has " + std::to_string(total) + " faces");
+    }
+    if (faces.size() > 1) {
+      directions_ok = false;
+      problems.add("oriented", "faces " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) +
+                                   " both run along the edge from welded vertex " + std::to_string(edge.first) +
+                                   " to " + std::to_string(edge.second) + ": one of them is flipped");
+    }
+  }
+  r.manifold = r.closed && fans_ok && edges_ok;
+  r.oriented = directions_ok;
+}
+
+double signed_volume(const Mesh& mesh) {
+  double six_v = 0.0;
+  for (const auto f : mesh.faces()) {
+    auto it = mesh.cfv_iter(f);
+    const glm::dvec3 a = to_glm(mesh.point(*it));
+    ++it;
+    glm::dvec3 b = to_glm(mesh.point(*it));
+    for (++it; it.is_valid(); ++it) {
+      const glm::dvec3 c = to_glm(mesh.point(*it));
+      six_v += glm::dot(a, glm::cross(b, c));
+      b = c;
+    }
+  }
+  return six_v / 6.0;
+}
+
+struct Triangle {
+  std::array<glm::dvec3, 3> p;
+  std::array<std::uint32_t, 3> v;  // welded vertex ids
+  int face;
+};
+
+// Splits every face into triangles (a fan over each convex piece), dropping
+// slivers without area; checks on the way that each face is a simple polygon.
+std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std::uint32_t>& welded, double tolerance,
+                                        ValidationReport& r, Problems& problems) {
+  std::vector<Triangle> tris;
+  tris.reserve(mesh.n_faces() * 2);
+  std::vector<glm::dvec3> pts;
+  std::vector<std::uint32_t> ids;
+  for (const auto f : mesh.faces()) {
+    pts.clear();
+    ids.clear();
+    for (const auto v : mesh.fv_range(f)) {
+      pts.push_back(to_glm(mesh.point(v)));
+      ids.push_back(welded[v.idx()]);
+    }
+    const glm::dvec3 normal = newell_normal(pts);
+    const std::vector<glm::dvec2> flat = drop_axis(pts, normal);
+    std::vector<std::vector<std::uint32_t>> pieces;
+    if (is_convex(flat)) {
+      pieces.emplace_back(pts.size());
+      for (std::uint32_t k = 0; k < pts.size(); ++k) pieces[0][k] = k;
+    } else {
+      const LoopSegments segs = loop_segments({flat});
+      const auto crossings = intersecting_segment_pairs(segs.segments, segs.next, 1);
+      if (!crossings.empty()) {
+        r.self_intersection_free = false;
+        problems.add("self-intersection", "face " + std::to_string(f.idx()) + " is not a simple polygon: its edges " +
+                                              std::to_string(crossings[0].first) + " and " +
+                                              std::to_string(crossings[0].second) + " meet");
+      }
+      pieces = convex_partition({flat});
+    }
+    for (const auto& piece : pieces) {
+      for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
+        Triangle t{{pts[piece[0]], pts[piece[k]], pts[piece[k + 1]]}, {ids[piece[0]], ids[piece[k]], ids[piece[k + 1]]},
+                   f.idx()};
+        const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
+        const double longest = std::max({glm::length(e1), glm::length(e2), glm::length(t.p[2] - t.p[1])});
+        if (glm::length(glm::cross(e1, e2)) > tolerance * longest) tris.push_back(t);
+      }
+    }
+  }
+  return tris;
+}
+
+// Coplanar triangles facing the same way overlap if an edge of one properly
+// crosses an edge of the other or a vertex of one lies inside the other.
+// Facing opposite ways they are two solids in contact, which is allowed.
+bool coplanar_overlap(const Triangle& a, const Triangle& b, const glm::dvec3& na, const glm::dvec3& nb, double tol) {
+  if (glm::dot(na, nb) <= 0.0) return false;
+  auto inside = [&](const glm::dvec3& x, const Triangle& t) {
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 inward = glm::normalize(glm::cross(na, t.p[(k + 1) % 3] - t.p[k]));
+      if (glm::dot(inward, x - t.p[k]) <= tol) return false;
+    }
+    return true;
+  };
+  for (int i = 0; i < 3; ++i)
+    if (inside(a.p[i], b) || inside(b.p[i], a)) return true;
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec3 &p = a.p[i], &q = a.p[(i + 1) % 3];
+    for (int j = 0; j < 3; ++j) {
+      const glm::dvec3 &r = b.p[j], &s = b.p[(j + 1) % 3];
+      const double o1 = glm::dot(na, glm::cross(q - p, r - p)), o2 = glm::dot(na, glm::cross(q - p, s - p));
+      const double o3 = glm::dot(na, glm::cross(s - r, p - r)), o4 = glm::dot(na, glm::cross(s - r, q - r));
+      const double lpq = glm::length(q - p) * tol, lrs = glm::length(s - r) * tol;
+      if (((o1 > lpq && o2 < -lpq) || (o1 < -lpq && o2 > lpq)) && ((o3 > lrs && o4 < -lrs) || (o3 < -lrs && o4 > lrs)))
+        return true;
+    }
+  }
+  return false;
+}
+
+// Where triangle t meets the other triangle's plane (d: its vertices' signed
+// distances to it), as an interval along the planes' common line direction.
+std::pair<double, double> plane_interval(const Triangle& t, const std::array<double, 3>& d, const glm::dvec3& dir,
+                                         double tol) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  auto add = [&](const glm::dvec3& p) {
+    const double s = glm::dot(dir, p);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  };
+  for (int k = 0; k < 3; ++k) {
+    const int l = (k + 1) % 3;
+    if (std::abs(d[k]) <= tol) add(t.p[k]);
+    if ((d[k] > tol && d[l] < -tol) || (d[k] < -tol && d[l] > tol)) add(t.p[k] + (d[k] / (d[k] - d[l])) * (t.p[l] - t.p[k]));
+  }
+  return {lo, hi};
+}
+
+// Two triangles intersect when each passes through the other's plane
+// (vertices strictly on both sides) and the two crossing segments, which lie
+// on the planes' common line, overlap by more than tol. Triangles that only
+// touch (a vertex or edge on the other's plane, or along a line) do not.
+bool triangles_intersect(const Triangle& a, const Triangle& b, double tol) {
+  const glm::dvec3 na = glm::normalize(glm::cross(a.p[1] - a.p[0], a.p[2] - a.p[0]));
+  const glm::dvec3 nb = glm::normalize(glm::cross(b.p[1] - b.p[0], b.p[2] - b.p[0]));
+  std::array<double, 3> da{}, db{};  // a's vertices against b's plane, and back
+  for (int k = 0; k < 3; ++k) {
+    da[k] = glm::dot(nb, a.p[k] - b.p[0]);
+    db[k] = glm::dot(na, b.p[k] - a.p[0]);
+  }
+  auto flat = [tol](const std::array<double, 3>& d) {
+    return std::abs(d[0]) <= tol && std::abs(d[1]) <= tol && std::abs(d[2]) <= tol;
+  };
+  if (flat(da) && flat(db)) return coplanar_overlap(a, b, na, nb, tol);
+  auto straddles = [tol](const std::array<double, 3>& d) {
+    return std::max({d[0], d[1], d[2]}) > tol && std::min({d[0], d[1], d[2]}) < -tol;
+  };
+  if (!straddles(da) || !straddles(db)) return false;
+  const glm::dvec3 cross = glm::cross(na, nb);
+  if (glm::length(cross) == 0.0) return false;
+  const glm::dvec3 dir = glm::normalize(cross);
+  const auto [a_lo, a_hi] = plane_interval(a, da, dir, tol);
+  const auto [b_lo, b_hi] = plane_interval(b, db, dir, tol);
+  return std::min(a_hi, b_hi) - std::max(a_lo, b_lo) > tol;
+}
+
+bool share_vertex(const Triangle& a, const Triangle& b) {
+  for (std::uint32_t u : a.v)
+    for (std::uint32_t w : b.v)
+      if (u == w) return true;
+  return false;
+}
+
+// Triangles of different faces that share no vertex, bucketed in a uniform
+// grid sized to the triangles, each pair tested once (in the lowest cell
+// both boxes cover).
+void check_intersections(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems) {
+  if (tris.size() < 2) return;
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+  double mean_extent = 0.0;
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes(tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
+    for (const auto& p : tris[i].p) {
+      a = glm::min(a, p);
+      b = glm::max(b, p);
+    }
+    boxes[i] = {a - tol, b + tol};
+    lo = glm::min(lo, a - tol);
+    hi = glm::max(hi, b + tol);
+    const glm::dvec3 e = b - a;
+    mean_extent += std::max({e.x, e.y, e.z});
+  }
+  mean_extent /= static_cast<double>(tris.size());
+  const glm::dvec3 span = hi - lo;
+  // Cells about the size of a triangle, but no more than ~8 per triangle overall.
+  double cell = std::max(mean_extent, std::max({span.x, span.y, span.z}) * 1e-6);
+  auto count_cells = [&](double c) {
+    return (std::floor(span.x / c) + 1) * (std::floor(span.y / c) + 1) * (std::floor(span.z / c) + 1);
+  };
+  while (count_cells(cell) > 8.0 * static_cast<double>(tris.size())) cell *= 2.0;
+  const std::int64_t nx = static_cast<std::int64_t>(span.x / cell) + 1, ny = static_cast<std::int64_t>(span.y / cell) + 1;
+  const std::int64_t nz = static_cast<std::int64_t>(span.z / cell) + 1;
+  auto index = [&](double v, double l, std::int64_t n) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((v - l) / cell), 0, n - 1);
+  };
+  std::vector<std::array<std::int64_t, 6>> ranges(tris.size());
+  std::vector<std::pair<std::int64_t, std::uint32_t>> entries;
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const auto& [a, b] = boxes[i];
+    auto& rg = ranges[i];
+    rg = {index(a.x, lo.x, nx), index(b.x, lo.x, nx), index(a.y, lo.y, ny),
+          index(b.y, lo.y, ny), index(a.z, lo.z, nz), index(b.z, lo.z, nz)};
+    for (std::int64_t x = rg[0]; x <= rg[1]; ++x)
+      for (std::int64_t y = rg[2]; y <= rg[3]; ++y)
+        for (std::int64_t z = rg[4]; z <= rg[5]; ++z) entries.push_back({(x * ny + y) * nz + z, static_cast<std::uint32_t>(i)});
+  }
+  std::sort(entries.begin(), entries.end());
+  std::size_t found = 0;
+  std::set<std::pair<int, int>> reported;
+  for (std::size_t begin = 0; begin < entries.size() && found < kMaxIntersectionPairs;) {
+    std::size_t end = begin;
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    const std::int64_t key = entries[begin].first;
+    const std::int64_t cz = key % nz, cy = (key / nz) % ny, cx = key / (nz * ny);
+    for (std::size_t p = begin; p < end; ++p) {
+      for (std::size_t q = p + 1; q < end; ++q) {
+        const std::uint32_t i = entries[p].second, j = entries[q].second;
+        const Triangle &a = tris[i], &b = tris[j];
+        if (a.face == b.face || share_vertex(a, b)) continue;
+        const auto &ra = ranges[i], &rb = ranges[j];
+        if (std::max(ra[0], rb[0]) != cx || std::max(ra[2], rb[2]) != cy || std::max(ra[4], rb[4]) != cz) continue;
+        const auto &ba = boxes[i], &bb = boxes[j];
+        if (ba.first.x > bb.second.x || bb.first.x > ba.second.x || ba.first.y > bb.second.y ||
+            bb.first.y > ba.second.y || ba.first.z > bb.second.z || bb.first.z > ba.second.z)
+          continue;
+        if (!triangles_intersect(a, b, tol)) continue;
+        r.self_intersection_free = false;
+        ++found;
+        if (!reported.insert({std::min(a.face, b.face), std::max(a.face, b.face)}).second) continue;
+        problems.add("self-intersection", "faces " + std::to_string(std::min(a.face, b.face)) + " and " +
+                                              std::to_string(std::max(a.face, b.face)) + " intersect near " +
+                                              fmt_point((a.p[0] + a.p[1] + a.p[2]) / 3.0));
+      }
+    }
+    begin = end;
+  }
+}
+
+}  // namespace
+
+ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
+  ValidationReport r;
+  {
+    Problems problems(r.problems);
+    if (mesh.n_faces() == 0) {
+      problems.add("closed", "the mesh has no faces");
+      return r;
+    }
+    glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+    for (const auto v : mesh.vertices()) {
+      lo = glm::min(lo, to_glm(mesh.point(v)));
+      hi = glm::max(hi, to_glm(mesh.point(v)));
+    }
+    const double diagonal = glm::length(hi - lo);
+    const double tol = options.tolerance > 0.0 ? options.tolerance
+                                               : std::max(kMeshDistanceRelative * diagonal,
+                                                          std::numeric_limits<double>::min());
+    const std::vector<std::uint32_t> welded = weld_positions(mesh);
+    check_topology(mesh, welded, r, problems);
+
+    r.volume = signed_volume(mesh);
+    if (!(r.volume > 0.0)) {
+      r.oriented = false;
+      problems.add("oriented", "signed volume " + fmt_number(r.volume) + " is not positive: the faces point inwards");
+    }
+
+    r.planar = true;
+    std::vector<glm::dvec3> pts;
+    for (const auto f : mesh.faces()) {
+      pts.clear();
+      glm::dvec3 centre{0.0};
+      for (const auto v : mesh.fv_range(f)) {
+        pts.push_back(to_glm(mesh.point(v)));
+        centre += pts.back();
+      }
+      centre /= static_cast<double>(pts.size());
+      const glm::dvec3 normal = newell_normal(pts);
+      const double area2 = glm::length(normal);
+      if (!(area2 > 0.0)) {
+        r.planar = false;
+        problems.add("planar", "face " + std::to_string(f.idx()) + " has no area, so no plane");
+        continue;
+      }
+      double error = 0.0;
+      for (const auto& p : pts) error = std::max(error, std::abs(glm::dot(normal / area2, p - centre)));
+      r.max_planarity_error = std::max(r.max_planarity_error, error);
+      if (error > tol) {
+        r.planar = false;
+        problems.add("planar", "face " + std::to_string(f.idx()) + " is off its plane by " + fmt_number(error) +
+                                   " (tolerance " + fmt_number(tol) + ")");
+      }
+    }
+
+    r.self_intersection_free = true;
+    if (options.check_self_intersections) {
+      const std::vector<Triangle> tris = triangulate_faces(mesh, welded, tol, r, problems);
+      check_intersections(tris, tol, r, problems);
+    }
+  }
+  return r;
+}
+
+}  // namespace procex

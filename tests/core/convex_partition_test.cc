@@ -1,0 +1,102 @@
+#include "core/geom/convex_partition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <set>
+
+#include "core/geom/nesting.h"
+#include "core/geom/predicates.h"
+
+namespace procex {
+namespace {
+
+std::vector<glm::dvec2> flatten(const std::vector<std::vector<glm::dvec2>>& loops) {
+  std::vector<glm::dvec2> all;
+  for (const auto& l : loops) all.insert(all.end(), l.begin(), l.end());
+  return all;
+}
+
+// Pieces are convex, counter-clockwise, cover the polygon's area exactly and
+// use every vertex.
+void expect_partition(const std::vector<std::vector<glm::dvec2>>& loops, std::size_t max_pieces) {
+  const auto pieces = convex_partition(loops);
+  const std::vector<glm::dvec2> pts = flatten(loops);
+  double area = 0.0, expected = 0.0;
+  for (const auto& l : loops) expected += 0.5 * twice_signed_area(l);
+  std::set<std::uint32_t> used;
+  for (const auto& piece : pieces) {
+    std::vector<glm::dvec2> poly;
+    for (auto v : piece) poly.push_back(pts[v]), used.insert(v);
+    EXPECT_TRUE(is_convex(poly)) << ::testing::PrintToString(piece);
+    EXPECT_GT(twice_signed_area(poly), 0.0);
+    area += 0.5 * twice_signed_area(poly);
+  }
+  EXPECT_NEAR(area, expected, 1e-9 * std::abs(expected));
+  EXPECT_EQ(used.size(), pts.size());
+  EXPECT_LE(pieces.size(), max_pieces);
+}
+
+TEST(ConvexPartition, ConvexPolygonIsOnePiece) {
+  expect_partition({{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}}, 1);
+}
+
+// An L: two pieces.
+//   +--+
+//   |  |
+//   |  +--+
+//   +-----+
+TEST(ConvexPartition, LShapeIsTwoPieces) { expect_partition({{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}}, 2); }
+
+TEST(ConvexPartition, SquareWithHole) {
+  expect_partition({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 3}, {3, 7}, {7, 7}, {7, 3}}}, 8);
+}
+
+// Collinear vertices everywhere, and two holes whose bridges land on the
+// same outer vertex.
+TEST(ConvexPartition, CollinearVerticesAndSharedBridgeVertex) {
+  expect_partition({{{0, 0}, {5, 0}, {10, 0}, {10, 5}, {10, 10}, {5, 10}, {0, 10}, {0, 5}},
+                    {{2, 4}, {2, 6}, {4, 6}, {4, 4}},
+                    {{6, 4.5}, {6, 5.5}, {8, 5.5}, {8, 4.5}}},
+                   16);
+}
+
+TEST(ConvexPartition, ManyHolesInAGrid) {
+  std::vector<std::vector<glm::dvec2>> loops{{{0, 0}, {50, 0}, {50, 50}, {0, 50}}};
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const double x = 2 + 10 * i, y = 2 + 10 * j;
+      loops.push_back({{x, y}, {x, y + 6}, {x + 6, y + 6}, {x + 6, y}});
+    }
+  expect_partition(loops, 4 * 26);
+}
+
+TEST(ConvexPartition, RegularPolygonWithRegularHole) {
+  std::vector<glm::dvec2> outer, hole;
+  for (int k = 0; k < 64; ++k) {
+    const double t = 2 * std::numbers::pi * k / 64;
+    outer.push_back({100 * std::cos(t), 100 * std::sin(t)});
+    hole.push_back({30 * std::cos(-t), 30 * std::sin(-t)});
+  }
+  expect_partition({outer, hole}, 128);
+}
+
+TEST(ConvexPartition, HoleOutsideIsRefused) {
+  EXPECT_THROW(convex_partition({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{5, 5}, {5, 6}, {6, 6}}}), std::invalid_argument);
+}
+
+TEST(Predicates, Orient2dIsExactNearDegeneracy) {
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0, 1}), 1);
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0, -1}), -1);
+  // Collinear points that floating point evaluation gets wrong.
+  const glm::dvec2 a{0.1, 0.1}, b{0.3, 0.3};
+  EXPECT_EQ(orient2d(a, b, {0.7, 0.7}), 0);
+  EXPECT_EQ(orient2d(a, b, {0.7, std::nextafter(0.7, 1.0)}), 1);
+  EXPECT_EQ(orient2d(a, b, {0.7, std::nextafter(0.7, 0.0)}), -1);
+  EXPECT_EQ(orient2d({1e15, 1e15}, {1e15 + 1, 1e15 + 1}, {1e15 + 2, 1e15 + 2}), 0);
+}
+
+}  // namespace
+}  // namespace procex

@@ -1,0 +1,129 @@
+#include "core/io/geojson.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/io_error.h"
+
+namespace procex {
+namespace {
+
+const std::string kData = PROCEX_TEST_DATA;
+const std::string kFootprints = std::string(PROCEX_SHARED) + "/data/footprints/";
+
+class GeoJsonCorpus : public ::testing::TestWithParam<const char*> {};
+
+// Every feature of the real corpus reads, and the totals match the "stats"
+// member that the converter wrote into each file.
+TEST_P(GeoJsonCorpus, CountsMatchTheFilesStats) {
+  const GeoJsonCollection c = read_geojson_file(kFootprints + GetParam());
+  ASSERT_TRUE(c.members.count("stats"));
+  const nlohmann::json stats = nlohmann::json::parse(c.members.at("stats"));
+  EXPECT_TRUE(c.errors.empty()) << c.errors.front().message;
+  EXPECT_EQ(c.features.size(), stats["features"].get<std::size_t>());
+  std::size_t polygons = 0, rings = 0, vertices = 0;
+  for (const GeoJsonFeature& f : c.features) {
+    polygons += f.polygon_of_loop.empty() ? 0 : f.polygon_of_loop.back() + 1;
+    rings += f.loops.size();
+    for (const auto& loop : f.loops) vertices += loop.size();
+    // The per-feature statistics count vertices without the closing repeat, as we do.
+    std::size_t mine = 0;
+    for (const auto& loop : f.loops) mine += loop.size();
+    ASSERT_EQ(f.property_number("n_vertices"), static_cast<double>(mine)) << f.id;
+  }
+  EXPECT_EQ(polygons, stats["polygons"].get<std::size_t>());
+  EXPECT_EQ(rings, stats["rings"].get<std::size_t>());
+  EXPECT_EQ(rings - polygons, stats["holes"].get<std::size_t>());
+  EXPECT_EQ(vertices, stats["vertices"].get<std::size_t>());
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, GeoJsonCorpus,
+                         ::testing::Values("corpus_monaco.geojson", "corpus_manhattan_2015.geojson",
+                                           "corpus_baltimore_2015.geojson"));
+
+TEST(GeoJson, ReadsIdsPropertiesAndDropsTheClosingVertex) {
+  const GeoJsonCollection c = read_geojson_file(kFootprints + "corpus_baltimore_2015.geojson");
+  const GeoJsonFeature& f = c.features.front();
+  EXPECT_EQ(f.index, 0u);
+  EXPECT_EQ(f.id, "w49666537");
+  EXPECT_EQ(f.property_text("building"), "yes");
+  EXPECT_EQ(f.property_text("valid"), "true");
+  EXPECT_EQ(f.properties.at("region"), "\"baltimore_2015\"");
+  ASSERT_EQ(f.loops.size(), 1u);
+  EXPECT_EQ(f.loops[0].size(), 7u);
+  EXPECT_NE(f.loops[0].front(), f.loops[0].back());
+  EXPECT_FALSE(f.property_text("no such property"));
+}
+
+TEST(GeoJson, BadFeaturesAreReportedAndTheOthersRead) {
+  const GeoJsonCollection c = read_geojson_file(kData + "/geojson_bad_features.geojson");
+  ASSERT_EQ(c.features.size(), 2u);
+  EXPECT_EQ(c.features[0].id, "good_square");
+  EXPECT_EQ(c.features[0].property_number("height"), 12.0);
+  EXPECT_EQ(c.features[0].property_text("name"), "Sq/uare");
+  // The MultiPolygon: its id is its index, its loops in ring order.
+  const GeoJsonFeature& multi = c.features[1];
+  EXPECT_EQ(multi.id, "6");
+  ASSERT_EQ(multi.loops.size(), 3u);
+  EXPECT_EQ(multi.polygon_of_loop, (std::vector<std::size_t>{0, 0, 1}));
+  EXPECT_EQ(multi.loops[2].size(), 3u);
+  EXPECT_EQ(c.members.at("name"), "\"one good feature among bad ones\"");
+
+  ASSERT_EQ(c.errors.size(), 5u);
+  EXPECT_EQ(c.errors[0].id, "string_coordinate");
+  EXPECT_EQ(c.errors[0].pointer, "/features/1/geometry/coordinates/0/2/1");
+  EXPECT_EQ(c.errors[1].pointer, "/features/2/geometry/type");
+  EXPECT_NE(c.errors[1].message.find("Point"), std::string::npos);
+  EXPECT_EQ(c.errors[2].id, "null_geometry");
+  EXPECT_EQ(c.errors[2].pointer, "/features/3/geometry");
+  EXPECT_EQ(c.errors[3].id, "42");
+  EXPECT_EQ(c.errors[3].pointer, "/features/4/geometry/coordinates/0/2");
+  EXPECT_EQ(c.errors[4].index, 5u);
+  EXPECT_EQ(c.errors[4].pointer, "/features/5");
+  for (const auto& e : c.errors) EXPECT_NE(e.message.find(e.pointer), std::string::npos) << e.message;
+}
+
+TEST(GeoJson, ReadsPerEdgeAnglesInRingOrder) {
+  GeoJsonReadOptions options;
+  options.angles_property = "angles";
+  const GeoJsonCollection c = read_geojson_file(kData + "/geojson_edge_angles.geojson", options);
+  ASSERT_EQ(c.features.size(), 1u);
+  const GeoJsonFeature& f = c.features[0];
+  ASSERT_EQ(f.edge_angles.size(), 2u);
+  EXPECT_EQ(f.edge_angles[1], (std::vector<double>{0, 10, 20, 90}));
+  const Footprint fp = to_footprint(f, 45.0);
+  EXPECT_EQ(fp.loops[1].edges[3].angle_deg, 90.0);
+  EXPECT_EQ(fp.loops[1].edges[3].id, 7);
+
+  ASSERT_EQ(c.errors.size(), 3u);
+  EXPECT_EQ(c.errors[0].pointer, "/features/1/properties/angles/0");
+  EXPECT_EQ(c.errors[1].pointer, "/features/2/properties/angles/0/2");
+  EXPECT_EQ(c.errors[2].pointer, "/features/3/properties/angles");
+
+  // Optional angles: the feature without them reads, at the default angle.
+  options.require_angles = false;
+  const GeoJsonCollection lenient = read_geojson_file(kData + "/geojson_edge_angles.geojson", options);
+  ASSERT_EQ(lenient.features.size(), 2u);
+  EXPECT_TRUE(lenient.features[1].edge_angles.empty());
+  EXPECT_EQ(to_footprint(lenient.features[1], 30.0).loops[0].edges[2].angle_deg, 30.0);
+}
+
+TEST(GeoJson, SyntaxErrorNamesFileLineAndColumn) {
+  try {
+    read_geojson_file(kData + "/geojson_syntax_error.geojson");
+    FAIL() << "expected IoError";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("geojson_syntax_error.geojson:3:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GeoJson, RefusesWhatIsNotAFeatureCollection) {
+  EXPECT_THROW(parse_geojson(R"({"type": "Feature"})"), IoError);
+  EXPECT_THROW(parse_geojson(R"({"type": "FeatureCollection", "features": 3})"), IoError);
+  EXPECT_THROW(parse_geojson("[1, 2]"), IoError);
+  EXPECT_THROW(read_geojson_file(kData + "/no_such_file.geojson"), IoError);
+}
+
+}  // namespace
+}  // namespace procex

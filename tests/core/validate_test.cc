@@ -1,0 +1,147 @@
+#include "core/mesh/validate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/geom/error.h"
+#include "tests/core/mesh_fixtures.h"
+
+namespace procex {
+namespace {
+
+bool mentions(const ValidationReport& r, const std::string& text) {
+  for (const auto& p : r.problems)
+    if (p.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(Validate, ClosedBoxPassesEveryCheck) {
+  const ValidationReport r = validate(build_mesh(test::box({0, 0, 0}, {2, 3, 4})));
+  EXPECT_TRUE(r.ok()) << ::testing::PrintToString(r.problems);
+  EXPECT_TRUE(r.closed && r.manifold && r.oriented && r.planar && r.self_intersection_free);
+  EXPECT_NEAR(r.volume, 24.0, 1e-12);
+  EXPECT_EQ(r.max_planarity_error, 0.0);
+  EXPECT_TRUE(r.problems.empty());
+}
+
+TEST(Validate, MissingFaceIsNotClosed) {
+  Surface s = test::box({0, 0, 0}, {1, 1, 1});
+  s.faces.erase(s.faces.begin() + 1);  // the cap
+  const ValidationReport r = validate(build_mesh(s));
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.manifold);
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(mentions(r, "not closed")) << ::testing::PrintToString(r.problems);
+}
+
+// OpenMesh cannot link a flipped face to its neighbours, so a reader gives it
+// its own copies of the vertices; validation still sees it through the
+// shared positions.
+TEST(Validate, FlippedFaceIsNotOriented) {
+  Mesh mesh = build_mesh([] {
+    Surface s = test::box({0, 0, 0}, {1, 1, 1});
+    s.faces.erase(s.faces.begin() + 1);
+    return s;
+  }());
+  std::vector<Mesh::VertexHandle> copies;
+  for (int v : {4, 5, 6, 7}) copies.push_back(mesh.add_vertex(mesh.point(Mesh::VertexHandle(v))));
+  std::reverse(copies.begin(), copies.end());
+  ASSERT_TRUE(mesh.add_face(copies).is_valid());
+  const ValidationReport r = validate(mesh);
+  EXPECT_FALSE(r.oriented);
+  EXPECT_TRUE(mentions(r, "flipped")) << ::testing::PrintToString(r.problems);
+  EXPECT_FALSE(r.ok());
+}
+
+TEST(Validate, InsideOutSolidHasNegativeVolume) {
+  Surface s = test::box({0, 0, 0}, {1, 1, 1});
+  for (auto& f : s.faces) std::reverse(f.loops[0].begin(), f.loops[0].end());
+  const ValidationReport r = validate(build_mesh(s));
+  EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.manifold);
+  EXPECT_FALSE(r.oriented);
+  EXPECT_NEAR(r.volume, -1.0, 1e-12);
+  EXPECT_TRUE(mentions(r, "not positive"));
+}
+
+TEST(Validate, NonPlanarFaceIsReportedWithItsError) {
+  Surface s = test::box({0, 0, 0}, {1, 1, 1});
+  s.vertices[6].z = 1.1;  // lifts one corner of the cap: the cap and two walls bend
+  const ValidationReport r = validate(build_mesh(s));
+  EXPECT_TRUE(r.closed);
+  EXPECT_FALSE(r.planar);
+  EXPECT_NEAR(r.max_planarity_error, 0.025, 0.01);
+  EXPECT_TRUE(mentions(r, "face 1 is off its plane")) << ::testing::PrintToString(r.problems);
+
+  ValidationOptions loose;
+  loose.tolerance = 0.1;
+  EXPECT_TRUE(validate(build_mesh(s), loose).planar);
+}
+
+TEST(Validate, OverlappingBoxesIntersect) {
+  const Surface s = test::combine(test::box({0, 0, 0}, {2, 2, 2}), test::box({1, 1, 1}, {3, 3, 3}));
+  const ValidationReport r = validate(build_mesh(s));
+  EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.manifold);
+  EXPECT_FALSE(r.self_intersection_free);
+  EXPECT_TRUE(mentions(r, "intersect")) << ::testing::PrintToString(r.problems);
+
+  ValidationOptions skip;
+  skip.check_self_intersections = false;
+  EXPECT_TRUE(validate(build_mesh(s), skip).ok());
+}
+
+TEST(Validate, CoplanarOverlapIntersects) {
+  // Two boxes on the same floor, overlapping: their bases lie in one plane.
+  const Surface s = test::combine(test::box({0, 0, 0}, {2, 2, 1}), test::box({1, 1, 0}, {3, 3, 0.5}));
+  EXPECT_FALSE(validate(build_mesh(s)).self_intersection_free);
+}
+
+TEST(Validate, SeparateAndTouchingBoxesDoNotIntersect) {
+  EXPECT_TRUE(validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({2, 0, 0}, {3, 1, 1})))).ok());
+  // Face to face contact is not an intersection.
+  const ValidationReport touching =
+      validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({1, 0.25, 0.25}, {2, 0.75, 0.75}))));
+  EXPECT_TRUE(touching.self_intersection_free) << ::testing::PrintToString(touching.problems);
+}
+
+// OpenMesh cannot close a mesh around a vertex joining two fans (build_mesh
+// refuses it), but an open one can have such a vertex: two triangles sharing
+// only vertex 0.
+TEST(Validate, VertexJoiningTwoFansIsNotManifold) {
+  Mesh mesh;
+  std::vector<Mesh::VertexHandle> v;
+  for (const auto& p : {Mesh::Point(0, 0, 0), Mesh::Point(1, 0, 0), Mesh::Point(0, 1, 0), Mesh::Point(-1, 0, 0),
+                        Mesh::Point(0, -1, 0)})
+    v.push_back(mesh.add_vertex(p));
+  ASSERT_TRUE(mesh.add_face(v[0], v[1], v[2]).is_valid());
+  ASSERT_TRUE(mesh.add_face(v[0], v[3], v[4]).is_valid());
+  const ValidationReport r = validate(mesh);
+  EXPECT_FALSE(r.manifold);
+  EXPECT_FALSE(r.closed);
+  EXPECT_TRUE(mentions(r, "vertex 0 joins several separate fans")) << ::testing::PrintToString(r.problems);
+
+  // Closing both boxes around a shared corner is refused when building.
+  Surface s = test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({1, 1, 1}, {2, 2, 2}));
+  for (auto& f : s.faces)
+    for (auto& loop : f.loops)
+      for (auto& id : loop)
+        if (id == 8) id = 6;
+  EXPECT_THROW(build_mesh(s), MeshError);
+}
+
+// A 4096-sided prism: 4098 faces, one of them with 4096 vertices.
+TEST(Validate, LargeRegularPrismIsValid) {
+  std::vector<glm::dvec2> circle;
+  for (int k = 0; k < 4096; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / 4096.0;
+    circle.push_back({100.0 * std::cos(t), 100.0 * std::sin(t)});
+  }
+  const ValidationReport r = validate(build_mesh(test::extrude({circle}, 0.0, 10.0)));
+  EXPECT_TRUE(r.ok()) << ::testing::PrintToString(r.problems);
+}
+
+}  // namespace
+}  // namespace procex
