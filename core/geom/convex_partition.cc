@@ -23,6 +23,7 @@ constexpr Index kNone = std::numeric_limits<Index>::max();
 struct Node {
   Index vertex;
   Index prev, next;
+  bool removed = false;
 };
 
 // Turn at b on the way a -> b -> c: +1 left, -1 right, 0 straight on, and
@@ -45,7 +46,7 @@ class Partitioner {
     for (std::size_t i = 0; i < loops.size(); ++i) {
       const Index n = static_cast<Index>(loops[i].size());
       const Index first = static_cast<Index>(nodes_.size());
-      for (Index k = 0; k < n; ++k) nodes_.push_back({start + k, first + (k + n - 1) % n, first + (k + 1) % n});
+      for (Index k = 0; k < n; ++k) nodes_.push_back({start + k, first + (k + n - 1) % n, first + (k + 1) % n, false});
       if (i > 0 && n > 0) {
         hole_starts.push_back(first);
         hole_sizes.push_back(n);
@@ -181,8 +182,8 @@ class Partitioner {
     const Index p_next = nodes_[p].next;
     const Index m_prev = nodes_[m].prev;
     const Index m2 = static_cast<Index>(nodes_.size());
-    nodes_.push_back({nodes_[m].vertex, m_prev, m2 + 1});
-    nodes_.push_back({nodes_[p].vertex, m2, p_next});
+    nodes_.push_back({nodes_[m].vertex, m_prev, m2 + 1, false});
+    nodes_.push_back({nodes_[p].vertex, m2, p_next, false});
     nodes_[m_prev].next = m2;
     nodes_[p_next].prev = m2 + 1;
     nodes_[p].next = m;
@@ -196,7 +197,9 @@ class Partitioner {
     if (orient2d(a, b, c) <= 0) return false;
     const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
     const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
-    for (Index q = nodes_[n].next; q != p; q = nodes_[q].next) {
+    // Only a vertex that is not strictly convex can lie inside an ear.
+    for (const Index q : reflex_) {
+      if (nodes_[q].removed || q == p || q == v || q == n) continue;
       const glm::dvec2 s = pos(q);
       if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) continue;
       if (s == a || s == b || s == c) continue;
@@ -218,6 +221,7 @@ class Partitioner {
     const Index p = nodes_[v].prev, n = nodes_[v].next;
     nodes_[p].next = n;
     nodes_[n].prev = p;
+    nodes_[v].removed = true;
     if (head_ == v) head_ = n;
     --size_;
   }
@@ -233,9 +237,15 @@ class Partitioner {
   }
 
   // Ear clipping that leaves straight vertices alone and stops as soon as
-  // what remains is convex.
+  // what remains is convex. Clipping an ear only shrinks its neighbours'
+  // angles, so the vertices that are not strictly convex at the start are
+  // the only ones an ear can ever contain.
   void clip_ears() {
     Index node = head_;
+    do {
+      if (turn_at(node) != 1) reflex_.push_back(node);
+      node = nodes_[node].next;
+    } while (node != head_);
     Index stop = node;  // a full lap back here without progress ends the lap
     while (size_ > 3) {
       // Nodes at the same input vertex next to each other (the two ends of a
@@ -341,6 +351,7 @@ class Partitioner {
   Index head_ = kNone;
   Index size_ = 0;
   std::vector<std::vector<Index>> pieces_;
+  std::vector<Index> reflex_;  // nodes not strictly convex when clipping began
 };
 
 }  // namespace

@@ -155,7 +155,7 @@ struct Triangle {
   int face;
 };
 
-// Splits every face into triangles (a fan over each convex piece), dropping
+// Splits every face into triangles (over each convex piece), dropping
 // slivers without area; checks on the way that each face is a simple polygon.
 std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std::uint32_t>& welded, double tolerance,
                                         ValidationReport& r, Problems& problems) {
@@ -188,8 +188,18 @@ std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std:
       pieces = convex_partition({flat});
     }
     for (const auto& piece : pieces) {
-      for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-        Triangle t{{pts[piece[0]], pts[piece[k]], pts[piece[k + 1]]}, {ids[piece[0]], ids[piece[k]], ids[piece[k + 1]]},
+      // Halving the piece rather than fanning it keeps most triangles small,
+      // so a face with thousands of vertices does not become thousands of
+      // slivers spanning the whole face (and the whole grid).
+      std::vector<std::pair<std::size_t, std::size_t>> chains{{0, piece.size() - 1}};
+      while (!chains.empty()) {
+        const auto [lo, hi] = chains.back();
+        chains.pop_back();
+        if (hi - lo < 2) continue;
+        const std::size_t mid = (lo + hi) / 2;
+        chains.push_back({lo, mid});
+        chains.push_back({mid, hi});
+        Triangle t{{pts[piece[lo]], pts[piece[mid]], pts[piece[hi]]}, {ids[piece[lo]], ids[piece[mid]], ids[piece[hi]]},
                    f.idx()};
         const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
         const double longest = std::max({glm::length(e1), glm::length(e2), glm::length(t.p[2] - t.p[1])});
@@ -287,7 +297,7 @@ bool share_vertex(const Triangle& a, const Triangle& b) {
 void check_intersections(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems) {
   if (tris.size() < 2) return;
   glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
-  double mean_extent = 0.0;
+  std::vector<double> extents(tris.size());
   std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes(tris.size());
   for (std::size_t i = 0; i < tris.size(); ++i) {
     glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
@@ -299,12 +309,14 @@ void check_intersections(const std::vector<Triangle>& tris, double tol, Validati
     lo = glm::min(lo, a - tol);
     hi = glm::max(hi, b + tol);
     const glm::dvec3 e = b - a;
-    mean_extent += std::max({e.x, e.y, e.z});
+    extents[i] = std::max({e.x, e.y, e.z});
   }
-  mean_extent /= static_cast<double>(tris.size());
+  // The median: a few huge triangles must not make every cell huge.
+  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2), extents.end());
+  const double typical_extent = extents[extents.size() / 2];
   const glm::dvec3 span = hi - lo;
   // Cells about the size of a triangle, but no more than ~8 per triangle overall.
-  double cell = std::max(mean_extent, std::max({span.x, span.y, span.z}) * 1e-6);
+  double cell = std::max(typical_extent, std::max({span.x, span.y, span.z}) * 1e-6);
   auto count_cells = [&](double c) {
     return (std::floor(span.x / c) + 1) * (std::floor(span.y / c) + 1) * (std::floor(span.z / c) + 1);
   };
@@ -333,11 +345,18 @@ void check_intersections(const std::vector<Triangle>& tris, double tol, Validati
     while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
     const std::int64_t key = entries[begin].first;
     const std::int64_t cz = key % nz, cy = (key / nz) % ny, cx = key / (nz * ny);
+    // A face's triangles are numbered consecutively, so within a cell they
+    // form one run; pairs start after the run, never inside it.
+    std::size_t run_end = begin;
     for (std::size_t p = begin; p < end; ++p) {
-      for (std::size_t q = p + 1; q < end; ++q) {
+      if (p == run_end) {
+        run_end = p + 1;
+        while (run_end < end && tris[entries[run_end].second].face == tris[entries[p].second].face) ++run_end;
+      }
+      for (std::size_t q = run_end; q < end; ++q) {
         const std::uint32_t i = entries[p].second, j = entries[q].second;
         const Triangle &a = tris[i], &b = tris[j];
-        if (a.face == b.face || share_vertex(a, b)) continue;
+        if (share_vertex(a, b)) continue;
         const auto &ra = ranges[i], &rb = ranges[j];
         if (std::max(ra[0], rb[0]) != cx || std::max(ra[2], rb[2]) != cy || std::max(ra[4], rb[4]) != cz) continue;
         const auto &ba = boxes[i], &bb = boxes[j];
