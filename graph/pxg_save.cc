@@ -1,5 +1,6 @@
 // Writing .pxg files: canonical JSON (sorted keys, nodes by id, links by
 // destination) so that saving the same graph twice gives the same bytes.
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <fstream>
@@ -76,13 +77,83 @@ json graph_json(const Graph& g) {
   return j;
 }
 
+// Two-space indentation, except that a container at most two levels deep and
+// short enough stays on one line; lists of objects always get one line per
+// object. One link, one node, one editor entry per line keeps diffs readable.
+constexpr std::size_t kOneLineWidth = 100;
+
+// Strings set through the API may hold invalid UTF-8; replace rather than throw.
+std::string text_of(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+std::size_t depth(const json& j) {
+  std::size_t d = 0;
+  if (j.is_structured())
+    for (const json& e : j) d = std::max(d, depth(e));
+  return j.is_structured() ? d + 1 : 0;
+}
+
+void one_line(const json& j, std::string& out) {
+  if (!j.is_structured()) {
+    out += text_of(j);
+    return;
+  }
+  const bool obj = j.is_object();
+  out.push_back(obj ? '{' : '[');
+  bool first = true;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!first) out.append(", ");
+    first = false;
+    if (obj) {
+      out += text_of(json(it.key()));
+      out.append(": ");
+    }
+    one_line(*it, out);
+  }
+  out.push_back(obj ? '}' : ']');
+}
+
+void print(const json& j, std::size_t indent, std::string& out) {
+  if (!j.is_structured() || j.empty()) {
+    out += text_of(j);
+    return;
+  }
+  const bool list_of_objects = j.is_array() && j.front().is_object();
+  if (depth(j) <= 2 && !list_of_objects) {
+    std::string line;
+    one_line(j, line);
+    if (line.size() + indent <= kOneLineWidth) {
+      out += line;
+      return;
+    }
+  }
+  const bool obj = j.is_object();
+  out.push_back(obj ? '{' : '[');
+  out.push_back('\n');
+  bool first = true;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!first) out.append(",\n");
+    first = false;
+    out.append(indent + 2, ' ');
+    if (obj) {
+      out += text_of(json(it.key()));
+      out.append(": ");
+    }
+    print(*it, indent + 2, out);
+  }
+  out.push_back('\n');
+  out.append(indent, ' ');
+  out.push_back(obj ? '}' : ']');
+}
+
 }  // namespace
 
 std::string to_pxg(const Graph& g) {
   json j = graph_json(g);
   j["format"] = kPxgFormat;
   j["version"] = kPxgVersion;
-  return j.dump(2) + "\n";
+  std::string out;
+  print(j, 0, out);
+  return out + "\n";
 }
 
 void write_file_atomically(const std::filesystem::path& file, std::string_view text) {

@@ -1,0 +1,137 @@
+#include <gtest/gtest.h>
+
+#include "graph/commands.h"
+#include "graph/pxg.h"
+#include "tests/graph/test_graphs.h"
+
+namespace procex {
+namespace {
+
+// Undo must restore the graph exactly; the canonical file text is a complete fingerprint.
+class Commands : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    d = test::diamond();
+    original = to_pxg(d.g);
+  }
+  test::Diamond d;
+  std::string original;
+};
+
+TEST_F(Commands, EveryCommandUndoesAndRedoesExactly) {
+  UndoStack stack(d.g);
+  std::vector<std::string> states{original};
+  auto step = [&](Status s) {
+    ASSERT_TRUE(s) << s.message();
+    states.push_back(to_pxg(d.g));
+  };
+  auto added = stack.add_node("test.Switch", EditorState{5, 6, {}, false});
+  ASSERT_TRUE(added);
+  states.push_back(to_pxg(d.g));
+  step(stack.connect(PortRef{d.mul, 0}, PortRef{*added, 0}));
+  step(stack.set_param(*added, "enabled", Value::make(false)));
+  step(stack.move(*added, 50, 60));
+  step(stack.set_editor_state(d.c1, EditorState{0, 0, "one", true}));
+  step(stack.disconnect(PortRef{d.add1, 1}));
+  step(stack.remove_node(d.add2));
+  auto inst = stack.group({d.c1, d.add1}, "left");
+  ASSERT_TRUE(inst) << inst.message();
+  states.push_back(to_pxg(d.g));
+
+  for (std::size_t i = states.size() - 1; i > 0; --i) {
+    ASSERT_TRUE(stack.undo());
+    ASSERT_EQ(to_pxg(d.g), states[i - 1]) << "after undoing step " << i;
+  }
+  EXPECT_FALSE(stack.undo());
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    ASSERT_TRUE(stack.redo());
+    ASSERT_EQ(to_pxg(d.g), states[i]) << "after redoing step " << i;
+  }
+  EXPECT_FALSE(stack.redo());
+}
+
+TEST_F(Commands, RefusedEditsChangeNothingAndRecordNothing) {
+  UndoStack stack(d.g);
+  EXPECT_EQ(stack.add_node("test.Mull").message(), "unknown node type 'test.Mull'; did you mean 'test.Mul'?");
+  EXPECT_FALSE(stack.connect(PortRef{d.mul, 0}, PortRef{d.c1, 0}));  // c1 has no inputs
+  EXPECT_EQ(stack.connect(PortRef{d.mul, 0}, PortRef{d.add1, 0}).message(),
+            "linking 7.product to 5.a would make a cycle: node 7 already depends on node 5");
+  EXPECT_FALSE(stack.set_param(d.add1, "scale", Value::make(1e9)));
+  EXPECT_FALSE(stack.remove_node(99));
+  EXPECT_FALSE(stack.group({}, "empty"));
+  EXPECT_FALSE(stack.can_undo());
+  EXPECT_EQ(to_pxg(d.g), original);
+}
+
+TEST_F(Commands, ConnectReplacesAndUndoRestoresTheOldLink) {
+  UndoStack stack(d.g);
+  ASSERT_TRUE(stack.connect(PortRef{d.c4, 0}, PortRef{d.add1, 0}));
+  EXPECT_EQ(d.g.source(PortRef{d.add1, 0}), (PortRef{d.c4, 0}));
+  ASSERT_TRUE(stack.undo());
+  EXPECT_EQ(d.g.source(PortRef{d.add1, 0}), (PortRef{d.c1, 0}));
+}
+
+TEST_F(Commands, DragsMergeIntoOneStep) {
+  UndoStack stack(d.g);
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(stack.move(d.mul, i, i));
+  stack.end_interaction();
+  ASSERT_TRUE(stack.move(d.mul, 100, 100));
+  EXPECT_EQ(d.g.node(d.mul)->editor.x, 100);
+  ASSERT_TRUE(stack.undo());
+  EXPECT_EQ(d.g.node(d.mul)->editor.x, 9);
+  ASSERT_TRUE(stack.undo());
+  EXPECT_EQ(d.g.node(d.mul)->editor.x, 0);
+  EXPECT_FALSE(stack.can_undo());
+}
+
+TEST_F(Commands, MacrosAreOneStepAndCanBeAborted) {
+  UndoStack stack(d.g);
+  stack.begin_macro("paste");
+  auto a = stack.add_node("test.Const");
+  auto b = stack.add_node("test.Add");
+  ASSERT_TRUE(a && b);
+  ASSERT_TRUE(stack.connect(PortRef{*a, 0}, PortRef{*b, 0}));
+  stack.end_macro();
+  EXPECT_EQ(stack.undo_label(), "paste");
+  ASSERT_TRUE(stack.undo());
+  EXPECT_EQ(to_pxg(d.g), original);
+  ASSERT_TRUE(stack.redo());
+  EXPECT_EQ(d.g.nodes().size(), 9u);
+
+  stack.begin_macro("half done");
+  ASSERT_TRUE(stack.add_node("test.Const"));
+  stack.abort_macro();
+  EXPECT_EQ(d.g.nodes().size(), 9u);
+  EXPECT_EQ(stack.undo_label(), "paste");
+}
+
+TEST_F(Commands, GroupingWiresTheBoundary) {
+  UndoStack stack(d.g);
+  ASSERT_TRUE(d.g.expose_param(ExposedParam{"left_scale", d.add1, 0}));
+  auto inst = stack.group({d.c2, d.add1}, "left");
+  ASSERT_TRUE(inst) << inst.message();
+  const GroupDef& def = d.g.groups().at("left");
+  const Graph& body = *def.type->body;
+  ASSERT_EQ(body.inputs().size(), 1u);  // c1 -> add1.a crosses in
+  EXPECT_EQ(body.inputs()[0].name, "a");
+  ASSERT_EQ(body.outputs().size(), 1u);  // add1.sum -> mul.a crosses out
+  EXPECT_EQ(body.outputs()[0].name, "sum");
+  EXPECT_EQ(d.g.source(PortRef{*inst, 0}), (PortRef{d.c1, 0}));
+  EXPECT_EQ(d.g.source(PortRef{d.mul, 0}), (PortRef{*inst, 0}));
+  ASSERT_EQ(d.g.exposed_params().size(), 1u);
+  EXPECT_EQ(d.g.exposed_params()[0].node, *inst);
+  EXPECT_EQ(d.g.node(*inst)->decl().params()[0].name, "left_scale");
+  EXPECT_EQ(stack.group({d.c3}, "left").message(), "there is already a group named 'left'");
+}
+
+TEST_F(Commands, HistoryIsBounded) {
+  UndoStack stack(d.g, 3);
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(stack.set_param(d.c1, "value", Value::make(static_cast<double>(i))));
+  int undone = 0;
+  while (stack.undo()) ++undone;
+  EXPECT_EQ(undone, 3);
+  EXPECT_EQ(d.g.node(d.c1)->params[0].get<double>(), 1.0);
+}
+
+}  // namespace
+}  // namespace procex
