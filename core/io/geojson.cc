@@ -1,6 +1,8 @@
 #include "core/io/geojson.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 
 #include "core/io/io_error.h"
@@ -71,6 +73,36 @@ void read_angles(const json& value, const std::string& pointer, GeoJsonFeature& 
   }
 }
 
+// A value as compact JSON text, as dump() gives it, without the serializer's
+// cost for the common cases (a property map is built for every feature).
+std::string json_text(const json& value) {
+  switch (value.type()) {
+    case json::value_t::string: {
+      const std::string& s = value.get_ref<const std::string&>();
+      const bool plain = std::none_of(s.begin(), s.end(), [](char ch) {
+        return ch == '"' || ch == '\\' || static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f;
+      });
+      if (!plain) return value.dump();
+      std::string out;
+      out.reserve(s.size() + 2);
+      out += '"';
+      out += s;
+      out += '"';
+      return out;
+    }
+    case json::value_t::boolean:
+      return value.get<bool>() ? "true" : "false";
+    case json::value_t::null:
+      return "null";
+    case json::value_t::number_integer:
+      return std::to_string(value.get<std::int64_t>());
+    case json::value_t::number_unsigned:
+      return std::to_string(value.get<std::uint64_t>());
+    default:
+      return value.dump();
+  }
+}
+
 std::string feature_id(const json& feature, std::size_t index) {
   auto text_of = [](const json& v) -> std::string {
     if (v.is_string()) return v.get<std::string>();
@@ -96,7 +128,7 @@ void read_feature(const json& feature, const std::string& pointer, const GeoJson
   const auto props = feature.find("properties");
   if (props != feature.end() && !props->is_null()) {
     if (!props->is_object()) throw ValueProblem{pointer + "/properties", "properties must be an object or null"};
-    for (const auto& [key, value] : props->items()) out.properties.emplace(key, value.dump());
+    for (const auto& [key, value] : props->items()) out.properties.emplace_hint(out.properties.end(), key, json_text(value));
   }
   const auto geometry = feature.find("geometry");
   if (geometry == feature.end()) throw ValueProblem{pointer + "/geometry", "the feature has no geometry"};

@@ -46,7 +46,10 @@ TEST(Validate, FlippedFaceIsNotOriented) {
     return s;
   }());
   std::vector<Mesh::VertexHandle> copies;
-  for (int v : {4, 5, 6, 7}) copies.push_back(mesh.add_vertex(mesh.point(Mesh::VertexHandle(v))));
+  for (int v : {4, 5, 6, 7}) {
+    const Mesh::Point p = mesh.point(Mesh::VertexHandle(v));  // a copy: add_vertex may reallocate the points
+    copies.push_back(mesh.add_vertex(p));
+  }
   std::reverse(copies.begin(), copies.end());
   ASSERT_TRUE(mesh.add_face(copies).is_valid());
   const ValidationReport r = validate(mesh);
