@@ -1,18 +1,8 @@
 #include "core/sweep/ambiguity.h"
 
-#include <cmath>
-
-#include <glm/geometric.hpp>
-
 namespace procex::engine {
 
-bool ambiguous(const State& st, int c) {
-  const Corner& k = st.corners[c];
-  if (k.guide) return false;
-  const Edge& a = st.edges[k.prev_edge];
-  const Edge& b = st.edges[k.next_edge];
-  return std::abs(cross(a.dir, b.dir)) < Tolerances::parallel_sin && glm::dot(a.dir, b.dir) > 0.0;
-}
+bool ambiguous(const State& st, int c) { return st.corners[c].motion == Motion::Ambiguous; }
 
 std::vector<int> resolve_ambiguity(State& st, int c) {
   std::vector<int> made;

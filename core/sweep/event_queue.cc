@@ -1,5 +1,9 @@
 #include "core/sweep/event_queue.h"
 
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
 namespace procex::engine {
 
 void EventQueue::push(State& st, const Candidate& c) {
@@ -13,24 +17,39 @@ void EventQueue::push(State& st, const Candidate& c) {
 void EventQueue::schedule_edge_event(State& st, int c) {
   const Corner& k = st.corners[c];
   const int n = k.next;
-  if (n == kNone || n == c || k.next_edge == st.corners[n].next_edge) return;
-  const Plane& shared = st.edges[k.next_edge].plane;
-  if (auto p = meet3(st.plane_before(c), shared, st.plane_after(n), Tolerances::singular_det)) {
-    push(st, {p->z, {p->x, p->y}, c, n, kNone});
-  }
+  if (n == kNone || n == c) return;
+  // The span between c and n runs along the edge's direction; it closes when
+  // its length along that direction reaches zero.
+  const glm::dvec2 d = st.edges[k.next_edge].dir;
+  const double z = st.height;
+  const double length = glm::dot(st.position(n, z) - st.position(c, z), d);
+  const double rate = glm::dot(st.corners[n].velocity - k.velocity, d);
+  if (!(rate < 0.0)) return;
+  // Two corners just made at one collision are that collision's result, not a new event.
+  if (std::abs(length) <= st.tol().position() && k.base_z >= z - st.tol().height() &&
+      st.corners[n].base_z >= z - st.tol().height())
+    return;
+  const double at = z - length / rate;
+  push(st, {at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
 }
 
 void EventQueue::schedule(State& st, int c) {
   schedule_edge_event(st, c);
   const Corner& k = st.corners[c];
-  if (!st.any_outward && !k.guide && !st.reflex(c)) return;
-  const Plane& a = st.plane_before(c);
-  const Plane& b = st.edges[k.next_edge].plane;
+  if (!st.any_outward && k.motion == Motion::Regular && !st.reflex(c)) return;
+  const double z = st.height;
+  const glm::dvec2 p = st.position(c, z);
   for (int e = 0; e < static_cast<int>(st.edges.size()); ++e) {
     if (e == k.prev_edge || e == k.next_edge || st.spans(e).empty()) continue;
-    if (auto p = meet3(a, b, st.edges[e].plane, Tolerances::singular_det)) {
-      push(st, {p->z, {p->x, p->y}, c, kNone, e});
-    }
+    // Signed distance from the edge's line (positive inside) shrinks at `rate`.
+    const Plane& pl = st.edges[e].plane;
+    const double rate = glm::dot(pl.n, k.velocity) - pl.k;
+    if (!(rate < 0.0)) continue;
+    const double distance = pl.signed_distance(p, z);
+    // A corner just made on this edge's line made it there in the event that made it.
+    if (std::abs(distance) <= st.tol().position() && k.base_z >= z - st.tol().height()) continue;
+    const double at = z - distance / rate;
+    push(st, {at, st.position(c, at), c, kNone, e});
   }
 }
 

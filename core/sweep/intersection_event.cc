@@ -144,11 +144,17 @@ bool close_if_degenerate(State& st, int start) {
   std::vector<std::uint32_t> v;
   std::vector<double> along;
   for (int x : loop) {
+    // Corners meeting at one point of the line share its vertex.
     const glm::dvec2 px = st.position(x, st.height);
-    std::uint32_t id = st.vertex_now(x);
-    for (std::size_t j = 0; j < v.size(); ++j)
-      if (glm::length(glm::dvec2(st.vertices[v[j]]) - px) <= st.tol().position()) id = v[j];
-    v.push_back(id);
+    auto same = std::find_if(v.begin(), v.end(), [&](std::uint32_t u) {
+      return glm::length(glm::dvec2(st.vertices[u]) - px) <= st.tol().position();
+    });
+    if (same != v.end()) {
+      st.emit_trajectory(x, *same);
+      v.push_back(*same);
+    } else {
+      v.push_back(st.vertex_now(x));
+    }
     along.push_back(glm::dot(px, d0));
   }
   for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -209,8 +215,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   auto participates = [&](int e) { return std::find(edges.begin(), edges.end(), e) != edges.end(); };
   auto is_at_p = [&](int c) {
     const Corner& k = st.corners[c];
-    if (!k.guide && participates(k.prev_edge) && participates(k.next_edge) &&
-        std::abs(cross(st.edges[k.prev_edge].dir, st.edges[k.next_edge].dir)) > Tolerances::parallel_sin)
+    if (k.motion == Motion::Regular && participates(k.prev_edge) && participates(k.next_edge))
       return true;
     return glm::length(st.position(c, z) - p) <= near;
   };
@@ -242,7 +247,6 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   }
 
   const std::uint32_t v = st.add_vertex(meeting_point(st, edges, p, near));
-  if (getenv("PXTRACE")) { fprintf(stderr, "cluster v%u h=%.12g p=(%.9f,%.9f) atP:", v, st.height, p.x, p.y); for (int c : at_p) fprintf(stderr, " c%d(%d>%d)", c, st.corners[c].prev_edge, st.corners[c].next_edge); fprintf(stderr, " chains:"); for (auto& ch : chains) fprintf(stderr, " [%d..%d]", ch.in_edge, ch.out_edge); fprintf(stderr, "\n"); }
   for (int c : at_p) {
     st.emit_trajectory(c, v);
     st.corners[c].alive = false;
@@ -267,13 +271,29 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (a.in != b.in) return !a.in;  // zero-width wedges count as inside: they pinch off
     return a.chain < b.chain;
   });
-  // Near-equal angles: put outgoing before incoming, as for exact ties.
-  const double tie = 1e-12;
-  for (std::size_t i = 0; i + 1 < rays.size(); ++i)
-    if (rays[i].in && !rays[i + 1].in && rays[i + 1].angle - rays[i].angle < tie) std::swap(rays[i], rays[i + 1]);
-  if (rays.size() >= 2 && rays.back().in && !rays.front().in &&
-      rays.front().angle + 2.0 * M_PI - rays.back().angle < tie) {
-    std::rotate(rays.begin(), rays.begin() + 1, rays.end());
+  // Rays around a point alternate outgoing, incoming. Where rounding swapped
+  // two nearly parallel rays (a sliver of no width), put the outgoing first,
+  // as for exact ties, smallest angular gap first.
+  auto alternates = [&] {
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      if (rays[i].in == rays[(i + 1) % rays.size()].in) return false;
+    return true;
+  };
+  for (std::size_t fixes = 0; !alternates() && fixes < rays.size(); ++fixes) {
+    std::size_t best = rays.size();
+    double best_gap = Tolerances::sliver_angle;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const Ray& a = rays[i];
+      const Ray& b = rays[(i + 1) % rays.size()];
+      double gap = b.angle - a.angle;
+      if (gap < 0.0) gap += 2.0 * M_PI;
+      if (a.in && !b.in && gap <= best_gap) {
+        best_gap = gap;
+        best = i;
+      }
+    }
+    if (best == rays.size()) break;
+    std::swap(rays[best], rays[(best + 1) % rays.size()]);
   }
   std::size_t first_out = 0;
   while (first_out < rays.size() && rays[first_out].in) ++first_out;
@@ -281,7 +301,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   for (std::size_t i = 0; i < rays.size(); i += 2) {
     const Ray& out = rays[(first_out + i) % rays.size()];
     const Ray& in = rays[(first_out + i + 1) % rays.size()];
-    if (out.in || !in.in) { if (getenv("PXDEBUG")) { for (auto& r : rays) fprintf(stderr, "ray %.17g in=%d chain=%d\n", r.angle, r.in, r.chain); for (auto& c : chains) fprintf(stderr, "chain in_e=%d in_c=%d out_e=%d out_c=%d\n", c.in_edge, c.in_corner, c.out_edge, c.out_corner);} fail(st, "chains do not alternate around the collision", p, edges); }
+    if (out.in || !in.in) fail(st, "chains do not alternate around the collision", p, edges);
     const Chain& cin = chains[in.chain];
     const Chain& cout = chains[out.chain];
     const int n = st.add_corner(cin.in_edge, cout.out_edge, v);

@@ -30,13 +30,26 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
   c.prev_edge = prev_edge;
   c.next_edge = next_edge;
   c.origin = origin;
-  const Edge& a = edges[prev_edge];
-  const Edge& b = edges[next_edge];
-  // Parallel, same direction, same plane: the corner slides perpendicular to them.
-  if (std::abs(cross(a.dir, b.dir)) < Tolerances::parallel_sin && glm::dot(a.dir, b.dir) > 0.0 &&
-      std::abs(a.plane.k - b.plane.k) <= Tolerances::same_slope * (1.0 + std::abs(a.plane.k))) {
-    c.guide = Plane::vertical(glm::dvec2(vertices[origin]), a.dir);
+  c.base = glm::dvec2(vertices[origin]);
+  c.base_z = vertices[origin].z;
+  const Plane& a = edges[prev_edge].plane;
+  const Plane& b = edges[next_edge].plane;
+  const bool same_direction = glm::dot(edges[prev_edge].dir, edges[next_edge].dir) > 0.0;
+  // Differentiating n.x - k z = c: the velocity v solves n_a.v = k_a, n_b.v = k_b.
+  const double det = cross(a.n, b.n);
+  if (std::abs(det) > Tolerances::parallel_sin) {
+    c.velocity = {(a.k * b.n.y - b.k * a.n.y) / det, (a.n.x * b.k - b.n.x * a.k) / det};
+    if (glm::length(c.velocity) > Tolerances::max_speed * (1.0 + std::abs(a.k) + std::abs(b.k)))
+      c.motion = same_direction ? Motion::Ambiguous : Motion::Ridge;
+  } else if (!same_direction) {
+    c.motion = Motion::Ridge;
+  } else if (std::abs(a.k - b.k) <= Tolerances::same_slope * (1.0 + std::abs(a.k))) {
+    c.motion = Motion::Parallel;
+    c.velocity = a.k * a.n;
+  } else {
+    c.motion = Motion::Ambiguous;
   }
+  if (c.motion == Motion::Ambiguous || c.motion == Motion::Ridge) c.velocity = glm::dvec2(0.0);
   const int id = static_cast<int>(corners.size());
   corners.push_back(c);
   edges[next_edge].spans.push_back(id);
@@ -46,13 +59,6 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
 std::uint32_t State::add_vertex(glm::dvec3 p) {
   vertices.push_back(p);
   return static_cast<std::uint32_t>(vertices.size() - 1);
-}
-
-glm::dvec2 State::position(int c, double z) const {
-  if (auto p = meet2(plane_before(c), edges[corners[c].next_edge].plane, z, Tolerances::parallel_sin)) return *p;
-  // Anti-parallel edges (a ridge or a spike): the corner does not move in the
-  // plan any more; it only exists at the height it was made.
-  return glm::dvec2(vertices[corners[c].origin]);
 }
 
 bool State::reflex(int c) const {

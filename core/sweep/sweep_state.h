@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "core/mesh/surface.h"
@@ -26,14 +25,25 @@ struct Edge {
   std::vector<int> spans;    // corners s with s.next_edge == this (maybe stale; filter)
 };
 
-// A corner: the moving point between prev_edge and next_edge on the sweep plane.
+// How a corner moves, fixed when it is made from its two edges' planes.
+enum class Motion : std::uint8_t {
+  Regular,    // along the line where the two planes meet
+  Parallel,   // same direction, same plane: perpendicular to the edges
+  Ambiguous,  // same direction, different slopes: no direction (paper 4.5)
+  Ridge,      // opposite directions: the planes meet in a horizontal line
+};
+
+// A corner: the moving point between prev_edge and next_edge on the sweep
+// plane. It moves in a straight line from where it was made, so its position
+// at any height stays well conditioned even where its planes are nearly parallel.
 struct Corner {
   int prev_edge = kNone, next_edge = kNone;
   int prev = kNone, next = kNone;  // neighbouring corners in the loop
   std::uint32_t origin = 0;        // output vertex where this corner started
-  // Corners between parallel coplanar edges move along this vertical plane,
-  // perpendicular to the edges, instead of along the (undefined) line of the two.
-  std::optional<Plane> guide;
+  glm::dvec2 base{0.0};            // plan position at height base_z
+  double base_z = 0.0;
+  glm::dvec2 velocity{0.0};        // plan displacement per unit of height
+  Motion motion = Motion::Regular;
   bool alive = true;
 };
 
@@ -73,18 +83,11 @@ class State {
     corners[b].prev = a;
   }
 
-  // A corner moves along the line where two planes meet: its guide (if any) or
-  // its previous edge's plane, and its next edge's plane.
-  const Plane& plane_before(int c) const {
-    const Corner& k = corners[c];
-    return k.guide ? *k.guide : edges[k.prev_edge].plane;
-  }
-  const Plane& plane_after(int c) const {
-    const Corner& k = corners[c];
-    return k.guide ? *k.guide : edges[k.next_edge].plane;
-  }
   // Where a corner is on the sweep plane at height z.
-  glm::dvec2 position(int c, double z) const;
+  glm::dvec2 position(int c, double z) const {
+    const Corner& k = corners[c];
+    return k.base + (z - k.base_z) * k.velocity;
+  }
   bool reflex(int c) const;
 
   // Output: a corner's trajectory from its origin up to vertex v, shared by the

@@ -20,8 +20,12 @@ struct Tolerances {
 
   // Dimensionless: sine of the angle below which two edge directions are parallel.
   static constexpr double parallel_sin = 1e-10;
-  // Dimensionless: determinant below which three planes have no single meeting point.
-  static constexpr double singular_det = 1e-13;
+  // Radians: rays leaving a collision this close in angle may be taken in either
+  // order (the sliver between them has no width worth keeping).
+  static constexpr double sliver_angle = 1e-4;
+  // Dimensionless: a corner moving faster than this (plan distance per unit of
+  // height, relative to its planes' slopes) has no usable direction.
+  static constexpr double max_speed = 1e6;
   // Dimensionless: slopes (tan of the angle) closer than this make coplanar faces.
   static constexpr double same_slope = 1e-9;
   // Angles within 90 degrees by less than this are treated as horizontal.
