@@ -189,7 +189,8 @@ class MakeGroup final : public Command {
     std::vector<PortRef> in_sources;                         // outside sources, one body input each
     std::vector<std::pair<PortRef, std::vector<PortRef>>> out_links;  // inside source -> outside destinations
     std::set<std::string> in_names, out_names;
-    for (const auto& [to, from] : g.links()) {
+    for (const auto& link : g.links()) {
+      const PortRef to = link.first, from = link.second;
       const bool to_in = inside.count(to.node) > 0, from_in = inside.count(from.node) > 0;
       if (to_in && from_in) {
         if (Status s = body->connect(from, to); !s) return s;

@@ -409,7 +409,9 @@ struct Loader {
     auto nodes = editor->find("nodes");
     if (nodes == editor->end()) return;
     if (!nodes->is_object()) fail(file, c.ptr + "/nodes", "expected an object keyed by node id");
-    for (const auto& [key, e] : nodes->items()) {
+    for (const auto& item : nodes->items()) {
+      const std::string& key = item.key();
+      const json& e = item.value();
       Ctx n{file, c.ptr + "/nodes/" + token(key)};
       NodeId id = 0;
       if (key.empty() || key.size() > 10 || !std::all_of(key.begin(), key.end(), [](char ch) { return ch >= '0' && ch <= '9'; }) ||
