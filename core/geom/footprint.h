@@ -7,13 +7,18 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/geom/profile.h"
+
 namespace procex {
 
 // Angle in degrees from the vertical: 0 = vertical wall, positive leans inward
 // like a roof, negative leans outward, +-90 = horizontal.
+// With a profile (an index into Footprint::profiles), the edge follows it and
+// angle_deg is not used.
 struct EdgeSpec {
   double angle_deg = 45.0;
   std::int32_t id = -1;
+  int profile = -1;
 };
 
 // Outer loops run counter-clockwise, holes clockwise, islands inside holes
@@ -26,6 +31,7 @@ struct Loop {
 
 struct Footprint {
   std::vector<Loop> loops;
+  std::vector<Profile> profiles;  // shared by the edges that name them
 };
 
 // Builds a footprint from plain loops, every edge at one angle, ids numbered
