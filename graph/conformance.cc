@@ -1,5 +1,11 @@
 #include "graph/conformance.h"
 
+#include <algorithm>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "graph/evaluator.h"
@@ -64,6 +70,28 @@ Value vary_param(const ParamDecl& p) {
     }
   }
   return {};
+}
+
+std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::set<fs::path> registered;
+  for (const auto& t : NodeRegistry::global().all()) {
+    std::error_code ec;
+    registered.insert(fs::weakly_canonical(t->source_file, ec));
+  }
+  static const std::regex kRegistration(R"(^\s*PROCEX_REGISTER_NODE\()", std::regex::multiline);
+  std::vector<fs::path> missing;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".cc") continue;
+    std::ifstream in(entry.path());
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::error_code ec;
+    if (std::regex_search(text.str(), kRegistration) && !registered.count(fs::weakly_canonical(entry.path(), ec)))
+      missing.push_back(entry.path());
+  }
+  std::sort(missing.begin(), missing.end());
+  return missing;
 }
 
 std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples) {

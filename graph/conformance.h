@@ -7,6 +7,7 @@
 //                     EXPECT_EQ(check_node_type(*t, samples), std::vector<std::string>{});
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@ using SampleInputs = std::map<const ValueType*, Value>;
 
 // Problems found, one sentence each; empty when the type conforms.
 std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples);
+
+// The .cc files under `dir` (recursively) that use PROCEX_REGISTER_NODE but
+// registered nothing in NodeRegistry::global(): node files the linker dropped
+// or that are missing from the build. Empty when every node file is registered.
+std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem::path& dir);
 
 // A different valid value for the parameter (next enum choice, flipped bool,
 // a number moved within its range, ...), or an empty Value when none exists.

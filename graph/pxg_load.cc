@@ -253,27 +253,29 @@ struct Loader {
     return g;
   }
 
+  // Name, type and doc of a graph input or output.
+  template <class Port>
+  Port read_port(const json& e, const Ctx& c) const {
+    if (!e.is_object()) fail(c.file, c.ptr, "expected an object");
+    Port p;
+    p.name = string_member(e, "name", c);
+    p.type = &value_type_named(string_member(e, "type", c), Ctx{c.file, c.ptr + "/type"});
+    p.doc = string_member(e, "doc", c, false);
+    return p;
+  }
+
   void read_interface(Graph& g, const json& j, const std::string& base, const std::string& file) {
     const json& inputs = array_member(j, "inputs", Ctx{file, base}, 4096);
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       Ctx c{file, base + "/inputs/" + std::to_string(i)};
-      if (!inputs[i].is_object()) fail(file, c.ptr, "expected an object");
-      GraphInput in;
-      in.name = string_member(inputs[i], "name", c);
-      in.type = &value_type_named(string_member(inputs[i], "type", c), Ctx{file, c.ptr + "/type"});
-      in.doc = string_member(inputs[i], "doc", c, false);
+      GraphInput in = read_port<GraphInput>(inputs[i], c);
       if (auto d = inputs[i].find("default"); d != inputs[i].end()) in.default_value = value_from(*in.type, *d, Ctx{file, c.ptr + "/default"});
       if (Status s = g.add_input(std::move(in)); !s) fail(file, c.ptr, s.message());
     }
     const json& outputs = array_member(j, "outputs", Ctx{file, base}, 4096);
     for (std::size_t i = 0; i < outputs.size(); ++i) {
       Ctx c{file, base + "/outputs/" + std::to_string(i)};
-      if (!outputs[i].is_object()) fail(file, c.ptr, "expected an object");
-      GraphOutput out;
-      out.name = string_member(outputs[i], "name", c);
-      out.type = &value_type_named(string_member(outputs[i], "type", c), Ctx{file, c.ptr + "/type"});
-      out.doc = string_member(outputs[i], "doc", c, false);
-      if (Status s = g.add_output(std::move(out)); !s) fail(file, c.ptr, s.message());
+      if (Status s = g.add_output(read_port<GraphOutput>(outputs[i], c)); !s) fail(file, c.ptr, s.message());
     }
   }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
