@@ -1,25 +1,59 @@
 #include "core/sweep/ambiguity.h"
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
 namespace procex::engine {
 
 bool ambiguous(const State& st, int c) { return st.corners[c].motion == Motion::Ambiguous; }
 
+namespace {
+
+// Emits from -> to in a face, passing through every vertex of `line` that lies
+// strictly between them: the steps of one resolution share a line, and faces
+// must meet vertex to vertex along it.
+void emit_along(State& st, int face, std::uint32_t from, std::uint32_t to, const std::vector<std::uint32_t>& line) {
+  if (from == to) return;
+  const glm::dvec3 a = st.vertices[from], d = st.vertices[to] - a;
+  const double len2 = glm::dot(d, d);
+  std::vector<std::pair<double, std::uint32_t>> between;
+  for (std::uint32_t v : line) {
+    if (v == from || v == to) continue;
+    const double t = glm::dot(st.vertices[v] - a, d) / len2;
+    if (t > 0.0 && t < 1.0) between.push_back({t, v});
+  }
+  std::sort(between.begin(), between.end());
+  auto& out = st.faces[face].half_edges;
+  for (const auto& [t, v] : between) {
+    if (v == from) continue;
+    out.push_back({from, v});
+    from = v;
+  }
+  out.push_back({from, to});
+}
+
+}  // namespace
+
 std::vector<int> resolve_ambiguity(State& st, int c) {
   std::vector<int> made;
+  std::vector<std::uint32_t> line{st.corners[c].origin};
   // Each step removes one span, so a loop of n corners settles in n steps.
   for (std::size_t guard = 0; guard <= st.corners.size() && ambiguous(st, c); ++guard) {
     const Corner k = st.corners[c];
+    const int face_a = st.edges[k.prev_edge].face, face_b = st.edges[k.next_edge].face;
     const double ka = st.edges[k.prev_edge].plane.k, kb = st.edges[k.next_edge].plane.k;
     // The plane leaning in less keeps more volume under it.
     const bool keep_prev = st.options().ambiguity == Ambiguity::MaximizeVolume ? ka <= kb : ka >= kb;
     st.corners[c].alive = false;
     if (keep_prev) {
-      // The previous edge's plane runs on over the next edge's span, which ends here.
+      // The previous edge's plane runs on over the next edge's span, which ends
+      // here; the horizontal step is the top of one face and the foot of the other.
       const int t = k.next;
       const std::uint32_t vt = st.vertex_now(t);
-      st.emit_top(k.next_edge, k.origin, vt);
-      // The horizontal step now also bounds the kept face from below.
-      st.faces[st.edges[k.prev_edge].face].half_edges.push_back({k.origin, vt});
+      line.push_back(vt);
+      emit_along(st, face_b, vt, k.origin, line);
+      emit_along(st, face_a, k.origin, vt, line);
       const int r = st.add_corner(k.prev_edge, st.corners[t].next_edge, vt);
       const int after = st.corners[t].next;
       st.corners[t].alive = false;
@@ -29,8 +63,9 @@ std::vector<int> resolve_ambiguity(State& st, int c) {
     } else {
       const int s = k.prev;
       const std::uint32_t vs = st.vertex_now(s);
-      st.emit_top(k.prev_edge, vs, k.origin);
-      st.faces[st.edges[k.next_edge].face].half_edges.push_back({vs, k.origin});
+      line.push_back(vs);
+      emit_along(st, face_a, k.origin, vs, line);
+      emit_along(st, face_b, vs, k.origin, line);
       const int r = st.add_corner(st.corners[s].prev_edge, k.next_edge, vs);
       const int before = st.corners[s].prev;
       st.corners[s].alive = false;

@@ -36,6 +36,32 @@ double slope_of(double angle_deg) {
   return std::clamp(k, -engine::Tolerances::max_slope, engine::Tolerances::max_slope);
 }
 
+// Collinear neighbouring edges with different slopes are the ambiguous case
+// (paper 4.5) from the start: the whole run takes the slope the volume rule
+// picks, so each edge keeps its own (coplanar) face.
+void unify_collinear_slopes(const std::vector<glm::dvec2>& dirs, std::vector<double>& slopes, Ambiguity rule) {
+  const std::size_t n = dirs.size();
+  auto straight = [&](std::size_t j) {  // the corner at the start of edge j
+    const glm::dvec2 a = dirs[(j + n - 1) % n], b = dirs[j];
+    return std::abs(engine::cross(a, b)) <= engine::Tolerances::parallel_sin && glm::dot(a, b) > 0.0;
+  };
+  std::size_t start = 0;
+  while (start < n && straight(start)) ++start;
+  if (start == n) return;  // no corner at all: not a polygon, refused elsewhere
+  for (std::size_t i = 0; i < n;) {
+    const std::size_t first = (start + i) % n;
+    std::size_t len = 1;
+    while (i + len < n && straight((first + len) % n)) ++len;
+    double pick = slopes[first];
+    for (std::size_t m = 0; m < len; ++m) {
+      const double k = slopes[(first + m) % n];
+      pick = rule == Ambiguity::MaximizeVolume ? std::min(pick, k) : std::max(pick, k);
+    }
+    for (std::size_t m = 0; m < len; ++m) slopes[(first + m) % n] = pick;
+    i += len;
+  }
+}
+
 void load(engine::State& st, const Footprint& fp) {
   engine::FaceGroup base;
   base.kind = FaceKind::Base;
@@ -50,11 +76,18 @@ void load(engine::State& st, const Footprint& fp) {
     const auto v0 = static_cast<std::uint32_t>(st.vertices.size());
     for (glm::dvec2 p : loop.points) st.add_vertex({p, 0.0});
     const int e0 = static_cast<int>(st.edges.size());
+    std::vector<glm::dvec2> dirs(n);
+    std::vector<double> slopes(n);
     for (std::size_t j = 0; j < n; ++j) {
-      const glm::dvec2 a = loop.points[j], b = loop.points[(j + 1) % n];
-      const double len = glm::length(b - a);
+      const glm::dvec2 d = loop.points[(j + 1) % n] - loop.points[j];
+      const double len = glm::length(d);
       if (!(len > 0.0)) throw InputError("zero-length edge", static_cast<int>(li), static_cast<int>(j));
-      st.add_edge(a, 0.0, (b - a) / len, slope_of(loop.edges[j].angle_deg), loop.edges[j].id);
+      dirs[j] = d / len;
+      slopes[j] = slope_of(loop.edges[j].angle_deg);
+    }
+    unify_collinear_slopes(dirs, slopes, st.options().ambiguity);
+    for (std::size_t j = 0; j < n; ++j) {
+      st.add_edge(loop.points[j], 0.0, dirs[j], slopes[j], loop.edges[j].id);
       const auto va = v0 + static_cast<std::uint32_t>(j), vb = v0 + static_cast<std::uint32_t>((j + 1) % n);
       st.faces[st.edges.back().face].half_edges.push_back({va, vb});
       st.faces[st.base_face].half_edges.push_back({vb, va});
@@ -74,7 +107,8 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   engine::State st(tolerances_for(footprint), options);
   load(st, footprint);
   engine::EventQueue queue;
-  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) queue.schedule(st, c);
+  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c)
+    if (st.corners[c].alive) queue.schedule(st, c);
 
   const std::size_t n = st.corners.size();
   const std::size_t budget = 64 * n * n + 4096;  // generous; a runaway sweep must stop
