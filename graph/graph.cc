@@ -272,6 +272,12 @@ Status Graph::unexpose_param(std::string_view name) {
   return Status::ok();
 }
 
+Status Graph::set_exposed(std::string_view name, Value v) {
+  for (const ExposedParam& e : exposed_)
+    if (e.name == name) return set_param(e.node, e.param, std::move(v));
+  return Status::error("no exposed parameter " + q(name));
+}
+
 Status Graph::add_group(std::string name, std::shared_ptr<const Graph> body, std::string file) {
   if (!is_identifier(name)) return Status::error("group name " + q(name) + " is not an identifier ([a-z][a-z0-9_]*)");
   if (groups_.count(name)) return Status::error("there is already a group named " + q(name));

@@ -146,6 +146,8 @@ class Graph {
 
   Status expose_param(ExposedParam p);
   Status unexpose_param(std::string_view name);
+  // Sets the inner parameter behind an exposed name (the CLI's --set height=12).
+  Status set_exposed(std::string_view name, Value v);
   const std::vector<ExposedParam>& exposed_params() const { return exposed_; }
 
   // ---- groups ----

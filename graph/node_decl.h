@@ -90,6 +90,11 @@ class ParamBuilder {
 // cheap and depend only on parameters.
 using PassThroughFn = std::optional<std::size_t> (*)(const std::vector<Value>& params, std::size_t output);
 
+// Upgrades the parameters a file saved for an older version of this node type
+// (an object of name -> JSON value) in place: rename, convert, drop. Throw
+// std::invalid_argument to refuse. Called by the .pxg loader before it reads them.
+using UpgradeFn = void (*)(int saved_version, nlohmann::json& params);
+
 class NodeDecl {
  public:
   NodeDecl() = default;
@@ -129,6 +134,10 @@ class NodeDecl {
     pass_through_ = fn;
     return *this;
   }
+  NodeDecl& upgrade(UpgradeFn fn) {
+    upgrade_ = fn;
+    return *this;
+  }
 
   const std::string& type_name() const { return type_name_; }
   int version() const { return version_; }
@@ -138,6 +147,7 @@ class NodeDecl {
   const std::vector<PortDecl>& outputs() const { return outputs_; }
   const std::vector<ParamDecl>& params() const { return params_; }
   PassThroughFn pass_through() const { return pass_through_; }
+  UpgradeFn upgrade() const { return upgrade_; }
 
   // Index by name, or nullopt.
   std::optional<std::size_t> input_index(std::string_view name) const;
@@ -161,6 +171,7 @@ class NodeDecl {
   std::vector<PortDecl> inputs_, outputs_;
   std::vector<ParamDecl> params_;
   PassThroughFn pass_through_ = nullptr;
+  UpgradeFn upgrade_ = nullptr;
 };
 
 // Names of ports, parameters and graph inputs/outputs: [a-z0-9_]+, starting with a letter.

@@ -294,6 +294,7 @@ struct Loader {
         fail(file, c.ptr + "/id", "duplicate node id " + std::to_string(id) + " (also at " + prev->second + ")");
       seen.emplace(id, c.ptr);
       Result<NodeId> added = NodeId{0};
+      int saved_version = 1;
       if (e.contains("group")) {
         const std::string group = string_member(e, "group", c);
         added = g.add_group_node(group, id);
@@ -314,20 +315,34 @@ struct Loader {
         if (v < 1) fail(file, c.ptr + "/version", "node versions start at 1");
         if (v < t->version())
           warnings.push_back(file + ": " + c.ptr + ": '" + type + "' saved at version " + std::to_string(v) + ", now " +
-                             std::to_string(t->version()) + "; parameters were matched by name");
+                             std::to_string(t->version()) +
+                             (t->decl.upgrade() ? "; parameters were upgraded" : "; parameters were matched by name"));
+        saved_version = static_cast<int>(v);
         added = g.add_node(t, id);
         if (!added) fail(file, c.ptr, added.message());
       }
-      read_params(g, id, e, c);
+      read_params(g, id, e, c, saved_version);
     }
   }
 
-  void read_params(Graph& g, NodeId id, const json& e, const Ctx& c) {
-    auto params = e.find("params");
-    if (params == e.end()) return;
+  void read_params(Graph& g, NodeId id, const json& e, const Ctx& c, int saved_version) {
+    auto found = e.find("params");
+    if (found == e.end()) return;
     const std::string ptr = c.ptr + "/params";
-    if (!params->is_object()) fail(c.file, ptr, "expected an object of parameter values");
+    if (!found->is_object()) fail(c.file, ptr, "expected an object of parameter values");
     const NodeDecl& decl = g.node(id)->decl();
+    json upgraded;
+    const json* params = &*found;
+    if (saved_version < decl.version() && decl.upgrade()) {
+      upgraded = *found;
+      try {
+        decl.upgrade()(saved_version, upgraded);
+      } catch (const std::invalid_argument& err) {
+        fail(c.file, ptr, "cannot upgrade '" + decl.type_name() + "' from version " + std::to_string(saved_version) + ": " + err.what());
+      }
+      if (!upgraded.is_object()) fail(c.file, ptr, "the upgrade of '" + decl.type_name() + "' did not leave an object");
+      params = &upgraded;
+    }
     for (const auto& [name, value] : params->items()) {
       const std::string pp = ptr + "/" + token(name);
       auto index = decl.param_index(name);

@@ -184,6 +184,20 @@ bool Value::same_content(const Value& other) const {
   return type_ == other.type_ && content_hash() == other.content_hash();
 }
 
+Result<Value> value_from_text(const ValueType& type, std::string_view text) {
+  const json parsed = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const bool bare_text_ok = type.name() == "string" || type.name() == "enum";
+  std::string refusal = "'";
+  refusal.append(text).append("' is not a ").append(type.name()).append(" value");
+  if (parsed.is_discarded() && !bare_text_ok) return Status::error(refusal);
+  const json j = bare_text_ok && !parsed.is_string() ? json(std::string(text)) : parsed;
+  try {
+    return type.from_json(j);
+  } catch (const std::invalid_argument& e) {
+    return Status::error(refusal.append(": ").append(e.what()));
+  }
+}
+
 namespace detail {
 
 void unregistered_value_type(const char* cpp_name) {

@@ -18,6 +18,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "graph/hash.h"
+#include "graph/status.h"
 
 namespace procex {
 
@@ -177,6 +178,10 @@ class Value {
   std::shared_ptr<const void> data_;
   const ValueType* type_ = nullptr;
 };
+
+// A value of `type` from command-line text: JSON ("2.5", "[1, 2]", "true"),
+// or for strings and enums also the bare text ("--set style=gothic").
+Result<Value> value_from_text(const ValueType& type, std::string_view text);
 
 // ---- implementation details of the templates above ----
 

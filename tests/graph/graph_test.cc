@@ -112,6 +112,12 @@ TEST(Graph, GroupTypesDeriveTheirDeclaration) {
   EXPECT_EQ(d.params()[0].default_value.get<double>(), 3.0);
   EXPECT_EQ(*d.params()[0].max, 100.0);
   const NodeId inst = g.add_group_node("triple").value();
+  ASSERT_TRUE(g.expose_param(ExposedParam{"outer_factor", inst, 0}));
+  EXPECT_TRUE(g.set_exposed("outer_factor", Value::make(4.0)));
+  EXPECT_EQ(g.node(inst)->params[0].get<double>(), 4.0);
+  EXPECT_EQ(g.set_exposed("outer_factor", Value::make(400.0)).message(),
+            "parameter 'factor' = 400 is outside its range [-100, 100]");
+  EXPECT_EQ(g.set_exposed("nope", Value::make(1.0)).message(), "no exposed parameter 'nope'");
   EXPECT_EQ(g.node(inst)->group, "triple");
   EXPECT_EQ(g.remove_group("triple").message(), "group 'triple' is still used by node 1");
   EXPECT_EQ(g.add_group_node("nope").message(), "no group named 'nope' in this recipe");

@@ -119,12 +119,14 @@ TEST(Pxg, Version1FilesMigrate) {
   Graph g = load_pxg(kData / "v1_diamond.pxg", options);
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[0].find("migrated from format version 1 to 2"), std::string::npos);
-  EXPECT_NE(warnings[1].find("/nodes/4: 'test.Add' saved at version 1, now 2"), std::string::npos) << warnings[1];
+  EXPECT_NE(warnings[1].find("/nodes/4: 'test.Add' saved at version 1, now 2; parameters were upgraded"), std::string::npos)
+      << warnings[1];
   EXPECT_EQ(g.node(5)->editor.comment, "left");
+  EXPECT_EQ(g.node(5)->params[0].get<double>(), 2.0);  // version 1's "factor" is version 2's "scale"
   EXPECT_EQ(g.node(7)->editor.x, 400);
   ResultCache cache;
   Evaluator ev(cache, "pxg");
-  EXPECT_EQ(ev.evaluate(g, {}).output("result")->get<double>(), 21.0);
+  EXPECT_EQ(ev.evaluate(g, {}).output("result")->get<double>(), 42.0);
   // Saving writes version 2 and reads back identically.
   const std::string v2 = to_pxg(g);
   EXPECT_NE(v2.find("\"version\": 2"), std::string::npos);

@@ -5,6 +5,8 @@
 #include <mutex>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "graph/registry.h"
 
 namespace procex::test {
@@ -32,8 +34,15 @@ void eval_const(EvalContext& ctx) {
   ctx.set_output(0, ctx.param<double>(0));
 }
 
-// test.Add: a + b (b optional) times scale.
+// test.Add: a + b (b optional) times scale. Version 1 called `scale` "factor".
+void upgrade_add(int saved_version, nlohmann::json& params) {
+  if (saved_version < 2 && params.contains("factor")) {
+    params["scale"] = params["factor"];
+    params.erase("factor");
+  }
+}
 void declare_add(NodeDecl& d) {
+  d.upgrade(upgrade_add);
   d.doc("Adds two numbers and scales the sum.").category("Test");
   d.input<double>("a");
   d.input<double>("b").optional();

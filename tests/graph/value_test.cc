@@ -87,6 +87,18 @@ TEST(Value, BadJsonSaysWhatIsWrong) {
   EXPECT_EQ(error_of(value_type<bool>(), "0"), "expected true or false, got number");
 }
 
+TEST(Value, FromCommandLineText) {
+  EXPECT_EQ(value_from_text(value_type<double>(), "2.5").value().get<double>(), 2.5);
+  EXPECT_EQ(value_from_text(value_type<std::int64_t>(), "7").value().get<std::int64_t>(), 7);
+  EXPECT_EQ(value_from_text(value_type<Vec2>(), "[1, 2]").value().get<Vec2>(), (Vec2{1, 2}));
+  EXPECT_EQ(value_from_text(value_type<std::string>(), "gothic").value().get<std::string>(), "gothic");
+  EXPECT_EQ(value_from_text(value_type<std::string>(), "12").value().get<std::string>(), "12");
+  EXPECT_EQ(value_from_text(value_type<EnumValue>(), "north").value().get<EnumValue>().choice, "north");
+  EXPECT_EQ(value_from_text(value_type<double>(), "tall").message(), "'tall' is not a float value");
+  EXPECT_EQ(value_from_text(value_type<std::int64_t>(), "1.5").message(),
+            "'1.5' is not a int value: expected an integer, got number");
+}
+
 // A type registered the way nodes/ registers its geometry.
 struct Polyline {
   std::vector<Vec2> points;
