@@ -1,0 +1,218 @@
+#include "core/io/gltf_write.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <tiny_gltf.h>
+
+#include "core/geom/convex_partition.h"
+#include "core/geom/polygon3.h"
+#include "core/io/atomic_write.h"
+#include "core/io/io_error.h"
+
+namespace procex {
+namespace {
+
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+constexpr int kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+
+template <class T>
+int add_view(tinygltf::Model& m, const std::vector<T>& data, int target) {
+  tinygltf::Buffer& buffer = m.buffers[0];
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.data.size();
+  view.byteLength = data.size() * sizeof(T);
+  view.target = target;
+  buffer.data.resize(buffer.data.size() + view.byteLength);
+  std::memcpy(buffer.data.data() + view.byteOffset, data.data(), view.byteLength);
+  m.bufferViews.push_back(view);
+  return static_cast<int>(m.bufferViews.size() - 1);
+}
+
+int add_accessor(tinygltf::Model& m, int view, int component, int type, std::size_t count) {
+  tinygltf::Accessor a;
+  a.bufferView = view;
+  a.componentType = component;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return static_cast<int>(m.accessors.size() - 1);
+}
+
+tinygltf::Model to_model(const std::vector<GltfMeshData>& meshes) {
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.asset.generator = "procex";
+  m.buffers.emplace_back();
+  std::map<std::string, int> materials;
+  tinygltf::Scene scene;
+  for (const GltfMeshData& data : meshes) {
+    tinygltf::Mesh mesh;
+    mesh.name = data.building;
+    for (const GltfPrimitiveData& p : data.primitives) {
+      if (p.indices.empty()) continue;
+      auto [it, added] = materials.try_emplace(p.tag, static_cast<int>(materials.size()));
+      if (added) {
+        tinygltf::Material mat;
+        mat.name = p.tag;
+        const auto c = tag_colour(p.tag);
+        mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
+        mat.pbrMetallicRoughness.metallicFactor = 0.0;
+        mat.pbrMetallicRoughness.roughnessFactor = 0.9;
+        m.materials.push_back(mat);
+      }
+      tinygltf::Primitive prim;
+      prim.mode = TINYGLTF_MODE_TRIANGLES;
+      prim.material = it->second;
+      prim.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(p.tag)}});
+      const std::size_t n = p.positions.size() / 3;
+      const int pos = add_accessor(m, add_view(m, p.positions, TINYGLTF_TARGET_ARRAY_BUFFER), kFloat, TINYGLTF_TYPE_VEC3, n);
+      std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
+      for (std::size_t i = 0; i < p.positions.size(); ++i) {
+        lo[i % 3] = std::min<double>(lo[i % 3], p.positions[i]);
+        hi[i % 3] = std::max<double>(hi[i % 3], p.positions[i]);
+      }
+      m.accessors[pos].minValues = lo;
+      m.accessors[pos].maxValues = hi;
+      prim.attributes["POSITION"] = pos;
+      prim.attributes["NORMAL"] =
+          add_accessor(m, add_view(m, p.normals, TINYGLTF_TARGET_ARRAY_BUFFER), kFloat, TINYGLTF_TYPE_VEC3, n);
+      prim.indices = add_accessor(m, add_view(m, p.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER), kUint,
+                                  TINYGLTF_TYPE_SCALAR, p.indices.size());
+      mesh.primitives.push_back(std::move(prim));
+    }
+    if (mesh.primitives.empty()) continue;  // glTF meshes need a primitive
+    m.meshes.push_back(std::move(mesh));
+    tinygltf::Node node;
+    node.name = data.building;
+    node.mesh = static_cast<int>(m.meshes.size() - 1);
+    node.extras = tinygltf::Value(tinygltf::Value::Object{{"building", tinygltf::Value(data.building)},
+                                                          {"feature", tinygltf::Value(static_cast<int>(data.feature))}});
+    m.nodes.push_back(std::move(node));
+    scene.nodes.push_back(static_cast<int>(m.nodes.size() - 1));
+  }
+  if (m.buffers[0].data.empty()) m.buffers.clear();
+  m.scenes.push_back(std::move(scene));
+  m.defaultScene = 0;
+  return m;
+}
+
+[[noreturn]] void bad(const std::filesystem::path& path, const std::string& what) {
+  throw IoError("'" + path.string() + "' is not a .glb as procex writes it: " + what, path.string());
+}
+
+template <class T>
+std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component, int type,
+                             const std::filesystem::path& path) {
+  if (index < 0 || static_cast<std::size_t>(index) >= m.accessors.size()) bad(path, "accessor " + std::to_string(index) + " is missing");
+  const tinygltf::Accessor& a = m.accessors[static_cast<std::size_t>(index)];
+  const std::string where = "accessor " + std::to_string(index);
+  if (a.componentType != component || a.type != type) bad(path, where + " has an unexpected component type");
+  if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= m.bufferViews.size()) bad(path, where + " has no buffer view");
+  const tinygltf::BufferView& v = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
+  if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() || v.byteStride != 0)
+    bad(path, where + ": unexpected buffer or stride");
+  const std::size_t per = (type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
+  const std::size_t bytes = a.count * per * sizeof(T);
+  const auto& data = m.buffers[static_cast<std::size_t>(v.buffer)].data;
+  if (a.byteOffset + bytes > v.byteLength || v.byteOffset + v.byteLength > data.size()) bad(path, where + " runs past its buffer");
+  std::vector<T> out(a.count * per);
+  std::memcpy(out.data(), data.data() + v.byteOffset + a.byteOffset, bytes);
+  return out;
+}
+
+}  // namespace
+
+std::array<double, 3> tag_colour(const std::string& tag) {
+  static const std::map<std::string, std::array<double, 3>> kKnown = {
+      {"wall", {0.82, 0.78, 0.70}}, {"roof", {0.62, 0.22, 0.16}}, {"gable", {0.78, 0.72, 0.62}},
+      {"soffit", {0.45, 0.42, 0.40}}, {"base", {0.30, 0.30, 0.30}}, {"cap", {0.55, 0.55, 0.58}}};
+  if (auto it = kKnown.find(tag); it != kKnown.end()) return it->second;
+  std::uint32_t h = 2166136261u;  // FNV-1a: the same grey in every run
+  for (unsigned char c : tag) h = (h ^ c) * 16777619u;
+  const double g = 0.35 + 0.5 * (h % 1000) / 1000.0;
+  return {g, g, g};
+}
+
+GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
+  const Mesh& mesh = *view.mesh;
+  GltfMeshData out;
+  out.building = view.building;
+  out.feature = view.feature;
+  std::vector<int> primitive_of_tag(view.tags.size(), -1);
+  std::vector<glm::dvec3> pts;
+  for (const auto f : mesh.faces()) {
+    pts.clear();
+    for (const auto v : mesh.fv_range(f)) {
+      const Mesh::Point& p = mesh.point(v);
+      pts.push_back({p[0], p[1], p[2]});
+    }
+    const glm::dvec3 n = newell_normal(pts);
+    const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (!(len > 0)) continue;
+    const std::uint32_t tag = view.face_tags[static_cast<std::size_t>(f.idx())];
+    int& slot = primitive_of_tag[tag];
+    if (slot < 0) {
+      slot = static_cast<int>(out.primitives.size());
+      out.primitives.push_back({view.tags[tag], {}, {}, {}});
+    }
+    GltfPrimitiveData& prim = out.primitives[static_cast<std::size_t>(slot)];
+    const auto base = static_cast<std::uint32_t>(prim.positions.size() / 3);
+    for (const glm::dvec3& p : pts) {
+      prim.positions.insert(prim.positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+      prim.normals.insert(prim.normals.end(), {static_cast<float>(n.x / len), static_cast<float>(n.y / len),
+                                               static_cast<float>(n.z / len)});
+    }
+    for (const auto& piece : convex_partition({drop_axis(pts, n)}))
+      for (std::size_t k = 1; k + 1 < piece.size(); ++k)
+        prim.indices.insert(prim.indices.end(), {base + piece[0], base + piece[k], base + piece[k + 1]});
+  }
+  return out;
+}
+
+void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
+  const tinygltf::Model model = to_model(meshes);
+  std::ostringstream bytes;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/false, /*writeBinary=*/true))
+    throw IoError("cannot encode '" + path.string() + "' as glTF", path.string());
+  write_file_atomically(path, bytes.str());
+}
+
+std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open '" + path.string() + "'", path.string());
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                   static_cast<unsigned int>(bytes.size())))
+    throw IoError("cannot read '" + path.string() + "' as glTF binary: " + err, path.string());
+  std::vector<GltfMeshData> out;
+  if (m.scenes.empty()) return out;
+  for (int ni : m.scenes[0].nodes) {
+    if (ni < 0 || static_cast<std::size_t>(ni) >= m.nodes.size()) bad(path, "scene names missing node " + std::to_string(ni));
+    const tinygltf::Node& node = m.nodes[static_cast<std::size_t>(ni)];
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= m.meshes.size()) bad(path, "node " + std::to_string(ni) + " has no mesh");
+    GltfMeshData& data = out.emplace_back();
+    if (node.extras.Has("building")) data.building = node.extras.Get("building").Get<std::string>();
+    if (node.extras.Has("feature")) data.feature = node.extras.Get("feature").GetNumberAsInt();
+    for (const tinygltf::Primitive& p : m.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+      GltfPrimitiveData& prim = data.primitives.emplace_back();
+      if (p.extras.Has("tag")) prim.tag = p.extras.Get("tag").Get<std::string>();
+      const auto pos = p.attributes.find("POSITION"), nor = p.attributes.find("NORMAL");
+      if (pos == p.attributes.end() || nor == p.attributes.end()) bad(path, "a primitive lacks POSITION or NORMAL");
+      prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
+      prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
+      prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
+    }
+  }
+  return out;
+}
+
+}  // namespace procex

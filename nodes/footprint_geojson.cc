@@ -1,0 +1,45 @@
+// Footprint GeoJSON: one feature of a GeoJSON file.
+#include "core/io/geojson.h"
+#include "core/io/io_error.h"
+#include "graph/registry.h"
+#include "nodes/support/recipe_files.h"
+#include "nodes/values.h"
+
+namespace procex {
+namespace {
+
+void declare(NodeDecl& d) {
+  d.doc("One Polygon or MultiPolygon feature of a GeoJSON FeatureCollection (coordinates in metres), chosen by id "
+        "or, when the id is empty, by position. Edge ids run 0, 1, 2... over the rings in file order. "
+        "(For whole files use `procex batch`, which binds each feature to the graph input `footprint`.)")
+      .category("Footprint");
+  d.param<std::string>("file").default_value(std::string("footprints/sample_block.geojson"))
+      .doc("path, relative to the recipe's folder");
+  d.param<std::string>("id").default_value(std::string()).doc("the feature's id (empty: use index)");
+  d.param<std::int64_t>("index").default_value<std::int64_t>(0).min(0).doc("position in the features array");
+  d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
+      .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)");
+  d.output<Footprint>("footprint");
+}
+
+void evaluate(EvalContext& ctx) {
+  const std::string& file = ctx.param<std::string>(0);
+  const std::string& id = ctx.param<std::string>(1);
+  const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(2));
+  GeoJsonCollection collection;
+  try {
+    collection = read_geojson_file(resolve_recipe_path(file));
+  } catch (const IoError& e) {
+    return ctx.error(e.what());
+  }
+  for (const GeoJsonFeatureError& e : collection.errors)
+    if (id.empty() ? e.index == index : e.id == id) return ctx.error(file + ": " + e.message);
+  for (const GeoJsonFeature& f : collection.features)
+    if (id.empty() ? f.index == index : f.id == id) return ctx.set_output(0, to_footprint(f, ctx.param<double>(3)));
+  ctx.error(file + ": no feature " + (id.empty() ? "at index " + std::to_string(index) : "with id '" + id + "'") +
+            " (" + std::to_string(collection.features.size() + collection.errors.size()) + " features)");
+}
+
+}  // namespace
+PROCEX_REGISTER_NODE("Footprint GeoJSON", 1, declare, evaluate);
+}  // namespace procex

@@ -1,0 +1,88 @@
+#include "nodes/support/extrusion.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/geom/error.h"
+#include "core/geom/prepare.h"
+#include "core/mesh/mesh.h"
+
+namespace procex {
+namespace {
+
+// Side faces without a profile: vertical ones are walls, the rest roofs.
+const char* tag_of_angle(double angle_deg) { return angle_deg == 0.0 ? "wall" : "roof"; }
+
+// The stand-in for profile support (see extrusion.h).
+void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>& notes) {
+  std::optional<double> top;
+  for (Loop& loop : fp.loops)
+    for (EdgeSpec& e : loop.edges) {
+      if (e.profile < 0) continue;
+      const Profile& p = fp.profiles[static_cast<std::size_t>(e.profile)];
+      e.angle_deg = p.angle_deg(0);
+      top = std::max(top.value_or(p.points.back().y), p.points.back().y);
+    }
+  if (!top) return;
+  options.max_height = std::min(options.max_height.value_or(*top), *top);
+  for (const Profile& p : fp.profiles)
+    if (p.segments() > 1) {
+      notes.push_back("profile '" + p.name + "': the sweep follows only its first segment for now");
+      break;
+    }
+}
+
+std::string side_tag(const EdgeSpec& e, const std::vector<Profile>& profiles) {
+  if (e.profile >= 0) {
+    const Profile& p = profiles[static_cast<std::size_t>(e.profile)];
+    if (!p.tags.empty() && !p.tags[0].empty()) return p.tags[0];
+  }
+  return tag_of_angle(e.angle_deg);
+}
+
+}  // namespace
+
+Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
+  for (const Profile& p : footprint.profiles) check_profile(p);
+  for (const Loop& loop : footprint.loops)
+    for (const EdgeSpec& e : loop.edges)
+      if (e.profile >= static_cast<int>(footprint.profiles.size()))
+        throw InputError("edge id " + std::to_string(e.id) + " names profile " + std::to_string(e.profile) +
+                         " but the footprint has " + std::to_string(footprint.profiles.size()));
+  PreparedFootprint prepared = prepare_footprint(footprint);
+  Extrusion out;
+  out.notes = std::move(prepared.notes);
+  Footprint fp = std::move(prepared.footprint);
+  fp.profiles = footprint.profiles;  // prepare_footprint keeps edge specs but not the profile list
+  SweepOptions engine_options = options;
+  engine_input(fp, engine_options, out.notes);
+
+  std::map<std::int32_t, const EdgeSpec*> by_id;
+  for (const Loop& loop : fp.loops)
+    for (const EdgeSpec& e : loop.edges) by_id[e.id] = &e;
+
+  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(fp, engine_options)));
+  TaggedMesh& t = out.mesh;
+  std::map<std::string, std::uint32_t> tag_index;
+  auto index_of = [&](const std::string& tag) {
+    auto [it, inserted] = tag_index.try_emplace(tag, static_cast<std::uint32_t>(t.tags.size()));
+    if (inserted) t.tags.push_back(tag);
+    return it->second;
+  };
+  const auto kinds = face_kind_property(*mesh);
+  const auto edges = source_edge_property(*mesh);
+  t.face_tags.reserve(mesh->n_faces());
+  for (const auto f : mesh->faces()) {
+    const FaceKind kind = mesh->property(kinds, f);
+    if (kind != FaceKind::Side) {
+      t.face_tags.push_back(index_of(face_kind_name(kind)));
+      continue;
+    }
+    const auto it = by_id.find(mesh->property(edges, f));
+    t.face_tags.push_back(index_of(it == by_id.end() ? "side" : side_tag(*it->second, fp.profiles)));
+  }
+  t.mesh = std::move(mesh);
+  return out;
+}
+
+}  // namespace procex

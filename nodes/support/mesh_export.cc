@@ -1,0 +1,100 @@
+#include "nodes/support/mesh_export.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <string>
+
+#include "core/io/atomic_write.h"
+#include "core/io/io_error.h"
+#include "core/io/mesh_write.h"
+
+namespace procex {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+void append_number(std::string& out, double v) {
+  char buf[32];
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+// OBJ names may not contain whitespace.
+std::string obj_name(const std::string& name, const std::string& fallback) {
+  std::string out = name.empty() ? fallback : name;
+  std::replace_if(out.begin(), out.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
+  return out;
+}
+
+void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set) {
+  std::filesystem::path mtl = path;
+  mtl.replace_extension(".mtl");
+  std::string obj = "# procex\nmtllib " + mtl.filename().string() + "\n";
+  std::vector<std::string> materials;
+  std::size_t base = 1;  // OBJ numbers vertices from 1 across the file
+  for (std::size_t i = 0; i < set.parts.size(); ++i) {
+    const TaggedMesh& part = set.parts[i];
+    const Mesh& mesh = *part.mesh;
+    obj += "g " + obj_name(part.building, "mesh_" + std::to_string(i)) + "\n";
+    for (const auto v : mesh.vertices()) {
+      obj += 'v';
+      for (int k = 0; k < 3; ++k) obj += ' ', append_number(obj, mesh.point(v)[k]);
+      obj += '\n';
+    }
+    for (std::uint32_t t = 0; t < part.tags.size(); ++t) {
+      const std::string name = obj_name(part.tags[t], "untagged");
+      bool used = false;
+      for (const auto f : mesh.faces()) {
+        if (part.face_tags[static_cast<std::size_t>(f.idx())] != t) continue;
+        if (!used) obj += "usemtl " + name + "\n", used = true;
+        obj += 'f';
+        for (const auto v : mesh.fv_range(f)) obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx()));
+        obj += '\n';
+      }
+      if (used && std::find(materials.begin(), materials.end(), name) == materials.end()) materials.push_back(name);
+    }
+    base += mesh.n_vertices();
+  }
+  std::string mtl_text = "# procex: one material per face tag\n";
+  for (const std::string& name : materials) {
+    mtl_text += "newmtl " + name + "\nKd";
+    for (double c : tag_colour(name)) mtl_text += ' ', append_number(mtl_text, c);
+    mtl_text += "\n";
+  }
+  write_file_atomically(mtl, mtl_text);
+  write_file_atomically(path, obj);
+}
+
+}  // namespace
+
+std::vector<GltfMeshData> to_gltf(const MeshSet& set) {
+  std::vector<GltfMeshData> out;
+  out.reserve(set.parts.size());
+  for (const TaggedMesh& part : set.parts)
+    out.push_back(to_gltf_mesh({part.mesh.get(), part.face_tags, part.tags, part.building, part.feature}));
+  return out;
+}
+
+bool is_mesh_file(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".obj" || ext == ".ply" || ext == ".glb";
+}
+
+void write_mesh_set(const std::filesystem::path& path, const MeshSet& set) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".obj") return write_tagged_obj(path, set);
+  if (ext == ".glb") return write_glb(path, to_gltf(set));
+  if (ext == ".ply") {
+    std::vector<NamedMesh> named;
+    for (const TaggedMesh& part : set.parts) named.push_back({part.building, part.mesh.get()});
+    return write_ply(path, named);
+  }
+  throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply or .glb)",
+                path.string());
+}
+
+}  // namespace procex

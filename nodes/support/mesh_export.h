@@ -1,0 +1,24 @@
+// Writing a MeshSet to a file, the format chosen by the extension:
+// .obj (one group per mesh, one material per face tag, with a .mtl beside it),
+// .ply (core's writer: source edges and face kinds, one group per mesh) or
+// .glb (one glTF mesh per building, one primitive per tag). Atomic writes;
+// IoError naming the file on failure.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "core/io/gltf_write.h"
+#include "nodes/values.h"
+
+namespace procex {
+
+void write_mesh_set(const std::filesystem::path& path, const MeshSet& set);
+
+// The glTF form of every part, in order.
+std::vector<GltfMeshData> to_gltf(const MeshSet& set);
+
+// Whether write_mesh_set knows the extension (case-insensitive).
+bool is_mesh_file(const std::filesystem::path& path);
+
+}  // namespace procex

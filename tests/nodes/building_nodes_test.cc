@@ -1,0 +1,159 @@
+// The building nodes through a real graph: labels and seeded picks, the
+// extrusion's tags, switching, transforming, merging.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/mesh/validate.h"
+#include "nodes/support/profile_presets.h"
+#include "nodes/values.h"
+#include "tests/nodes/node_runner.h"
+
+namespace procex {
+namespace {
+
+using test::run_node;
+
+Value rectangle(double w, double d, double angle = 45) {
+  return Value::make(make_footprint({{{0, 0}, {w, 0}, {w, d}, {0, d}}}, angle));
+}
+
+Value presets() {
+  std::vector<Profile> out;
+  for (const std::string& name : preset_names()) out.push_back(make_preset(name, {}));
+  return Value::make(out);
+}
+
+std::vector<int> assigned(const test::NodeRun& r) {
+  std::vector<int> out;
+  for (const Loop& l : r.outputs.at(0).get<Footprint>().loops)
+    for (const EdgeSpec& e : l.edges) out.push_back(e.profile);
+  return out;
+}
+
+std::map<std::string, std::size_t> faces_per_tag(const MeshSet& set) {
+  std::map<std::string, std::size_t> out;
+  for (const TaggedMesh& p : set.parts)
+    for (std::size_t f = 0; f < p.face_tags.size(); ++f) ++out[face_tag(p, f)];
+  return out;
+}
+
+//   3 +-----------+ 2      edge 2 (top) faces north: back
+//     |           |        edges 1, 3: side
+//   0 +-----------+ 1      edge 0 (bottom) faces south, the street
+TEST(AssignProfiles, ByStreetOrientation) {
+  const auto r = run_node("Assign Profiles",
+                          {{"rules", Value::make(std::string("street = gable_end; back = hip; * = vertical_wall"))},
+                           {"street", Value::make(EnumValue{"direction"})},
+                           {"street_direction", Value::make(-90.0)}},
+                          {{"footprint", rectangle(20, 8)}, {"profiles", presets()}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  EXPECT_EQ(assigned(r), (std::vector<int>{2, 0, 1, 0}));
+  // The longest edge's side is the street by default: both long edges tie, the first wins.
+  const auto by_longest = run_node("Assign Profiles", {{"rules", Value::make(std::string("street = 2; * = 0"))}},
+                                   {{"footprint", rectangle(20, 8)}, {"profiles", presets()}});
+  EXPECT_EQ(assigned(by_longest), (std::vector<int>{2, 0, 0, 0}));
+}
+
+TEST(AssignProfiles, ByLengthSelectionAndIndex) {
+  const auto r = run_node("Assign Profiles",
+                          {{"rules", Value::make(std::string("#3 = 5; selected = 4; long = 1; short = 3; * = 0"))},
+                           {"selection", Value::make(std::vector<std::int64_t>{2})},
+                           {"short_below", Value::make(9.0)}},
+                          {{"footprint", rectangle(20, 8)}, {"profiles", presets()}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  EXPECT_EQ(assigned(r), (std::vector<int>{1, 3, 4, 5}));
+}
+
+TEST(AssignProfiles, SeededPerBuilding) {
+  auto run = [](const std::string& building, std::int64_t seed, const char* draw) {
+    return assigned(run_node("Assign Profiles",
+                             {{"rules", Value::make(std::string("* = hip, gable_end"))},
+                              {"seed", Value::make(seed)},
+                              {"draw", Value::make(EnumValue{draw})}},
+                             {{"footprint", rectangle(20, 8)},
+                              {"profiles", presets()},
+                              {"building_id", Value::make(building)}}));
+  };
+  std::set<std::vector<int>> per_building, per_edge;
+  for (int b = 0; b < 40; ++b) {
+    const std::string id = std::string("w").append(std::to_string(b));
+    EXPECT_EQ(run(id, 1, "per_building"), run(id, 1, "per_building"));
+    per_building.insert(run(id, 1, "per_building"));
+    per_edge.insert(run(id, 1, "per_edge"));
+  }
+  // per_building: all edges alike, both choices occur over 40 buildings.
+  EXPECT_EQ(per_building, (std::set<std::vector<int>>{{1, 1, 1, 1}, {2, 2, 2, 2}}));
+  EXPECT_GT(per_edge.size(), 2u);
+  std::set<std::vector<int>> seeds;
+  for (std::int64_t seed = 0; seed < 20; ++seed) seeds.insert(run("w1", seed, "per_building"));
+  EXPECT_EQ(seeds.size(), 2u);
+}
+
+TEST(AssignProfiles, BadRulesAreNodeErrors) {
+  const auto r = run_node("Assign Profiles", {{"rules", Value::make(std::string("* = dome"))}},
+                          {{"footprint", rectangle(20, 8)}, {"profiles", presets()}});
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.messages().find("rules: rule 1 ('* = dome'): no profile named 'dome'"), std::string::npos) << r.messages();
+}
+
+TEST(Extrude, HipRoofTagsAndVolume) {
+  const auto r = run_node("Extrude", {{"validate", Value::make(true)}}, {{"footprint", rectangle(10, 6)}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  const MeshSet& m = r.outputs[0].get<MeshSet>();
+  ASSERT_EQ(m.parts.size(), 1u);
+  EXPECT_EQ(faces_per_tag(m), (std::map<std::string, std::size_t>{{"base", 1}, {"roof", 4}}));
+  // A 45-degree hip roof on 10 x 6: ridge at height 3, volume = 6*6*3/3 (pyramid ends) + 4*(6*3/2) = 36 + 36.
+  EXPECT_NEAR(validate(*m.parts[0].mesh).volume, 72.0, 1e-6);
+}
+
+TEST(Extrude, ProfilesGiveTagsAndHeight) {
+  const auto assign = run_node("Assign Profiles", {{"rules", Value::make(std::string("* = vertical_wall"))}},
+                               {{"footprint", rectangle(10, 6)}, {"profiles", presets()}});
+  const auto r = run_node("Extrude", {{"validate", Value::make(true)}}, {{"footprint", assign.outputs[0]}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  const MeshSet& m = r.outputs[0].get<MeshSet>();
+  EXPECT_EQ(faces_per_tag(m), (std::map<std::string, std::size_t>{{"base", 1}, {"cap", 1}, {"wall", 4}}));
+  EXPECT_NEAR(validate(*m.parts[0].mesh).volume, 10 * 6 * 3.0, 1e-9);
+}
+
+TEST(Extrude, BadFootprintNamesLoopAndVertex) {
+  const Value bowtie = Value::make(make_footprint({{{0, 0}, {4, 4}, {4, 0}, {0, 4}}}, 30));
+  const auto r = run_node("Extrude", {}, {{"footprint", bowtie}});
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.messages().find("(Extrude)"), std::string::npos) << r.messages();
+  EXPECT_NE(r.messages().find("loop 0"), std::string::npos) << r.messages();
+}
+
+TEST(Switch, ChoosesByValue) {
+  auto run = [](const std::string& value) {
+    const auto r = run_node("Switch",
+                            {{"value", Value::make(value)},
+                             {"case_1", Value::make(std::string("church, chapel"))},
+                             {"case_2", Value::make(std::string("garage"))}},
+                            {{"default", Value::make(1.0)}, {"case_1", Value::make(2.0)}});
+    return r.outputs.at(0).get<double>();
+  };
+  EXPECT_EQ(run("chapel"), 2.0);
+  EXPECT_EQ(run("church"), 2.0);
+  EXPECT_EQ(run("yes"), 1.0);
+  EXPECT_EQ(run("garage"), 1.0);  // case_2 is not connected: default
+}
+
+TEST(TransformAndMerge, MoveAndJoin) {
+  const auto a = run_node("Extrude", {}, {{"footprint", rectangle(10, 6)}});
+  const auto moved = run_node("Transform", {{"translate", Value::make(Vec3{0, 0, 5})}, {"rotate", Value::make(90.0)}},
+                              {{"mesh", a.outputs[0]}});
+  ASSERT_TRUE(moved.ok()) << moved.messages();
+  double zmin = 1e9, xmin = 1e9;
+  const Mesh& m = *moved.outputs[0].get<MeshSet>().parts[0].mesh;
+  for (const auto v : m.vertices()) zmin = std::min(zmin, m.point(v)[2]), xmin = std::min(xmin, m.point(v)[0]);
+  EXPECT_NEAR(zmin, 5, 1e-12);
+  EXPECT_NEAR(xmin, -6, 1e-12);  // turned a quarter: y in [0, 6] became x in [-6, 0]
+  const auto merged = run_node("Merge", {}, {{"mesh_1", a.outputs[0]}, {"mesh_3", moved.outputs[0]}});
+  EXPECT_EQ(merged.outputs[0].get<MeshSet>().parts.size(), 2u);
+  EXPECT_EQ(faces_per_tag(merged.outputs[0].get<MeshSet>()).at("roof"), 8u);
+}
+
+}  // namespace
+}  // namespace procex

@@ -1,0 +1,68 @@
+// Every node file in nodes/ is registered, and every node type from nodes/
+// passes the graph's generic conformance checks.
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "graph/conformance.h"
+#include "nodes/support/recipe_files.h"
+#include "nodes/values.h"
+
+namespace procex {
+namespace {
+
+const std::filesystem::path kNodesDir = std::filesystem::path(PROCEX_SAMPLES) / ".." / "nodes";
+
+bool from_nodes_dir(const NodeType& t) {
+  return std::filesystem::weakly_canonical(t.source_file).parent_path() == std::filesystem::weakly_canonical(kNodesDir);
+}
+
+TEST(NodeRegistration, EveryNodeFileIsRegistered) {
+  EXPECT_EQ(unregistered_node_files(kNodesDir), std::vector<std::filesystem::path>{});
+}
+
+TEST(NodeRegistration, EveryNodeFileRegistersOneType) {
+  std::vector<std::string> files, registered;
+  for (const auto& e : std::filesystem::directory_iterator(kNodesDir))
+    if (e.path().extension() == ".cc" && e.path().filename() != "values.cc") files.push_back(e.path().stem().string());
+  for (const auto& t : NodeRegistry::global().all())
+    if (from_nodes_dir(*t)) registered.push_back(std::filesystem::path(t->source_file).stem().string());
+  std::sort(files.begin(), files.end());
+  std::sort(registered.begin(), registered.end());
+  EXPECT_EQ(files, registered);
+  EXPECT_EQ(registered.size(), 12u);
+}
+
+TEST(NodeRegistration, EveryTypeIsDocumented) {
+  for (const auto& t : NodeRegistry::global().all()) {
+    if (!from_nodes_dir(*t)) continue;
+    SCOPED_TRACE(t->name());
+    EXPECT_FALSE(t->decl.doc().empty());
+    EXPECT_FALSE(t->decl.category().empty());
+    for (const ParamDecl& p : t->decl.params()) EXPECT_FALSE(p.doc.empty()) << p.name;
+  }
+}
+
+TEST(NodeRegistration, EveryTypeConforms) {
+  const auto tmp = std::filesystem::temp_directory_path() / "procex_nodes_conformance";
+  std::filesystem::create_directories(tmp);
+  set_recipe_folder(tmp);  // Export writes its default file here
+  const Profile wall = Profile::straight(0, 3, "wall");
+  MeshSet mesh;
+  SampleInputs samples = {
+      {&value_type<Footprint>(), Value::make(make_footprint({{{0, 0}, {10, 0}, {10, 6}, {0, 6}}}, 45))},
+      {&value_type<Profile>(), Value::make(wall)},
+      {&value_type<std::vector<Profile>>(), Value::make(std::vector<Profile>{wall, Profile::straight(40, 20)})},
+      {&value_type<MeshSet>(), Value::make(mesh)},
+  };
+  for (const auto& t : NodeRegistry::global().all()) {
+    if (!from_nodes_dir(*t)) continue;
+    SCOPED_TRACE(t->name());
+    EXPECT_EQ(check_node_type(*t, samples), std::vector<std::string>{});
+  }
+  set_recipe_folder({});
+}
+
+}  // namespace
+}  // namespace procex
