@@ -1,0 +1,226 @@
+#include "app/studio/editor/document.h"
+
+#include <algorithm>
+#include <map>
+
+#include "graph/pxg.h"
+
+namespace procex::studio {
+
+namespace {
+EditorState editor_at(double x, double y) {
+  EditorState e;
+  e.x = x;
+  e.y = y;
+  return e;
+}
+}  // namespace
+
+Document::Document() : Document(Graph{}, {}) {}
+
+Document::Document(Graph graph, std::filesystem::path path)
+    : graph_(std::move(graph)), stack_(graph_), path_(std::move(path)), saved_text_(to_pxg(graph_)) {}
+
+std::unique_ptr<Document> Document::open(const std::filesystem::path& file) {
+  return std::unique_ptr<Document>(new Document(load_pxg(file), file));
+}
+
+std::unique_ptr<Document> Document::recovered(Graph graph, std::filesystem::path file) {
+  auto doc = std::unique_ptr<Document>(new Document(Graph{}, std::move(file)));
+  doc->graph_ = std::move(graph);
+  doc->revision_ = 2;  // differs from the saved revision and text: dirty until saved
+  return doc;
+}
+
+std::string Document::title() const { return path_.empty() ? "untitled" : path_.filename().string(); }
+
+bool Document::dirty() const { return revision_ != saved_revision_ && to_pxg(graph_) != saved_text_; }
+
+void Document::save() {
+  if (path_.empty()) throw std::runtime_error("the recipe has no file name yet: use Save As");
+  std::string text = to_pxg(graph_);
+  write_file_atomically(path_, text);
+  saved_text_ = std::move(text);
+  saved_revision_ = revision_;
+}
+
+void Document::save_as(const std::filesystem::path& file) {
+  std::string text = to_pxg(graph_);
+  write_file_atomically(file, text);
+  path_ = file;
+  saved_text_ = std::move(text);
+  saved_revision_ = revision_;
+}
+
+template <class R>
+R Document::changed(R r) {
+  if (r) ++revision_;
+  std::erase_if(selection_, [this](NodeId id) { return graph_.node(id) == nullptr; });
+  return r;
+}
+
+Result<NodeId> Document::add_node(std::string_view type_name, double x, double y) {
+  Result<NodeId> r = stack_.add_node(type_name, editor_at(x, y));
+  if (r) selection_ = {*r};
+  return changed(std::move(r));
+}
+
+Result<NodeId> Document::add_group_node(std::string_view group_name, double x, double y) {
+  Result<NodeId> r = stack_.add_group_node(group_name, editor_at(x, y));
+  if (r) selection_ = {*r};
+  return changed(std::move(r));
+}
+
+Status Document::connect(PortRef from, PortRef to) { return changed(stack_.connect(from, to)); }
+
+Status Document::disconnect(PortRef to) { return changed(stack_.disconnect(to)); }
+
+Status Document::set_param(NodeId id, std::size_t param, Value v) {
+  const Node* n = graph_.node(id);
+  if (!n) return Status::error("no node " + std::to_string(id));
+  if (param >= n->decl().params().size()) return Status::error("node " + std::to_string(id) + " has no parameter " + std::to_string(param));
+  if (n->params[param].same_content(v)) return Status::ok();  // keeps drags that end where they began out of the history
+  return changed(stack_.set_param(id, n->decl().params()[param].name, std::move(v)));
+}
+
+Status Document::move_selection(double dx, double dy) {
+  if (selection_.empty() || (dx == 0 && dy == 0)) return Status::ok();
+  stack_.begin_macro(selection_.size() == 1 ? "move node" : "move nodes");
+  for (NodeId id : selection_) {
+    const Node* n = graph_.node(id);
+    if (!n) continue;
+    if (Status s = stack_.move(id, n->editor.x + dx, n->editor.y + dy); !s) {
+      stack_.abort_macro();
+      return s;
+    }
+  }
+  stack_.end_macro();
+  stack_.end_interaction();
+  return changed(Status::ok());
+}
+
+Status Document::remove_selection() {
+  if (selection_.empty()) return Status::ok();
+  stack_.begin_macro(selection_.size() == 1 ? "delete node" : "delete nodes");
+  for (NodeId id : std::vector<NodeId>(selection_.begin(), selection_.end())) {
+    if (Status s = stack_.remove_node(id); !s) {
+      stack_.abort_macro();
+      return s;
+    }
+  }
+  stack_.end_macro();
+  return changed(Status::ok());
+}
+
+Result<NodeId> Document::group_selection() {
+  if (selection_.empty()) return Status::error("select the nodes to group first");
+  std::string name;
+  for (int i = 1;; ++i) {
+    name = "group" + std::to_string(i);
+    if (!graph_.groups().count(name) && !NodeRegistry::global().find(name)) break;
+  }
+  Result<NodeId> r = stack_.group(std::vector<NodeId>(selection_.begin(), selection_.end()), name);
+  if (r) selection_ = {*r};
+  return changed(std::move(r));
+}
+
+bool Document::undo() {
+  end_gesture();
+  return changed(stack_.undo());
+}
+
+bool Document::redo() {
+  end_gesture();
+  return changed(stack_.redo());
+}
+
+void Document::begin_gesture(std::string label) {
+  if (gesture_open_) return;
+  stack_.begin_macro(std::move(label));
+  gesture_open_ = true;
+}
+
+void Document::end_gesture() {
+  if (!gesture_open_) return;
+  stack_.end_macro();
+  gesture_open_ = false;
+}
+
+std::string Document::copy_selection() const {
+  Graph clip;
+  for (NodeId id : selection_) {
+    const Node* n = graph_.node(id);
+    if (!n) continue;
+    Result<NodeId> added = NodeId{0};
+    if (n->group.empty()) {
+      added = clip.add_node(n->type, id);
+    } else {
+      // Embedded in the clipboard: a paste needs the group's name, not its library file.
+      if (!clip.groups().count(n->group)) (void)clip.add_group(n->group, n->type->body);
+      added = clip.add_group_node(n->group, id);
+    }
+    if (!added) continue;
+    for (std::size_t p = 0; p < n->params.size(); ++p) (void)clip.set_param(id, p, n->params[p]);
+    (void)clip.set_editor_state(id, n->editor);
+  }
+  for (const auto& [to, from] : graph_.links())
+    if (selection_.count(to.node) && selection_.count(from.node)) (void)clip.connect(from, to);
+  return to_pxg(clip);
+}
+
+Result<std::vector<NodeId>> Document::paste(std::string_view text, double dx, double dy) {
+  Graph clip;
+  try {
+    clip = parse_pxg(text, path_.empty() ? std::filesystem::path("clipboard.pxg") : path_.parent_path() / "clipboard.pxg");
+  } catch (const PxgError& e) {
+    return Status::error("the clipboard holds no procex nodes: " + e.where() + ": " + e.message());
+  }
+  if (clip.nodes().empty()) return Status::error("the clipboard holds no procex nodes");
+  end_gesture();
+  stack_.begin_macro("paste");
+  std::map<NodeId, NodeId> ids;  // clipboard id -> new id
+  auto fail = [&](Status s) -> Result<std::vector<NodeId>> {
+    stack_.abort_macro();
+    return s;
+  };
+  for (const auto& [old_id, n] : clip.nodes()) {
+    EditorState e = n.editor;
+    e.x += dx;
+    e.y += dy;
+    if (!n.group.empty() && !graph_.groups().count(n.group))
+      return fail(Status::error("node " + std::to_string(old_id) + " is an instance of group '" + n.group + "', which this recipe does not define"));
+    Result<NodeId> r = n.group.empty() ? stack_.add_node(n.type->name(), e) : stack_.add_group_node(n.group, e);
+    if (!r) return fail(r.status());
+    ids[old_id] = *r;
+    const Node& added = *graph_.node(*r);
+    for (std::size_t p = 0; p < n.params.size() && p < added.params.size(); ++p) {
+      if (added.params[p].same_content(n.params[p])) continue;
+      if (Status s = stack_.set_param(*r, added.decl().params()[p].name, n.params[p]); !s) return fail(s);
+    }
+  }
+  for (const auto& [to, from] : clip.links()) {
+    if (!ids.count(from.node) || !ids.count(to.node)) continue;
+    if (Status s = stack_.connect({ids[from.node], from.port}, {ids[to.node], to.port}); !s) return fail(s);
+  }
+  stack_.end_macro();
+  std::vector<NodeId> added;
+  selection_.clear();
+  for (const auto& [old_id, id] : ids) {
+    added.push_back(id);
+    selection_.insert(id);
+  }
+  return changed(Result<std::vector<NodeId>>(std::move(added)));
+}
+
+void Document::select_only(NodeId id) { selection_ = {id}; }
+
+void Document::select(const std::vector<NodeId>& ids, bool add) {
+  if (!add) selection_.clear();
+  selection_.insert(ids.begin(), ids.end());
+}
+
+void Document::toggle(NodeId id) {
+  if (!selection_.erase(id)) selection_.insert(id);
+}
+
+}  // namespace procex::studio

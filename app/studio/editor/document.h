@@ -1,0 +1,98 @@
+// document.h -- one open recipe in the studio: the graph, its undo stack, its
+// file, and the editor's selection.
+//
+// The studio owns no recipe data besides the Graph: every edit below is a
+// command on the UndoStack (one undo step each; gestures that span frames use
+// begin_gesture/end_gesture to become one step). `revision()` grows with every
+// change, so the UI knows when to re-evaluate and whether the file is dirty.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "graph/commands.h"
+#include "graph/graph.h"
+#include "graph/status.h"
+
+namespace procex::studio {
+
+class Document {
+ public:
+  Document();  // an untitled, empty recipe
+  // Loads a recipe; throws PxgError (file and location) on bad input.
+  static std::unique_ptr<Document> open(const std::filesystem::path& file);
+  // A document whose graph came from elsewhere (autosave recovery): dirty, named `file`.
+  static std::unique_ptr<Document> recovered(Graph graph, std::filesystem::path file);
+  Document(const Document&) = delete;
+  Document& operator=(const Document&) = delete;
+
+  const Graph& graph() const { return graph_; }
+  const std::filesystem::path& path() const { return path_; }  // empty when untitled
+  std::string title() const;                                    // file name or "untitled"
+  std::uint64_t revision() const { return revision_; }
+  bool dirty() const;
+
+  // Atomic (temp file + rename); throws std::runtime_error naming the file.
+  void save();
+  void save_as(const std::filesystem::path& file);
+
+  // ---- edits (each one undo step) ----
+  Result<NodeId> add_node(std::string_view type_name, double x, double y);
+  // An instance of one of the recipe's groups.
+  Result<NodeId> add_group_node(std::string_view group_name, double x, double y);
+  Status connect(PortRef from, PortRef to);
+  Status disconnect(PortRef to);
+  Status set_param(NodeId id, std::size_t param, Value v);
+  // Moves every selected node by (dx, dy) canvas units.
+  Status move_selection(double dx, double dy);
+  Status remove_selection();
+  Result<NodeId> group_selection();
+  bool undo();
+  bool redo();
+  bool can_undo() const { return stack_.can_undo(); }
+  bool can_redo() const { return stack_.can_redo(); }
+  std::string undo_label() const { return stack_.undo_label(); }
+  std::string redo_label() const { return stack_.redo_label(); }
+
+  // Edits between begin and end become one undo step (a slider drag).
+  void begin_gesture(std::string label);
+  void end_gesture();
+  bool in_gesture() const { return gesture_open_; }
+
+  // ---- clipboard: selected nodes and the links among them, as .pxg text ----
+  std::string copy_selection() const;
+  // Adds the nodes of `text` shifted by (dx, dy) and selects them. Group
+  // instances need their group in this recipe.
+  Result<std::vector<NodeId>> paste(std::string_view text, double dx, double dy);
+
+  // ---- selection (editor state; not undone) ----
+  const std::set<NodeId>& selection() const { return selection_; }
+  void select_only(NodeId id);
+  void select(const std::vector<NodeId>& ids, bool add);
+  void toggle(NodeId id);
+  void clear_selection() { selection_.clear(); }
+  // The single selected node, or 0.
+  NodeId selected() const { return selection_.size() == 1 ? *selection_.begin() : 0; }
+
+ private:
+  Document(Graph graph, std::filesystem::path path);
+  // Every change ends here: bumps the revision and drops vanished nodes from the selection.
+  template <class R>
+  R changed(R r);
+
+  Graph graph_;
+  UndoStack stack_;
+  std::filesystem::path path_;
+  std::uint64_t revision_ = 1;
+  std::uint64_t saved_revision_ = 1;
+  std::string saved_text_;  // the file's text as last loaded or saved
+  bool gesture_open_ = false;
+  std::set<NodeId> selection_;
+};
+
+}  // namespace procex::studio

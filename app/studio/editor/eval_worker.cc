@@ -1,0 +1,109 @@
+#include "app/studio/editor/eval_worker.h"
+
+#include <set>
+
+namespace procex::studio {
+
+std::vector<PortRef> preview_ports(const Graph& g) {
+  std::vector<PortRef> ports;
+  for (std::uint32_t i = 0; i < g.outputs().size(); ++i)
+    if (auto from = g.source(PortRef{kGraphOutputs, i}); from && from->node != kGraphInputs) ports.push_back(*from);
+  if (!ports.empty()) return ports;
+  std::set<NodeId> feeding;
+  for (const auto& [to, from] : g.links()) feeding.insert(from.node);
+  for (const auto& [id, node] : g.nodes()) {
+    if (feeding.count(id)) continue;
+    for (std::uint32_t o = 0; o < node.decl().outputs().size(); ++o) ports.push_back(PortRef{id, o});
+  }
+  return ports;
+}
+
+EvalWorker::EvalWorker(std::size_t cache_bytes)
+    : cache_(cache_bytes), evaluator_(cache_, "procex-studio"), thread_([this] { run(); }) {}
+
+EvalWorker::~EvalWorker() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+    running_cancel_.cancel();
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports) {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = Job{revision, std::move(graph), std::move(extra_ports)};
+    running_cancel_.cancel();
+  }
+  changed_.notify_all();
+}
+
+std::shared_ptr<const EvalSnapshot> EvalWorker::latest() const {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+bool EvalWorker::idle() const {
+  std::lock_guard lock(mutex_);
+  return !pending_ && !running_;
+}
+
+bool EvalWorker::wait_idle(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return changed_.wait_for(lock, timeout, [this] { return !pending_ && !running_; });
+}
+
+void EvalWorker::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [this] { return stop_ || pending_; });
+    if (stop_) return;
+    Job job = std::move(*pending_);
+    pending_.reset();
+    running_cancel_ = CancelToken();
+    const CancelToken cancel = running_cancel_;
+    running_ = true;
+    lock.unlock();
+    std::shared_ptr<const EvalSnapshot> snapshot = evaluate(job, cancel);
+    lock.lock();
+    if (snapshot) latest_ = std::move(snapshot);
+    running_ = false;
+    changed_.notify_all();
+  }
+}
+
+std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate(Job& job, const CancelToken& cancel) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<PortRef> ports = preview_ports(job.graph);
+  const std::size_t n_preview = ports.size();
+  ports.insert(ports.end(), job.extra_ports.begin(), job.extra_ports.end());
+  auto snap = std::make_shared<EvalSnapshot>();
+  snap->revision = job.revision;
+  snap->result = evaluator_.evaluate_ports(job.graph, {}, ports, EvalOptions{cancel});
+  if (snap->result.cancelled || cancel.cancelled()) return nullptr;
+
+  std::vector<const TaggedMesh*> meshes;
+  bool complete = true;
+  for (std::size_t i = 0; i < ports.size(); ++i) {
+    const Value v = i < snap->result.outputs.size() ? snap->result.outputs[i].value : Value();
+    if (!v.empty()) snap->values[ports[i]] = v;
+    if (i >= n_preview) continue;
+    if (v.empty()) complete = false;
+    for (const TaggedMesh* m : meshes_in(v)) meshes.push_back(m);
+  }
+  if (complete && !meshes.empty()) {
+    snap->preview = std::make_shared<const PreviewMesh>(make_preview(meshes));
+    snap->preview_current = true;
+  } else if (complete) {
+    snap->preview_current = true;  // a good result without meshes: nothing to show
+  } else {
+    std::lock_guard lock(mutex_);
+    if (latest_) snap->preview = latest_->preview;
+  }
+  snap->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return snap;
+}
+
+}  // namespace procex::studio

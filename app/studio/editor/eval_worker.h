@@ -1,0 +1,77 @@
+// eval_worker.h -- evaluates the edited graph on a background thread.
+//
+// The UI submits a snapshot of the graph after every edit; a newer submission
+// cancels the running evaluation. The last good preview mesh stays available
+// while the next evaluation runs and when it fails, so the window never waits
+// for an evaluation and an error never blanks the preview.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "app/studio/editor/preview_mesh.h"
+#include "graph/cache.h"
+#include "graph/evaluator.h"
+#include "graph/graph.h"
+
+namespace procex::studio {
+
+// The ports the preview shows: the sources of the connected graph outputs or,
+// when no graph output is connected, every output of the nodes whose outputs
+// feed nothing (the ends of the graph).
+std::vector<PortRef> preview_ports(const Graph& g);
+
+struct EvalSnapshot {
+  std::uint64_t revision = 0;    // the document revision this evaluation saw
+  EvalResult result;             // diagnostics and per-node statistics
+  std::map<PortRef, Value> values;  // every evaluated port (preview ports and extras)
+  std::shared_ptr<const PreviewMesh> preview;  // the last good meshes, maybe of an earlier revision
+  bool preview_current = false;  // whether `preview` comes from this revision
+  double seconds = 0.0;          // evaluation plus preview building
+};
+
+class EvalWorker {
+ public:
+  explicit EvalWorker(std::size_t cache_bytes = std::size_t{512} << 20);
+  ~EvalWorker();
+  EvalWorker(const EvalWorker&) = delete;
+  EvalWorker& operator=(const EvalWorker&) = delete;
+
+  // Evaluates `graph` (the preview ports plus `extra_ports`, e.g. the selected
+  // node's outputs for the plan editor), cancelling whatever runs.
+  void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {});
+  // The newest finished (not cancelled) evaluation, or null before the first.
+  std::shared_ptr<const EvalSnapshot> latest() const;
+  // Nothing pending or running.
+  bool idle() const;
+  // Waits until idle; false on timeout.
+  bool wait_idle(std::chrono::milliseconds timeout) const;
+
+ private:
+  struct Job {
+    std::uint64_t revision = 0;
+    Graph graph;
+    std::vector<PortRef> extra_ports;
+  };
+  void run();
+  std::shared_ptr<const EvalSnapshot> evaluate(Job& job, const CancelToken& cancel);
+
+  ResultCache cache_;
+  Evaluator evaluator_;
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::optional<Job> pending_;
+  CancelToken running_cancel_;
+  bool running_ = false, stop_ = false;
+  std::shared_ptr<const EvalSnapshot> latest_;
+  std::thread thread_;  // last: starts after every other member exists
+};
+
+}  // namespace procex::studio

@@ -1,0 +1,31 @@
+// options.h -- procex-studio's command line.
+//
+//   procex-studio [RECIPE.pxg] [--screenshot OUT.png [--screenshot-info OUT.json]]
+//                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
+//                 [--report-frames FILE] [--bench-edits N]
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace procex::studio {
+
+struct Options {
+  std::filesystem::path recipe;          // empty: start with an untitled recipe
+  std::filesystem::path screenshot;      // render once evaluated, save this PNG, exit
+  std::filesystem::path screenshot_info; // with --screenshot: JSON about what the image shows
+  std::filesystem::path frame_report;    // write per-frame timings here on exit (benchmarks)
+  int width = 1280, height = 800;
+  double timeout_s = 60.0;               // --screenshot: give up waiting for the evaluation
+  int autosave_s = 30;                   // 0: no autosave
+  int bench_edits = 0;                   // benchmark: this many parameter edits, timed to the screen
+  bool help = false;
+};
+
+// Throws std::invalid_argument naming the bad argument.
+Options parse_options(const std::vector<std::string>& args);
+std::string usage();
+
+}  // namespace procex::studio

@@ -1,0 +1,132 @@
+#include "app/studio/ui/inspector.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cstdint>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+namespace procex::studio {
+
+namespace {
+
+// "%.3f m": the unit follows the number in the widget.
+std::string number_format(const ParamDecl& p, const char* conversion) {
+  std::string f = conversion;
+  if (!p.unit.empty()) f += " " + p.unit;
+  return f;
+}
+
+std::string json_text(const Value& v) {
+  if (v.empty() || !v.type()->has_json()) return "";
+  nlohmann::json j;
+  v.type()->to_json(v.raw(), j);
+  return j.dump();
+}
+
+}  // namespace
+
+void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
+  const NodeId id = doc.selected();
+  if (id == 0) {
+    ImGui::TextDisabled(doc.selection().empty() ? "Select a node to edit its parameters." : "%zu nodes selected.", doc.selection().size());
+    return;
+  }
+  const Node& n = *doc.graph().node(id);
+  const NodeDecl& decl = n.decl();
+  ImGui::Text("%s  #%u", n.group.empty() ? n.type->name().c_str() : n.group.c_str(), id);
+  if (!decl.doc().empty()) ImGui::TextWrapped("%s", decl.doc().c_str());
+  ImGui::Separator();
+  // One undo step per gesture: a drag starts a gesture, its release ends it.
+  auto track = [&](const std::string& label) {
+    if (ImGui::IsItemActivated()) doc.begin_gesture("set " + label);
+    if (ImGui::IsItemDeactivated()) doc.end_gesture();
+  };
+  auto apply = [&](std::size_t i, Value v) {
+    if (Status s = doc.set_param(id, i, std::move(v)); !s) status = s.message();
+  };
+  // Text is edited in a buffer and committed when the field loses focus.
+  auto edit_text = [&](std::size_t i, const std::string& current, bool multiline, auto parse) {
+    const ParamDecl& p = decl.params()[i];
+    const std::string key = std::to_string(id) + "." + p.name;
+    std::string& text = editing_.try_emplace(key, current).first->second;
+    if (multiline) ImGui::InputTextMultiline(p.name.c_str(), &text, ImVec2(-80, ImGui::GetTextLineHeight() * 3));
+    else ImGui::InputText(p.name.c_str(), &text);
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+      try {
+        apply(i, parse(text));
+      } catch (const std::exception& e) {
+        status = p.name + ": " + e.what();
+      }
+    }
+    if (!ImGui::IsItemActive()) editing_.erase(key);
+  };
+  for (std::size_t i = 0; i < decl.params().size(); ++i) {
+    const ParamDecl& p = decl.params()[i];
+    const Value& v = n.params[i];
+    ImGui::PushID(static_cast<int>(i));
+    const char* label = p.name.c_str();
+    if (!p.choices.empty()) {
+      const std::string& cur = v.get<EnumValue>().choice;
+      if (ImGui::BeginCombo(label, cur.c_str())) {
+        for (const std::string& c : p.choices)
+          if (ImGui::Selectable(c.c_str(), c == cur) && c != cur) apply(i, Value::make(EnumValue{c}));
+        ImGui::EndCombo();
+      }
+    } else if (v.is<double>()) {
+      double x = v.get<double>();
+      const std::string fmt = number_format(p, "%.3f");
+      bool changed;
+      if (p.min && p.max) {
+        const double lo = *p.min, hi = *p.max;
+        changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &x, &lo, &hi, fmt.c_str());
+      } else {
+        const double lo = p.min.value_or(-std::numeric_limits<double>::max()), hi = p.max.value_or(std::numeric_limits<double>::max());
+        changed = ImGui::DragScalar(label, ImGuiDataType_Double, &x, 0.05f, &lo, &hi, fmt.c_str());
+      }
+      if (changed) apply(i, Value::make(x));
+      track(p.name);
+    } else if (v.is<std::int64_t>()) {
+      std::int64_t x = v.get<std::int64_t>();
+      const std::string fmt = number_format(p, "%lld");
+      bool changed;
+      if (p.min && p.max) {
+        const std::int64_t lo = static_cast<std::int64_t>(*p.min), hi = static_cast<std::int64_t>(*p.max);
+        changed = ImGui::SliderScalar(label, ImGuiDataType_S64, &x, &lo, &hi, fmt.c_str());
+      } else {
+        changed = ImGui::DragScalar(label, ImGuiDataType_S64, &x, 0.2f, nullptr, nullptr, fmt.c_str());
+      }
+      if (changed) apply(i, Value::make(x));
+      track(p.name);
+    } else if (v.is<bool>()) {
+      bool b = v.get<bool>();
+      if (ImGui::Checkbox(label, &b)) apply(i, Value::make(b));
+    } else if (v.is<std::string>()) {
+      edit_text(i, v.get<std::string>(), false, [](const std::string& t) { return Value::make(t); });
+    } else if (v.type() && v.type()->has_json()) {
+      // Lists and points: JSON text, checked by the type's own reader when committed.
+      const ValueType* type = v.type();
+      edit_text(i, json_text(v), true, [type](const std::string& t) { return type->from_json(nlohmann::json::parse(t)); });
+    } else {
+      ImGui::TextDisabled("%s: %s (not editable here)", label, v.type() ? v.type()->name().c_str() : "?");
+    }
+    if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%s", p.doc.c_str());
+    ImGui::PopID();
+  }
+  if (!eval) return;
+  ImGui::Separator();
+  if (const NodeStats* s = eval->result.stats.find(NodePath{id}))
+    ImGui::TextDisabled("last evaluation: %s, %.2f ms, %.1f KiB", to_string(s->outcome), static_cast<double>(s->time_ns) * 1e-6,
+                        static_cast<double>(s->memory) / 1024.0);
+  for (const Diagnostic& d : eval->result.diagnostics) {
+    if (d.node.empty() || d.node[0] != id) continue;
+    const ImVec4 col = d.severity == Severity::kError ? ImVec4(1.0f, 0.4f, 0.35f, 1.0f) : ImVec4(1.0f, 0.8f, 0.3f, 1.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, col);
+    ImGui::TextWrapped("%s", d.to_string().c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace procex::studio

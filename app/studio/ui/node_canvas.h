@@ -1,0 +1,44 @@
+// node_canvas.h -- the node editor panel, drawn with ImGui draw lists.
+//
+// Draws the document's graph every frame (nodes from their declarations,
+// links as bezier curves, error/warning badges and cached/computed marks from
+// the last evaluation) and turns gestures into Document edits: drag from an
+// output to an input to connect (refusals explained), drag a connected input
+// away to disconnect, drag nodes to move them, click/ctrl-click/rubber band to
+// select, right click or Tab for the searchable add menu, wheel to zoom,
+// middle drag to pan, F to frame, Delete, Ctrl+C / Ctrl+V / Ctrl+X, Ctrl+G to group.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "app/studio/editor/canvas_layout.h"
+#include "app/studio/editor/document.h"
+#include "app/studio/editor/eval_worker.h"
+
+namespace procex::studio {
+
+class NodeCanvas {
+ public:
+  // `status` receives messages for the status bar (refused edits...).
+  void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
+  // Frames all nodes on the next draw.
+  void request_frame() { frame_pending_ = true; }
+
+ private:
+  void draw_add_menu(Document& doc, std::string& status);
+
+  CanvasView view_;
+  bool frame_pending_ = true;
+  // Gesture state (transient, not recipe data).
+  enum class Drag { kNone, kNodes, kLink, kBand, kPan } drag_ = Drag::kNone;
+  glm::vec2 drag_start_{0.0f};  // canvas units
+  glm::vec2 drag_offset_{0.0f};
+  PinHit link_from_{};
+  glm::vec2 add_at_{0.0f};
+  char search_[64] = {};
+};
+
+}  // namespace procex::studio

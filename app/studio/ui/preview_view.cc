@@ -1,0 +1,254 @@
+#include "app/studio/ui/preview_view.h"
+
+#include <GL/glcorearb.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace procex::studio {
+
+namespace {
+
+const char* kMeshVs = R"(#version 330 core
+layout(location = 0) in vec3 pos;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 color;
+uniform mat4 mvp;
+out vec3 v_normal;
+out vec3 v_color;
+void main() {
+  v_normal = normal;
+  v_color = color;
+  gl_Position = mvp * vec4(pos, 1.0);
+})";
+
+// Lighting only scales the tag colour, so its chromaticity stays recognisable.
+const char* kMeshFs = R"(#version 330 core
+in vec3 v_normal;
+in vec3 v_color;
+out vec4 frag;
+void main() {
+  vec3 n = normalize(v_normal);
+  float key = max(dot(n, normalize(vec3(0.4, 0.6, 0.8))), 0.0);
+  float fill = max(dot(n, normalize(vec3(-0.6, -0.3, 0.2))), 0.0);
+  frag = vec4(v_color * (0.35 + 0.55 * key + 0.2 * fill), 1.0);
+})";
+
+const char* kLineVs = R"(#version 330 core
+layout(location = 0) in vec3 pos;
+uniform mat4 mvp;
+void main() { gl_Position = mvp * vec4(pos, 1.0); })";
+
+const char* kLineFs = R"(#version 330 core
+uniform vec4 color;
+out vec4 frag;
+void main() { frag = color; })";
+
+GLuint compile(GLenum kind, const char* src) {
+  GLuint s = glCreateShader(kind);
+  glShaderSource(s, 1, &src, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[1024];
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    std::fprintf(stderr, "procex-studio: shader does not compile: %s\n", log);
+  }
+  return s;
+}
+
+GLuint program(const char* vs, const char* fs) {
+  GLuint p = glCreateProgram();
+  GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
+  glAttachShader(p, v);
+  glAttachShader(p, f);
+  glLinkProgram(p);
+  glDeleteShader(v);
+  glDeleteShader(f);
+  return p;
+}
+
+}  // namespace
+
+struct PreviewView::Gl {
+  GLuint mesh_program = 0, line_program = 0;
+  GLuint mesh_vao = 0, mesh_vbo = 0, edge_vao = 0, edge_vbo = 0, grid_vao = 0, grid_vbo = 0;
+  GLsizei mesh_vertices = 0, edge_vertices = 0, grid_vertices = 0;
+  GLuint fbo = 0, color = 0, depth = 0;
+  int width = 0, height = 0;
+
+  Gl() {
+    mesh_program = program(kMeshVs, kMeshFs);
+    line_program = program(kLineVs, kLineFs);
+    glGenVertexArrays(1, &mesh_vao);
+    glGenBuffers(1, &mesh_vbo);
+    glBindVertexArray(mesh_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
+    const GLsizei stride = static_cast<GLsizei>(PreviewMesh::kFloatsPerVertex * sizeof(float));
+    for (GLuint a = 0; a < 3; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(std::uintptr_t{a} * 3 * sizeof(float)));
+    }
+    for (auto [vao, vbo] : {std::pair{&edge_vao, &edge_vbo}, std::pair{&grid_vao, &grid_vbo}}) {
+      glGenVertexArrays(1, vao);
+      glGenBuffers(1, vbo);
+      glBindVertexArray(*vao);
+      glBindBuffer(GL_ARRAY_BUFFER, *vbo);
+      glEnableVertexAttribArray(0);
+      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    }
+    glBindVertexArray(0);
+    glGenFramebuffers(1, &fbo);
+    glGenTextures(1, &color);
+    glGenRenderbuffers(1, &depth);
+  }
+  ~Gl() {
+    glDeleteProgram(mesh_program);
+    glDeleteProgram(line_program);
+    for (GLuint* v : {&mesh_vao, &edge_vao, &grid_vao}) glDeleteVertexArrays(1, v);
+    for (GLuint* b : {&mesh_vbo, &edge_vbo, &grid_vbo}) glDeleteBuffers(1, b);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &color);
+    glDeleteRenderbuffers(1, &depth);
+  }
+  void upload(GLuint vbo, const std::vector<float>& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+  }
+  void resize(int w, int h) {
+    if (w == width && h == height) return;
+    width = w;
+    height = h;
+    glBindTexture(GL_TEXTURE_2D, color);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+};
+
+PreviewView::PreviewView() : gl_(std::make_unique<Gl>()) {}
+PreviewView::~PreviewView() = default;
+
+void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
+  if (mesh == mesh_) return;
+  mesh_ = std::move(mesh);
+  static const std::vector<float> kNone;
+  gl_->upload(gl_->mesh_vbo, mesh_ ? mesh_->vertices : kNone);
+  gl_->upload(gl_->edge_vbo, mesh_ ? mesh_->edge_points : kNone);
+  gl_->mesh_vertices = mesh_ ? static_cast<GLsizei>(mesh_->vertex_count()) : 0;
+  gl_->edge_vertices = mesh_ ? static_cast<GLsizei>(mesh_->edge_points.size() / 3) : 0;
+  if (mesh_ && !mesh_->empty()) {
+    // A ground grid around the mesh, at its lowest height, in 1-2-5 steps.
+    const glm::vec3 lo(mesh_->min), hi(mesh_->max);
+    const float extent = std::max(hi.x - lo.x, hi.y - lo.y) * 1.5f + 1.0f;
+    const float step = std::pow(10.0f, std::floor(std::log10(extent / 10.0f)));
+    const glm::vec2 c((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+    const float x0 = std::floor((c.x - extent) / step) * step, y0 = std::floor((c.y - extent) / step) * step;
+    const int n = static_cast<int>(2.0f * extent / step) + 1;
+    std::vector<float> grid;
+    for (int i = 0; i <= n; ++i) {
+      const float x = x0 + static_cast<float>(i) * step, y = y0 + static_cast<float>(i) * step;
+      const float x1 = x0 + static_cast<float>(n) * step, y1 = y0 + static_cast<float>(n) * step;
+      grid.insert(grid.end(), {x, y0, lo.z, x, y1, lo.z, x0, y, lo.z, x1, y, lo.z});
+    }
+    gl_->upload(gl_->grid_vbo, grid);
+    gl_->grid_vertices = static_cast<GLsizei>(grid.size() / 3);
+    if (!framed_) frame_all();
+  }
+}
+
+void PreviewView::frame_all() {
+  if (!mesh_ || mesh_->empty()) return;
+  camera_.frame(glm::vec3(mesh_->min), glm::vec3(mesh_->max));
+  framed_ = true;
+}
+
+void PreviewView::render(int width, int height) {
+  GLint previous_fbo = 0, previous_viewport[4];
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
+  glGetIntegerv(GL_VIEWPORT, previous_viewport);
+  gl_->resize(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo);
+  glViewport(0, 0, width, height);
+  glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  const glm::mat4 mvp = camera_.projection(static_cast<float>(width) / static_cast<float>(height)) * camera_.view();
+  glUseProgram(gl_->line_program);
+  glUniformMatrix4fv(glGetUniformLocation(gl_->line_program, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+  glUniform4f(glGetUniformLocation(gl_->line_program, "color"), 0.30f, 0.30f, 0.30f, 1.0f);
+  glBindVertexArray(gl_->grid_vao);
+  glDrawArrays(GL_LINES, 0, gl_->grid_vertices);
+
+  glUseProgram(gl_->mesh_program);
+  glUniformMatrix4fv(glGetUniformLocation(gl_->mesh_program, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe in front of its own faces
+  glBindVertexArray(gl_->mesh_vao);
+  glDrawArrays(GL_TRIANGLES, 0, gl_->mesh_vertices);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  if (wireframe) {
+    glUseProgram(gl_->line_program);
+    glUniform4f(glGetUniformLocation(gl_->line_program, "color"), 0.05f, 0.05f, 0.05f, 1.0f);
+    glBindVertexArray(gl_->edge_vao);
+    glDrawArrays(GL_LINES, 0, gl_->edge_vertices);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
+  glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+}
+
+void PreviewView::draw() {
+  ImGui::Checkbox("Wireframe", &wireframe);
+  ImGui::SameLine();
+  if (ImGui::Button("Frame")) frame_all();
+  if (mesh_) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu meshes, %zu faces", mesh_->meshes, mesh_->faces);
+    // Legend, above the image so its swatches never mix with the rendered pixels.
+    for (const TagSummary& t : mesh_->tags) {
+      ImGui::SameLine();
+      ImGui::ColorButton(t.name.c_str(), ImVec4(t.color.r, t.color.g, t.color.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+      ImGui::SameLine(0, 3);
+      ImGui::Text("%s", t.name.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%zu faces, %.1f m2", t.faces, t.area);
+    }
+  }
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const int w = std::max(static_cast<int>(avail.x), 16), h = std::max(static_cast<int>(avail.y), 16);
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  render(w, h);
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(gl_->color)), ImVec2(static_cast<float>(w), static_cast<float>(h)),
+               ImVec2(0, 1), ImVec2(1, 0));
+  image_x = corner.x;
+  image_y = corner.y;
+  image_w = static_cast<float>(w);
+  image_h = static_cast<float>(h);
+  if (ImGui::IsItemHovered()) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left)))
+      camera_.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(h));
+    else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+      camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  }
+}
+
+}  // namespace procex::studio

@@ -1,0 +1,40 @@
+// preview_view.h -- the 3D preview panel: renders the evaluated meshes into an
+// offscreen framebuffer (shaded by face tag, optional wireframe, ground grid)
+// and shows it as an ImGui image; mouse drags orbit (left), pan (middle or
+// shift+left), the wheel zooms.
+#pragma once
+
+#include <memory>
+
+#include "app/studio/editor/orbit_camera.h"
+#include "app/studio/editor/preview_mesh.h"
+
+namespace procex::studio {
+
+class PreviewView {
+ public:
+  PreviewView();
+  ~PreviewView();
+  PreviewView(const PreviewView&) = delete;
+  PreviewView& operator=(const PreviewView&) = delete;
+
+  // Uploads a new mesh when it differs from the one shown. The first mesh is framed.
+  void set_mesh(std::shared_ptr<const PreviewMesh> mesh);
+  // Draws into the current ImGui window, filling its content region.
+  void draw();
+  void frame_all();
+
+  bool wireframe = false;
+  // Screen rectangle of the last rendered image (for screenshot checks).
+  float image_x = 0, image_y = 0, image_w = 0, image_h = 0;
+
+ private:
+  struct Gl;
+  void render(int width, int height);
+  std::unique_ptr<Gl> gl_;
+  std::shared_ptr<const PreviewMesh> mesh_;
+  OrbitCamera camera_;
+  bool framed_ = false;
+};
+
+}  // namespace procex::studio

@@ -1,0 +1,598 @@
+#include "app/studio/ui/studio_app.h"
+
+#include <GL/glcorearb.h>
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/studio/editor/document.h"
+#include "app/studio/editor/eval_worker.h"
+#include "app/studio/editor/session_files.h"
+#include "app/studio/ui/inspector.h"
+#include "app/studio/ui/node_canvas.h"
+#include "app/studio/ui/preview_view.h"
+#include "app/studio/ui/screenshot.h"
+#include "core/io/mesh_write.h"
+#include "graph/pxg.h"
+
+namespace procex::studio {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// A file chooser without a native dialog: a path field and the folder's recipes.
+struct PathPrompt {
+  enum class Kind { kNone, kOpen, kSaveAs, kExport } kind = Kind::kNone;
+  std::string path;
+  bool open_requested = false;
+};
+
+}  // namespace
+
+class App {
+ public:
+  App(GLFWwindow* window, const Options& options) : window_(window), options_(options), home_(studio_home()), recent_(home_ / "recent.txt") {
+    const bool interactive = options_.screenshot.empty() && options_.bench_edits == 0;
+    if (!options_.recipe.empty()) {
+      load(options_.recipe, interactive);
+    } else {
+      doc_ = std::make_unique<Document>();
+      if (interactive && find_recovery(home_, {})) recovery_ = fs::path();
+    }
+  }
+
+  // Whether the last finished evaluation is of the current revision and its preview is on screen.
+  bool settled() const { return worker_.idle() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision(); }
+  bool busy() const { return !worker_.idle(); }
+  bool load_failed() const { return load_failed_; }
+  Document& doc() { return *doc_; }
+  const EvalSnapshot* shown() const { return shown_.get(); }
+  const PreviewView& preview() const { return *preview_; }
+
+  void frame() {
+    if (!preview_) preview_ = std::make_unique<PreviewView>();
+    if (submitted_ != doc_->revision()) {
+      submitted_ = doc_->revision();
+      std::vector<PortRef> extra;
+      worker_.submit(submitted_, doc_->graph(), extra);
+    }
+    if (auto latest = worker_.latest(); latest && latest != shown_) {
+      shown_ = std::move(latest);
+      preview_->set_mesh(shown_->preview);
+    }
+    autosave();
+    shortcuts();
+    menu_bar();
+    layout_windows();
+    modals();
+    update_title();
+  }
+
+  // Close button: ask first when there are unsaved changes.
+  void request_quit() {
+    glfwSetWindowShouldClose(window_, GLFW_FALSE);
+    confirm_discard([this] { quit_ = true; });
+  }
+  bool quit() const { return quit_; }
+  void leave() {
+    // A clean exit leaves no autosave behind unless edits are unsaved.
+    if (!doc_->dirty()) remove_autosave(home_, doc_->path());
+  }
+
+ private:
+  void load(const fs::path& file, bool interactive) {
+    try {
+      doc_ = Document::open(file);
+      if (interactive) {
+        recent_.add(file);
+        if (find_recovery(home_, file)) recovery_ = file;
+      }
+      status_ = "opened " + file.string();
+      canvas_.request_frame();
+      load_failed_ = false;
+    } catch (const std::exception& e) {
+      status_ = e.what();
+      std::fprintf(stderr, "procex-studio: %s\n", e.what());
+      if (!doc_) doc_ = std::make_unique<Document>();
+      load_failed_ = true;
+    }
+  }
+
+  void confirm_discard(std::function<void()> action) {
+    if (!doc_->dirty()) {
+      action();
+      return;
+    }
+    pending_ = std::move(action);
+    confirm_requested_ = true;
+  }
+
+  void save(bool as) {
+    if (as || doc_->path().empty()) {
+      prompt_ = {PathPrompt::Kind::kSaveAs, doc_->path().empty() ? "untitled.pxg" : doc_->path().string(), true};
+      return;
+    }
+    try {
+      remove_autosave(home_, doc_->path());
+      doc_->save();
+      recent_.add(doc_->path());
+      status_ = "saved " + doc_->path().string();
+    } catch (const std::exception& e) {
+      status_ = e.what();
+    }
+  }
+
+  void export_mesh(const fs::path& file) {
+    std::vector<NamedMesh> meshes;
+    if (shown_)
+      for (const PortRef& p : preview_ports(doc_->graph()))
+        if (auto it = shown_->values.find(p); it != shown_->values.end())
+          for (const TaggedMesh* m : meshes_in(it->second))
+            meshes.push_back({m->building.empty() ? "building" + std::to_string(meshes.size()) : m->building, m->mesh.get()});
+    if (meshes.empty()) {
+      status_ = "nothing to export: the recipe has no evaluated mesh yet";
+      return;
+    }
+    try {
+      write_mesh_file(file, meshes);
+      status_ = "exported " + std::to_string(meshes.size()) + " meshes to " + file.string();
+    } catch (const std::exception& e) {
+      status_ = e.what();
+    }
+  }
+
+  void autosave() {
+    if (options_.autosave_s <= 0 || !options_.screenshot.empty()) return;
+    if (Clock::now() - last_autosave_ < std::chrono::seconds(options_.autosave_s)) return;
+    last_autosave_ = Clock::now();
+    if (autosaved_ == doc_->revision() || !doc_->dirty()) return;
+    try {
+      write_autosave(home_, doc_->path(), to_pxg(doc_->graph()));
+      autosaved_ = doc_->revision();
+    } catch (const std::exception& e) {
+      status_ = std::string("autosave failed: ") + e.what();
+    }
+  }
+
+  void shortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput || !io.KeyCtrl) return;
+    if (ImGui::IsKeyPressed('Z')) {
+      if (io.KeyShift) doc_->redo();
+      else doc_->undo();
+    }
+    if (ImGui::IsKeyPressed('Y')) doc_->redo();
+    if (ImGui::IsKeyPressed('S')) save(io.KeyShift);
+    if (ImGui::IsKeyPressed('O')) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
+    if (ImGui::IsKeyPressed('N')) confirm_discard([this] { new_document(); });
+  }
+
+  fs::path folder() const { return doc_->path().empty() ? fs::current_path() : fs::absolute(doc_->path()).parent_path(); }
+
+  void new_document() {
+    doc_ = std::make_unique<Document>();
+    canvas_.request_frame();
+    status_ = "new recipe";
+  }
+
+  void menu_bar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+      if (ImGui::MenuItem("New", "Ctrl+N")) confirm_discard([this] { new_document(); });
+      if (ImGui::MenuItem("Open...", "Ctrl+O")) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
+      if (ImGui::BeginMenu("Open recent", !recent_.list().empty())) {
+        for (const fs::path& f : recent_.list())
+          if (ImGui::MenuItem(f.string().c_str())) confirm_discard([this, f] { load(f, true); });
+        ImGui::EndMenu();
+      }
+      if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
+      if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) save(true);
+      if (ImGui::MenuItem("Export mesh...")) {
+        fs::path p = doc_->path().empty() ? fs::path("untitled.obj") : fs::path(doc_->path()).replace_extension(".obj");
+        prompt_ = {PathPrompt::Kind::kExport, p.string(), true};
+      }
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+      if (ImGui::MenuItem(("Undo " + doc_->undo_label()).c_str(), "Ctrl+Z", false, doc_->can_undo())) doc_->undo();
+      if (ImGui::MenuItem(("Redo " + doc_->redo_label()).c_str(), "Ctrl+Shift+Z", false, doc_->can_redo())) doc_->redo();
+      ImGui::Separator();
+      if (ImGui::MenuItem("Delete", "Delete", false, !doc_->selection().empty()))
+        if (Status s = doc_->remove_selection(); !s) status_ = s.message();
+      if (ImGui::MenuItem("Group selected", "Ctrl+G", false, !doc_->selection().empty()))
+        if (auto r = doc_->group_selection(); !r) status_ = r.message();
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+      ImGui::MenuItem("Wireframe", nullptr, &preview_->wireframe);
+      if (ImGui::MenuItem("Frame preview")) preview_->frame_all();
+      if (ImGui::MenuItem("Frame nodes", "F")) canvas_.request_frame();
+      ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+  }
+
+  void layout_windows() {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    const float top = vp->WorkPos.y, status_h = ImGui::GetFrameHeight() + 4.0f;
+    const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
+    const float left_w = std::floor(w * 0.5f), upper_h = std::floor(h * 0.62f);
+    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    auto place = [&](float x, float y, float ww, float hh) {
+      ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + x, top + y));
+      ImGui::SetNextWindowSize(ImVec2(ww, hh));
+    };
+    place(0, 0, left_w, upper_h);
+    if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+      canvas_.draw(*doc_, shown_.get(), status_);
+    ImGui::End();
+    place(0, upper_h, left_w, h - upper_h);
+    if (ImGui::Begin("Inspector", nullptr, fixed)) inspector_.draw(*doc_, shown_.get(), status_);
+    ImGui::End();
+    place(left_w, 0, w - left_w, upper_h);
+    if (ImGui::Begin("Preview", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) preview_->draw();
+    ImGui::End();
+    place(left_w, upper_h, w - left_w, h - upper_h);
+    if (ImGui::Begin("Evaluation", nullptr, fixed)) evaluation_panel();
+    ImGui::End();
+    place(0, h, w, status_h);
+    if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) status_bar();
+    ImGui::End();
+  }
+
+  void evaluation_panel() {
+    if (!ImGui::BeginTabBar("eval")) return;
+    if (ImGui::BeginTabItem("Diagnostics")) {
+      if (!shown_ || shown_->result.diagnostics.empty()) ImGui::TextDisabled("No errors or warnings.");
+      if (shown_)
+        for (const Diagnostic& d : shown_->result.diagnostics) {
+          ImGui::PushStyleColor(ImGuiCol_Text, d.severity == Severity::kError ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(1, 0.8f, 0.3f, 1));
+          if (ImGui::Selectable(d.to_string().c_str()) && !d.node.empty() && doc_->graph().node(d.node[0])) doc_->select_only(d.node[0]);
+          ImGui::PopStyleColor();
+        }
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Statistics")) {
+      if (shown_ && ImGui::BeginTable("stats", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
+        ImGui::TableSetupColumn("node");
+        ImGui::TableSetupColumn("type");
+        ImGui::TableSetupColumn("outcome");
+        ImGui::TableSetupColumn("ms");
+        ImGui::TableHeadersRow();
+        for (const NodeStats& s : shown_->result.stats.nodes) {
+          ImGui::TableNextRow();
+          ImGui::TableNextColumn();
+          ImGui::TextUnformatted(to_string(s.path).c_str());
+          ImGui::TableNextColumn();
+          ImGui::TextUnformatted(s.type.c_str());
+          ImGui::TableNextColumn();
+          ImGui::TextUnformatted(to_string(s.outcome));
+          ImGui::TableNextColumn();
+          ImGui::Text("%.2f", static_cast<double>(s.time_ns) * 1e-6);
+        }
+        ImGui::EndTable();
+      }
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+
+  void status_bar() {
+    if (busy()) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1.0f, 1.0f), "evaluating...");
+    else if (shown_) {
+      std::size_t errors = 0;
+      for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;
+      ImGui::TextColored(errors ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "%zu errors | %.1f ms | %zu computed, %zu cached", errors,
+                         shown_->seconds * 1e3, shown_->result.stats.computed(), shown_->result.stats.count(NodeOutcome::kCacheHit));
+    }
+    ImGui::SameLine(0, 24);
+    ImGui::TextUnformatted(status_.c_str());
+  }
+
+  void modals() {
+    if (confirm_requested_) {
+      ImGui::OpenPopup("Unsaved changes");
+      confirm_requested_ = false;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+      ImGui::Text("%s has unsaved changes.", doc_->title().c_str());
+      if (ImGui::Button("Discard them")) {
+        ImGui::CloseCurrentPopup();
+        remove_autosave(home_, doc_->path());
+        auto action = std::move(pending_);
+        if (action) action();
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+    }
+    if (recovery_) {
+      ImGui::OpenPopup("Recover");
+    }
+    if (ImGui::BeginPopupModal("Recover", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+      const fs::path recipe = recovery_.value_or(fs::path());
+      ImGui::Text("Unsaved edits of %s were autosaved (the studio did not close cleanly).", recipe.empty() ? "an untitled recipe" : recipe.string().c_str());
+      if (ImGui::Button("Recover them")) {
+        try {
+          std::ifstream in(autosave_path(home_, recipe));
+          const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+          doc_ = Document::recovered(parse_pxg(text, recipe.empty() ? fs::path("untitled.pxg") : recipe), recipe);
+          canvas_.request_frame();
+          status_ = "recovered the autosaved edits: save to keep them";
+        } catch (const std::exception& e) {
+          status_ = std::string("cannot recover: ") + e.what();
+        }
+        recovery_.reset();
+        ImGui::CloseCurrentPopup();
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Discard them")) {
+        remove_autosave(home_, recipe);
+        recovery_.reset();
+        ImGui::CloseCurrentPopup();
+      }
+      ImGui::EndPopup();
+    }
+    path_prompt();
+  }
+
+  void path_prompt() {
+    static const char* kTitles[] = {"", "Open recipe", "Save recipe as", "Export mesh"};
+    const char* title = kTitles[static_cast<int>(prompt_.kind)];
+    if (prompt_.open_requested) {
+      ImGui::OpenPopup(title);
+      prompt_.open_requested = false;
+    }
+    if (prompt_.kind == PathPrompt::Kind::kNone || !ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(520);
+    bool go = ImGui::InputText("##path", &prompt_.path, ImGuiInputTextFlags_EnterReturnsTrue);
+    // The folder's recipes (or meshes), to pick from.
+    const fs::path dir = fs::path(prompt_.path).has_parent_path() ? fs::path(prompt_.path).parent_path() : fs::current_path();
+    ImGui::BeginChild("files", ImVec2(520, 160), true);
+    std::error_code ec;
+    std::vector<fs::path> files;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().extension() == (prompt_.kind == PathPrompt::Kind::kExport ? ".obj" : ".pxg")) files.push_back(it->path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files)
+      if (ImGui::Selectable(f.filename().string().c_str())) prompt_.path = f.string();
+    ImGui::EndChild();
+    go |= ImGui::Button(prompt_.kind == PathPrompt::Kind::kOpen ? "Open" : "Save");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      prompt_.kind = PathPrompt::Kind::kNone;
+      ImGui::CloseCurrentPopup();
+    }
+    if (go && !prompt_.path.empty()) {
+      const fs::path p = prompt_.path;
+      switch (prompt_.kind) {
+        case PathPrompt::Kind::kOpen: load(p, true); break;
+        case PathPrompt::Kind::kSaveAs:
+          try {
+            remove_autosave(home_, doc_->path());
+            doc_->save_as(p);
+            recent_.add(p);
+            status_ = "saved " + p.string();
+          } catch (const std::exception& e) {
+            status_ = e.what();
+          }
+          break;
+        case PathPrompt::Kind::kExport: export_mesh(p); break;
+        case PathPrompt::Kind::kNone: break;
+      }
+      prompt_.kind = PathPrompt::Kind::kNone;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+
+  void update_title() {
+    std::string t = doc_->title() + (doc_->dirty() ? " *" : "") + " - procex-studio";
+    if (t != title_) {
+      title_ = t;
+      glfwSetWindowTitle(window_, title_.c_str());
+    }
+  }
+
+  GLFWwindow* window_;
+  Options options_;
+  fs::path home_;
+  RecentFiles recent_;
+  std::unique_ptr<Document> doc_;
+  EvalWorker worker_;
+  std::shared_ptr<const EvalSnapshot> shown_;
+  std::uint64_t submitted_ = 0, autosaved_ = 0;
+  std::unique_ptr<PreviewView> preview_;
+  NodeCanvas canvas_;
+  Inspector inspector_;
+  std::string status_, title_;
+  PathPrompt prompt_;
+  std::optional<fs::path> recovery_;
+  std::function<void()> pending_;
+  bool confirm_requested_ = false, quit_ = false, load_failed_ = false;
+  Clock::time_point last_autosave_ = Clock::now();
+};
+
+namespace {
+
+// What a screenshot shows, for tests that check the image.
+void write_screenshot_info(const fs::path& file, App& app, int width, int height) {
+  nlohmann::json j;
+  j["width"] = width;
+  j["height"] = height;
+  const PreviewView& p = app.preview();
+  j["preview"] = {{"x", p.image_x}, {"y", p.image_y}, {"w", p.image_w}, {"h", p.image_h}};
+  j["tags"] = nlohmann::json::array();
+  std::size_t errors = 0;
+  if (const EvalSnapshot* s = app.shown()) {
+    for (const Diagnostic& d : s->result.diagnostics) errors += d.severity == Severity::kError;
+    if (s->preview)
+      for (const TagSummary& t : s->preview->tags)
+        j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
+  }
+  j["errors"] = errors;
+  write_file_atomically(file, j.dump(2) + "\n");
+}
+
+// Parameter edits timed until their result is on screen (the benchmark mode).
+class EditBench {
+ public:
+  explicit EditBench(int edits) : edits_(edits) {}
+  bool done() const { return done_ >= edits_; }
+  // Call once per frame after the swap.
+  void step(App& app) {
+    if (waiting_ && app.settled()) {
+      latencies_.push_back(ms_since(edit_time_));
+      waiting_ = false;
+      ++done_;
+    }
+    if (waiting_ || done() || !app.settled()) return;
+    // The first float parameter with a range: each edit a new value, so nothing comes from the cache.
+    for (const auto& [id, n] : app.doc().graph().nodes()) {
+      for (std::size_t i = 0; i < n.params.size(); ++i) {
+        const ParamDecl& p = n.decl().params()[i];
+        if (!n.params[i].is<double>() || !p.min || !p.max) continue;
+        const double v = *p.min + (*p.max - *p.min) * (0.3 + 0.4 * (done_ + 1) / (edits_ + 1));
+        edit_time_ = Clock::now();
+        waiting_ = true;
+        if (Status s = app.doc().set_param(id, i, Value::make(v)); !s) std::fprintf(stderr, "procex-studio: bench edit refused: %s\n", s.message().c_str());
+        param_ = n.decl().type_name() + "." + p.name;
+        return;
+      }
+    }
+    done_ = edits_;  // nothing to edit
+  }
+  nlohmann::json report() const { return {{"parameter", param_}, {"edit_to_screen_ms", latencies_}}; }
+
+ private:
+  int edits_, done_ = 0;
+  bool waiting_ = false;
+  Clock::time_point edit_time_;
+  std::vector<double> latencies_;
+  std::string param_;
+};
+
+}  // namespace
+
+int run_studio(const Options& options) {
+  if (!glfwInit()) {
+    std::fprintf(stderr, "procex-studio: cannot initialise GLFW (is DISPLAY set? under CI use xvfb-run)\n");
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "procex-studio", nullptr, nullptr);
+  if (!window) {
+    std::fprintf(stderr, "procex-studio: cannot open a window with OpenGL 3.3\n");
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  const bool automated = !options.screenshot.empty() || options.bench_edits > 0;
+  glfwSwapInterval(automated ? 0 : 1);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // a fixed layout; no imgui.ini in the working folder
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exit_code = 0;
+  {
+    App app(window, options);
+    if (automated && app.load_failed()) exit_code = 1;
+    EditBench bench(options.bench_edits);
+    std::vector<double> frame_ms, busy_frame_ms;
+    const auto start = Clock::now();
+    int settled_frames = 0;
+    while (exit_code == 0) {
+      const auto frame_start = Clock::now();
+      if (automated) glfwPollEvents();
+      else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);  // idle: no busy loop; evaluating: poll the worker
+      if (glfwWindowShouldClose(window)) app.request_quit();
+      if (app.quit()) break;
+      const bool busy = app.busy();
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      app.frame();
+      ImGui::Render();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      glViewport(0, 0, w, h);
+      glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (!options.screenshot.empty()) {
+        // Windows settle during their first frames: wait for a few frames of the final result.
+        settled_frames = app.settled() ? settled_frames + 1 : 0;
+        const bool timed_out = std::chrono::duration<double>(Clock::now() - start).count() > options.timeout_s;
+        if (settled_frames >= 3 || timed_out) {
+          try {
+            save_back_buffer_png(w, h, options.screenshot);
+            if (!options.screenshot_info.empty()) write_screenshot_info(options.screenshot_info, app, w, h);
+          } catch (const std::exception& e) {
+            std::fprintf(stderr, "procex-studio: %s\n", e.what());
+            exit_code = 1;
+          }
+          if (timed_out) {
+            std::fprintf(stderr, "procex-studio: the evaluation did not finish within %g s\n", options.timeout_s);
+            exit_code = 2;
+          }
+          break;
+        }
+      }
+      glfwSwapBuffers(window);
+      if (options.bench_edits > 0) {
+        glFinish();
+        bench.step(app);
+      }
+      const double ms = ms_since(frame_start);
+      frame_ms.push_back(ms);
+      if (busy) busy_frame_ms.push_back(ms);
+      if (options.bench_edits > 0 && (bench.done() || std::chrono::duration<double>(Clock::now() - start).count() > options.timeout_s)) break;
+    }
+    if (!options.frame_report.empty()) {
+      nlohmann::json j = bench.report();
+      j["frame_ms"] = frame_ms;
+      j["frame_ms_while_evaluating"] = busy_frame_ms;
+      try {
+        write_file_atomically(options.frame_report, j.dump() + "\n");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "procex-studio: %s\n", e.what());
+      }
+    }
+    if (!automated) app.leave();
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exit_code;
+}
+
+}  // namespace procex::studio
