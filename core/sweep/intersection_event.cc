@@ -17,6 +17,7 @@
 
 #include "core/geom/error.h"
 #include "core/sweep/ambiguity.h"
+#include "core/sweep/spike.h"
 
 namespace procex::engine {
 namespace {
@@ -136,7 +137,8 @@ bool close_if_degenerate(State& st, int start) {
   const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
   do {
     loop.push_back(c);
-    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > Tolerances::parallel_sin) collinear = false;
+    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > std::sin(Tolerances::sliver_angle))
+      collinear = false;
     c = st.corners[c].next;
     if (loop.size() > st.corners.size()) fail(st, "corrupt loop", st.position(start, st.height), {});
   } while (c != start);
@@ -310,15 +312,24 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     made.push_back(n);
   }
 
+  // New corners without a direction are settled before anything is scheduled:
+  // loops of no area close, spikes fold, ambiguous neighbours resolve.
   std::vector<int> live;
-  for (int n : made) {
+  std::vector<int> pending(made.rbegin(), made.rend());
+  while (!pending.empty()) {
+    const int n = pending.back();
+    pending.pop_back();
     if (!st.corners[n].alive || close_if_degenerate(st, n)) continue;
-    if (ambiguous(st, n)) {
-      for (int r : resolve_ambiguity(st, n))
-        if (st.corners[r].alive && !close_if_degenerate(st, r)) live.push_back(r);
+    std::vector<int> replaced;
+    if (st.corners[n].motion == Motion::Ridge) {
+      replaced = close_spike(st, n);
+    } else if (ambiguous(st, n)) {
+      replaced = resolve_ambiguity(st, n);
     } else {
       live.push_back(n);
+      continue;
     }
+    pending.insert(pending.end(), replaced.rbegin(), replaced.rend());
   }
   for (int n : live) {
     if (!st.corners[n].alive) continue;
