@@ -94,6 +94,28 @@ std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem
   return missing;
 }
 
+std::vector<std::string> check_pxg_round_trip(const std::filesystem::path& file) {
+  std::vector<std::string> problems;
+  try {
+    const Graph g = load_pxg(file);
+    std::ifstream in(file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string saved = to_pxg(g);
+    if (saved != text) problems.push_back(file.string() + ": saving does not reproduce the file byte for byte");
+    const Graph back = parse_pxg(saved, file);
+    ResultCache cache(1 << 20);
+    Evaluator ev(cache, "round-trip");
+    const EvalResult a = ev.hash_outputs(g, {});
+    const EvalResult b = ev.hash_outputs(back, {});
+    for (std::size_t i = 0; i < a.outputs.size() && i < b.outputs.size(); ++i)
+      if (a.outputs[i].hash != b.outputs[i].hash)
+        problems.push_back(file.string() + ": output '" + a.outputs[i].name + "' hashes differently after a round trip");
+  } catch (const PxgError& e) {
+    problems.push_back(e.what());
+  }
+  return problems;
+}
+
 std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples) {
   std::vector<std::string> problems;
   const std::string who = "node type '" + type.name() + "': ";

@@ -29,6 +29,11 @@ std::vector<std::string> check_node_type(const NodeType& type, const SampleInput
 // or that are missing from the build. Empty when every node file is registered.
 std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem::path& dir);
 
+// Problems with a recipe file's round trip: it must load, save to exactly the
+// bytes it was read from, and keep every output hash. Empty when it conforms.
+// (For "every sample file round-trips byte-identically".)
+std::vector<std::string> check_pxg_round_trip(const std::filesystem::path& file);
+
 // A different valid value for the parameter (next enum choice, flipped bool,
 // a number moved within its range, ...), or an empty Value when none exists.
 Value vary_param(const ParamDecl& p);

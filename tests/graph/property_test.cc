@@ -14,6 +14,8 @@ struct RandomEditor {
   std::mt19937 rng;
   Graph& g;
   UndoStack stack;
+  int groups = 0;
+  int grouped = 0;  // successful group commands
 
   RandomEditor(unsigned seed, Graph& graph) : rng(seed), g(graph), stack(graph) {}
 
@@ -31,7 +33,7 @@ struct RandomEditor {
 
   void random_edit() {
     if (g.nodes().size() < 3) return add_random_node();
-    switch (pick(8)) {
+    switch (pick(9)) {
       case 0: return add_random_node();
       case 1: (void)stack.remove_node(random_node()); return;
       case 2:
@@ -58,6 +60,13 @@ struct RandomEditor {
       }
       case 6: (void)stack.move(random_node(), static_cast<double>(pick(100)), static_cast<double>(pick(100))); return;
       case 7: (void)(pick(2) ? stack.undo() : stack.redo()); return;
+      case 8: {  // group two nodes (refused when that would make a cycle through the group)
+        const NodeId a = random_node(), b = random_node();
+        std::string name = "g";
+        name += std::to_string(groups++);
+        if (stack.group({a, b}, name)) ++grouped;
+        return;
+      }
     }
   }
 };
@@ -71,7 +80,8 @@ std::vector<PortRef> all_ports(const Graph& g) {
 }
 
 TEST(Property, CachedEvaluationEqualsEvaluationFromScratch) {
-  constexpr int kGraphs = 12, kEdits = 40;
+  constexpr int kGraphs = 24, kEdits = 60;
+  int grouped = 0;
   for (unsigned seed = 1; seed <= kGraphs; ++seed) {
     Graph g;
     RandomEditor ed(seed, g);
@@ -100,7 +110,9 @@ TEST(Property, CachedEvaluationEqualsEvaluationFromScratch) {
       for (std::size_t i = 0; i < a.diagnostics.size(); ++i)
         ASSERT_EQ(a.diagnostics[i].to_string(), b.diagnostics[i].to_string());
     }
+    grouped += ed.grouped;
   }
+  EXPECT_GT(grouped, kGraphs / 2);  // groups are part of what was compared
 }
 
 }  // namespace
