@@ -1,0 +1,186 @@
+// Editor logic without a window: every edit goes through the undo stack,
+// selection follows the graph, copy/paste and grouping, dirty state, saving.
+#include "app/studio/editor/document.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "graph/pxg.h"
+#include "tests/studio/studio_test_util.h"
+
+namespace procex::studio {
+namespace {
+
+using test::house_recipe;
+using test::read_text;
+using test::temp_dir;
+
+// c1 -> add (a), c2 -> add (b)
+struct Small {
+  Document doc;
+  NodeId c1 = 0, c2 = 0, add = 0;
+  Small() {
+    c1 = *doc.add_node("test.Const", 0, 0);
+    c2 = *doc.add_node("test.Const", 0, 100);
+    add = *doc.add_node("test.Add", 250, 50);
+    EXPECT_TRUE(doc.connect({c1, 0}, {add, 0}));
+    EXPECT_TRUE(doc.connect({c2, 0}, {add, 1}));
+  }
+};
+
+TEST(Document, EditsAreUndoneAndRedoneOneByOne) {
+  Small s;
+  const std::string full = to_pxg(s.doc.graph());
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(4.0)));
+  EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 4.0);
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_EQ(to_pxg(s.doc.graph()), full);
+  EXPECT_TRUE(s.doc.redo());
+  EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 4.0);
+  // Five edits so far besides the parameter: 3 adds and 2 connects.
+  int undone = 0;
+  while (s.doc.undo()) ++undone;
+  EXPECT_EQ(undone, 6);
+  EXPECT_TRUE(s.doc.graph().nodes().empty());
+}
+
+TEST(Document, RefusedConnectionExplainsAndChangesNothing) {
+  Small s;
+  const std::uint64_t before = s.doc.revision();
+  // A cycle: the sum back into its own input.
+  Status st = s.doc.connect({s.add, 0}, {s.add, 0});
+  EXPECT_FALSE(st);
+  EXPECT_FALSE(st.message().empty());
+  EXPECT_EQ(s.doc.revision(), before);
+  // A wrong type: a string output into a float input.
+  NodeId every = *s.doc.add_node("test.Everything", 0, 300);
+  st = s.doc.connect({every, 0}, {s.add, 0});
+  EXPECT_FALSE(st);
+  EXPECT_NE(st.message().find("string"), std::string::npos) << st.message();
+}
+
+TEST(Document, GestureIsOneUndoStep) {
+  Small s;
+  s.doc.begin_gesture("drag value");
+  for (int i = 1; i <= 10; ++i) ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(static_cast<double>(i))));
+  s.doc.end_gesture();
+  EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 10.0);
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 1.0);  // the default
+}
+
+TEST(Document, MoveOfSelectionIsOneStepAndChangesNoValue) {
+  Small s;
+  s.doc.select({s.c1, s.c2}, false);
+  ASSERT_TRUE(s.doc.move_selection(10, -5));
+  EXPECT_EQ(s.doc.graph().node(s.c1)->editor.x, 10);
+  EXPECT_EQ(s.doc.graph().node(s.c2)->editor.y, 95);
+  EXPECT_EQ(s.doc.graph().node(s.add)->editor.x, 250);
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.graph().node(s.c1)->editor.x, 0);
+  EXPECT_EQ(s.doc.graph().node(s.c2)->editor.y, 100);
+}
+
+TEST(Document, DeleteSelectionTakesLinksAndUndoRestoresThem) {
+  Small s;
+  s.doc.select_only(s.c1);
+  ASSERT_TRUE(s.doc.remove_selection());
+  EXPECT_EQ(s.doc.graph().node(s.c1), nullptr);
+  EXPECT_TRUE(s.doc.selection().empty());
+  EXPECT_FALSE(s.doc.graph().source({s.add, 0}));
+  EXPECT_TRUE(s.doc.undo());
+  ASSERT_TRUE(s.doc.graph().source({s.add, 0}));
+  EXPECT_EQ(s.doc.graph().source({s.add, 0})->node, s.c1);
+}
+
+TEST(Document, SelectionDropsNodesThatAnUndoRemoves) {
+  Small s;
+  NodeId extra = *s.doc.add_node("test.Const", 0, 400);
+  EXPECT_EQ(s.doc.selected(), extra);
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_TRUE(s.doc.selection().empty());
+}
+
+TEST(Document, CopyPasteDuplicatesNodesParametersAndInnerLinks) {
+  Small s;
+  ASSERT_TRUE(s.doc.set_param(s.c2, 0, Value::make(7.5)));
+  s.doc.select({s.c2, s.add}, false);
+  const std::string clip = s.doc.copy_selection();
+  auto pasted = s.doc.paste(clip, 40, 40);
+  ASSERT_TRUE(pasted) << pasted.message();
+  const std::vector<NodeId>& ids = pasted.value();
+  ASSERT_EQ(ids.size(), 2u);
+  EXPECT_EQ(s.doc.graph().nodes().size(), 5u);
+  EXPECT_EQ(s.doc.selection(), std::set<NodeId>(ids.begin(), ids.end()));
+  const Node* c2_copy = s.doc.graph().node(ids[0]);
+  const Node* add_copy = s.doc.graph().node(ids[1]);
+  EXPECT_EQ(c2_copy->params[0].get<double>(), 7.5);
+  EXPECT_EQ(c2_copy->editor.y, 140);
+  // The link between the copied nodes is copied; the one from c1 (not copied) is not.
+  EXPECT_EQ(s.doc.graph().source({add_copy->id, 1})->node, c2_copy->id);
+  EXPECT_FALSE(s.doc.graph().source({add_copy->id, 0}));
+  // The whole paste is one undo step.
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.graph().nodes().size(), 3u);
+}
+
+TEST(Document, PasteOfForeignTextIsRefusedWithReason) {
+  Small s;
+  auto r = s.doc.paste("hello world", 0, 0);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.message().find("clipboard"), std::string::npos);
+  EXPECT_EQ(s.doc.graph().nodes().size(), 3u);
+}
+
+TEST(Document, GroupSelectionMakesOneNodeAndUndoes) {
+  Small s;
+  s.doc.select({s.c1, s.c2}, false);
+  auto g = s.doc.group_selection();
+  ASSERT_TRUE(g) << g.message();
+  EXPECT_EQ(s.doc.graph().nodes().size(), 2u);
+  EXPECT_EQ(s.doc.graph().node(*g)->group, "group1");
+  EXPECT_EQ(s.doc.selected(), *g);
+  EXPECT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.graph().nodes().size(), 3u);
+}
+
+TEST(Document, DirtyUntilSavedAndCleanAfterUndoingBack) {
+  const auto dir = temp_dir();
+  auto doc = Document::open(house_recipe());
+  EXPECT_FALSE(doc->dirty());
+  ASSERT_TRUE(doc->set_param(1, 1, Value::make(20.0)));
+  EXPECT_TRUE(doc->dirty());
+  EXPECT_TRUE(doc->undo());
+  EXPECT_FALSE(doc->dirty());  // the same text as the file
+  ASSERT_TRUE(doc->set_param(1, 1, Value::make(20.0)));
+  doc->save_as(dir / "copy.pxg");
+  EXPECT_FALSE(doc->dirty());
+  EXPECT_EQ(doc->title(), "copy.pxg");
+  const Graph reread = load_pxg(dir / "copy.pxg");
+  EXPECT_EQ(reread.node(1)->params[1].get<double>(), 20.0);
+  EXPECT_EQ(read_text(dir / "copy.pxg"), to_pxg(doc->graph()));
+  // Only the target file: the temporary of the atomic write is gone.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
+}
+
+TEST(Document, SavingUntitledNeedsAName) {
+  Document doc;
+  EXPECT_THROW(doc.save(), std::runtime_error);
+}
+
+TEST(Document, OpenOfBadFileThrowsWithLocation) {
+  const auto dir = temp_dir();
+  {
+    std::ofstream(dir / "bad.pxg") << "{\"format\": \"procex-graph\", \"version\": 2, \"nodes\": [ {\"id\": 1, \"type\": \"Extrud\"} ]}";
+  }
+  try {
+    Document::open(dir / "bad.pxg");
+    FAIL() << "expected a PxgError";
+  } catch (const PxgError& e) {
+    EXPECT_NE(std::string(e.what()).find("Extrude"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace procex::studio

@@ -1,0 +1,92 @@
+// The background evaluation: results arrive without blocking, a newer
+// submission cancels an older one, and a failing edit keeps the last good mesh.
+#include "app/studio/editor/eval_worker.h"
+
+#include <gtest/gtest.h>
+
+#include "app/studio/editor/document.h"
+#include "graph/pxg.h"
+#include "tests/studio/studio_test_util.h"
+
+namespace procex::studio {
+namespace {
+
+using namespace std::chrono_literals;
+
+TEST(PreviewPorts, GraphOutputsFirstElseTheEndsOfTheGraph) {
+  Document doc;
+  NodeId c = *doc.add_node("test.Const", 0, 0);
+  NodeId add = *doc.add_node("test.Add", 0, 0);
+  ASSERT_TRUE(doc.connect({c, 0}, {add, 0}));
+  EXPECT_EQ(preview_ports(doc.graph()), (std::vector<PortRef>{{add, 0}}));
+  const Graph house = load_pxg(test::house_recipe());
+  EXPECT_EQ(preview_ports(house), (std::vector<PortRef>{{2, 0}}));
+}
+
+TEST(EvalWorker, EvaluatesTheHouseIntoATaggedPreview) {
+  EvalWorker worker;
+  const Graph g = load_pxg(test::house_recipe());
+  worker.submit(1, g);
+  ASSERT_TRUE(worker.wait_idle(60s));
+  auto snap = worker.latest();
+  ASSERT_TRUE(snap);
+  EXPECT_EQ(snap->revision, 1u);
+  EXPECT_TRUE(snap->result.ok());
+  ASSERT_TRUE(snap->preview);
+  EXPECT_TRUE(snap->preview_current);
+  EXPECT_EQ(snap->preview->meshes, 1u);
+  EXPECT_GT(snap->preview->faces, 5u);
+  EXPECT_TRUE(snap->preview->tag("roof"));
+  EXPECT_EQ(snap->result.stats.computed(), 2u);
+  // The same graph again: everything from the cache.
+  worker.submit(2, g);
+  ASSERT_TRUE(worker.wait_idle(60s));
+  EXPECT_EQ(worker.latest()->result.stats.computed(), 0u);
+  EXPECT_EQ(worker.latest()->result.stats.count(NodeOutcome::kCacheHit), 1u);
+}
+
+TEST(EvalWorker, FailedEvaluationKeepsTheLastGoodMesh) {
+  EvalWorker worker;
+  auto doc = Document::open(test::house_recipe());
+  worker.submit(doc->revision(), doc->graph());
+  ASSERT_TRUE(worker.wait_idle(60s));
+  auto good = worker.latest()->preview;
+  ASSERT_TRUE(good);
+  // Disconnecting the footprint makes Extrude fail (a required input).
+  ASSERT_TRUE(doc->disconnect({2, 0}));
+  worker.submit(doc->revision(), doc->graph());
+  ASSERT_TRUE(worker.wait_idle(60s));
+  auto snap = worker.latest();
+  EXPECT_EQ(snap->revision, doc->revision());
+  EXPECT_TRUE(snap->result.has_errors());
+  EXPECT_EQ(snap->preview, good);
+  EXPECT_FALSE(snap->preview_current);
+}
+
+TEST(EvalWorker, NewerSubmissionCancelsTheRunningOne) {
+  EvalWorker worker;
+  Document doc;
+  NodeId c = *doc.add_node("test.Const", 0, 0);
+  NodeId slow = *doc.add_node("test.Slow", 0, 0);
+  ASSERT_TRUE(doc.connect({c, 0}, {slow, 0}));
+  ASSERT_TRUE(doc.set_param(slow, 0, Value::make<std::int64_t>(60000)));  // a minute, unless cancelled
+  worker.submit(1, doc.graph());
+  ASSERT_TRUE(doc.set_param(slow, 0, Value::make<std::int64_t>(1)));
+  worker.submit(2, doc.graph());
+  ASSERT_TRUE(worker.wait_idle(30s));
+  ASSERT_TRUE(worker.latest());
+  EXPECT_EQ(worker.latest()->revision, 2u);  // the cancelled evaluation never shows
+  EXPECT_TRUE(worker.latest()->result.ok());
+}
+
+TEST(EvalWorker, ExtraPortsAreEvaluatedToo) {
+  EvalWorker worker;
+  const Graph g = load_pxg(test::house_recipe());
+  worker.submit(1, g, {PortRef{1, 0}});
+  ASSERT_TRUE(worker.wait_idle(60s));
+  EXPECT_TRUE(worker.latest()->values.count(PortRef{1, 0}));
+  EXPECT_TRUE(worker.latest()->values.count(PortRef{2, 0}));
+}
+
+}  // namespace
+}  // namespace procex::studio

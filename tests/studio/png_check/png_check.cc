@@ -1,0 +1,116 @@
+// studio_png_check IMAGE.png INFO.json -- checks a procex-studio screenshot:
+// the image is not blank, and the 3D preview shows the geometry: enough
+// pixels differ from the preview's background, and every coloured tag that
+// covers a fair share of the mesh appears in its (lit) colour. INFO.json is
+// what `procex-studio --screenshot-info` wrote beside the image.
+#include <stb_image.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Rgb {
+  float r, g, b;
+};
+
+// Lighting scales a tag's colour, so compare chromaticities (colour / sum).
+bool same_chroma(Rgb p, Rgb c) {
+  const float sp = p.r + p.g + p.b, sc = c.r + c.g + c.b;
+  if (sp < 0.15f || sc <= 0) return false;
+  return std::fabs(p.r / sp - c.r / sc) + std::fabs(p.g / sp - c.g / sc) + std::fabs(p.b / sp - c.b / sc) < 0.05f;
+}
+
+bool chromatic(Rgb c) { return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.1f; }
+
+int failures = 0;
+void check(bool ok, const std::string& what) {
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  failures += !ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json\n");
+    return 2;
+  }
+  int w = 0, h = 0, n = 0;
+  unsigned char* data = stbi_load(argv[1], &w, &h, &n, 3);
+  if (!data) {
+    std::fprintf(stderr, "studio_png_check: %s: %s\n", argv[1], stbi_failure_reason());
+    return 1;
+  }
+  nlohmann::json info;
+  try {
+    std::ifstream in(argv[2]);
+    info = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "studio_png_check: %s: %s\n", argv[2], e.what());
+    return 1;
+  }
+  auto at = [&](int x, int y) {
+    const unsigned char* p = data + (static_cast<std::size_t>(y) * w + x) * 3;
+    return Rgb{p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f};
+  };
+  check(w == info["width"].get<int>() && h == info["height"].get<int>(), "image size " + std::to_string(w) + "x" + std::to_string(h));
+  check(info["errors"].get<int>() == 0, "the recipe evaluated without errors");
+
+  // Not blank: many distinct colours over the whole window.
+  std::set<int> colours;
+  for (int y = 0; y < h; y += 2)
+    for (int x = 0; x < w; x += 2) {
+      const unsigned char* p = data + (static_cast<std::size_t>(y) * w + x) * 3;
+      colours.insert((p[0] >> 3) << 10 | (p[1] >> 3) << 5 | (p[2] >> 3));
+    }
+  check(colours.size() >= 20, std::to_string(colours.size()) + " distinct colours in the window");
+
+  // The preview: pixels that are neither its background nor its grey grid.
+  const auto& r = info["preview"];
+  const int x0 = static_cast<int>(r["x"].get<double>()), y0 = static_cast<int>(r["y"].get<double>());
+  const int x1 = std::min(w, x0 + static_cast<int>(r["w"].get<double>())), y1 = std::min(h, y0 + static_cast<int>(r["h"].get<double>()));
+  const Rgb background = at(x0 + 1, y0 + 1);
+  std::vector<Rgb> tag_colours;
+  std::vector<std::string> tag_names;
+  std::vector<bool> must_show;
+  double total_area = 0;
+  for (const auto& t : info["tags"]) total_area += t["area"].get<double>();
+  for (const auto& t : info["tags"]) {
+    const Rgb c{t["color"][0].get<float>(), t["color"][1].get<float>(), t["color"][2].get<float>()};
+    tag_colours.push_back(c);
+    tag_names.push_back(t["name"].get<std::string>());
+    must_show.push_back(chromatic(c) && t["area"].get<double>() >= 0.15 * total_area);
+  }
+  std::vector<long> tag_pixels(tag_colours.size(), 0);
+  long geometry = 0, area = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      ++area;
+      const Rgb p = at(x, y);
+      const bool grey = std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b}) < 0.03f;
+      const bool is_background = std::fabs(p.r - background.r) + std::fabs(p.g - background.g) + std::fabs(p.b - background.b) < 0.03f;
+      if (is_background || (grey && p.r < 0.35f)) continue;  // background or grid line
+      ++geometry;
+      for (std::size_t i = 0; i < tag_colours.size(); ++i)
+        if (chromatic(tag_colours[i]) && same_chroma(p, tag_colours[i])) ++tag_pixels[i];
+    }
+  check(area > 10000, "preview area " + std::to_string(area) + " pixels");
+  check(geometry > area / 50, "geometry covers " + std::to_string(100.0 * geometry / std::max(area, 1L)) + "% of the preview");
+  long tagged = 0;
+  for (std::size_t i = 0; i < tag_colours.size(); ++i) {
+    tagged += tag_pixels[i];
+    if (must_show[i]) check(tag_pixels[i] >= 50, "tag '" + tag_names[i] + "' shows in " + std::to_string(tag_pixels[i]) + " pixels");
+  }
+  check(tagged > geometry / 2, std::to_string(tagged) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
+  stbi_image_free(data);
+  std::printf("%d failed\n", failures);
+  return failures == 0 ? 0 : 1;
+}
