@@ -306,10 +306,13 @@ class Run {
   void emit_group(Frame& f, const Node& node, NodePath path, const std::vector<Value>& params, std::size_t depth) {
     const Graph& body = *node.type->body;
     std::vector<Source>& outs = f.group_outputs[node.id];
-    if (depth + 1 > kMaxGroupDepth) {
+    const bool too_deep = depth + 1 > kMaxGroupDepth;
+    if (too_deep || ++expanded_ + plan_.size() > options_.max_expanded_nodes) {
       Source s;
       s.kind = Source::kMissing;
-      s.why = "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " at node " + to_string(path);
+      s.why = too_deep ? "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " at node " + to_string(path)
+                       : "the graph expands to more than " + std::to_string(options_.max_expanded_nodes) +
+                             " nodes once its groups are flattened (at group node " + to_string(path) + ")";
       outs.assign(body.outputs().size(), s);
       return;
     }
@@ -461,6 +464,7 @@ class Run {
   EvalResult& result_;
   std::vector<std::unique_ptr<PlanNode>> plan_;
   std::vector<NodeStats> pass_through_stats_;
+  std::size_t expanded_ = 0;  // group instances flattened so far
 };
 
 }  // namespace

@@ -36,6 +36,10 @@ using Bindings = std::map<std::string, Value, std::less<>>;
 struct EvalOptions {
   CancelToken cancel;
   bool parallel = true;
+  // Groups of groups multiply: a file of a few kilobytes can expand to
+  // billions of nodes. Beyond this many flattened nodes plus group instances,
+  // the remaining groups fail with an error instead.
+  std::size_t max_expanded_nodes = 200000;
 };
 
 struct OutputResult {

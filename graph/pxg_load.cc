@@ -51,6 +51,9 @@ struct Loader {
   const PxgOptions& options;
   fs::path root;                       // group files must stay inside
   std::vector<fs::path> chain;         // files being loaded, for cycles between libraries
+  // Each library file is read once per load, however often it is referenced
+  // (references that fan out level after level would otherwise multiply).
+  std::map<fs::path, std::shared_ptr<const Graph>> libraries;
   std::vector<std::string> warnings;
 
   [[noreturn]] void fail(const std::string& file, const std::string& where, const std::string& message) const {
@@ -223,7 +226,7 @@ struct Loader {
       std::string ref;
       if (e.contains("file")) {
         ref = string_member(e, "file", c);
-        body = std::make_shared<const Graph>(load_library(ref, file, c.ptr + "/file", group_depth + 1));
+        body = load_library(ref, file, c.ptr + "/file", group_depth + 1);
       } else if (e.contains("graph")) {
         const json& inner = member(e, "graph", c, json::value_t::object);
         body = std::make_shared<const Graph>(read_graph(inner, c.ptr + "/graph", path, group_depth + 1));
@@ -234,7 +237,8 @@ struct Loader {
     }
   }
 
-  Graph load_library(const std::string& ref, const std::string& file, const std::string& where, std::size_t group_depth) {
+  std::shared_ptr<const Graph> load_library(const std::string& ref, const std::string& file, const std::string& where,
+                                            std::size_t group_depth) {
     const fs::path rel(ref);
     if (ref.empty() || rel.is_absolute() || rel.has_root_name())
       fail(file, where, "group file '" + ref + "' must be a path relative to the recipe's folder");
@@ -247,9 +251,11 @@ struct Loader {
       fail(file, where, "group file '" + ref + "' lies outside the recipe's folder " + root.string());
     if (std::find(chain.begin(), chain.end(), target) != chain.end())
       fail(file, where, "group file '" + ref + "' includes itself (through " + std::to_string(chain.size()) + " files)");
+    if (auto known = libraries.find(target); known != libraries.end()) return known->second;
     chain.push_back(target);
-    Graph g = load_file(target, file, where, group_depth);
+    auto g = std::make_shared<const Graph>(load_file(target, file, where, group_depth));
     chain.pop_back();
+    libraries.emplace(target, g);
     return g;
   }
 
@@ -468,7 +474,7 @@ void hand_over_warnings(const Loader& l, const PxgOptions& options) {
 }  // namespace
 
 Graph parse_pxg(std::string_view text, const fs::path& file, const PxgOptions& options) {
-  Loader l{options, root_for(file, options), {}, {}};
+  Loader l{options, root_for(file, options), {}, {}, {}};
   std::error_code ec;
   l.chain.push_back(fs::weakly_canonical(fs::absolute(file, ec), ec));
   Graph g = l.parse_file_text(text, file, 0);
@@ -477,7 +483,7 @@ Graph parse_pxg(std::string_view text, const fs::path& file, const PxgOptions& o
 }
 
 Graph load_pxg(const fs::path& file, const PxgOptions& options) {
-  Loader l{options, root_for(file, options), {}, {}};
+  Loader l{options, root_for(file, options), {}, {}, {}};
   std::error_code ec;
   l.chain.push_back(fs::weakly_canonical(fs::absolute(file, ec), ec));
   Graph g = l.load_file(file, file.string(), "", 0);

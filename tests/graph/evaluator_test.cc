@@ -245,6 +245,35 @@ TEST_F(EvaluatorTest, GroupsEvaluateWithExposedParametersAndShareTheCache) {
   EXPECT_EQ(test::evaluations(), 0);
 }
 
+TEST_F(EvaluatorTest, GroupsThatMultiplyAreRefusedNotExpanded) {
+  // Level k holds 10 instances of level k-1, all summed: 10^7 constants after 7 levels.
+  std::shared_ptr<Graph> level = std::make_shared<Graph>();
+  test::output(*level, "v", constant(*level, 1));
+  for (int k = 1; k <= 7; ++k) {
+    auto next = std::make_shared<Graph>();
+    ASSERT_TRUE(next->add_group("inner", level));
+    NodeId sum = next->add_group_node("inner").value();
+    for (int i = 1; i < 10; ++i) {
+      const NodeId inst = next->add_group_node("inner").value();
+      const NodeId a = add(*next, "test.Add");
+      link(*next, sum, 0, a, 0);
+      link(*next, inst, 0, a, 1);
+      sum = a;
+    }
+    test::output(*next, "v", sum);
+    level = next;
+  }
+  EvalOptions options;
+  options.max_expanded_nodes = 20000;
+  EvalResult r = ev.evaluate(*level, {}, {}, options);
+  EXPECT_FALSE(r.ok());
+  ASSERT_FALSE(r.diagnostics.empty());
+  std::string all;
+  for (const Diagnostic& d : r.diagnostics) all += d.to_string() + "\n";
+  EXPECT_NE(all.find("the graph expands to more than 20000 nodes once its groups are flattened"), std::string::npos)
+      << all.substr(0, 500);
+}
+
 TEST_F(EvaluatorTest, StatsPrintATable) {
   test::Diamond d = test::diamond();
   EvalResult r = ev.evaluate(d.g, {});

@@ -171,6 +171,24 @@ TEST(Pxg, GroupFilesMustStayInsideTheRecipeFolder) {
             std::string::npos);
 }
 
+TEST(Pxg, LibraryFilesReferencedManyTimesAreReadOnce) {
+  // level_k references level_{k-1} ten times: read naively, 10^12 file loads.
+  const fs::path dir = scratch_dir("fanout");
+  std::ofstream(dir / "level_0.pxg") << R"({"format": "procex-graph", "version": 2})";
+  for (int k = 1; k <= 12; ++k) {
+    std::string groups;
+    for (int i = 0; i < 10; ++i)
+      groups += std::string(i ? ", " : "") + "{\"name\": \"g" + std::to_string(i) + "\", \"file\": \"level_" +
+                std::to_string(k - 1) + ".pxg\"}";
+    std::ofstream(dir / ("level_" + std::to_string(k) + ".pxg"))
+        << R"({"format": "procex-graph", "version": 2, "groups": [)" << groups << "]}";
+  }
+  Graph g = load_pxg(dir / "level_12.pxg");
+  EXPECT_EQ(g.groups().size(), 10u);
+  EXPECT_EQ(g.groups().at("g0").type->body, g.groups().at("g9").type->body);  // one shared body
+  fs::remove_all(dir);
+}
+
 struct BadCase {
   const char* what;
   const char* text;
