@@ -20,9 +20,37 @@ inline constexpr double kStraightTurnSine = 1e-12;
 
 // Mesh validation: distance tolerance (planarity, intersections) relative to
 // the mesh's bounding-box diagonal when ValidationOptions::tolerance <= 0.
-// Larger than the sweep's clustering tolerances, which move vertices off the
-// exact plane intersections by up to their own size.
-inline constexpr double kMeshDistanceRelative = 1e-7;
+// Ten times the sweep's clustering tolerances: a cluster's vertex is the best
+// fit of planes that meet only to within those, and a fast corner carries
+// that offset along.
+inline constexpr double kMeshDistanceRelative = 1e-6;
+
+// The sweep engine's tolerances. Distances scale with the input's extent.
+struct SweepTolerances {
+  double scale = 1.0;  // characteristic length of the input (bounding-box extent)
+
+  // Paper delta2: events whose heights differ by less than this form one cluster.
+  double height() const { return 1e-7 * scale; }
+  // Paper delta3: events within this plan distance at one height are one point.
+  double position() const { return 1e-7 * scale; }
+  // Paper delta1: how far a collision may lie outside an edge's span and still hit it.
+  double span_margin() const { return 1e-7 * scale; }
+  // Beyond this height the sweep is considered to run away (no closing event).
+  double runaway_height() const { return 1e7 * scale; }
+
+  // Dimensionless: sine of the angle below which two edge directions are parallel.
+  static constexpr double parallel_sin = 1e-10;
+  // Dimensionless: slopes (tan of the angle) closer than this make coplanar faces.
+  static constexpr double same_slope = 1e-9;
+  // Radians: rays leaving a collision this close in angle may be taken in either
+  // order (the sliver between them has no width worth keeping).
+  static constexpr double sliver_angle = 1e-4;
+  // Dimensionless: a corner moving faster than this (plan distance per unit of
+  // height, relative to its planes' slopes) has no usable direction.
+  static constexpr double max_speed = 1e6;
+  // Angles within 90 degrees by less than this are treated as horizontal.
+  static constexpr double max_slope = 1e6;
+};
 
 // The characteristic length of a footprint: the diagonal of the bounding box
 // of its finite points (0 if it has none).

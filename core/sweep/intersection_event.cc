@@ -137,8 +137,7 @@ bool close_if_degenerate(State& st, int start) {
   const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
   do {
     loop.push_back(c);
-    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > std::sin(Tolerances::sliver_angle))
-      collinear = false;
+    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > Tolerances::parallel_sin) collinear = false;
     c = st.corners[c].next;
     if (loop.size() > st.corners.size()) fail(st, "corrupt loop", st.position(start, st.height), {});
   } while (c != start);

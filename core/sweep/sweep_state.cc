@@ -83,7 +83,9 @@ void State::emit_top(int e, std::uint32_t vs, std::uint32_t vt) {
 std::uint32_t State::vertex_now(int c) {
   const Corner& k = corners[c];
   const glm::dvec3& o = vertices[k.origin];
-  if (std::abs(o.z - height) <= tol_.height()) return k.origin;
+  // A corner with no direction exists only at the height it was made.
+  if (std::abs(o.z - height) <= tol_.height() || k.motion == Motion::Ridge || k.motion == Motion::Ambiguous)
+    return k.origin;
   const std::uint32_t v = add_vertex({position(c, height), height});
   emit_trajectory(c, v);
   return v;

@@ -10,9 +10,11 @@
 #include "core/mesh/surface.h"
 #include "core/sweep/plane.h"
 #include "core/sweep/sweep.h"
-#include "core/sweep/tolerances.h"
+#include "core/geom/tolerances.h"
 
 namespace procex::engine {
+
+using Tolerances = SweepTolerances;
 
 inline constexpr int kNone = -1;
 
