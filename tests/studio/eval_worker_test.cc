@@ -90,3 +90,30 @@ TEST(EvalWorker, ExtraPortsAreEvaluatedToo) {
 
 }  // namespace
 }  // namespace procex::studio
+
+namespace procex::studio {
+namespace {
+
+TEST(PreviewBindings, UnboundFootprintInputsGetTheStandInPlan) {
+  Graph g;
+  ASSERT_TRUE(g.add_input({"footprint", &value_type<Footprint>(), "", {}}));
+  ASSERT_TRUE(g.add_input({"seed", &value_type<std::int64_t>(), "", {}}));
+  ASSERT_TRUE(g.add_input({"other", &value_type<Footprint>(), "", Value::make(preview_footprint())}));
+  const Bindings b = preview_bindings(g, preview_footprint());
+  ASSERT_EQ(b.size(), 1u);
+  ASSERT_TRUE(b.count("footprint"));
+  EXPECT_EQ(b.at("footprint").get<Footprint>().loops.at(0).points.size(), 4u);
+}
+
+TEST(EvalWorker, BatchRecipeShowsTheStandInPlan) {
+  const Graph city = load_pxg(std::filesystem::path(PROCEX_SAMPLES) / "city.pxg");
+  EvalWorker worker;
+  worker.submit(1, city, {}, preview_bindings(city, preview_footprint()));
+  ASSERT_TRUE(worker.wait_idle(std::chrono::seconds(60)));
+  EXPECT_TRUE(worker.latest()->result.ok());
+  ASSERT_TRUE(worker.latest()->preview);
+  EXPECT_GT(worker.latest()->preview->faces, 4u);
+}
+
+}  // namespace
+}  // namespace procex::studio

@@ -1,6 +1,7 @@
 #include "app/studio/editor/eval_worker.h"
 
 #include <set>
+#include <typeindex>
 
 namespace procex::studio {
 
@@ -18,6 +19,15 @@ std::vector<PortRef> preview_ports(const Graph& g) {
   return ports;
 }
 
+Footprint preview_footprint() { return make_footprint({{{0, 0}, {14, 0}, {14, 10}, {0, 10}}}, 45.0); }
+
+Bindings preview_bindings(const Graph& g, const Footprint& footprint) {
+  Bindings b;
+  for (const GraphInput& in : g.inputs())
+    if (in.default_value.empty() && in.type && in.type->cpp_type() == std::type_index(typeid(Footprint))) b[in.name] = Value::make(footprint);
+  return b;
+}
+
 EvalWorker::EvalWorker(std::size_t cache_bytes)
     : cache_(cache_bytes), evaluator_(cache_, "procex-studio"), thread_([this] { run(); }) {}
 
@@ -31,10 +41,10 @@ EvalWorker::~EvalWorker() {
   thread_.join();
 }
 
-void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports) {
+void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports, Bindings bindings) {
   {
     std::lock_guard lock(mutex_);
-    pending_ = Job{revision, std::move(graph), std::move(extra_ports)};
+    pending_ = Job{revision, std::move(graph), std::move(extra_ports), std::move(bindings)};
     running_cancel_.cancel();
   }
   changed_.notify_all();
@@ -81,7 +91,7 @@ std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate(Job& job, const CancelT
   ports.insert(ports.end(), job.extra_ports.begin(), job.extra_ports.end());
   auto snap = std::make_shared<EvalSnapshot>();
   snap->revision = job.revision;
-  snap->result = evaluator_.evaluate_ports(job.graph, {}, ports, EvalOptions{cancel});
+  snap->result = evaluator_.evaluate_ports(job.graph, job.bindings, ports, EvalOptions{cancel});
   if (snap->result.cancelled || cancel.cancelled()) return nullptr;
 
   std::vector<const TaggedMesh*> meshes;

@@ -19,6 +19,7 @@
 #include "app/studio/editor/preview_mesh.h"
 #include "graph/cache.h"
 #include "graph/evaluator.h"
+#include "core/geom/footprint.h"
 #include "graph/graph.h"
 
 namespace procex::studio {
@@ -27,6 +28,14 @@ namespace procex::studio {
 // when no graph output is connected, every output of the nodes whose outputs
 // feed nothing (the ends of the graph).
 std::vector<PortRef> preview_ports(const Graph& g);
+
+// Values for the graph inputs that have no default, so that a recipe made for
+// batch runs (a footprint bound per feature) still shows something: a
+// footprint input gets `footprint`, other unbound inputs stay unbound (and
+// their users report it).
+Bindings preview_bindings(const Graph& g, const Footprint& footprint);
+// The stand-in plan for an unbound footprint input: a 14 m x 10 m rectangle, edges at 45 degrees.
+Footprint preview_footprint();
 
 struct EvalSnapshot {
   std::uint64_t revision = 0;    // the document revision this evaluation saw
@@ -46,7 +55,7 @@ class EvalWorker {
 
   // Evaluates `graph` (the preview ports plus `extra_ports`, e.g. the selected
   // node's outputs for the plan editor), cancelling whatever runs.
-  void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {});
+  void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {}, Bindings bindings = {});
   // The newest finished (not cancelled) evaluation, or null before the first.
   std::shared_ptr<const EvalSnapshot> latest() const;
   // Nothing pending or running.
@@ -59,6 +68,7 @@ class EvalWorker {
     std::uint64_t revision = 0;
     Graph graph;
     std::vector<PortRef> extra_ports;
+    Bindings bindings;
   };
   void run();
   std::shared_ptr<const EvalSnapshot> evaluate(Job& job, const CancelToken& cancel);

@@ -29,6 +29,7 @@ std::string json_text(const Value& v) {
 }  // namespace
 
 void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
+  widgets_.clear();
   const NodeId id = doc.selected();
   if (id == 0) {
     ImGui::TextDisabled(doc.selection().empty() ? "Select a node to edit its parameters." : "%zu nodes selected.", doc.selection().size());
@@ -103,6 +104,20 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
     } else if (v.is<bool>()) {
       bool b = v.get<bool>();
       if (ImGui::Checkbox(label, &b)) apply(i, Value::make(b));
+    } else if (v.is<Vec2>() || v.is<Vec3>()) {
+      double xyz[3] = {0, 0, 0};
+      const int n = v.is<Vec2>() ? 2 : 3;
+      if (n == 2) {
+        xyz[0] = v.get<Vec2>().x;
+        xyz[1] = v.get<Vec2>().y;
+      } else {
+        xyz[0] = v.get<Vec3>().x;
+        xyz[1] = v.get<Vec3>().y;
+        xyz[2] = v.get<Vec3>().z;
+      }
+      if (ImGui::DragScalarN(label, ImGuiDataType_Double, xyz, n, 0.05f, nullptr, nullptr, number_format(p, "%.3f").c_str()))
+        apply(i, n == 2 ? Value::make(Vec2{xyz[0], xyz[1]}) : Value::make(Vec3{xyz[0], xyz[1], xyz[2]}));
+      track(p.name);
     } else if (v.is<std::string>()) {
       edit_text(i, v.get<std::string>(), false, [](const std::string& t) { return Value::make(t); });
     } else if (v.type() && v.type()->has_json()) {
@@ -113,6 +128,8 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
       ImGui::TextDisabled("%s: %s (not editable here)", label, v.type() ? v.type()->name().c_str() : "?");
     }
     if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%s", p.doc.c_str());
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    widgets_[p.name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
     ImGui::PopID();
   }
   if (!eval) return;

@@ -5,6 +5,7 @@
 // its diagnostics and its last evaluation outcome.
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 
@@ -16,10 +17,14 @@ namespace procex::studio {
 class Inspector {
  public:
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
+  // Each parameter widget's rectangle in the last frame (window pixels), by
+  // parameter name: part of the --ui-map for tests that click.
+  const std::map<std::string, std::array<float, 4>>& widgets() const { return widgets_; }
 
  private:
   // Text being edited for string and JSON parameters, by "node.param", until committed.
   std::map<std::string, std::string> editing_;
+  std::map<std::string, std::array<float, 4>> widgets_;
 };
 
 }  // namespace procex::studio

@@ -101,6 +101,13 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
   ImFont* font = ImGui::GetFont();
   const float font_size = ImGui::GetFontSize() * zoom;
 
+  screen_rect_ = Rect{view_.origin, view_.origin + size};
+  pins_on_screen_.clear();
+  for (const NodeBox& b : boxes) {
+    for (std::uint32_t i = 0; i < b.inputs.size(); ++i) pins_on_screen_.push_back({{b.id, i}, false, view_.to_screen(b.inputs[i])});
+    for (std::uint32_t i = 0; i < b.outputs.size(); ++i) pins_on_screen_.push_back({{b.id, i}, true, view_.to_screen(b.outputs[i])});
+  }
+
   // Links under the nodes.
   for (const auto& [to, from] : g.links()) {
     const NodeBox* fb = find_box(boxes, from.node);

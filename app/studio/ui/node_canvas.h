@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -27,6 +28,16 @@ class NodeCanvas {
   // Frames all nodes on the next draw.
   void request_frame() { frame_pending_ = true; }
 
+  // Where the last frame drew the canvas and its pins, in window pixels: the
+  // --ui-map that tests driving real input events aim at.
+  struct PinOnScreen {
+    PortRef port;
+    bool is_output = false;
+    glm::vec2 pos{0.0f};
+  };
+  const std::vector<PinOnScreen>& pins_on_screen() const { return pins_on_screen_; }
+  Rect screen_rect() const { return screen_rect_; }
+
  private:
   void draw_add_menu(Document& doc, std::string& status);
 
@@ -39,6 +50,8 @@ class NodeCanvas {
   PinHit link_from_{};
   glm::vec2 add_at_{0.0f};
   char search_[64] = {};
+  std::vector<PinOnScreen> pins_on_screen_;
+  Rect screen_rect_;
 };
 
 }  // namespace procex::studio

@@ -71,7 +71,7 @@ class App {
     if (submitted_ != doc_->revision()) {
       submitted_ = doc_->revision();
       std::vector<PortRef> extra;
-      worker_.submit(submitted_, doc_->graph(), extra);
+      worker_.submit(submitted_, doc_->graph(), extra, preview_bindings(doc_->graph(), preview_footprint_));
     }
     if (auto latest = worker_.latest(); latest && latest != shown_) {
       shown_ = std::move(latest);
@@ -83,6 +83,7 @@ class App {
     layout_windows();
     modals();
     update_title();
+    if (!options_.ui_map.empty()) write_ui_map();
   }
 
   // Close button: ask first when there are unsaved changes.
@@ -182,6 +183,7 @@ class App {
     if (ImGui::IsKeyPressed('S')) save(io.KeyShift);
     if (ImGui::IsKeyPressed('O')) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
     if (ImGui::IsKeyPressed('N')) confirm_discard([this] { new_document(); });
+    if (ImGui::IsKeyPressed('Q')) request_quit();
   }
 
   fs::path folder() const { return doc_->path().empty() ? fs::current_path() : fs::absolute(doc_->path()).parent_path(); }
@@ -407,6 +409,39 @@ class App {
     ImGui::EndPopup();
   }
 
+  // Pins, parameter widgets and state in window pixels, rewritten when they change.
+  void write_ui_map() {
+    int wx = 0, wy = 0;
+    glfwGetWindowPos(window_, &wx, &wy);
+    nlohmann::json j;
+    j["window"] = {wx, wy};
+    j["revision"] = doc_->revision();
+    j["settled"] = settled();
+    j["dirty"] = doc_->dirty();
+    j["selected"] = doc_->selected();
+    const Rect c = canvas_.screen_rect();
+    j["canvas"] = {c.min.x, c.min.y, c.max.x - c.min.x, c.max.y - c.min.y};
+    j["pins"] = nlohmann::json::array();
+    for (const auto& p : canvas_.pins_on_screen())
+      j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
+    j["params"] = nlohmann::json::object();
+    for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
+    j["preview_faces"] = shown_ && shown_->preview ? shown_->preview->faces : 0;
+    std::size_t errors = 0;
+    if (shown_)
+      for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;
+    j["errors"] = errors;
+    j["status"] = status_;
+    std::string text = j.dump();
+    if (text == ui_map_text_) return;
+    try {
+      write_file_atomically(options_.ui_map, text + "\n");
+      ui_map_text_ = std::move(text);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "procex-studio: %s\n", e.what());
+    }
+  }
+
   void update_title() {
     std::string t = doc_->title() + (doc_->dirty() ? " *" : "") + " - procex-studio";
     if (t != title_) {
@@ -421,12 +456,13 @@ class App {
   RecentFiles recent_;
   std::unique_ptr<Document> doc_;
   EvalWorker worker_;
+  Footprint preview_footprint_ = preview_footprint();
   std::shared_ptr<const EvalSnapshot> shown_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
   std::unique_ptr<PreviewView> preview_;
   NodeCanvas canvas_;
   Inspector inspector_;
-  std::string status_, title_;
+  std::string status_, title_, ui_map_text_;
   PathPrompt prompt_;
   std::optional<fs::path> recovery_;
   std::function<void()> pending_;
