@@ -1,5 +1,6 @@
 #include "core/sweep/event_queue.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -25,15 +26,13 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   const double length = glm::dot(st.position(n, z) - st.position(c, z), d);
   const double rate = glm::dot(st.corners[n].velocity - k.velocity, d);
   if (!(rate < 0.0)) return;
-  // Two corners just made at one collision are that collision's result, not a new event.
-  if (std::abs(length) <= st.tol().position() && k.base_z >= z - st.tol().height() &&
-      st.corners[n].base_z >= z - st.tol().height())
-    return;
+  // Two corners made at one collision are that collision's result, not a new event.
+  if (k.origin == st.corners[n].origin && std::abs(length) <= st.tol().position()) return;
   const double at = z - length / rate;
   push(st, {at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
 }
 
-void EventQueue::schedule(State& st, int c) {
+void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
   schedule_edge_event(st, c);
   const Corner& k = st.corners[c];
   if (!st.any_outward && k.motion == Motion::Regular && !st.reflex(c)) return;
@@ -46,8 +45,9 @@ void EventQueue::schedule(State& st, int c) {
     const double rate = glm::dot(pl.n, k.velocity) - pl.k;
     if (!(rate < 0.0)) continue;
     const double distance = pl.signed_distance(p, z);
-    // A corner just made on this edge's line made it there in the event that made it.
-    if (std::abs(distance) <= st.tol().position() && k.base_z >= z - st.tol().height()) continue;
+    // A corner made by a collision with this edge is on its line because of it.
+    if (std::abs(distance) <= st.tol().position() && std::find(resolved.begin(), resolved.end(), e) != resolved.end())
+      continue;
     const double at = z - distance / rate;
     push(st, {at, st.position(c, at), c, kNone, e});
   }

@@ -30,8 +30,9 @@ class EventQueue {
  public:
   // Queues every potential event of corner c: meeting its next corner (the
   // span between them shrinks to nothing) and, where c can cut into the loop,
-  // meeting any other live edge.
-  void schedule(State& st, int c);
+  // meeting any other live edge. `resolved` lists the edges of the collision
+  // that made c, if any: c does not collide with them again where it stands.
+  void schedule(State& st, int c, const std::vector<int>& resolved = {});
   // Queues only the event of corner c with its next corner.
   void schedule_edge_event(State& st, int c);
 
