@@ -347,11 +347,7 @@ void UndoStack::abort_macro() {
 
 Result<NodeId> UndoStack::add_node(std::string_view type_name, EditorState editor) {
   auto type = NodeRegistry::global().find(type_name);
-  if (!type) {
-    std::string msg = "unknown node type '" + std::string(type_name) + "'";
-    if (std::string near = NodeRegistry::global().closest_name(type_name); !near.empty()) msg += "; did you mean '" + near + "'?";
-    return Status::error(msg);
-  }
+  if (!type) return Status::error(NodeRegistry::global().unknown_type_message(type_name));
   auto c = std::make_unique<AddNode>(std::move(type), std::string(), std::move(editor));
   AddNode& ref = *c;
   if (Status s = push(std::move(c)); !s) return s;

@@ -25,11 +25,7 @@ void renumber_after_removal(std::map<PortRef, PortRef>& links, NodeId pseudo, st
 
 Result<NodeId> Graph::add_node(std::string_view type_name, NodeId id, const NodeRegistry& registry) {
   auto type = registry.find(type_name);
-  if (!type) {
-    std::string msg = "unknown node type " + q(type_name);
-    if (std::string near = registry.closest_name(type_name); !near.empty()) msg += "; did you mean " + q(near) + "?";
-    return Status::error(msg);
-  }
+  if (!type) return Status::error(registry.unknown_type_message(type_name));
   return add_node(std::move(type), id);
 }
 

@@ -308,11 +308,7 @@ struct Loader {
       } else {
         const std::string type = string_member(e, "type", c);
         auto t = options.registry->find(type);
-        if (!t) {
-          std::string msg = "unknown node type '" + type + "'";
-          if (std::string near = options.registry->closest_name(type); !near.empty()) msg += "; did you mean '" + near + "'?";
-          fail(file, c.ptr + "/type", msg);
-        }
+        if (!t) fail(file, c.ptr + "/type", options.registry->unknown_type_message(type));
         const json& version = member(e, "version", c, json::value_t::number_integer);
         const std::int64_t v = version.get<std::int64_t>();
         if (v > t->version())

@@ -121,6 +121,13 @@ std::string NodeRegistry::closest_name(std::string_view name) const {
   return best;
 }
 
+std::string NodeRegistry::unknown_type_message(std::string_view name) const {
+  std::string msg = "unknown node type '";
+  msg.append(name).append("'");
+  if (std::string near = closest_name(name); !near.empty()) msg.append("; did you mean '").append(near).append("'?");
+  return msg;
+}
+
 std::string NodeRegistry::markdown() const {
   std::map<std::string, std::vector<std::shared_ptr<const NodeType>>> by_category;
   for (const auto& t : all()) by_category[t->decl.category().empty() ? "Other" : t->decl.category()].push_back(t);

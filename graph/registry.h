@@ -57,6 +57,8 @@ class NodeRegistry {
   // The registered name closest to `name` by edit distance (case-insensitive),
   // or empty if nothing is reasonably close. For "unknown node type" messages.
   std::string closest_name(std::string_view name) const;
+  // "unknown node type 'Ofset'; did you mean 'Offset'?"
+  std::string unknown_type_message(std::string_view name) const;
 
   // Markdown docs of every type, grouped by category (for `procex nodes --markdown`).
   std::string markdown() const;
