@@ -24,7 +24,7 @@ std::size_t chosen(const std::vector<Value>& params) {
 std::optional<std::size_t> pass(const std::vector<Value>& params, std::size_t) { return chosen(params); }
 
 void declare(NodeDecl& d) {
-  d.doc("Hands on one input, chosen by `value` (usually exposed, e.g. as `building`, so `procex batch` sets it "
+  d.doc("Hands on one input, chosen by `value` (usually exposed as `building`, so `procex batch` sets it "
         "from each feature's GeoJSON property of that name). `case_k` lists the values, comma-separated, that "
         "choose input `case_k`; any other value (or an unconnected case) chooses `default`. Only the chosen "
         "branch is evaluated.")

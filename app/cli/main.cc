@@ -8,7 +8,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli/batch_command.h"
+#include "app/cli/eval_command.h"
+#include "app/cli/merge_command.h"
+#include "app/cli/nodes_command.h"
 #include "app/cli/roof_command.h"
+#include "app/cli/stats_command.h"
+#include "app/cli/validate_command.h"
 
 namespace procex {
 namespace {
@@ -37,13 +43,81 @@ Runner add_roof(CLI::App& app) {
   return [cmd, options] { return *cmd ? run_roof(*options, std::cout, std::cerr) : -1; };
 }
 
+Runner add_eval(CLI::App& app) {
+  auto options = std::make_shared<EvalCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("eval", "Evaluate a recipe (.pxg) and write its mesh outputs to one file");
+  cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
+  cmd->add_option("-o,--output", options->output, "Mesh file: .obj (+ .mtl), .ply or .glb")->required();
+  cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
+  return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
+}
+
+Runner add_validate(CLI::App& app) {
+  auto options = std::make_shared<ValidateCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("validate", "Load and type-check a recipe; report problems without evaluating");
+  cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
+  return [cmd, options] { return *cmd ? run_validate(*options, std::cout, std::cerr) : -1; };
+}
+
+Runner add_stats(CLI::App& app) {
+  auto options = std::make_shared<StatsCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("stats", "Evaluate a recipe; print per-node time, cache hits and memory");
+  cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
+  cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
+  return [cmd, options] { return *cmd ? run_stats(*options, std::cout, std::cerr) : -1; };
+}
+
+Runner add_nodes(CLI::App& app) {
+  auto options = std::make_shared<NodesCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("nodes", "List the node types (documentation from their declarations)");
+  cmd->add_flag("--markdown", options->markdown, "Full documentation as Markdown");
+  return [cmd, options] { return *cmd ? run_nodes(*options, std::cout) : -1; };
+}
+
+Runner add_batch(CLI::App& app) {
+  auto options = std::make_shared<BatchCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("batch", "Evaluate a recipe once per GeoJSON feature (bound to the input "
+                                              "'footprint'; properties set exposed parameters of the same name)");
+  cmd->add_option("recipe", options->recipe, "Recipe file (.pxg) with a graph input 'footprint'")->required();
+  cmd->add_option("--footprints", options->footprints, "GeoJSON FeatureCollection")->required();
+  cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb), or a folder (ending in /) "
+                                                  "for one file per building")->required();
+  cmd->add_option("--format", options->format, "Per-building file format")
+      ->check(CLI::IsMember({"obj", "ply", "glb"}))
+      ->capture_default_str();
+  cmd->add_option("--report", options->report, "JSON report: one entry per building, failures with reasons");
+  cmd->add_option("-j,--jobs", options->jobs, "Worker threads (0 = one per hardware thread)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option_function<std::string>(
+      "--shard",
+      [options](const std::string& s) {
+        if (!parse_shard(s, options->shard, options->shards)) throw CLI::ValidationError("--shard", "expected i/N with 0 <= i < N");
+      },
+      "Take only features whose index is i modulo N (e.g. $SLURM_ARRAY_TASK_ID/$N)");
+  cmd->add_option("--set", options->settings, "name=value applied to every building (repeatable)");
+  cmd->add_flag("!--no-progress", options->progress, "No progress output");
+  return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
+}
+
+Runner add_merge(CLI::App& app) {
+  auto options = std::make_shared<MergeCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("merge", "Join the .glb outputs (and .json reports) of sharded batch runs");
+  cmd->add_option("parts", options->parts, "Shard outputs (.glb) and reports (.json)")->required();
+  cmd->add_option("-o,--output", options->output, "Merged .glb")->required();
+  cmd->add_option("--report", options->report, "Merged report (.json)");
+  return [cmd, options] { return *cmd ? run_merge(*options, std::cout, std::cerr) : -1; };
+}
+
 }  // namespace
 }  // namespace procex
 
 int main(int argc, char** argv) {
   CLI::App app{"procex: procedural extrusions from the command line"};
   app.require_subcommand(1);
-  std::vector<procex::Runner> commands = {procex::add_roof(app)};
+  std::vector<procex::Runner> commands = {procex::add_roof(app),     procex::add_eval(app),  procex::add_validate(app),
+                                          procex::add_stats(app),    procex::add_nodes(app), procex::add_batch(app),
+                                          procex::add_merge(app)};
   CLI11_PARSE(app, argc, argv);
   for (const procex::Runner& run : commands)
     if (const int code = run(); code >= 0) return code;

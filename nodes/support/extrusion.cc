@@ -16,20 +16,20 @@ const char* tag_of_angle(double angle_deg) { return angle_deg == 0.0 ? "wall" : 
 // The stand-in for profile support (see extrusion.h).
 void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>& notes) {
   std::optional<double> top;
+  std::vector<bool> used(fp.profiles.size(), false);
   for (Loop& loop : fp.loops)
     for (EdgeSpec& e : loop.edges) {
       if (e.profile < 0) continue;
       const Profile& p = fp.profiles[static_cast<std::size_t>(e.profile)];
+      used[static_cast<std::size_t>(e.profile)] = true;
       e.angle_deg = p.angle_deg(0);
       top = std::max(top.value_or(p.points.back().y), p.points.back().y);
     }
   if (!top) return;
   options.max_height = std::min(options.max_height.value_or(*top), *top);
-  for (const Profile& p : fp.profiles)
-    if (p.segments() > 1) {
-      notes.push_back("profile '" + p.name + "': the sweep follows only its first segment for now");
-      break;
-    }
+  for (std::size_t i = 0; i < fp.profiles.size(); ++i)
+    if (used[i] && fp.profiles[i].segments() > 1)
+      notes.push_back("profile '" + fp.profiles[i].name + "': the sweep follows only its first segment for now");
 }
 
 std::string side_tag(const EdgeSpec& e, const std::vector<Profile>& profiles) {

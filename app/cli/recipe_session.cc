@@ -1,0 +1,75 @@
+#include "app/cli/recipe_session.h"
+
+#include <ostream>
+
+#include "graph/pxg.h"
+#include "nodes/support/recipe_files.h"
+
+namespace procex {
+
+std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err) {
+  try {
+    Graph g = load_pxg(file);
+    set_recipe_folder(std::filesystem::absolute(file).parent_path());
+    return g;
+  } catch (const PxgError& e) {
+    err << e.file() << ": " << (e.where().empty() ? "" : e.where() + ": ") << e.message() << "\n";
+  } catch (const std::exception& e) {  // filesystem errors from resolving the path
+    err << file.string() << ": " << e.what() << "\n";
+  }
+  return std::nullopt;
+}
+
+Status apply_setting(Graph& graph, Bindings& bindings, const std::string& name, const std::string& text) {
+  for (const ExposedParam& p : graph.exposed_params()) {
+    if (p.name != name) continue;
+    const ParamDecl& decl = graph.node(p.node)->decl().params()[p.param];
+    Result<Value> v = value_from_text(*decl.type, text);
+    if (!v) return Status::error("'" + name + "': " + v.message());
+    return graph.set_exposed(name, *v);
+  }
+  if (const auto i = graph.input_index(name)) {
+    Result<Value> v = value_from_text(*graph.inputs()[*i].type, text);
+    if (!v) return Status::error("'" + name + "': " + v.message());
+    bindings[name] = *v;
+    return Status::ok();
+  }
+  return Status::error("the recipe has no exposed parameter or input named '" + name + "'");
+}
+
+bool apply_settings(Graph& graph, Bindings& bindings, const std::vector<std::string>& settings, std::ostream& err) {
+  bool ok = true;
+  for (const std::string& s : settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      err << "--set " << s << ": expected name=value\n";
+      ok = false;
+      continue;
+    }
+    if (Status st = apply_setting(graph, bindings, s.substr(0, eq), s.substr(eq + 1)); !st) {
+      err << "--set " << s << ": " << st.message() << "\n";
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+std::vector<std::string> mesh_outputs(const Graph& graph) {
+  std::vector<std::string> names;
+  for (const GraphOutput& o : graph.outputs())
+    if (o.type == &value_type<MeshSet>()) names.push_back(o.name);
+  return names;
+}
+
+MeshSet gather_meshes(const EvalResult& r) {
+  MeshSet out;
+  for (const OutputResult& o : r.outputs)
+    if (const MeshSet* m = o.value.get_if<MeshSet>()) out.parts.insert(out.parts.end(), m->parts.begin(), m->parts.end());
+  return out;
+}
+
+void print_diagnostics(const EvalResult& r, const std::filesystem::path& file, std::ostream& err) {
+  for (const Diagnostic& d : r.diagnostics) err << file.string() << ": " << d.to_string() << "\n";
+}
+
+}  // namespace procex

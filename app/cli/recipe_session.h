@@ -1,0 +1,47 @@
+// What the recipe commands (eval, validate, stats, batch) share: loading a
+// .pxg with errors that name the file and place, applying --set name=value to
+// exposed parameters or graph inputs, and gathering the recipe's mesh outputs.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graph/evaluator.h"
+#include "graph/graph.h"
+#include "nodes/values.h"
+
+namespace procex {
+
+// Exit codes of the recipe commands.
+inline constexpr int kExitEvaluationFailed = 1;  // a node (or a building) failed
+inline constexpr int kExitUnusableInput = 2;     // the recipe or an input cannot be read, an output not written
+
+// "file: where: message" for a PxgError; the file's folder becomes the folder
+// nodes resolve relative paths against. nullopt after writing the error to err.
+std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err);
+
+// Applies "name=value" assignments: to the exposed parameter of that name, else
+// to the graph input of that name (added to bindings). False after writing
+// each problem to err (unknown name, value that does not fit the type).
+bool apply_settings(Graph& graph, Bindings& bindings, const std::vector<std::string>& settings, std::ostream& err);
+
+// Sets one exposed parameter or binds one graph input from text; Status says
+// why not. Used for --set and for GeoJSON properties in batch.
+Status apply_setting(Graph& graph, Bindings& bindings, const std::string& name, const std::string& text);
+
+// Names of the graph outputs whose type is "mesh", in order; empty if none.
+std::vector<std::string> mesh_outputs(const Graph& graph);
+
+// The parts of every mesh output of r, in output order.
+MeshSet gather_meshes(const EvalResult& r);
+
+// Writes every diagnostic of r to err as "file: error: node 3 (Extrude): ...".
+void print_diagnostics(const EvalResult& r, const std::filesystem::path& file, std::ostream& err);
+
+// The engine salt every recipe command evaluates with.
+inline constexpr const char* kEngineSalt = "procex 0.1";
+
+}  // namespace procex

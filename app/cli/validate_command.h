@@ -1,0 +1,19 @@
+// `procex validate RECIPE`: loads and type-checks a recipe and reports its
+// problems without evaluating any node.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+
+namespace procex {
+
+struct ValidateCommandOptions {
+  std::filesystem::path recipe;
+};
+
+// Inputs without a default are noted (batch binds them), not counted as problems.
+// 0: no problems (warnings allowed); 1: structural problems;
+// 2: the file cannot be loaded.
+int run_validate(const ValidateCommandOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace procex

@@ -1,0 +1,195 @@
+// procex batch and procex merge: the city sample against its stored summary,
+// byte-identical output whatever --jobs, shards merged into the unsharded
+// bytes, failures reported while the batch goes on.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "app/cli/batch_command.h"
+#include "app/cli/merge_command.h"
+#include "app/cli/recipe_session.h"
+#include "core/io/gltf_write.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+const fs::path kSamples = PROCEX_SAMPLES;
+const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Batch : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("procex_batch_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  BatchCommandOptions options(const std::string& output) {
+    BatchCommandOptions o;
+    o.recipe = kSamples / "city.pxg";
+    o.footprints = kBlock;
+    o.output = dir_ / output;
+    o.progress = false;
+    return o;
+  }
+  fs::path dir_;
+  std::ostringstream out_, err_;
+};
+
+// Per building: its summary, compared with samples/expected/city.json.
+TEST_F(Batch, CitySampleMatchesStoredSummary) {
+  BatchCommandOptions o = options("city.glb");
+  o.report = dir_ / "city.json";
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  const json report = json::parse(read_text(o.report));
+  EXPECT_EQ(report["summary"]["ok"], 18);
+  json got = json::object();
+  for (const json& b : report["buildings"])
+    got[b["id"].get<std::string>()] = {{"faces_per_tag", b["faces_per_tag"]}, {"bounds", b["bounds"]}, {"volume", b["volume"]}};
+  const fs::path expected = kSamples / "expected" / "city.json";
+  if (std::getenv("PROCEX_UPDATE_EXPECTED")) {
+    json stored = {{"tolerance", {{"length", 1e-6}, {"volume_relative", 1e-6}}}, {"buildings", got}};
+    std::ofstream(expected) << stored.dump(1) << "\n";
+    GTEST_SKIP() << "rewrote " << expected;
+  }
+  const json want = json::parse(read_text(expected));
+  const double length = want["tolerance"]["length"], rel = want["tolerance"]["volume_relative"];
+  ASSERT_EQ(want["buildings"].size(), got.size());
+  for (const auto& [id, w] : want["buildings"].items()) {
+    SCOPED_TRACE(id);
+    ASSERT_TRUE(got.contains(id));
+    const json& g = got[id];
+    EXPECT_EQ(w["faces_per_tag"], g["faces_per_tag"]);
+    for (const char* end : {"min", "max"})
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(w["bounds"][end][k].get<double>(), g["bounds"][end][k].get<double>(), length);
+    EXPECT_NEAR(w["volume"].get<double>(), g["volume"].get<double>(), rel * std::abs(w["volume"].get<double>()));
+  }
+  // Five building types: at least the house, apartment and church branches appear in this block.
+  std::set<double> heights;
+  for (const json& b : report["buildings"]) heights.insert(b["bounds"]["max"][2].get<double>() > 20 ? 2 : 1);
+  EXPECT_EQ(heights.size(), 2u);
+}
+
+TEST_F(Batch, SameBytesWhateverJobs) {
+  for (const char* ext : {".glb", ".obj"}) {
+    BatchCommandOptions one = options(std::string("city") + ext), two = options(std::string("city") + ext);
+    fs::create_directories(dir_ / "one");
+    fs::create_directories(dir_ / "two");
+    one.output = dir_ / "one" / one.output.filename(), two.output = dir_ / "two" / two.output.filename();
+    one.jobs = 1, two.jobs = 2;
+    ASSERT_EQ(run_batch(one, out_, err_), 0) << err_.str();
+    ASSERT_EQ(run_batch(two, out_, err_), 0) << err_.str();
+    EXPECT_TRUE(read_text(one.output) == read_text(two.output)) << ext;
+  }
+}
+
+TEST_F(Batch, ShardsMergeIntoTheUnshardedBytes) {
+  BatchCommandOptions all = options("all.glb");
+  all.report = dir_ / "all.json";
+  ASSERT_EQ(run_batch(all, out_, err_), 0) << err_.str();
+  MergeCommandOptions merge;
+  for (std::size_t i = 0; i < 3; ++i) {
+    BatchCommandOptions shard = options("shard" + std::to_string(i) + ".glb");
+    shard.shard = i, shard.shards = 3, shard.jobs = static_cast<int>(i % 2 + 1);
+    shard.report = dir_ / ("shard" + std::to_string(i) + ".json");
+    ASSERT_EQ(run_batch(shard, out_, err_), 0) << err_.str();
+    merge.parts.push_back(shard.report);
+    merge.parts.push_back(shard.output);
+  }
+  merge.output = dir_ / "merged.glb";
+  merge.report = dir_ / "merged.json";
+  ASSERT_EQ(run_merge(merge, out_, err_), 0) << err_.str();
+  EXPECT_EQ(read_text(all.output), read_text(merge.output));
+  const json a = json::parse(read_text(all.report)), m = json::parse(read_text(merge.report));
+  ASSERT_EQ(a["buildings"].size(), m["buildings"].size());
+  for (std::size_t i = 0; i < a["buildings"].size(); ++i) {
+    EXPECT_EQ(a["buildings"][i]["id"], m["buildings"][i]["id"]);
+    EXPECT_EQ(a["buildings"][i]["faces_per_tag"], m["buildings"][i]["faces_per_tag"]);
+  }
+  EXPECT_EQ(m["summary"]["ok"], 18);
+}
+
+TEST_F(Batch, GlbCarriesBuildingIdsAndTags) {
+  BatchCommandOptions o = options("city.glb");
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  const std::vector<GltfMeshData> meshes = read_glb(o.output);
+  ASSERT_EQ(meshes.size(), 18u * 2);  // walls and roof per building
+  EXPECT_EQ(meshes[0].building, "w49209546");
+  EXPECT_EQ(meshes[0].feature, 0);
+  std::set<std::string> tags;
+  for (const auto& m : meshes)
+    for (const auto& p : m.primitives) tags.insert(p.tag);
+  EXPECT_TRUE(tags.count("roof") && tags.count("wall") && tags.count("base"));
+}
+
+TEST_F(Batch, OneFilePerBuilding) {
+  BatchCommandOptions o = options("per_building/");
+  o.format = "obj";
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "per_building" / "w362871296.obj"));
+  EXPECT_TRUE(fs::exists(dir_ / "per_building" / "r1484217.mtl"));
+}
+
+// A self-intersecting footprint fails; the others are still written.
+TEST_F(Batch, FailuresAreReportedAndTheBatchGoesOn) {
+  BatchCommandOptions o = options("bad.glb");
+  o.footprints = fs::path(PROCEX_TEST_DATA) / "geojson_bad_features.geojson";
+  o.report = dir_ / "bad.json";
+  const int code = run_batch(o, out_, err_);
+  const json report = json::parse(read_text(o.report));
+  EXPECT_GT(report["summary"]["refused"].get<int>() + report["summary"]["failed"].get<int>(), 0);
+  EXPECT_GT(report["summary"]["ok"].get<int>(), 0);
+  EXPECT_EQ(code, report["summary"]["failed"].get<int>() > 0 ? kExitEvaluationFailed : 0);
+  EXPECT_NE(err_.str().find("procex batch: feature "), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(o.output));
+}
+
+TEST_F(Batch, SelfIntersectingFootprintFails) {
+  BatchCommandOptions o = options("osm.glb");
+  o.footprints = fs::path(PROCEX_TEST_DATA) / "geojson_osm_self_intersecting_baltimore.geojson";
+  o.report = dir_ / "osm.json";
+  EXPECT_EQ(run_batch(o, out_, err_), kExitEvaluationFailed);
+  const json report = json::parse(read_text(o.report));
+  EXPECT_GE(report["summary"]["failed"].get<int>(), 1);
+  for (const json& b : report["buildings"])
+    if (b["status"] == "failed") {
+      EXPECT_NE(b["reason"].get<std::string>().find("(Extrude)"), std::string::npos) << b;
+    }
+}
+
+TEST_F(Batch, RecipeWithoutFootprintInputIsRefused) {
+  BatchCommandOptions o = options("x.glb");
+  o.recipe = kSamples / "house.pxg";
+  EXPECT_EQ(run_batch(o, out_, err_), kExitUnusableInput);
+  EXPECT_NE(err_.str().find("house.pxg: the recipe needs a graph input named 'footprint'"), std::string::npos) << err_.str();
+}
+
+TEST(BatchShard, Parses) {
+  std::size_t i = 9, n = 9;
+  EXPECT_TRUE(parse_shard("2/5", i, n));
+  EXPECT_EQ(i, 2u);
+  EXPECT_EQ(n, 5u);
+  EXPECT_FALSE(parse_shard("5/5", i, n));
+  EXPECT_FALSE(parse_shard("1/0", i, n));
+  EXPECT_FALSE(parse_shard("1/2x", i, n));
+  EXPECT_FALSE(parse_shard("a/2", i, n));
+}
+
+}  // namespace
+}  // namespace procex
