@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's two commands:
-#   scripts/setup.sh sample   install what is missing, build, run the shipped sample recipe
+#   scripts/setup.sh sample   install what is missing, build, evaluate the sample recipes to meshes
 #   scripts/setup.sh test     install what is missing, build, run every test (also under ASan+UBSan)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,9 +20,10 @@ case "$mode" in
   sample)
     configure_and_build build -DCMAKE_BUILD_TYPE=Release
     mkdir -p out
-    build/app/cli/procex roof samples/footprints/sample_block.geojson --angle 40 \
-      -o out/sample_block.obj --report out/sample_block.report.json
-    echo "wrote out/sample_block.obj and out/sample_block.report.json"
+    build/app/cli/procex eval samples/house.pxg -o out/house.obj
+    build/app/cli/procex batch samples/city.pxg --footprints samples/footprints/sample_block.geojson \
+      -o out/city.glb --report out/city.report.json
+    echo "wrote out/house.obj (+ out/house.mtl), out/city.glb and out/city.report.json"
     ;;
   test)
     configure_and_build build -DCMAKE_BUILD_TYPE=Release
