@@ -25,22 +25,11 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
+#include "tests/support/sanitizers.h"
 #include "tests/support/shared_data.h"
 
 namespace procex {
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
 
 // The self-intersection check dominates the run time; under the sanitizers it
 // runs on every kSanitizedStride-th footprint plus every hard one (holes, 100+
