@@ -13,11 +13,21 @@ packages=(
   nodejs
 )
 
+# The Node.js tools the tests run (glTF validator, three.js), pinned by tools/package-lock.json.
+# Debian's nodejs comes without npm; NodeSource's includes it.
+command -v npm >/dev/null || packages+=(npm)
+install_node_tools() {
+  [ -d tools/node_modules/gltf-validator ] && [ -d tools/node_modules/three ] && return 0
+  (cd tools && npm ci --no-audit --no-fund --loglevel=error)
+}
+cd "$(dirname "$0")/.."
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
+  install_node_tools
   exit 0
 fi
 
@@ -29,3 +39,4 @@ for attempt in 1 2 3; do
   sleep 20
 done
 DEBIAN_FRONTEND=noninteractive $sudo apt-get -o DPkg::Lock::Timeout=300 install -y --no-install-recommends "${missing[@]}"
+install_node_tools

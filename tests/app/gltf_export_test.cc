@@ -1,0 +1,127 @@
+// The .glb files procex writes pass the Khronos glTF validator with no errors
+// and load in three.js's GLTFLoader, with tags and building ids where they
+// belong. Both run under Node.js from tools/node_modules (scripts/install-deps.sh
+// installs them); the tests skip only when node itself is missing.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "app/cli/batch_command.h"
+#include "app/cli/eval_command.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
+const fs::path kTools = kRoot / "tools";
+
+struct ProcessRun {
+  int code = -1;
+  std::string out;
+};
+
+ProcessRun run(const std::string& command) {
+  ProcessRun r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.out.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+class GltfExport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (run("node --version").code != 0) GTEST_SKIP() << "node (Node.js) is not installed: the glTF validator and three.js tests need it";
+    ASSERT_TRUE(fs::exists(kTools / "node_modules" / "gltf-validator") && fs::exists(kTools / "node_modules" / "three"))
+        << "run scripts/install-deps.sh (or: cd tools && npm ci) to install the glTF validator and three.js";
+    dir_ = fs::temp_directory_path() / ("procex_gltf_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!dir_.empty()) fs::remove_all(dir_);
+  }
+  fs::path city() {
+    BatchCommandOptions o;
+    o.recipe = kRoot / "samples" / "city.pxg";
+    o.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+    o.output = dir_ / "city.glb";
+    o.progress = false;
+    std::ostringstream out, err;
+    EXPECT_EQ(run_batch(o, out, err), 0) << err.str();
+    return o.output;
+  }
+  json node_json(const char* script, const fs::path& glb, int want_code) {
+    const ProcessRun r = run("node " + (kTools / script).string() + " " + glb.string());
+    EXPECT_EQ(r.code, want_code) << r.out;
+    try {
+      return json::parse(r.out);
+    } catch (const json::exception&) {
+      ADD_FAILURE() << script << " printed no JSON: " << r.out;
+      return {};
+    }
+  }
+  fs::path dir_;
+};
+
+TEST_F(GltfExport, EverySampleValidatesWithoutErrors) {
+  std::vector<fs::path> files = {city()};
+  for (const char* name : {"house", "gallery_courtyard", "gallery_tower"}) {
+    const fs::path out = dir_ / (std::string(name) + ".glb");
+    std::ostringstream o, e;
+    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}}, o, e), 0) << e.str();
+    files.push_back(out);
+  }
+  for (const fs::path& f : files) {
+    SCOPED_TRACE(f.filename().string());
+    const json report = node_json("validate_gltf.mjs", f, 0);
+    EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+    EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+    EXPECT_GT(report["info"]["totalTriangleCount"].get<int>(), 0);
+  }
+}
+
+TEST_F(GltfExport, ValidatorCatchesABrokenFile) {
+  const fs::path glb = city();
+  std::string bytes;
+  {
+    std::ifstream in(glb, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  bytes.resize(bytes.size() - 100);  // the binary chunk is cut short
+  std::ofstream(dir_ / "cut.glb", std::ios::binary) << bytes;
+  const json report = node_json("validate_gltf.mjs", dir_ / "cut.glb", 1);
+  EXPECT_GT(report["issues"]["numErrors"].get<int>(), 0);
+}
+
+TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
+  const json loaded = node_json("load_gltf_three.mjs", city(), 0);
+  EXPECT_EQ(loaded["nodes"], 36);  // walls and roof of 18 buildings
+  std::set<std::string> tags, buildings;
+  for (const json& m : loaded["meshes"]) {
+    tags.insert(m["tag"].get<std::string>());
+    buildings.insert(m["building"].get<std::string>());
+    EXPECT_EQ(m["tag"], m["material"]);
+    EXPECT_TRUE(m["normals"].get<bool>());
+    EXPECT_GT(m["triangles"].get<int>(), 0);
+  }
+  EXPECT_EQ(tags, (std::set<std::string>{"base", "cap", "gable", "roof", "wall"}));
+  EXPECT_EQ(buildings.size(), 18u);
+  EXPECT_TRUE(buildings.count("w362871296"));  // the cathedral
+}
+
+}  // namespace
+}  // namespace procex
