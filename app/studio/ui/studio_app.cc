@@ -424,6 +424,8 @@ class App {
     j["pins"] = nlohmann::json::array();
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
+    j["links"] = nlohmann::json::array();
+    for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
     for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
     j["preview_faces"] = shown_ && shown_->preview ? shown_->preview->faces : 0;

@@ -1,0 +1,199 @@
+// Drives a real procex-studio window with real X input events (xdotool):
+// add a node from the searchable menu, connect it with two drags, set two
+// parameters, undo one, save with Ctrl+S, quit; then check the saved recipe
+// and that the preview showed the edited result. Run under xvfb-run.
+//
+// The studio's --ui-map file says where pins and parameter widgets are on
+// screen, and how far the studio has got (revision, settled, dirty).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/pxg.h"
+
+extern char** environ;
+
+namespace procex::studio {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using namespace std::chrono_literals;
+
+class Studio {
+ public:
+  Studio(const fs::path& recipe, const fs::path& dir) : map_(dir / "ui_map.json") {
+    setenv("PROCEX_STUDIO_HOME", (dir / "home").c_str(), 1);
+    std::vector<std::string> args = {PROCEX_STUDIO_EXE, recipe.string(), "--ui-map", map_.string(), "--autosave", "0"};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    EXPECT_EQ(posix_spawn(&pid_, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+  }
+  ~Studio() {
+    if (pid_ > 0) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  // The newest map that satisfies `ready`; fails the test after a timeout.
+  json wait(const std::string& what, const std::function<bool(const json&)>& ready, std::chrono::seconds timeout = 30s) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    json last;
+    while (std::chrono::steady_clock::now() < end) {
+      std::ifstream in(map_);
+      json j = json::parse(in, nullptr, false);
+      if (!j.is_discarded()) {
+        last = j;
+        if (ready(j)) return j;
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    ADD_FAILURE() << "timed out waiting for: " << what << "\nlast ui map: " << last.dump().substr(0, 2000);
+    return last;
+  }
+  // Exit code, or -1 when it did not exit in time.
+  int wait_exit(std::chrono::seconds timeout) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    int status = 0;
+    while (std::chrono::steady_clock::now() < end) {
+      if (waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    return -1;
+  }
+
+ private:
+  fs::path map_;
+  pid_t pid_ = -1;
+};
+
+void xdo(const std::string& args) {
+  const std::string cmd = "xdotool " + args;
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+}
+
+// Holds the keys for a moment: ImGui 1.86 polls key state once per frame, so
+// a press and release between two frames would go unseen (people hold keys longer).
+void press(const std::string& keys) {
+  std::string down, up;
+  for (std::size_t start = 0; start <= keys.size();) {
+    const std::size_t plus = std::min(keys.find('+', start), keys.size());
+    const std::string k = keys.substr(start, plus - start);
+    down += " keydown " + k;
+    up = " keyup " + k + up;
+    start = plus + 1;
+  }
+  xdo(down.substr(1) + " sleep 0.15" + up + " sleep 0.1");
+}
+
+// Screen position of a pin, from the map.
+std::pair<int, int> pin(const json& map, std::uint64_t node, int port, bool output) {
+  for (const json& p : map["pins"])
+    if (p["node"] == node && p["port"] == port && p["output"] == output)
+      return {map["window"][0].get<int>() + static_cast<int>(p["x"].get<double>()), map["window"][1].get<int>() + static_cast<int>(p["y"].get<double>())};
+  ADD_FAILURE() << "no pin " << node << "." << port << (output ? " out" : " in") << " on screen";
+  return {0, 0};
+}
+
+std::pair<int, int> widget_centre(const json& map, const std::string& param) {
+  const json& r = map["params"][param];
+  return {map["window"][0].get<int>() + static_cast<int>(r[0].get<double>() + r[2].get<double>() / 2),
+          map["window"][1].get<int>() + static_cast<int>(r[1].get<double>() + r[3].get<double>() / 2)};
+}
+
+void drag(std::pair<int, int> from, std::pair<int, int> to) {
+  const std::string a = std::to_string(from.first) + " " + std::to_string(from.second);
+  const std::string mid = std::to_string((from.first + to.first) / 2) + " " + std::to_string((from.second + to.second) / 2 + 20);
+  const std::string b = std::to_string(to.first) + " " + std::to_string(to.second);
+  xdo("sleep 0.3 mousemove " + a + " sleep 0.3 mousedown 1 sleep 0.2 mousemove " + mid + " sleep 0.2 mousemove " + b + " sleep 0.2 mouseup 1 sleep 0.2");
+}
+
+// Ctrl+click turns an ImGui slider into a text field; type the value and Enter.
+void type_into_slider(std::pair<int, int> at, const std::string& value) {
+  xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) +
+      " sleep 0.2 keydown ctrl click 1 keyup ctrl sleep 0.3");
+  press("ctrl+a");
+  xdo("type " + value);
+  press("Return");
+}
+
+std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
+
+TEST(StudioInteraction, AddConnectEditUndoSave) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_interaction_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path recipe = dir / "house.pxg";
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  Studio studio(recipe, dir);
+  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["preview_faces"] > 0; });
+  const auto canvas = map["canvas"];
+  const int wx = map["window"][0], wy = map["window"][1];
+
+  // Add a Transform from the searchable menu (right click on empty canvas).
+  const int ax = wx + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.45);
+  const int ay = wy + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.85);
+  xdo("mousemove " + std::to_string(ax) + " " + std::to_string(ay) + " sleep 0.2 click 3 sleep 0.4 type Transform");
+  press("Return");
+  map = studio.wait("the Transform node", [](const json& j) { return j["selected"] == 3; });
+
+  // Extrude's mesh into the Transform; the Transform into the graph output.
+  std::uint64_t rev = revision(map);
+  drag(pin(map, 2, 0, true), pin(map, 3, 0, false));
+  map = studio.wait("the first link", [&](const json& j) { return revision(j) > rev; });
+  rev = revision(map);
+  drag(pin(map, 3, 0, true), pin(map, procex::kGraphOutputs, 0, false));
+  map = studio.wait("the second link", [&](const json& j) { return revision(j) > rev; });
+
+  // Two parameters, then undo the second.
+  map = studio.wait("the inspector", [](const json& j) { return j["params"].contains("rotate") && j["params"].contains("scale"); });
+  rev = revision(map);
+  type_into_slider(widget_centre(map, "rotate"), "30");
+  map = studio.wait("rotate set", [&](const json& j) { return revision(j) > rev; });
+  rev = revision(map);
+  type_into_slider(widget_centre(map, "scale"), "2");
+  map = studio.wait("scale set", [&](const json& j) { return revision(j) > rev; });
+  rev = revision(map);
+  press("ctrl+z");
+  map = studio.wait("undo", [&](const json& j) { return revision(j) > rev; });
+
+  // Save, and the preview shows the edited recipe without errors.
+  press("ctrl+s");
+  map = studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  map = studio.wait("the edited recipe evaluated", [](const json& j) { return j["settled"] && j["preview_faces"] > 0; });
+  EXPECT_EQ(map["errors"], 0);
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+
+  const Graph g = load_pxg(recipe);
+  ASSERT_EQ(g.nodes().size(), 3u);
+  const Node* t = g.node(3);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->type->name(), "Transform");
+  EXPECT_EQ(g.source({3, 0}), (PortRef{2, 0}));
+  EXPECT_EQ(g.source({kGraphOutputs, 0}), (PortRef{3, 0}));
+  EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("rotate")].get<double>(), 30.0);
+  EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("scale")].get<double>(), 1.0);  // undone
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace procex::studio
