@@ -27,14 +27,20 @@ inline constexpr double kMeshDistanceRelative = 1e-6;
 
 // The sweep engine's tolerances. Distances scale with the input's extent.
 struct SweepTolerances {
-  double scale = 1.0;  // characteristic length of the input (bounding-box extent)
+  double scale = 1.0;       // characteristic length of the input (bounding-box extent)
+  double relative = 1e-7;   // the clustering distances below, relative to scale
+
+  // Where rounding makes a sweep fail at the default clustering distance, it
+  // runs again with these, in order (a near-coincidence at one scale is
+  // usually clear at another); the output is checked closed each time.
+  static constexpr double retry_relative[] = {1e-7, 1e-6, 1e-8, 1e-5};
 
   // Paper delta2: events whose heights differ by less than this form one cluster.
-  double height() const { return 1e-7 * scale; }
+  double height() const { return relative * scale; }
   // Paper delta3: events within this plan distance at one height are one point.
-  double position() const { return 1e-7 * scale; }
+  double position() const { return relative * scale; }
   // Paper delta1: how far a collision may lie outside an edge's span and still hit it.
-  double span_margin() const { return 1e-7 * scale; }
+  double span_margin() const { return relative * scale; }
   // Beyond this height the sweep is considered to run away (no closing event).
   double runaway_height() const { return 1e7 * scale; }
 

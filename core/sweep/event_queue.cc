@@ -26,9 +26,9 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   const double length = glm::dot(st.position(n, z) - st.position(c, z), d);
   const double rate = glm::dot(st.corners[n].velocity - k.velocity, d);
   if (!(rate < 0.0)) return;
-  // Two corners made at one collision are that collision's result, not a new event.
-  if (k.origin == st.corners[n].origin && std::abs(length) <= st.tol().position()) return;
   const double at = z - length / rate;
+  // Two corners made at one collision meet there because of it.
+  if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
   push(st, {at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
 }
 
@@ -44,11 +44,9 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
     const Plane& pl = st.edges[e].plane;
     const double rate = glm::dot(pl.n, k.velocity) - pl.k;
     if (!(rate < 0.0)) continue;
-    const double distance = pl.signed_distance(p, z);
-    // A corner made by a collision with this edge is on its line because of it.
-    if (std::abs(distance) <= st.tol().position() && std::find(resolved.begin(), resolved.end(), e) != resolved.end())
-      continue;
-    const double at = z - distance / rate;
+    const double at = z - pl.signed_distance(p, z) / rate;
+    // A corner made by a collision with this edge meets it there because of it.
+    if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
     push(st, {at, st.position(c, at), c, kNone, e});
   }
 }

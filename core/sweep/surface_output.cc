@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -142,6 +143,25 @@ Surface build_surface(const State& st) {
     for (auto& m : made) s.faces.push_back(std::move(m));
   }
   return s;
+}
+
+void check_closed(const Surface& surface) {
+  std::unordered_map<std::uint64_t, int> directed;
+  auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
+  for (const SurfaceFace& f : surface.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) ++directed[key(loop[i], loop[(i + 1) % loop.size()])];
+  for (const auto& [k, n] : directed) {
+    const auto from = static_cast<std::uint32_t>(k >> 32), to = static_cast<std::uint32_t>(k);
+    auto back = directed.find(key(to, from));
+    if (n != 1 || back == directed.end() || back->second != 1) {
+      const glm::dvec3 p = surface.vertices[from];
+      std::ostringstream msg;
+      msg << "sweep: the surface is not closed at the edge from vertex " << from << " (" << p.x << ", " << p.y
+          << ", " << p.z << ") to vertex " << to;
+      throw SweepError(msg.str(), p.z, {});
+    }
+  }
 }
 
 }  // namespace procex::engine

@@ -10,4 +10,8 @@ namespace procex::engine {
 // Throws SweepError naming the face's source edge if a face's boundary does not close.
 Surface build_surface(const State& st);
 
+// Throws SweepError unless every boundary edge of the surface meets its
+// reverse exactly once (closed and consistently oriented).
+void check_closed(const Surface& surface);
+
 }  // namespace procex::engine

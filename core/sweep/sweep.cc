@@ -4,6 +4,7 @@
 #include "core/sweep/sweep.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -101,24 +102,27 @@ void load(engine::State& st, const Footprint& fp) {
   }
 }
 
-}  // namespace
-
-Surface sweep(const Footprint& footprint, const SweepOptions& options) {
-  engine::State st(tolerances_for(footprint), options);
+Surface sweep_with(const Footprint& footprint, const SweepOptions& options, const engine::Tolerances& tol) {
+  engine::State st(tol, options);
   load(st, footprint);
   engine::EventQueue queue;
   for (int c = 0; c < static_cast<int>(st.corners.size()); ++c)
     if (st.corners[c].alive) queue.schedule(st, c);
 
+  // Bounded work: every event removes a span or splits one, so a sweep that
+  // keeps resolving events at one height without rising is going in circles.
   const std::size_t n = st.corners.size();
-  const std::size_t budget = 64 * n * n + 4096;  // generous; a runaway sweep must stop
-  std::size_t steps = 0;
+  const std::size_t stall_limit = 8 * n + 64;
+  std::size_t stalled = 0;
+  double last = -1.0;
   while (!queue.empty()) {
     const double z = queue.next_height();
     if (options.max_height && z > *options.max_height) break;
     if (z > st.tol().runaway_height()) break;
-    if (++steps > budget) {
-      throw SweepError("sweep: event budget exhausted at height " + std::to_string(st.height), st.height, {});
+    stalled = z > last + st.tol().height() ? 0 : stalled + 1;
+    last = std::max(last, z);
+    if (stalled > stall_limit) {
+      throw SweepError("sweep: events repeat without rising at height " + std::to_string(st.height), st.height, {});
     }
     st.height = std::max(st.height, z);
     resolve_intersections(st, queue, queue.pop_cluster(st.tol().height()));
@@ -132,7 +136,25 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
     }
     engine::cap_at(st, std::max(st.height, *options.max_height));
   }
-  return engine::build_surface(st);
+  Surface surface = engine::build_surface(st);
+  engine::check_closed(surface);
+  return surface;
+}
+
+}  // namespace
+
+Surface sweep(const Footprint& footprint, const SweepOptions& options) {
+  engine::Tolerances tol = tolerances_for(footprint);
+  std::optional<SweepError> first;
+  for (double relative : engine::Tolerances::retry_relative) {
+    tol.relative = relative;
+    try {
+      return sweep_with(footprint, options, tol);
+    } catch (const SweepError& e) {
+      if (!first) first = e;
+    }
+  }
+  throw *first;
 }
 
 }  // namespace procex
