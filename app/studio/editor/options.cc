@@ -14,6 +14,7 @@ std::string usage() {
          "  --autosave SECONDS          autosave interval for crash recovery (default 30, 0: off)\n"
          "  --report-frames FILE        on exit, write frame and evaluation timings as JSON\n"
          "  --bench-edits N             benchmark: make N parameter edits, time each to the screen, exit\n"
+         "  --select NODE               select this node id at start\n"
          "  --ui-map FILE               keep a JSON map of the pins and widgets on screen (for input-driving tests)\n"
          "  -h, --help                  this text\n";
 }
@@ -44,6 +45,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.screenshot = value();
     } else if (a == "--screenshot-info") {
       o.screenshot_info = value();
+    } else if (a == "--select") {
+      o.select = static_cast<unsigned>(parse_int(value(), "--select"));
     } else if (a == "--ui-map") {
       o.ui_map = value();
     } else if (a == "--report-frames") {

@@ -2,7 +2,7 @@
 //
 //   procex-studio [RECIPE.pxg] [--screenshot OUT.png [--screenshot-info OUT.json]]
 //                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
-//                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE]
+//                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE] [--select NODE]
 #pragma once
 
 #include <filesystem>
@@ -21,6 +21,7 @@ struct Options {
   int width = 1280, height = 800;
   double timeout_s = 60.0;               // --screenshot: give up waiting for the evaluation
   int autosave_s = 30;                   // 0: no autosave
+  unsigned select = 0;                   // a node id to select at start (screenshots of the inspector and editors)
   int bench_edits = 0;                   // benchmark: this many parameter edits, timed to the screen
   bool help = false;
 };

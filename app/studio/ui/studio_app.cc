@@ -25,6 +25,7 @@
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/preview_view.h"
 #include "app/studio/ui/screenshot.h"
+#include "app/studio/ui/shape_editor.h"
 #include "core/io/mesh_write.h"
 #include "graph/pxg.h"
 
@@ -52,6 +53,7 @@ class App {
     const bool interactive = options_.screenshot.empty() && options_.bench_edits == 0;
     if (!options_.recipe.empty()) {
       load(options_.recipe, interactive);
+      if (doc_->graph().node(options_.select)) doc_->select_only(options_.select);
     } else {
       doc_ = std::make_unique<Document>();
       if (interactive && find_recovery(home_, {})) recovery_ = fs::path();
@@ -68,9 +70,13 @@ class App {
 
   void frame() {
     if (!preview_) preview_ = std::make_unique<PreviewView>();
-    if (submitted_ != doc_->revision()) {
+    if (submitted_ != doc_->revision() || submitted_node_ != doc_->selected()) {
       submitted_ = doc_->revision();
+      submitted_node_ = doc_->selected();
+      // The selected node's outputs too, for the plan and profile editors (cached: cheap).
       std::vector<PortRef> extra;
+      if (const Node* n = doc_->graph().node(submitted_node_))
+        for (std::uint32_t i = 0; i < n->decl().outputs().size(); ++i) extra.push_back({submitted_node_, i});
       worker_.submit(submitted_, doc_->graph(), extra, preview_bindings(doc_->graph(), preview_footprint_));
     }
     if (auto latest = worker_.latest(); latest && latest != shown_) {
@@ -255,7 +261,7 @@ class App {
     if (ImGui::Begin("Preview", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) preview_->draw();
     ImGui::End();
     place(left_w, upper_h, w - left_w, h - upper_h);
-    if (ImGui::Begin("Evaluation", nullptr, fixed)) evaluation_panel();
+    if (ImGui::Begin("Evaluation", nullptr, fixed | ImGuiWindowFlags_NoScrollbar)) evaluation_panel();
     ImGui::End();
     place(0, h, w, status_h);
     if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) status_bar();
@@ -264,6 +270,10 @@ class App {
 
   void evaluation_panel() {
     if (!ImGui::BeginTabBar("eval")) return;
+    if (ImGui::BeginTabItem("Plan / Profile")) {
+      shape_editor_.draw(*doc_, shown_.get(), status_);
+      ImGui::EndTabItem();
+    }
     if (ImGui::BeginTabItem("Diagnostics")) {
       if (!shown_ || shown_->result.diagnostics.empty()) ImGui::TextDisabled("No errors or warnings.");
       if (shown_)
@@ -461,6 +471,8 @@ class App {
   Footprint preview_footprint_ = preview_footprint();
   std::shared_ptr<const EvalSnapshot> shown_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
+  NodeId submitted_node_ = 0;
+  ShapeEditor shape_editor_;
   std::unique_ptr<PreviewView> preview_;
   NodeCanvas canvas_;
   Inspector inspector_;

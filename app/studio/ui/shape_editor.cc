@@ -1,0 +1,216 @@
+#include "app/studio/ui/shape_editor.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <typeindex>
+#include <vector>
+
+#include "app/studio/editor/polyline_edit.h"
+#include "app/studio/editor/preview_mesh.h"
+#include "core/geom/footprint.h"
+#include "core/geom/profile.h"
+
+namespace procex::studio {
+
+namespace {
+
+template <class T>
+std::optional<std::uint32_t> output_of_type(const NodeDecl& decl) {
+  for (std::uint32_t i = 0; i < decl.outputs().size(); ++i)
+    if (decl.outputs()[i].type->cpp_type() == std::type_index(typeid(T))) return i;
+  return std::nullopt;
+}
+
+std::optional<std::size_t> param_of_type(const Node& n, std::string_view name, const std::type_info& t) {
+  auto i = n.decl().param_index(name);
+  if (i && n.params[*i].type()->cpp_type() == std::type_index(t)) return i;
+  return std::nullopt;
+}
+
+ImU32 tag_color_u32(const std::string& tag) {
+  const glm::vec3 c = tag_color(tag.empty() ? "untagged" : tag);
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+}
+
+// World (plan metres, y up) to screen, fitted to a rectangle.
+struct Fit {
+  ImVec2 origin;
+  double scale = 1, min_x = 0, min_y = 0, height = 0;
+  ImVec2 to_screen(double x, double y) const {
+    return ImVec2(origin.x + static_cast<float>((x - min_x) * scale), origin.y + static_cast<float>(height - (y - min_y) * scale));
+  }
+  Vec2 to_world(ImVec2 s) const { return {(s.x - origin.x) / scale + min_x, (height - (s.y - origin.y)) / scale + min_y}; }
+};
+
+Fit fit(const std::vector<Vec2>& pts, ImVec2 corner, ImVec2 size) {
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+  if (!pts.empty()) {
+    x0 = x1 = pts[0].x;
+    y0 = y1 = pts[0].y;
+  }
+  for (const Vec2& p : pts) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  const double pad = 0.15 * std::max({x1 - x0, y1 - y0, 1.0});
+  x0 -= pad, x1 += pad, y0 -= pad, y1 += pad;
+  Fit f;
+  f.scale = std::min(size.x / (x1 - x0), size.y / (y1 - y0));
+  f.min_x = x0;
+  f.min_y = y0;
+  f.height = size.y;
+  // Centre horizontally.
+  f.origin = ImVec2(corner.x + static_cast<float>((size.x - (x1 - x0) * f.scale) / 2), corner.y);
+  return f;
+}
+
+}  // namespace
+
+void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
+  const NodeId id = doc.selected();
+  if (id != node_) {
+    node_ = id;
+    dragging_.reset();
+    selected_edges_.clear();
+  }
+  const Node* n = id ? doc.graph().node(id) : nullptr;
+  if (!n) {
+    ImGui::TextDisabled("Select a footprint or profile node.");
+    return;
+  }
+  const auto plan_out = output_of_type<Footprint>(n->decl());
+  const bool is_profile = output_of_type<Profile>(n->decl()).has_value();
+  if (!plan_out && !is_profile) {
+    ImGui::TextDisabled("%s makes no footprint or profile.", n->type->name().c_str());
+    return;
+  }
+  const PolylineRules rules = is_profile ? kProfileRules : kPlanRules;
+  const auto points_param = param_of_type(*n, "points", typeid(std::vector<Vec2>));
+  std::vector<Vec2> pts = points_param ? n->params[*points_param].get<std::vector<Vec2>>() : std::vector<Vec2>{};
+
+  // The evaluated plan (all loops, with edge ids, angles and profiles).
+  const Footprint* fp = nullptr;
+  if (plan_out && eval)
+    if (auto it = eval->values.find(PortRef{id, *plan_out}); it != eval->values.end()) fp = &it->second.get<Footprint>();
+  std::vector<Vec2> extent = pts;
+  if (fp)
+    for (const Loop& l : fp->loops)
+      for (const auto& p : l.points) extent.push_back({p.x, p.y});
+  if (extent.empty()) {
+    ImGui::TextDisabled("Nothing evaluated yet.");
+    return;
+  }
+  ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone), double-click a segment to add, right-click to delete."
+                      : points_param ? "Plan: drag corners, double-click an edge to add one, right-click a corner to delete, click edges to select."
+                                     : "Plan: click edges to select them.");
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 50.0f), std::max(ImGui::GetContentRegionAvail().y - 4, 50.0f));
+  ImGui::InvisibleButton("shape", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  const bool hovered = ImGui::IsItemHovered();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(corner, ImVec2(corner.x + size.x, corner.y + size.y), true);
+  dl->AddRectFilled(corner, ImVec2(corner.x + size.x, corner.y + size.y), IM_COL32(24, 25, 30, 255));
+  const Fit f = fit(extent, corner, size);
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const Vec2 mw = f.to_world(mouse);
+  const double tol = 8.0 / f.scale;
+  if (is_profile) {  // the ground line and the wall line through (0, 0)
+    dl->AddLine(f.to_screen(f.min_x, 0), f.to_screen(f.min_x + size.x / f.scale, 0), IM_COL32(90, 90, 90, 255));
+    dl->AddLine(f.to_screen(0, f.min_y), f.to_screen(0, f.min_y + size.y / f.scale), IM_COL32(60, 60, 60, 255));
+  }
+
+  // Evaluated plan edges, labelled; hovered and selected ones highlighted.
+  std::optional<std::int32_t> hover_edge;
+  if (fp) {
+    for (const Loop& l : fp->loops) {
+      const std::size_t m = l.points.size();
+      std::vector<Vec2> loop;
+      for (const auto& p : l.points) loop.push_back({p.x, p.y});
+      // SIZE_MAX: no edge near the mouse.
+      const std::size_t near = hovered && !dragging_ ? nearest_edge(loop, mw, tol, true).value_or(SIZE_MAX) : SIZE_MAX;
+      for (std::size_t e = 0; e < m; ++e) {
+        const auto& a = l.points[e];
+        const auto& b = l.points[(e + 1) % m];
+        const EdgeSpec& spec = l.edges[e];
+        const bool sel = selected_edges_.count(spec.id) > 0;
+        if (near == e) hover_edge = spec.id;
+        dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), sel ? IM_COL32(255, 170, 40, 255) : near == e ? IM_COL32(255, 255, 255, 255) : IM_COL32(120, 190, 255, 255),
+                    sel || near == e ? 3.0f : 2.0f);
+        char label[64];
+        if (spec.profile >= 0 && static_cast<std::size_t>(spec.profile) < fp->profiles.size())
+          std::snprintf(label, sizeof label, "e%d %s", spec.id, fp->profiles[static_cast<std::size_t>(spec.profile)].name.c_str());
+        else
+          std::snprintf(label, sizeof label, "e%d %.0f deg", spec.id, spec.angle_deg);
+        const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
+        dl->AddText(ImVec2(mid.x + 4, mid.y - 14), IM_COL32(200, 200, 210, 255), label);
+      }
+    }
+  }
+  // The editable polyline.
+  if (points_param) {
+    const std::size_t segs = rules.closed ? pts.size() : (pts.empty() ? 0 : pts.size() - 1);
+    std::vector<std::string> tags;
+    if (auto t = param_of_type(*n, "tags", typeid(std::vector<std::string>))) tags = n->params[*t].get<std::vector<std::string>>();
+    for (std::size_t e = 0; e < segs && !fp; ++e) {
+      const Vec2 a = pts[e], b = pts[(e + 1) % pts.size()];
+      dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), tag_color_u32(e < tags.size() ? tags[e] : ""), 2.5f);
+      if (e < tags.size()) {
+        const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
+        dl->AddText(ImVec2(mid.x + 6, mid.y - 7), IM_COL32(220, 220, 220, 255), tags[e].c_str());
+      }
+    }
+    const auto near_point = hovered ? nearest_point(pts, mw, tol) : std::nullopt;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const bool hot = dragging_ == i || near_point == i;
+      dl->AddCircleFilled(f.to_screen(pts[i].x, pts[i].y), hot ? 6.0f : 4.5f, hot ? IM_COL32(255, 170, 40, 255) : IM_COL32(240, 240, 240, 255));
+    }
+    auto apply = [&](std::vector<Vec2> v) {
+      if (Status s = doc.set_param(id, *points_param, Value::make(std::move(v))); !s) status = s.message();
+    };
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point) {
+      dragging_ = near_point;
+      doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
+    }
+    if (dragging_) {
+      if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        apply(move_point(pts, *dragging_, mw, rules));
+      } else {
+        dragging_.reset();
+        doc.end_gesture();
+      }
+    }
+    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point)
+      if (auto e = nearest_edge(pts, mw, tol, rules.closed)) apply(insert_point(pts, *e, mw, rules));
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near_point) {
+      auto r = remove_point(pts, *near_point, rules);
+      if (r) apply(r.value());
+      else status = r.message();
+    }
+  }
+  // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge) {
+    if (!ImGui::GetIO().KeyCtrl && !ImGui::GetIO().KeyShift) selected_edges_.clear();
+    if (!selected_edges_.erase(*hover_edge)) selected_edges_.insert(*hover_edge);
+  }
+  dl->PopClipRect();
+  if (!selected_edges_.empty()) {
+    ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));
+    std::string text = "selected edges:";
+    for (std::int32_t e : selected_edges_) {
+      text += ' ';
+      text += std::to_string(e);
+    }
+    ImGui::TextUnformatted(text.c_str());
+    if (auto sel = param_of_type(*n, "selection", typeid(std::vector<std::int64_t>))) {
+      if (ImGui::SmallButton("Use as the node's selection"))
+        if (Status s = doc.set_param(id, *sel, Value::make(std::vector<std::int64_t>(selected_edges_.begin(), selected_edges_.end()))); !s)
+          status = s.message();
+    }
+  }
+}
+
+}  // namespace procex::studio

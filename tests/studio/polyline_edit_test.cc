@@ -1,0 +1,65 @@
+// Plan and profile editing rules: monotone profiles while dragging, a pinned
+// (0, 0) start, minimum point counts, hit tests on points and edges.
+#include "app/studio/editor/polyline_edit.h"
+
+#include <gtest/gtest.h>
+
+namespace procex::studio {
+namespace {
+
+//  y
+//  4 |     * 3 (2,4)
+//  2 |  * 2 (1,2)        a profile: up, out, up
+//  1 |  * 1 (1,1)
+//  0 *  0 (0,0)
+const std::vector<Vec2> kProfile = {{0, 0}, {1, 1}, {1, 2}, {2, 4}};
+
+TEST(PolylineEdit, ProfilePointKeepsItsHeightBetweenItsNeighbours) {
+  auto p = move_point(kProfile, 2, {3, 0.5}, kProfileRules);  // dragged below point 1
+  EXPECT_EQ(p[2], (Vec2{3, 1}));
+  p = move_point(kProfile, 2, {0.5, 9}, kProfileRules);  // above point 3
+  EXPECT_EQ(p[2], (Vec2{0.5, 4}));
+  p = move_point(kProfile, 3, {5, 10}, kProfileRules);  // the last point may rise freely
+  EXPECT_EQ(p[3], (Vec2{5, 10}));
+  for (std::size_t i = 1; i < p.size(); ++i) EXPECT_GE(p[i].y, p[i - 1].y);
+}
+
+TEST(PolylineEdit, ProfileStartIsPinned) {
+  EXPECT_EQ(move_point(kProfile, 0, {3, 3}, kProfileRules), kProfile);
+  auto r = remove_point(kProfile, 0, kProfileRules);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.message().find("(0, 0)"), std::string::npos);
+}
+
+TEST(PolylineEdit, PlanPointsMoveFreelyAndKeepThree) {
+  const std::vector<Vec2> square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  EXPECT_EQ(move_point(square, 0, {-5, -5}, kPlanRules)[0], (Vec2{-5, -5}));
+  auto r = remove_point(square, 1, kPlanRules);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r.value().size(), 3u);
+  EXPECT_FALSE(remove_point(r.value(), 0, kPlanRules));
+}
+
+TEST(PolylineEdit, InsertLandsOnTheEdgeIncludingTheClosingOne) {
+  const std::vector<Vec2> square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  auto p = insert_point(square, 3, {-1, 4}, kPlanRules);  // the closing edge (0,10)-(0,0)
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_EQ(p[4], (Vec2{0, 4}));
+  // An open profile has no closing edge.
+  EXPECT_EQ(insert_point(kProfile, 3, {1, 1}, kProfileRules).size(), kProfile.size());
+  p = insert_point(kProfile, 2, {9, 3}, kProfileRules);  // projected onto (1,2)-(2,4)
+  ASSERT_EQ(p.size(), 5u);
+  for (std::size_t i = 1; i < p.size(); ++i) EXPECT_GE(p[i].y, p[i - 1].y);
+}
+
+TEST(PolylineEdit, HitTests) {
+  const std::vector<Vec2> square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  EXPECT_EQ(nearest_point(square, {9.8, 0.1}, 0.5), 1u);
+  EXPECT_FALSE(nearest_point(square, {5, 5}, 0.5));
+  EXPECT_EQ(nearest_edge(square, {5, 0.2}, 0.5, true), 0u);
+  EXPECT_EQ(nearest_edge(square, {0.2, 5}, 0.5, true), 3u);
+  EXPECT_FALSE(nearest_edge(square, {0.2, 5}, 0.5, false));  // open: no closing edge
+}
+
+}  // namespace
+}  // namespace procex::studio
