@@ -332,7 +332,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   }
   for (int n : live) {
     if (!st.corners[n].alive) continue;
-    queue.schedule(st, n);
+    queue.schedule(st, n, edges);
     queue.schedule_edge_event(st, st.corners[n].prev);
   }
 }
