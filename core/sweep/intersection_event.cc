@@ -197,7 +197,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   for (int m : members) p += cs[m].p;
   p /= static_cast<double>(members.size());
   // Corners count as at p within the cluster's own spread.
-  double near = 10.0 * st.tol().position();
+  double near = 2.0 * st.tol().position();
   for (int m : members) near = std::max(near, 2.0 * glm::length(cs[m].p - p));
   for (int m : members) {
     // An earlier cluster at this height may have consumed this collision.
