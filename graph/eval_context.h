@@ -33,10 +33,12 @@ struct Cancelled : std::runtime_error {
 class EvalContext {
  public:
   EvalContext(const NodeDecl& decl, const std::vector<Value>& params, const std::vector<Value>& inputs,
-              const CancelToken& cancel)
-      : decl_(decl), params_(params), inputs_(inputs), outputs_(decl.outputs().size()), cancel_(cancel) {}
+              const CancelToken& cancel, const std::filesystem::path& folder = {})
+      : decl_(decl), params_(params), inputs_(inputs), outputs_(decl.outputs().size()), cancel_(cancel), folder_(folder) {}
 
   const NodeDecl& decl() const { return decl_; }
+  // Where relative file paths in parameters resolve (EvalOptions::folder; usually the recipe's).
+  const std::filesystem::path& folder() const { return folder_; }
 
   // False for an unconnected optional input.
   bool has_input(std::size_t i) const { return !inputs_.at(i).empty(); }
@@ -105,6 +107,7 @@ class EvalContext {
   std::vector<std::pair<Severity, std::string>> messages_;
   bool failed_ = false;
   const CancelToken& cancel_;
+  std::filesystem::path folder_;
 };
 
 }  // namespace procex

@@ -268,6 +268,7 @@ class Run {
     Hasher h;
     h.hash(salt_).hash(node->type->key);
     for (const Value& v : n.params()) v.hash(h);
+    if (decl.hash_extra()) decl.hash_extra()(n.params(), options_.folder, h);
     n.inputs.reserve(decl.inputs().size());
     for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
       Source s = resolve_input(f, PortRef{id, i});
@@ -395,7 +396,7 @@ class Run {
       n.state = State::kCancelled;
       return;
     }
-    EvalContext ctx(decl, n.params(), inputs, options_.cancel);
+    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder);
     const auto t0 = Clock::now();
     try {
       n.node->type->evaluate(ctx);
@@ -537,12 +538,13 @@ EvalResult Evaluator::evaluate_ports(const Graph& g, const Bindings& bindings, s
   return run(g, bindings, ports, std::move(names), options, true);
 }
 
-EvalResult Evaluator::hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs) {
+EvalResult Evaluator::hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
+                                   const EvalOptions& options) {
   std::vector<PortRef> ports;
   std::vector<std::string> names;
   std::vector<Diagnostic> problems;
   graph_output_ports(g, outputs, ports, names, problems);
-  EvalResult r = run(g, bindings, ports, std::move(names), EvalOptions{}, false);
+  EvalResult r = run(g, bindings, ports, std::move(names), options, false);
   r.diagnostics.insert(r.diagnostics.begin(), problems.begin(), problems.end());
   return r;
 }

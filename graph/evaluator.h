@@ -40,6 +40,9 @@ struct EvalOptions {
   // billions of nodes. Beyond this many flattened nodes plus group instances,
   // the remaining groups fail with an error instead.
   std::size_t max_expanded_nodes = 200000;
+  // Relative file paths in parameters resolve against this folder, usually the
+  // recipe's (EvalContext::folder(), NodeDecl::hash_extra). Empty: the working directory.
+  std::filesystem::path folder;
 };
 
 struct OutputResult {
@@ -74,7 +77,8 @@ class Evaluator {
 
   // Hashes of the graph outputs without evaluating anything (empty = all).
   // Problems that stop hashing (unbound inputs) appear as diagnostics.
-  EvalResult hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs = {});
+  EvalResult hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs = {},
+                          const EvalOptions& options = {});
 
   const std::string& engine_salt() const { return salt_; }
   ResultCache& cache() { return cache_; }

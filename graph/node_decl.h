@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -95,6 +96,12 @@ using PassThroughFn = std::optional<std::size_t> (*)(const std::vector<Value>& p
 // std::invalid_argument to refuse. Called by the .pxg loader before it reads them.
 using UpgradeFn = void (*)(int saved_version, nlohmann::json& params);
 
+// Adds to a node's cache key what its result depends on beyond parameters and
+// inputs -- typically the size and modification time of a file it reads, so an
+// edited file is read again (relative paths resolve against `folder`, see
+// EvalOptions::folder). Must be cheap: it runs whenever the graph is hashed.
+using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h);
+
 class NodeDecl {
  public:
   NodeDecl() = default;
@@ -138,6 +145,10 @@ class NodeDecl {
     upgrade_ = fn;
     return *this;
   }
+  NodeDecl& hash_extra(HashExtraFn fn) {
+    hash_extra_ = fn;
+    return *this;
+  }
 
   const std::string& type_name() const { return type_name_; }
   int version() const { return version_; }
@@ -148,6 +159,7 @@ class NodeDecl {
   const std::vector<ParamDecl>& params() const { return params_; }
   PassThroughFn pass_through() const { return pass_through_; }
   UpgradeFn upgrade() const { return upgrade_; }
+  HashExtraFn hash_extra() const { return hash_extra_; }
 
   // Index by name, or nullopt.
   std::optional<std::size_t> input_index(std::string_view name) const;
@@ -172,6 +184,7 @@ class NodeDecl {
   std::vector<ParamDecl> params_;
   PassThroughFn pass_through_ = nullptr;
   UpgradeFn upgrade_ = nullptr;
+  HashExtraFn hash_extra_ = nullptr;
 };
 
 // Names of ports, parameters and graph inputs/outputs: [a-z0-9_]+, starting with a letter.

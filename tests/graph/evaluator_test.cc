@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <unistd.h>
 #include <thread>
 
 #include "graph/evaluator.h"
@@ -272,6 +275,26 @@ TEST_F(EvaluatorTest, GroupsThatMultiplyAreRefusedNotExpanded) {
   for (const Diagnostic& d : r.diagnostics) all += d.to_string() + "\n";
   EXPECT_NE(all.find("the graph expands to more than 20000 nodes once its groups are flattened"), std::string::npos)
       << all.substr(0, 500);
+}
+
+TEST_F(EvaluatorTest, NodesReadingFilesKeyOnTheFileState) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("procex_eval_file_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "data.txt") << "12345";
+  Graph g;
+  const NodeId n = add(g, "test.FileSize");
+  ASSERT_TRUE(g.set_param(n, "path", Value::make(std::string("data.txt"))));
+  ASSERT_TRUE(g.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
+  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  EvalOptions options;
+  options.folder = dir;
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+  EXPECT_EQ(test::evaluations(), 1);
+  std::ofstream(dir / "data.txt") << "1234567";
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 7);
+  EXPECT_EQ(test::evaluations(), 2);
+  std::filesystem::remove_all(dir);
 }
 
 TEST_F(EvaluatorTest, StatsPrintATable) {

@@ -1,6 +1,7 @@
 #include "tests/graph/test_nodes.h"
 
 #include <chrono>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -120,6 +121,30 @@ void eval_slow(EvalContext& ctx) {
   ctx.set_output(0, ctx.input<double>(0));
 }
 
+// test.FileSize: the size of a file, re-read when the file changes.
+std::filesystem::path resolve(const std::vector<Value>& params, const std::filesystem::path& folder) {
+  return folder / params[0].get<std::string>();
+}
+void hash_file_state(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
+  std::error_code ec;
+  const auto path = resolve(params, folder);
+  h.u64(std::filesystem::file_size(path, ec));
+  h.i64(std::filesystem::last_write_time(path, ec).time_since_epoch().count());
+}
+void declare_file_size(NodeDecl& d) {
+  d.doc("Size of a file in bytes.").category("Test");
+  d.param<std::string>("path").default_value(std::string("missing.txt")).doc("relative to the recipe's folder");
+  d.output<std::int64_t>("bytes");
+  d.hash_extra(hash_file_state);
+}
+void eval_file_size(EvalContext& ctx) {
+  count(ctx);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(resolve({ctx.param_value(0)}, ctx.folder()), ec);
+  if (ec) return ctx.error("cannot read " + ctx.param<std::string>(0) + ": " + ec.message());
+  ctx.set_output(0, static_cast<std::int64_t>(size));
+}
+
 // test.Reroute: any type in, same value out.
 std::optional<std::size_t> always_pass(const std::vector<Value>&, std::size_t) { return std::size_t{0}; }
 void declare_reroute(NodeDecl& d) {
@@ -188,5 +213,6 @@ PROCEX_REGISTER_NODE("test.Fail", 1, declare_fail, eval_fail);
 PROCEX_REGISTER_NODE("test.Switch", 1, declare_switch, eval_switch);
 PROCEX_REGISTER_NODE("test.Slow", 1, declare_slow, eval_slow);
 PROCEX_REGISTER_NODE("test.Reroute", 1, declare_reroute, eval_reroute);
+PROCEX_REGISTER_NODE("test.FileSize", 1, declare_file_size, eval_file_size);
 PROCEX_REGISTER_NODE("test.Everything", 1, declare_everything, eval_everything);
 }  // namespace procex::test
