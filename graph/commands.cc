@@ -1,6 +1,7 @@
 #include "graph/commands.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 namespace procex {
@@ -250,6 +251,92 @@ class MakeGroup final : public Command {
   NodeId instance_ = 0;
 };
 
+class Ungroup final : public Command {
+ public:
+  explicit Ungroup(NodeId id) : id_(id) {}
+  std::string label() const override { return "ungroup node " + std::to_string(id_); }
+  const std::vector<NodeId>& created() const { return created_; }
+
+  Status apply(Graph& g) override {
+    const Node* n = g.node(id_);
+    if (!n || n->group.empty()) return Status::error("node " + std::to_string(id_) + " is not a group instance");
+    before_ = g;
+    Graph work = g;
+    Status s = expand(work, *n);
+    if (s) g = std::move(work);
+    return s;
+  }
+  void revert(Graph& g) override { g = before_; }
+
+ private:
+  Status expand(Graph& g, const Node inst) {
+    const Graph& body = *inst.type->body;
+    // What fed the instance and what it fed, before it goes.
+    std::vector<std::optional<PortRef>> fed_by(body.inputs().size());
+    for (std::uint32_t i = 0; i < fed_by.size(); ++i) fed_by[i] = g.source(PortRef{inst.id, i});
+    const std::vector<Link> feeds = g.links_from(inst.id);
+    const std::vector<ExposedParam> exposed = g.exposed_params();
+    (void)g.remove_node(inst.id);
+
+    std::map<NodeId, NodeId> remap;
+    created_.clear();
+    for (const auto& [old_id, inner] : body.nodes()) {
+      Node copy = inner;
+      if (!inner.group.empty()) {
+        const GroupDef& def = body.groups().find(inner.group)->second;
+        auto existing = g.groups().find(inner.group);
+        if (existing == g.groups().end()) {
+          if (Status s = g.add_group(def.name, def.type->body, def.file); !s) return s;
+          existing = g.groups().find(inner.group);
+        } else if (existing->second.type->body != def.type->body) {
+          return Status::error("cannot ungroup: this recipe already has a different group named '" + inner.group + "'");
+        }
+        copy.type = existing->second.type;
+      }
+      copy.id = g.next_id();
+      copy.editor.x += inst.editor.x;
+      copy.editor.y += inst.editor.y;
+      if (Status s = g.restore_node(std::move(copy)); !s) return s;
+      remap[old_id] = g.next_id() - 1;
+      created_.push_back(g.next_id() - 1);
+    }
+    const auto& inner_exposed = body.exposed_params();
+    for (std::size_t k = 0; k < inner_exposed.size(); ++k)
+      if (Status s = g.set_param(remap.at(inner_exposed[k].node), inner_exposed[k].param, inst.params[k]); !s) return s;
+    // Where an inner output port now comes from in the outer graph (nullopt: nothing).
+    auto outer_source = [&](PortRef inner) -> std::optional<PortRef> {
+      if (inner.node == kGraphInputs) return fed_by[inner.port];
+      return PortRef{remap.at(inner.node), inner.port};
+    };
+    for (const auto& [to, from] : body.links()) {
+      if (to.node == kGraphOutputs) continue;
+      if (auto src = outer_source(from))
+        if (Status s = g.connect(*src, PortRef{remap.at(to.node), to.port}); !s) return s;
+    }
+    for (const Link& l : feeds) {
+      auto inner = body.source(PortRef{kGraphOutputs, l.from.port});
+      if (!inner) continue;
+      if (auto src = outer_source(*inner))
+        if (Status s = g.connect(*src, l.to); !s) return s;
+    }
+    // Parameters the outer graph exposed through the instance now point inside.
+    for (const ExposedParam& e : g.exposed_params()) (void)g.unexpose_param(std::string(e.name));
+    for (ExposedParam e : exposed) {
+      if (e.node == inst.id) {
+        const ExposedParam& inner = inner_exposed[e.param];
+        e.node = remap.at(inner.node);
+        e.param = inner.param;
+      }
+      if (Status s = g.expose_param(e); !s) return s;
+    }
+    return Status::ok();
+  }
+
+  NodeId id_;
+  Graph before_;
+  std::vector<NodeId> created_;
+};
+
 class Macro final : public Command {
  public:
   explicit Macro(std::string label) : label_(std::move(label)) {}
@@ -392,6 +479,13 @@ Result<NodeId> UndoStack::group(std::vector<NodeId> nodes, std::string group_nam
   return ref.instance();
 }
 
+Result<std::vector<NodeId>> UndoStack::ungroup(NodeId instance) {
+  auto c = std::make_unique<Ungroup>(instance);
+  Ungroup& ref = *c;
+  if (Status s = push(std::move(c)); !s) return s;
+  return ref.created();
+}
+
 std::unique_ptr<Command> add_node_command(std::shared_ptr<const NodeType> type, std::string group, EditorState e) {
   return std::make_unique<AddNode>(std::move(type), std::move(group), std::move(e));
 }
@@ -407,5 +501,6 @@ std::unique_ptr<Command> editor_state_command(NodeId id, EditorState s, std::str
 std::unique_ptr<Command> group_command(std::vector<NodeId> nodes, std::string group_name) {
   return std::make_unique<MakeGroup>(std::move(nodes), std::move(group_name));
 }
+std::unique_ptr<Command> ungroup_command(NodeId instance) { return std::make_unique<Ungroup>(instance); }
 
 }  // namespace procex

@@ -74,6 +74,9 @@ class UndoStack {
   // Replaces `nodes` by one instance of a new group `group_name` holding them;
   // links crossing the boundary become the group's inputs and outputs.
   Result<NodeId> group(std::vector<NodeId> nodes, std::string group_name);
+  // Replaces a group instance by a copy of the group's nodes (new ids, returned),
+  // wired as the instance was, with its exposed parameter values applied.
+  Result<std::vector<NodeId>> ungroup(NodeId instance);
 
   Graph& graph() { return graph_; }
 
@@ -96,5 +99,6 @@ std::unique_ptr<Command> disconnect_command(PortRef to);
 std::unique_ptr<Command> set_param_command(NodeId id, std::string param, Value v);
 std::unique_ptr<Command> editor_state_command(NodeId id, EditorState s, std::string label);
 std::unique_ptr<Command> group_command(std::vector<NodeId> nodes, std::string group_name);
+std::unique_ptr<Command> ungroup_command(NodeId instance);
 
 }  // namespace procex

@@ -124,6 +124,29 @@ TEST_F(Commands, GroupingWiresTheBoundary) {
   EXPECT_EQ(stack.group({d.c3}, "left").message(), "there is already a group named 'left'");
 }
 
+TEST_F(Commands, UngroupRestoresTheWiringAndTheExposedValues) {
+  UndoStack stack(d.g);
+  ASSERT_TRUE(d.g.expose_param(ExposedParam{"left_scale", d.add1, 0}));
+  auto inst = stack.group({d.c2, d.add1}, "left");
+  ASSERT_TRUE(inst);
+  ASSERT_TRUE(stack.set_param(*inst, "left_scale", Value::make(3.0)));
+  const std::string grouped = to_pxg(d.g);
+  auto created = stack.ungroup(*inst);
+  ASSERT_TRUE(created) << created.message();
+  ASSERT_EQ(created.value().size(), 2u);
+  EXPECT_EQ(d.g.node(*inst), nullptr);
+  const NodeId new_c2 = created.value()[0], new_add1 = created.value()[1];
+  EXPECT_EQ(d.g.node(new_add1)->params[0].get<double>(), 3.0);
+  EXPECT_EQ(d.g.source(PortRef{new_add1, 0}), (PortRef{d.c1, 0}));
+  EXPECT_EQ(d.g.source(PortRef{new_add1, 1}), (PortRef{new_c2, 0}));
+  EXPECT_EQ(d.g.source(PortRef{d.mul, 0}), (PortRef{new_add1, 0}));
+  ASSERT_EQ(d.g.exposed_params().size(), 1u);
+  EXPECT_EQ(d.g.exposed_params()[0].node, new_add1);
+  ASSERT_TRUE(stack.undo());
+  EXPECT_EQ(to_pxg(d.g), grouped);
+  EXPECT_EQ(stack.ungroup(d.c1).message(), "node 1 is not a group instance");
+}
+
 TEST_F(Commands, HistoryIsBounded) {
   UndoStack stack(d.g, 3);
   for (int i = 0; i < 5; ++i) ASSERT_TRUE(stack.set_param(d.c1, "value", Value::make(static_cast<double>(i))));

@@ -97,6 +97,9 @@ TEST_F(Incremental, GroupingKeepsTheResultsCached) {
   EXPECT_EQ(last.output("result")->get<double>(), 21.0);
   ASSERT_TRUE(stack.undo());
   EXPECT_EQ(reevaluate(), 0);
+  ASSERT_TRUE(stack.redo());
+  ASSERT_TRUE(stack.ungroup(*inst));
+  EXPECT_EQ(reevaluate(), 0);  // ungrouped nodes hash as they did inside the group
 }
 
 TEST_F(Incremental, ChangingTheEngineSaltRecomputesEverything) {

@@ -16,6 +16,7 @@ struct RandomEditor {
   UndoStack stack;
   int groups = 0;
   int grouped = 0;  // successful group commands
+  int ungrouped = 0;
 
   RandomEditor(unsigned seed, Graph& graph) : rng(seed), g(graph), stack(graph) {}
 
@@ -33,7 +34,7 @@ struct RandomEditor {
 
   void random_edit() {
     if (g.nodes().size() < 3) return add_random_node();
-    switch (pick(9)) {
+    switch (pick(10)) {
       case 0: return add_random_node();
       case 1: (void)stack.remove_node(random_node()); return;
       case 2:
@@ -67,6 +68,11 @@ struct RandomEditor {
         if (stack.group({a, b}, name)) ++grouped;
         return;
       }
+      case 9: {
+        const NodeId n = random_node();
+        if (!g.node(n)->group.empty() && stack.ungroup(n)) ++ungrouped;
+        return;
+      }
     }
   }
 };
@@ -81,7 +87,7 @@ std::vector<PortRef> all_ports(const Graph& g) {
 
 TEST(Property, CachedEvaluationEqualsEvaluationFromScratch) {
   constexpr int kGraphs = 24, kEdits = 60;
-  int grouped = 0;
+  int grouped = 0, ungrouped = 0;
   for (unsigned seed = 1; seed <= kGraphs; ++seed) {
     Graph g;
     RandomEditor ed(seed, g);
@@ -111,8 +117,10 @@ TEST(Property, CachedEvaluationEqualsEvaluationFromScratch) {
         ASSERT_EQ(a.diagnostics[i].to_string(), b.diagnostics[i].to_string());
     }
     grouped += ed.grouped;
+    ungrouped += ed.ungrouped;
   }
   EXPECT_GT(grouped, kGraphs / 2);  // groups are part of what was compared
+  EXPECT_GT(ungrouped, 0);
 }
 
 }  // namespace
