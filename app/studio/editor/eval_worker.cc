@@ -41,10 +41,11 @@ EvalWorker::~EvalWorker() {
   thread_.join();
 }
 
-void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports, Bindings bindings) {
+void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports, Bindings bindings,
+                        std::filesystem::path folder) {
   {
     std::lock_guard lock(mutex_);
-    pending_ = Job{revision, std::move(graph), std::move(extra_ports), std::move(bindings)};
+    pending_ = Job{revision, std::move(graph), std::move(extra_ports), std::move(bindings), std::move(folder)};
     running_cancel_.cancel();
   }
   changed_.notify_all();
@@ -91,7 +92,10 @@ std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate(Job& job, const CancelT
   ports.insert(ports.end(), job.extra_ports.begin(), job.extra_ports.end());
   auto snap = std::make_shared<EvalSnapshot>();
   snap->revision = job.revision;
-  snap->result = evaluator_.evaluate_ports(job.graph, job.bindings, ports, EvalOptions{cancel});
+  EvalOptions options;
+  options.cancel = cancel;
+  options.folder = job.folder;
+  snap->result = evaluator_.evaluate_ports(job.graph, job.bindings, ports, options);
   if (snap->result.cancelled || cancel.cancelled()) return nullptr;
 
   std::vector<const TaggedMesh*> meshes;

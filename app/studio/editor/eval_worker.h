@@ -9,6 +9,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -54,8 +55,10 @@ class EvalWorker {
   EvalWorker& operator=(const EvalWorker&) = delete;
 
   // Evaluates `graph` (the preview ports plus `extra_ports`, e.g. the selected
-  // node's outputs for the plan editor), cancelling whatever runs.
-  void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {}, Bindings bindings = {});
+  // node's outputs for the plan editor), cancelling whatever runs. Relative
+  // file paths in parameters resolve against `folder` (the recipe's).
+  void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {}, Bindings bindings = {},
+              std::filesystem::path folder = {});
   // The newest finished (not cancelled) evaluation, or null before the first.
   std::shared_ptr<const EvalSnapshot> latest() const;
   // Nothing pending or running.
@@ -69,6 +72,7 @@ class EvalWorker {
     Graph graph;
     std::vector<PortRef> extra_ports;
     Bindings bindings;
+    std::filesystem::path folder;
   };
   void run();
   std::shared_ptr<const EvalSnapshot> evaluate(Job& job, const CancelToken& cancel);

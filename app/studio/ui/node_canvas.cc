@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <vector>
 
 #include "app/studio/editor/preview_mesh.h"
@@ -108,17 +109,25 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
     for (std::uint32_t i = 0; i < b.outputs.size(); ++i) pins_on_screen_.push_back({{b.id, i}, true, view_.to_screen(b.outputs[i])});
   }
 
+  // Only what is in view is drawn: big graphs stay cheap to draw.
+  const Rect visible{view_.to_canvas(view_.origin), view_.to_canvas(view_.origin + size)};
+  std::map<NodeId, const NodeBox*> by_id;
+  for (const NodeBox& b : boxes) by_id[b.id] = &b;
+
   // Links under the nodes.
   for (const auto& [to, from] : g.links()) {
-    const NodeBox* fb = find_box(boxes, from.node);
-    const NodeBox* tb = find_box(boxes, to.node);
+    const NodeBox* fb = by_id.count(from.node) ? by_id[from.node] : nullptr;
+    const NodeBox* tb = by_id.count(to.node) ? by_id[to.node] : nullptr;
     if (!fb || !tb || from.port >= fb->outputs.size() || to.port >= tb->inputs.size()) continue;
+    const Rect span{glm::min(fb->rect.min, tb->rect.min), glm::max(fb->rect.max, tb->rect.max)};
+    if (!span.overlaps(visible)) continue;
     bezier(dl, view_.to_screen(fb->outputs[from.port]), view_.to_screen(tb->inputs[to.port]), type_color(g.output_type(from)), zoom);
   }
 
   // Nodes.
   std::string hover_text;
   for (const NodeBox& b : boxes) {
+    if (!b.rect.overlaps(visible)) continue;
     const glm::vec2 a = view_.to_screen(b.rect.min), c = view_.to_screen(b.rect.max);
     const bool pseudo = b.id > kMaxNodeId;
     const Node* n = pseudo ? nullptr : g.node(b.id);

@@ -147,6 +147,7 @@ PreviewView::~PreviewView() = default;
 void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   if (mesh == mesh_) return;
   mesh_ = std::move(mesh);
+  stale_ = true;
   static const std::vector<float> kNone;
   gl_->upload(gl_->mesh_vbo, mesh_ ? mesh_->vertices : kNone);
   gl_->upload(gl_->edge_vbo, mesh_ ? mesh_->edge_points : kNone);
@@ -176,9 +177,13 @@ void PreviewView::frame_all() {
   if (!mesh_ || mesh_->empty()) return;
   camera_.frame(glm::vec3(mesh_->min), glm::vec3(mesh_->max));
   framed_ = true;
+  stale_ = true;
 }
 
 void PreviewView::render(int width, int height) {
+  if (!stale_ && wireframe == drawn_wireframe_ && width == gl_->width && height == gl_->height) return;
+  stale_ = false;
+  drawn_wireframe_ = wireframe;
   GLint previous_fbo = 0, previous_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
@@ -243,11 +248,17 @@ void PreviewView::draw() {
   image_h = static_cast<float>(h);
   if (ImGui::IsItemHovered()) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.MouseWheel != 0) camera_.zoom(io.MouseWheel);
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left)))
+    if (io.MouseWheel != 0) {
+      camera_.zoom(io.MouseWheel);
+      stale_ = true;
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left))) {
       camera_.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(h));
-    else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+      stale_ = true;
+    } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
       camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+      stale_ = true;
+    }
   }
 }
 

@@ -35,6 +35,10 @@ class PreviewView {
   std::shared_ptr<const PreviewMesh> mesh_;
   OrbitCamera camera_;
   bool framed_ = false;
+  // The offscreen image is redrawn only when something it shows changed
+  // (software GL under Xvfb makes every redraw count).
+  bool stale_ = true;
+  bool drawn_wireframe_ = false;
 };
 
 }  // namespace procex::studio
