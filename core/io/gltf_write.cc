@@ -19,85 +19,109 @@ namespace {
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
 constexpr int kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 
-template <class T>
-int add_view(tinygltf::Model& m, const std::vector<T>& data, int target) {
-  tinygltf::Buffer& buffer = m.buffers[0];
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.data.size();
-  view.byteLength = data.size() * sizeof(T);
-  view.target = target;
-  buffer.data.resize(buffer.data.size() + view.byteLength);
-  std::memcpy(buffer.data.data() + view.byteOffset, data.data(), view.byteLength);
-  m.bufferViews.push_back(view);
-  return static_cast<int>(m.bufferViews.size() - 1);
+// The buffer holds three views, each tightly packed: every position, then every
+// normal (both vertex attributes), then every index; accessors point into them.
+// Three views instead of three per primitive keep the JSON small for whole cities.
+struct Layout {
+  std::size_t positions = 0, normals = 0, indices = 0;  // byte offsets of the views
+  std::size_t end = 0;
+};
+
+Layout layout_of(const std::vector<GltfMeshData>& meshes) {
+  std::size_t floats = 0, indices = 0;
+  for (const GltfMeshData& mesh : meshes)
+    for (const GltfPrimitiveData& p : mesh.primitives)
+      if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
+  Layout l;
+  l.normals = floats * sizeof(float);
+  l.indices = 2 * l.normals;
+  l.end = l.indices + indices * sizeof(std::uint32_t);
+  return l;
 }
 
-int add_accessor(tinygltf::Model& m, int view, int component, int type, std::size_t count) {
-  tinygltf::Accessor a;
+template <class T>
+std::size_t append(std::vector<unsigned char>& buffer, std::size_t at, const std::vector<T>& data) {
+  std::memcpy(buffer.data() + at, data.data(), data.size() * sizeof(T));
+  return at + data.size() * sizeof(T);
+}
+
+int add_accessor(tinygltf::Model& m, int view, std::size_t offset, int component, int type, std::size_t count) {
+  tinygltf::Accessor& a = m.accessors.emplace_back();
   a.bufferView = view;
+  a.byteOffset = offset;
   a.componentType = component;
   a.type = type;
   a.count = count;
-  m.accessors.push_back(a);
   return static_cast<int>(m.accessors.size() - 1);
+}
+
+void add_material(tinygltf::Model& m, const std::string& tag) {
+  tinygltf::Material& mat = m.materials.emplace_back();
+  mat.name = tag;
+  const auto c = tag_colour(tag);
+  mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
+  mat.pbrMetallicRoughness.metallicFactor = 0.0;
+  mat.pbrMetallicRoughness.roughnessFactor = 0.9;
 }
 
 tinygltf::Model to_model(const std::vector<GltfMeshData>& meshes) {
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = "procex";
-  m.buffers.emplace_back();
+  const Layout layout = layout_of(meshes);
+  m.scenes.emplace_back();
+  m.defaultScene = 0;
+  if (layout.end == 0) return m;
+  tinygltf::Buffer& buffer = m.buffers.emplace_back();
+  buffer.data.resize(layout.end);
+  const std::size_t starts[3] = {layout.positions, layout.normals, layout.indices};
+  const std::size_t ends[3] = {layout.normals, layout.indices, layout.end};
+  for (int v = 0; v < 3; ++v) {
+    tinygltf::BufferView& view = m.bufferViews.emplace_back();
+    view.buffer = 0;
+    view.byteOffset = starts[v];
+    view.byteLength = ends[v] - starts[v];
+    view.target = v < 2 ? TINYGLTF_TARGET_ARRAY_BUFFER : TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
+    if (v < 2) view.byteStride = 3 * sizeof(float);  // required once several accessors share a vertex view
+  }
+  std::size_t at[3] = {starts[0], starts[1], starts[2]};
   std::map<std::string, int> materials;
-  tinygltf::Scene scene;
   for (const GltfMeshData& data : meshes) {
     tinygltf::Mesh mesh;
     mesh.name = data.building;
     for (const GltfPrimitiveData& p : data.primitives) {
       if (p.indices.empty()) continue;
       auto [it, added] = materials.try_emplace(p.tag, static_cast<int>(materials.size()));
-      if (added) {
-        tinygltf::Material mat;
-        mat.name = p.tag;
-        const auto c = tag_colour(p.tag);
-        mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
-        mat.pbrMetallicRoughness.metallicFactor = 0.0;
-        mat.pbrMetallicRoughness.roughnessFactor = 0.9;
-        m.materials.push_back(mat);
-      }
-      tinygltf::Primitive prim;
+      if (added) add_material(m, p.tag);
+      tinygltf::Primitive& prim = mesh.primitives.emplace_back();
       prim.mode = TINYGLTF_MODE_TRIANGLES;
       prim.material = it->second;
       prim.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(p.tag)}});
       const std::size_t n = p.positions.size() / 3;
-      const int pos = add_accessor(m, add_view(m, p.positions, TINYGLTF_TARGET_ARRAY_BUFFER), kFloat, TINYGLTF_TYPE_VEC3, n);
+      const int pos = add_accessor(m, 0, at[0] - starts[0], kFloat, TINYGLTF_TYPE_VEC3, n);
       std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
       for (std::size_t i = 0; i < p.positions.size(); ++i) {
         lo[i % 3] = std::min<double>(lo[i % 3], p.positions[i]);
         hi[i % 3] = std::max<double>(hi[i % 3], p.positions[i]);
       }
-      m.accessors[pos].minValues = lo;
-      m.accessors[pos].maxValues = hi;
+      m.accessors[static_cast<std::size_t>(pos)].minValues = std::move(lo);
+      m.accessors[static_cast<std::size_t>(pos)].maxValues = std::move(hi);
       prim.attributes["POSITION"] = pos;
-      prim.attributes["NORMAL"] =
-          add_accessor(m, add_view(m, p.normals, TINYGLTF_TARGET_ARRAY_BUFFER), kFloat, TINYGLTF_TYPE_VEC3, n);
-      prim.indices = add_accessor(m, add_view(m, p.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER), kUint,
-                                  TINYGLTF_TYPE_SCALAR, p.indices.size());
-      mesh.primitives.push_back(std::move(prim));
+      prim.attributes["NORMAL"] = add_accessor(m, 1, at[1] - starts[1], kFloat, TINYGLTF_TYPE_VEC3, n);
+      prim.indices = add_accessor(m, 2, at[2] - starts[2], kUint, TINYGLTF_TYPE_SCALAR, p.indices.size());
+      at[0] = append(buffer.data, at[0], p.positions);
+      at[1] = append(buffer.data, at[1], p.normals);
+      at[2] = append(buffer.data, at[2], p.indices);
     }
     if (mesh.primitives.empty()) continue;  // glTF meshes need a primitive
     m.meshes.push_back(std::move(mesh));
-    tinygltf::Node node;
+    tinygltf::Node& node = m.nodes.emplace_back();
     node.name = data.building;
     node.mesh = static_cast<int>(m.meshes.size() - 1);
     node.extras = tinygltf::Value(tinygltf::Value::Object{{"building", tinygltf::Value(data.building)},
                                                           {"feature", tinygltf::Value(static_cast<int>(data.feature))}});
-    m.nodes.push_back(std::move(node));
-    scene.nodes.push_back(static_cast<int>(m.nodes.size() - 1));
+    m.scenes[0].nodes.push_back(static_cast<int>(m.nodes.size() - 1));
   }
-  if (m.buffers[0].data.empty()) m.buffers.clear();
-  m.scenes.push_back(std::move(scene));
-  m.defaultScene = 0;
   return m;
 }
 
@@ -114,9 +138,10 @@ std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component,
   if (a.componentType != component || a.type != type) bad(path, where + " has an unexpected component type");
   if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= m.bufferViews.size()) bad(path, where + " has no buffer view");
   const tinygltf::BufferView& v = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
-  if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() || v.byteStride != 0)
-    bad(path, where + ": unexpected buffer or stride");
   const std::size_t per = (type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
+  if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() ||
+      (v.byteStride != 0 && v.byteStride != per * sizeof(T)))
+    bad(path, where + ": unexpected buffer or stride");
   const std::size_t bytes = a.count * per * sizeof(T);
   const auto& data = m.buffers[static_cast<std::size_t>(v.buffer)].data;
   if (a.byteOffset + bytes > v.byteLength || v.byteOffset + v.byteLength > data.size()) bad(path, where + " runs past its buffer");
@@ -138,12 +163,13 @@ std::array<double, 3> tag_colour(const std::string& tag) {
   return {g, g, g};
 }
 
-GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
+void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
   const Mesh& mesh = *view.mesh;
-  GltfMeshData out;
-  out.building = view.building;
-  out.feature = view.feature;
+  // The primitive of each of the view's tags, found by name among those already there.
   std::vector<int> primitive_of_tag(view.tags.size(), -1);
+  for (std::size_t t = 0; t < view.tags.size(); ++t)
+    for (std::size_t p = 0; p < out.primitives.size(); ++p)
+      if (out.primitives[p].tag == view.tags[t]) primitive_of_tag[t] = static_cast<int>(p);
   std::vector<glm::dvec3> pts;
   for (const auto f : mesh.faces()) {
     pts.clear();
@@ -171,6 +197,13 @@ GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
       for (std::size_t k = 1; k + 1 < piece.size(); ++k)
         prim.indices.insert(prim.indices.end(), {base + piece[0], base + piece[k], base + piece[k + 1]});
   }
+}
+
+GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
+  GltfMeshData out;
+  out.building = view.building;
+  out.feature = view.feature;
+  append_to_gltf_mesh(out, view);
   return out;
 }
 
@@ -180,13 +213,16 @@ void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/false, /*writeBinary=*/true))
     throw IoError("cannot encode '" + path.string() + "' as glTF", path.string());
-  write_file_atomically(path, bytes.str());
+  write_file_atomically(path, std::move(bytes).str());
 }
 
 std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw IoError("cannot open '" + path.string() + "'", path.string());
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes(static_cast<std::size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+    throw IoError("cannot read '" + path.string() + "'", path.string());
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   std::string err, warn;

@@ -1,5 +1,5 @@
-// glTF 2.0 binary (.glb) output through tinygltf: one glTF mesh per procex
-// mesh, one primitive per face tag (triangles, flat normals), the tag in the
+// glTF 2.0 binary (.glb) output through tinygltf: one glTF mesh (and node) per
+// building, one primitive per face tag (triangles, flat normals), the tag in the
 // primitive's extras and material name, the building id (and the feature's
 // position in its source file, for merging shards) in the node's extras.
 // Reading back what was written gives the same data, so shards merge into
@@ -46,6 +46,9 @@ std::array<double, 3> tag_colour(const std::string& tag);
 
 // Triangulates every face (convex pieces, fanned); faces with zero area are dropped.
 GltfMeshData to_gltf_mesh(const TaggedMeshView& view);
+// The same, added to an existing mesh (a building made of several procex
+// meshes): faces join the primitive of their tag, made if missing.
+void append_to_gltf_mesh(GltfMeshData& mesh, const TaggedMeshView& view);
 
 // Writes a .glb atomically. Throws IoError naming the file on failure.
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes);

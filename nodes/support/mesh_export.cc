@@ -73,9 +73,13 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set) {
 
 std::vector<GltfMeshData> to_gltf(const MeshSet& set) {
   std::vector<GltfMeshData> out;
-  out.reserve(set.parts.size());
-  for (const TaggedMesh& part : set.parts)
-    out.push_back(to_gltf_mesh({part.mesh.get(), part.face_tags, part.tags, part.building, part.feature}));
+  for (std::size_t i = 0; i < set.parts.size(); ++i) {
+    const TaggedMesh& part = set.parts[i];
+    const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature};
+    const bool same_building = i > 0 && set.parts[i - 1].building == part.building && set.parts[i - 1].feature == part.feature;
+    if (same_building) append_to_gltf_mesh(out.back(), view);
+    else out.push_back(to_gltf_mesh(view));
+  }
   return out;
 }
 

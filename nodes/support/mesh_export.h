@@ -1,7 +1,8 @@
 // Writing a MeshSet to a file, the format chosen by the extension:
 // .obj (one group per mesh, one material per face tag, with a .mtl beside it),
 // .ply (core's writer: source edges and face kinds, one group per mesh) or
-// .glb (one glTF mesh per building, one primitive per tag). Atomic writes;
+// .glb (one glTF mesh per building: consecutive parts with the same building
+// id and feature join; one primitive per tag). Atomic writes;
 // IoError naming the file on failure.
 #pragma once
 
@@ -15,7 +16,7 @@ namespace procex {
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set);
 
-// The glTF form of every part, in order.
+// The glTF form of the parts, in order, consecutive parts of one building joined.
 std::vector<GltfMeshData> to_gltf(const MeshSet& set);
 
 // Whether write_mesh_set knows the extension (case-insensitive).

@@ -129,7 +129,7 @@ TEST_F(Batch, GlbCarriesBuildingIdsAndTags) {
   BatchCommandOptions o = options("city.glb");
   ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
   const std::vector<GltfMeshData> meshes = read_glb(o.output);
-  ASSERT_EQ(meshes.size(), 18u * 2);  // walls and roof per building
+  ASSERT_EQ(meshes.size(), 18u);  // walls and roof of a building in one mesh
   EXPECT_EQ(meshes[0].building, "w49209546");
   EXPECT_EQ(meshes[0].feature, 0);
   std::set<std::string> tags;
