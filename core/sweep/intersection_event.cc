@@ -99,8 +99,19 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
 
 // The point nearest (least squares) to all planes of a cluster: each output
 // vertex then lies on every face it bounds, however the cluster's members
-// scattered. Falls back to the cluster's mean where the planes do not pin a point.
-glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, glm::dvec2 mean, double near) {
+// scattered. Where the planes do not pin a point (nearly dependent, as in a
+// thin sliver), the slowest corner of the cluster says best where it is.
+glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const std::vector<int>& corners,
+                         glm::dvec2 mean, double near) {
+  glm::dvec3 fallback{mean, st.height};
+  double slowest = 1e300;
+  for (int c : corners) {
+    const double speed = glm::length(st.corners[c].velocity);
+    if (st.corners[c].motion == Motion::Regular && speed < slowest) {
+      slowest = speed;
+      fallback = {st.position(c, st.height), st.height};
+    }
+  }
   glm::dmat3 a(0.0);
   glm::dvec3 b(0.0);
   for (int e : edges) {
@@ -110,7 +121,6 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, glm::dv
     a += glm::outerProduct(n, n) / len2;
     b += n * (pl.c / len2);
   }
-  const glm::dvec3 fallback{mean, st.height};
   const double det = glm::determinant(a);
   if (!(std::abs(det) > 1e-9)) return fallback;
   const glm::dvec3 x = glm::inverse(a) * b;
@@ -247,7 +257,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
   }
 
-  const std::uint32_t v = st.add_vertex(meeting_point(st, edges, p, near));
+  const std::uint32_t v = st.add_vertex(meeting_point(st, edges, at_p, p, near));
   for (int c : at_p) {
     st.emit_trajectory(c, v);
     st.corners[c].alive = false;
