@@ -160,18 +160,11 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         << ": use .obj, .ply or .glb\n";
     return kExitUnusableInput;
   }
-  std::optional<Graph> recipe = load_recipe(options.recipe, err);
+  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
   if (!recipe) return kExitUnusableInput;
-  const auto footprint_input = recipe->input_index("footprint");
-  if (!footprint_input || recipe->inputs()[*footprint_input].type != &value_type<Footprint>()) {
+  const auto footprint_input = recipe->graph.input_index("footprint");
+  if (!footprint_input || recipe->graph.inputs()[*footprint_input].type != &value_type<Footprint>()) {
     err << options.recipe.string() << ": the recipe needs a graph input named 'footprint' of type footprint\n";
-    return kExitUnusableInput;
-  }
-  Bindings base;
-  if (!apply_settings(*recipe, base, options.settings, err)) return kExitUnusableInput;
-  const std::vector<std::string> outputs = mesh_outputs(*recipe);
-  if (outputs.empty()) {
-    err << options.recipe.string() << ": the recipe has no graph output of type mesh\n";
     return kExitUnusableInput;
   }
   GeoJsonCollection collection;
@@ -204,7 +197,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
-      if (buildings[i].feature) evaluate_building(*recipe, base, evaluator, outputs, one_glb, buildings[i]);
+      if (buildings[i].feature)
+        evaluate_building(recipe->graph, recipe->bindings, evaluator, recipe->outputs, one_glb, buildings[i]);
       progress.step();
     });
   });

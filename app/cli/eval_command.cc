@@ -13,18 +13,11 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply or .glb\n";
     return kExitUnusableInput;
   }
-  std::optional<Graph> graph = load_recipe(options.recipe, err);
-  if (!graph) return kExitUnusableInput;
-  Bindings bindings;
-  if (!apply_settings(*graph, bindings, options.settings, err)) return kExitUnusableInput;
-  const std::vector<std::string> outputs = mesh_outputs(*graph);
-  if (outputs.empty()) {
-    err << options.recipe.string() << ": the recipe has no graph output of type mesh to write\n";
-    return kExitUnusableInput;
-  }
+  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
+  if (!recipe) return kExitUnusableInput;
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);
-  const EvalResult r = evaluator.evaluate(*graph, bindings, outputs);
+  const EvalResult r = evaluator.evaluate(recipe->graph, recipe->bindings, recipe->outputs);
   print_diagnostics(r, options.recipe, err);
   if (!r.ok()) {
     err << "procex eval: " << options.recipe.string() << ": evaluation failed, nothing written\n";

@@ -61,6 +61,20 @@ std::vector<std::string> mesh_outputs(const Graph& graph) {
   return names;
 }
 
+std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
+                                           std::ostream& err) {
+  std::optional<Graph> graph = load_recipe(file, err);
+  if (!graph) return std::nullopt;
+  MeshRecipe r{std::move(*graph), {}, {}};
+  if (!apply_settings(r.graph, r.bindings, settings, err)) return std::nullopt;
+  r.outputs = mesh_outputs(r.graph);
+  if (r.outputs.empty()) {
+    err << file.string() << ": the recipe has no graph output of type mesh\n";
+    return std::nullopt;
+  }
+  return r;
+}
+
 MeshSet gather_meshes(const EvalResult& r) {
   MeshSet out;
   for (const OutputResult& o : r.outputs)
