@@ -149,7 +149,27 @@ std::string unique_name(const std::string& base, const std::set<std::string>& ta
     if (std::string n = base + "_" + std::to_string(i); !taken.count(n)) return n;
 }
 
-class MakeGroup final : public Command {
+// Edits that touch much of the graph (grouping) apply to a copy, so a refusal
+// half way leaves the graph untouched, and revert by restoring a snapshot.
+class SnapshotCommand : public Command {
+ public:
+  Status apply(Graph& g) override {
+    before_ = g;
+    Graph work = g;
+    Status s = edit(work);
+    if (s) g = std::move(work);
+    return s;
+  }
+  void revert(Graph& g) override { g = before_; }
+
+ protected:
+  virtual Status edit(Graph& g) = 0;
+
+ private:
+  Graph before_;
+};
+
+class MakeGroup final : public SnapshotCommand {
  public:
   MakeGroup(std::vector<NodeId> nodes, std::string name) : ids_(std::move(nodes)), name_(std::move(name)) {
     std::sort(ids_.begin(), ids_.end());
@@ -158,22 +178,14 @@ class MakeGroup final : public Command {
   std::string label() const override { return "group as " + name_; }
   NodeId instance() const { return instance_; }
 
-  Status apply(Graph& g) override {
-    if (ids_.empty()) return Status::error("select at least one node to group");
-    if (g.groups().count(name_)) return Status::error("there is already a group named '" + name_ + "'");
-    const std::set<NodeId> inside(ids_.begin(), ids_.end());
-    for (NodeId id : ids_)
-      if (!g.node(id)) return Status::error("no node " + std::to_string(id));
-    before_ = g;
-    Graph work = g;  // edited on a copy: a refusal half way leaves g untouched
-    Status s = build(work, inside);
-    if (s) g = std::move(work);
-    return s;
-  }
-  void revert(Graph& g) override { g = before_; }
 
  private:
-  Status build(Graph& g, const std::set<NodeId>& inside) {
+  Status edit(Graph& g) override {
+    if (ids_.empty()) return Status::error("select at least one node to group");
+    if (g.groups().count(name_)) return Status::error("there is already a group named '" + name_ + "'");
+    for (NodeId id : ids_)
+      if (!g.node(id)) return Status::error("no node " + std::to_string(id));
+    const std::set<NodeId> inside(ids_.begin(), ids_.end());
     auto body = std::make_shared<Graph>();
     body->metadata.name = name_;
     double x = 0, y = 0;
@@ -247,29 +259,21 @@ class MakeGroup final : public Command {
 
   std::vector<NodeId> ids_;
   std::string name_;
-  Graph before_;
   NodeId instance_ = 0;
 };
 
-class Ungroup final : public Command {
+class Ungroup final : public SnapshotCommand {
  public:
   explicit Ungroup(NodeId id) : id_(id) {}
   std::string label() const override { return "ungroup node " + std::to_string(id_); }
   const std::vector<NodeId>& created() const { return created_; }
 
-  Status apply(Graph& g) override {
-    const Node* n = g.node(id_);
-    if (!n || n->group.empty()) return Status::error("node " + std::to_string(id_) + " is not a group instance");
-    before_ = g;
-    Graph work = g;
-    Status s = expand(work, *n);
-    if (s) g = std::move(work);
-    return s;
-  }
-  void revert(Graph& g) override { g = before_; }
 
  private:
-  Status expand(Graph& g, const Node inst) {
+  Status edit(Graph& g) override {
+    const Node* n = g.node(id_);
+    if (!n || n->group.empty()) return Status::error("node " + std::to_string(id_) + " is not a group instance");
+    const Node inst = *n;  // a copy: the instance is removed below
     const Graph& body = *inst.type->body;
     // What fed the instance and what it fed, before it goes.
     std::vector<std::optional<PortRef>> fed_by(body.inputs().size());
@@ -333,7 +337,6 @@ class Ungroup final : public Command {
   }
 
   NodeId id_;
-  Graph before_;
   std::vector<NodeId> created_;
 };
 

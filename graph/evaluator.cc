@@ -520,15 +520,20 @@ void graph_output_ports(const Graph& g, const std::vector<std::string>& requeste
 }
 }  // namespace
 
-EvalResult Evaluator::evaluate(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
-                               const EvalOptions& options) {
+EvalResult Evaluator::run_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
+                                  const EvalOptions& options, bool compute) {
   std::vector<PortRef> ports;
   std::vector<std::string> names;
   std::vector<Diagnostic> problems;
   graph_output_ports(g, outputs, ports, names, problems);
-  EvalResult r = run(g, bindings, ports, std::move(names), options, true);
+  EvalResult r = run(g, bindings, ports, std::move(names), options, compute);
   r.diagnostics.insert(r.diagnostics.begin(), problems.begin(), problems.end());
   return r;
+}
+
+EvalResult Evaluator::evaluate(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
+                               const EvalOptions& options) {
+  return run_outputs(g, bindings, outputs, options, true);
 }
 
 EvalResult Evaluator::evaluate_ports(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports,
@@ -540,13 +545,7 @@ EvalResult Evaluator::evaluate_ports(const Graph& g, const Bindings& bindings, s
 
 EvalResult Evaluator::hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
                                    const EvalOptions& options) {
-  std::vector<PortRef> ports;
-  std::vector<std::string> names;
-  std::vector<Diagnostic> problems;
-  graph_output_ports(g, outputs, ports, names, problems);
-  EvalResult r = run(g, bindings, ports, std::move(names), options, false);
-  r.diagnostics.insert(r.diagnostics.begin(), problems.begin(), problems.end());
-  return r;
+  return run_outputs(g, bindings, outputs, options, false);
 }
 
 }  // namespace procex

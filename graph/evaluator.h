@@ -86,6 +86,8 @@ class Evaluator {
  private:
   EvalResult run(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports,
                  std::vector<std::string> names, const EvalOptions& options, bool compute);
+  EvalResult run_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs,
+                         const EvalOptions& options, bool compute);
   ResultCache& cache_;
   std::string salt_;
   Hash128 salt_hash_;
