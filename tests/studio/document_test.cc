@@ -164,6 +164,19 @@ TEST(Document, DirtyUntilSavedAndCleanAfterUndoingBack) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
 }
 
+TEST(Document, RecoveredEditsAreDirtyUntilSavedOverTheRecipe) {
+  const auto dir = temp_dir();
+  std::filesystem::copy_file(house_recipe(), dir / "house.pxg");
+  Graph edited = load_pxg(dir / "house.pxg");
+  ASSERT_TRUE(edited.set_param(1, "width", Value::make(21.0)));
+  auto doc = Document::recovered(parse_pxg(to_pxg(edited), dir / "house.pxg"), dir / "house.pxg");
+  EXPECT_TRUE(doc->dirty());
+  EXPECT_EQ(doc->title(), "house.pxg");
+  doc->save();
+  EXPECT_FALSE(doc->dirty());
+  EXPECT_EQ(load_pxg(dir / "house.pxg").node(1)->params[1].get<double>(), 21.0);
+}
+
 TEST(Document, SavingUntitledNeedsAName) {
   Document doc;
   EXPECT_THROW(doc.save(), std::runtime_error);

@@ -8,10 +8,12 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -322,7 +324,14 @@ class App {
     ImGui::TextUnformatted(status_.c_str());
   }
 
+  // The last item's rectangle, for the --ui-map.
+  void record_button(const std::string& name) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+  }
+
   void modals() {
+    buttons_.clear();
     if (confirm_requested_) {
       ImGui::OpenPopup("Unsaved changes");
       confirm_requested_ = false;
@@ -345,7 +354,9 @@ class App {
     if (ImGui::BeginPopupModal("Recover", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
       const fs::path recipe = recovery_.value_or(fs::path());
       ImGui::Text("Unsaved edits of %s were autosaved (the studio did not close cleanly).", recipe.empty() ? "an untitled recipe" : recipe.string().c_str());
-      if (ImGui::Button("Recover them")) {
+      const bool recover = ImGui::Button("Recover them");
+      record_button("recover");
+      if (recover) {
         try {
           std::ifstream in(autosave_path(home_, recipe));
           const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -359,7 +370,9 @@ class App {
         ImGui::CloseCurrentPopup();
       }
       ImGui::SameLine();
-      if (ImGui::Button("Discard them")) {
+      const bool discard = ImGui::Button("Discard them");
+      record_button("discard_autosave");
+      if (discard) {
         remove_autosave(home_, recipe);
         recovery_.reset();
         ImGui::CloseCurrentPopup();
@@ -435,6 +448,7 @@ class App {
     j["pins"] = nlohmann::json::array();
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
+    j["buttons"] = buttons_;
     j["links"] = nlohmann::json::array();
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
@@ -478,6 +492,7 @@ class App {
   NodeCanvas canvas_;
   Inspector inspector_;
   std::string status_, title_, ui_map_text_;
+  std::map<std::string, std::array<float, 4>> buttons_;
   PathPrompt prompt_;
   std::optional<fs::path> recovery_;
   std::function<void()> pending_;

@@ -36,9 +36,11 @@ using namespace std::chrono_literals;
 
 class Studio {
  public:
-  Studio(const fs::path& recipe, const fs::path& dir) : map_(dir / "ui_map.json") {
+  Studio(const fs::path& recipe, const fs::path& dir, std::vector<std::string> extra = {"--autosave", "0"}) : map_(dir / "ui_map.json") {
     setenv("PROCEX_STUDIO_HOME", (dir / "home").c_str(), 1);
-    std::vector<std::string> args = {PROCEX_STUDIO_EXE, recipe.string(), "--ui-map", map_.string(), "--autosave", "0"};
+    fs::remove(map_);
+    std::vector<std::string> args = {PROCEX_STUDIO_EXE, recipe.string(), "--ui-map", map_.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -135,6 +137,14 @@ void type_into_slider(std::pair<int, int> at, const std::string& value) {
   press("Return");
 }
 
+std::pair<int, int> button_centre(const json& map, const std::string& name) {
+  const json& r = map["buttons"][name];
+  return {map["window"][0].get<int>() + static_cast<int>(r[0].get<double>() + r[2].get<double>() / 2),
+          map["window"][1].get<int>() + static_cast<int>(r[1].get<double>() + r[3].get<double>() / 2)};
+}
+
+void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) + " sleep 0.3 click 1 sleep 0.2"); }
+
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
 
 TEST(StudioInteraction, AddConnectEditUndoSave) {
@@ -192,6 +202,41 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
   EXPECT_EQ(g.source({kGraphOutputs, 0}), (PortRef{3, 0}));
   EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("rotate")].get<double>(), 30.0);
   EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("scale")].get<double>(), 1.0);  // undone
+  fs::remove_all(dir);
+}
+
+// An edit autosaved, then the studio killed: the next start offers the edit back.
+TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_recovery_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path recipe = dir / "house.pxg";
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  fs::last_write_time(recipe, fs::file_time_type::clock::now() - std::chrono::minutes(1));
+  {
+    Studio studio(recipe, dir, {"--autosave", "1", "--select", "1"});
+    json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["params"].contains("width"); });
+    const std::uint64_t rev = revision(map);
+    type_into_slider(widget_centre(map, "width"), "23");
+    studio.wait("width set", [&](const json& j) { return revision(j) > rev && j["dirty"].get<bool>(); });
+    const auto end = std::chrono::steady_clock::now() + 20s;
+    while (!fs::exists(dir / "home" / "autosave") && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(100ms);
+    std::this_thread::sleep_for(300ms);
+  }  // killed: no clean exit
+  EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 14.0);  // the file itself is untouched
+  Studio again(recipe, dir);
+  again.wait("the recovery prompt", [](const json& j) { return j["buttons"].contains("recover"); });
+  std::this_thread::sleep_for(1s);  // a modal window sizes itself during its first frames
+  json map = again.wait("the recovery prompt placed", [](const json& j) { return j["buttons"].contains("recover"); });
+  click(button_centre(map, "recover"));
+  map = again.wait("recovered", [](const json& j) { return j["dirty"].get<bool>() && !j["buttons"].contains("recover"); });
+  press("ctrl+s");
+  again.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  press("ctrl+q");
+  EXPECT_EQ(again.wait_exit(20s), 0);
+  EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 23.0);
+  // Saving removed the autosave: nothing is offered next time.
+  EXPECT_TRUE(fs::is_empty(dir / "home" / "autosave"));
   fs::remove_all(dir);
 }
 
