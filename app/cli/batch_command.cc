@@ -63,8 +63,13 @@ void evaluate_building(const Graph& recipe, const Bindings& base, Evaluator& eva
                        std::any_of(graph.exposed_params().begin(), graph.exposed_params().end(),
                                    [&](const ExposedParam& p) { return p.name == key; });
     if (!known) continue;
-    if (Status s = apply_setting(graph, bindings, key, *b.feature->property_text(name)); !s)
-      b.warnings.push_back("property " + name + ": " + s.message());
+    Status s = apply_setting(graph, bindings, key, *b.feature->property_text(name));
+    if (const auto number = b.feature->property_number(name); !s && number) {  // "12 m" for a float parameter
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", *number);
+      s = apply_setting(graph, bindings, key, text);
+    }
+    if (!s) b.warnings.push_back("property " + name + ": " + s.message());
   }
   EvalOptions options;
   options.parallel = false;  // buildings run in parallel already

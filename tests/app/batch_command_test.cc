@@ -3,6 +3,7 @@
 // bytes, failures reported while the batch goes on.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -171,6 +172,29 @@ TEST_F(Batch, SelfIntersectingFootprintFails) {
     if (b["status"] == "failed") {
       EXPECT_NE(b["reason"].get<std::string>().find("(Extrude)"), std::string::npos) << b;
     }
+}
+
+// Properties set exposed parameters of the same name, numbers with units included ("12 m").
+TEST_F(Batch, PropertiesSetExposedParameters) {
+  std::string text = read_text(kSamples / "gallery_hipped.pxg");
+  // A batch recipe: the footprint from the graph input, the roof pitch exposed as "height" (so
+  // good_square's property "height": "12 m" sets a 12 degree pitch).
+  auto replace = [&text](const std::string& from, const std::string& to) { text.replace(text.find(from), from.size(), to); };
+  replace("\"from\": \"1.footprint\"", "\"from\": \"@footprint\"");
+  replace("\"inputs\": []", "\"inputs\": [{\"doc\": \"\", \"name\": \"footprint\", \"type\": \"footprint\"}]");
+  replace("\"name\": \"pitch\"", "\"name\": \"height\"");
+  std::ofstream(dir_ / "by_height.pxg") << text;
+  BatchCommandOptions o = options("by_height.glb");
+  o.recipe = dir_ / "by_height.pxg";
+  o.footprints = fs::path(PROCEX_TEST_DATA) / "geojson_bad_features.geojson";
+  o.report = dir_ / "by_height.json";
+  run_batch(o, out_, err_);
+  ASSERT_TRUE(fs::exists(o.report)) << err_.str();
+  const json report = json::parse(read_text(o.report));
+  ASSERT_EQ(report["buildings"][0]["id"], "good_square");
+  ASSERT_EQ(report["buildings"][0]["status"], "ok") << report["buildings"][0];
+  // A 10 x 10 square peaks at 5 / tan(pitch): 5 m at the recipe's 45 degrees, 23.5 m at 12.
+  EXPECT_NEAR(report["buildings"][0]["bounds"]["max"][2].get<double>(), 5.0 / std::tan(12 * M_PI / 180), 1e-9);
 }
 
 TEST_F(Batch, RecipeWithoutFootprintInputIsRefused) {
