@@ -131,7 +131,7 @@ void drag(std::pair<int, int> from, std::pair<int, int> to) {
 // Ctrl+click turns an ImGui slider into a text field; type the value and Enter.
 void type_into_slider(std::pair<int, int> at, const std::string& value) {
   xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) +
-      " sleep 0.2 keydown ctrl click 1 keyup ctrl sleep 0.3");
+      " sleep 0.2 keydown ctrl sleep 0.15 click 1 sleep 0.15 keyup ctrl sleep 0.3");
   press("ctrl+a");
   xdo("type " + value);
   press("Return");
