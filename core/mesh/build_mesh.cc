@@ -72,7 +72,17 @@ OpenMesh::FPropHandleT<FaceKind> face_kind_property(const Mesh& mesh) {
   return h;
 }
 
+OpenMesh::FPropHandleT<std::string> face_tag_property(const Mesh& mesh) {
+  OpenMesh::FPropHandleT<std::string> h;
+  mesh.get_property_handle(h, kFaceTagProperty);
+  return h;
+}
+
 void add_face_properties(Mesh& mesh) {
+  if (!face_tag_property(mesh).is_valid()) {
+    OpenMesh::FPropHandleT<std::string> h;
+    mesh.add_property(h, kFaceTagProperty);
+  }
   if (!source_edge_property(mesh).is_valid()) {
     OpenMesh::FPropHandleT<int> h;
     mesh.add_property(h, kSourceEdgeProperty);
@@ -91,6 +101,12 @@ int source_edge(const Mesh& mesh, Mesh::FaceHandle f) {
   return mesh.property(h, f);
 }
 
+const std::string& face_tag(const Mesh& mesh, Mesh::FaceHandle f) {
+  const auto h = face_tag_property(mesh);
+  if (!h.is_valid()) throw MeshError("the mesh has no " + std::string(kFaceTagProperty) + " property");
+  return mesh.property(h, f);
+}
+
 FaceKind face_kind(const Mesh& mesh, Mesh::FaceHandle f) {
   const auto h = face_kind_property(mesh);
   if (!h.is_valid()) throw MeshError("the mesh has no " + std::string(kFaceKindProperty) + " property");
@@ -102,6 +118,7 @@ Mesh build_mesh(const Surface& surface) {
   add_face_properties(mesh);
   const auto edge_prop = source_edge_property(mesh);
   const auto kind_prop = face_kind_property(mesh);
+  const auto tag_prop = face_tag_property(mesh);
   const std::size_t nv = surface.vertices.size();
   mesh.reserve(nv, nv + surface.faces.size(), surface.faces.size());
   for (std::size_t i = 0; i < nv; ++i) {
@@ -141,6 +158,7 @@ Mesh build_mesh(const Surface& surface) {
                         "face at one edge), or one of its vertices is already closed around by other faces");
       mesh.property(edge_prop, f) = face.source_edge;
       mesh.property(kind_prop, f) = face.kind;
+      mesh.property(tag_prop, f) = face.tag;
     }
   }
   return mesh;

@@ -2,6 +2,8 @@
 // whose faces carry where they came from.
 #pragma once
 
+#include <string>
+
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include "core/mesh/surface.h"
@@ -17,6 +19,7 @@ using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 // Names of the persistent face properties every procex mesh carries.
 inline constexpr const char* kSourceEdgeProperty = "procex:source_edge";  // int
 inline constexpr const char* kFaceKindProperty = "procex:face_kind";      // FaceKind
+inline constexpr const char* kFaceTagProperty = "procex:tag";             // std::string
 
 // Turns a surface into a mesh. Faces with holes are split into simple planar
 // polygons; every piece keeps its face's kind and source edge. Throws
@@ -26,13 +29,15 @@ Mesh build_mesh(const Surface& surface);
 // Per-face property accessors (the properties exist on any mesh build_mesh made).
 int source_edge(const Mesh& mesh, Mesh::FaceHandle f);
 FaceKind face_kind(const Mesh& mesh, Mesh::FaceHandle f);
+const std::string& face_tag(const Mesh& mesh, Mesh::FaceHandle f);
 
 // The property handles themselves, for loops over many faces (each lookup by
 // name walks the mesh's property list). Invalid if the mesh lacks them.
 OpenMesh::FPropHandleT<int> source_edge_property(const Mesh& mesh);
 OpenMesh::FPropHandleT<FaceKind> face_kind_property(const Mesh& mesh);
+OpenMesh::FPropHandleT<std::string> face_tag_property(const Mesh& mesh);
 
-// Adds both properties to a mesh made some other way (no-op if present).
+// Adds the properties to a mesh made some other way (no-op if present).
 void add_face_properties(Mesh& mesh);
 
 // "base", "side" or "cap".

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -22,6 +23,7 @@ struct SurfaceFace {
   // loops[0] is the outer boundary, counter-clockwise seen from outside the
   // solid (so the right-hand normal points out); loops[1..] are holes, clockwise.
   std::vector<std::vector<std::uint32_t>> loops;
+  std::string tag;  // the profile segment's tag ("wall", "roof", ...), may be empty
 };
 
 struct Surface {

@@ -34,12 +34,19 @@ void EventQueue::schedule_edge_event(State& st, int c) {
 
 void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
   schedule_edge_event(st, c);
+  std::vector<int> all;
+  for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
+    if (!st.spans(e).empty()) all.push_back(e);
+  schedule_splits(st, c, all, resolved);
+}
+
+void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
   const Corner& k = st.corners[c];
   if (!st.any_outward && k.motion == Motion::Regular && !st.reflex(c)) return;
   const double z = st.height;
   const glm::dvec2 p = st.position(c, z);
-  for (int e = 0; e < static_cast<int>(st.edges.size()); ++e) {
-    if (e == k.prev_edge || e == k.next_edge || st.spans(e).empty()) continue;
+  for (int e : edges) {
+    if (e == k.prev_edge || e == k.next_edge) continue;
     // Signed distance from the edge's line (positive inside) shrinks at `rate`.
     const Plane& pl = st.edges[e].plane;
     const double rate = glm::dot(pl.n, k.velocity) - pl.k;

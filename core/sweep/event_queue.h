@@ -33,6 +33,9 @@ class EventQueue {
   // meeting any other live edge. `resolved` lists the edges of the collision
   // that made c, if any: c does not collide with them again where it stands.
   void schedule(State& st, int c, const std::vector<int>& resolved = {});
+  // Queues the events of corner c running into each of `edges` (if c can cut
+  // into the loop at all).
+  void schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved = {});
   // Queues only the event of corner c with its next corner.
   void schedule_edge_event(State& st, int c);
 

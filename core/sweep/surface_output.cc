@@ -127,7 +127,7 @@ Surface build_surface(const State& st) {
       }
     }
     std::vector<SurfaceFace> made(outers.size());
-    for (std::size_t i = 0; i < outers.size(); ++i) made[i] = {f.kind, f.source_edge, {outers[i]}};
+    for (std::size_t i = 0; i < outers.size(); ++i) made[i] = {f.kind, f.source_edge, {outers[i]}, f.tag};
     for (auto& hole : holes) {
       // A hole belongs to the smallest outer loop around it.
       int best = -1;

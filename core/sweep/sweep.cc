@@ -14,6 +14,7 @@
 #include "core/sweep/cap_event.h"
 #include "core/sweep/event_queue.h"
 #include "core/sweep/intersection_event.h"
+#include "core/sweep/profile_event.h"
 #include "core/sweep/surface_output.h"
 
 namespace procex {
@@ -63,6 +64,35 @@ void unify_collinear_slopes(const std::vector<glm::dvec2>& dirs, std::vector<dou
   }
 }
 
+// The first plane of an edge: its profile's first slope (after any flat run
+// at the base, not handled yet), or its constant angle.
+struct FirstPlane {
+  double slope;
+  std::string tag;
+};
+FirstPlane first_plane(engine::State& st, const Footprint& fp, const EdgeSpec& spec, int loop, int vertex) {
+  engine::Source src;
+  src.id = spec.id;
+  if (spec.profile < 0) {
+    st.sources.push_back(src);
+    return {slope_of(spec.angle_deg), {}};
+  }
+  if (spec.profile >= static_cast<int>(fp.profiles.size()))
+    throw InputError("edge names profile " + std::to_string(spec.profile) + " but the footprint has " +
+                         std::to_string(fp.profiles.size()),
+                     loop, vertex);
+  const Profile& profile = fp.profiles[static_cast<std::size_t>(spec.profile)];
+  check_profile(profile);
+  const engine::NextPlane next = engine::next_plane(profile, 0);
+  if (next.outward_step != 0.0)
+    throw InputError("profile '" + profile.name + "': a horizontal segment at the base is not supported yet", loop,
+                     vertex);
+  src.profile = &profile;
+  src.point = next.point;
+  st.sources.push_back(src);
+  return {engine::segment_slope(profile, next.segment), profile.tags.empty() ? std::string() : profile.tags[next.segment]};
+}
+
 void load(engine::State& st, const Footprint& fp) {
   engine::FaceGroup base;
   base.kind = FaceKind::Base;
@@ -77,18 +107,22 @@ void load(engine::State& st, const Footprint& fp) {
     const auto v0 = static_cast<std::uint32_t>(st.vertices.size());
     for (glm::dvec2 p : loop.points) st.add_vertex({p, 0.0});
     const int e0 = static_cast<int>(st.edges.size());
+    const int s0 = static_cast<int>(st.sources.size());
     std::vector<glm::dvec2> dirs(n);
     std::vector<double> slopes(n);
+    std::vector<std::string> tags(n);
     for (std::size_t j = 0; j < n; ++j) {
       const glm::dvec2 d = loop.points[(j + 1) % n] - loop.points[j];
       const double len = glm::length(d);
       if (!(len > 0.0)) throw InputError("zero-length edge", static_cast<int>(li), static_cast<int>(j));
       dirs[j] = d / len;
-      slopes[j] = slope_of(loop.edges[j].angle_deg);
+      FirstPlane first = first_plane(st, fp, loop.edges[j], static_cast<int>(li), static_cast<int>(j));
+      slopes[j] = first.slope;
+      tags[j] = std::move(first.tag);
     }
     unify_collinear_slopes(dirs, slopes, st.options().ambiguity);
     for (std::size_t j = 0; j < n; ++j) {
-      st.add_edge(loop.points[j], 0.0, dirs[j], slopes[j], loop.edges[j].id);
+      st.add_edge(loop.points[j], 0.0, dirs[j], slopes[j], s0 + static_cast<int>(j), tags[j]);
       const auto va = v0 + static_cast<std::uint32_t>(j), vb = v0 + static_cast<std::uint32_t>((j + 1) % n);
       st.faces[st.edges.back().face].half_edges.push_back({va, vb});
       st.faces[st.base_face].half_edges.push_back({vb, va});
@@ -108,6 +142,8 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   engine::EventQueue queue;
   for (int c = 0; c < static_cast<int>(st.corners.size()); ++c)
     if (st.corners[c].alive) queue.schedule(st, c);
+  engine::ProfileEvents profile_events;
+  for (int s = 0; s < static_cast<int>(st.sources.size()); ++s) profile_events.schedule(st, s);
 
   // Bounded work: every event removes a span or splits one, so a sweep that
   // keeps resolving events at one height without rising is going in circles.
@@ -115,8 +151,17 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   const std::size_t stall_limit = 8 * n + 64;
   std::size_t stalled = 0;
   double last = -1.0;
-  while (!queue.empty()) {
-    const double z = queue.next_height();
+  while (!queue.empty() || !profile_events.empty()) {
+    // Collisions at a profile vertex's height are resolved before the planes change.
+    const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
+    const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();
+    if (z_profile < z_collide - st.tol().height()) {
+      if (options.max_height && z_profile > *options.max_height) break;
+      st.height = std::max(st.height, z_profile);
+      engine::apply_profile_events(st, queue, profile_events, profile_events.pop(st.tol().height()));
+      continue;
+    }
+    const double z = z_collide;
     if (options.max_height && z > *options.max_height) break;
     if (z > st.tol().runaway_height()) break;
     stalled = z > last + st.tol().height() ? 0 : stalled + 1;

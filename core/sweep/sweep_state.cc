@@ -7,21 +7,28 @@
 
 namespace procex::engine {
 
-int State::add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, std::int32_t source_id) {
+int State::add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, int source, const std::string& tag,
+                    int face) {
   Edge e;
   e.plane = Plane::through(point, z0, dir, k);
   e.dir = dir;
-  e.source_id = source_id;
-  e.face = static_cast<int>(faces.size());
-  FaceGroup f;
-  f.kind = FaceKind::Side;
-  f.source_edge = source_id;
-  // The face's gradient (n, -k) points inward and down; outward is its opposite.
-  f.outward = glm::normalize(glm::dvec3{-e.plane.n.x, -e.plane.n.y, k});
-  f.origin = glm::dvec3{point, z0};
-  faces.push_back(std::move(f));
+  e.source = source;
+  e.source_id = sources[source].id;
+  if (face < 0) {
+    face = static_cast<int>(faces.size());
+    FaceGroup f;
+    f.kind = FaceKind::Side;
+    f.source_edge = e.source_id;
+    f.tag = tag;
+    // The face's gradient (n, -k) points inward and down; outward is its opposite.
+    f.outward = glm::normalize(glm::dvec3{-e.plane.n.x, -e.plane.n.y, k});
+    f.origin = glm::dvec3{point, z0};
+    faces.push_back(std::move(f));
+  }
+  e.face = face;
   if (k < 0.0) any_outward = true;
   edges.push_back(std::move(e));
+  sources[source].edge = static_cast<int>(edges.size()) - 1;
   return static_cast<int>(edges.size()) - 1;
 }
 

@@ -5,8 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "core/geom/profile.h"
 #include "core/mesh/surface.h"
 #include "core/sweep/plane.h"
 #include "core/sweep/sweep.h"
@@ -18,10 +20,19 @@ using Tolerances = SweepTolerances;
 
 inline constexpr int kNone = -1;
 
+// A footprint edge and where the sweep is along its profile.
+struct Source {
+  std::int32_t id = -1;              // EdgeSpec::id
+  const Profile* profile = nullptr;  // null: one plane all the way up
+  std::size_t point = 0;             // the profile point the current plane starts at
+  int edge = -1;                     // its current plane
+};
+
 // A p-edge: one plane of one footprint edge.
 struct Edge {
   Plane plane;
   glm::dvec2 dir{1.0, 0.0};  // unit direction of the edge in the plan
+  int source = -1;           // index into State::sources
   std::int32_t source_id = -1;
   int face = kNone;          // output face group this plane's region belongs to
   std::vector<int> spans;    // corners s with s.next_edge == this (maybe stale; filter)
@@ -57,6 +68,7 @@ struct HalfEdge {
 struct FaceGroup {
   FaceKind kind = FaceKind::Side;
   std::int32_t source_edge = -1;
+  std::string tag;
   glm::dvec3 outward{0.0, 0.0, 1.0};  // unit normal pointing out of the solid
   glm::dvec3 origin{0.0};             // any point on the face's plane
   std::vector<HalfEdge> half_edges;
@@ -69,6 +81,7 @@ class State {
   const Tolerances& tol() const { return tol_; }
   const SweepOptions& options() const { return options_; }
 
+  std::vector<Source> sources;
   std::vector<Edge> edges;
   std::vector<Corner> corners;
   std::vector<glm::dvec3> vertices;
@@ -77,7 +90,10 @@ class State {
   double height = 0.0;  // the sweep plane's current height
   bool any_outward = false;  // some plane leans outward: convex corners can split too
 
-  int add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, std::int32_t source_id);
+  // A new plane for source `source` through `point` at height z0, in a new
+  // face tagged `tag`, or continuing face `face` if given.
+  int add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, int source, const std::string& tag,
+               int face = -1);
   int add_corner(int prev_edge, int next_edge, std::uint32_t origin);
   std::uint32_t add_vertex(glm::dvec3 p);
   void link(int a, int b) {  // corner a is followed by corner b

@@ -35,8 +35,8 @@ inline Surface extrude(const std::vector<std::vector<glm::dvec2>>& loops, double
   const LoopNesting nesting = loop_nesting(loops);
   for (std::size_t li = 0; li < loops.size(); ++li) {
     if (nesting.depth[li] % 2) continue;
-    SurfaceFace base{FaceKind::Base, -1, {ring(li, true, 0)}};
-    SurfaceFace cap{FaceKind::Cap, -1, {ring(li, false, top)}};
+    SurfaceFace base{FaceKind::Base, -1, {ring(li, true, 0)}, {}};
+    SurfaceFace cap{FaceKind::Cap, -1, {ring(li, false, top)}, {}};
     for (std::size_t h = 0; h < loops.size(); ++h) {
       if (nesting.parent[h] != static_cast<int>(li)) continue;
       base.loops.push_back(ring(h, true, 0));
@@ -50,7 +50,7 @@ inline Surface extrude(const std::vector<std::vector<glm::dvec2>>& loops, double
     const auto n = static_cast<std::uint32_t>(loops[li].size());
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t a = first[li] + k, b = first[li] + (k + 1) % n;
-      s.faces.push_back({FaceKind::Side, edge++, {{a, b, top + b, top + a}}});
+      s.faces.push_back({FaceKind::Side, edge++, {{a, b, top + b, top + a}}, {}});
     }
   }
   return s;

@@ -2,6 +2,8 @@
 #include "core/sweep/sweep.h"
 
 #include <cmath>
+#include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -136,6 +138,104 @@ TEST(Sweep, OutwardLeaningWallsWithCap) {
   // integral over z in [0, 2] of (10 + 2 z t)^2
   const double expected = 200.0 + 2.0 * 10.0 * t * 4.0 + 4.0 * t * t * 8.0 / 3.0;
   EXPECT_NEAR(r.volume, expected, 1e-7);
+}
+
+}  // namespace
+}  // namespace procex
+
+namespace procex {
+namespace {
+
+Footprint with_profile(const std::vector<glm::dvec2>& pts, Profile profile) {
+  Footprint fp = make_footprint({pts}, 45);
+  fp.profiles.push_back(std::move(profile));
+  for (auto& e : fp.loops[0].edges) e.profile = 0;
+  return fp;
+}
+
+std::map<std::string, int> faces_per_tag(const Surface& s) {
+  std::map<std::string, int> n;
+  for (const auto& f : s.faces)
+    if (f.kind == FaceKind::Side) ++n[f.tag];
+  return n;
+}
+
+TEST(SweepProfiles, ConstantProfileEqualsConstantAngle) {
+  for (double angle : {30.0, 45.0, 60.0}) {
+    const Surface a = sweep(make_footprint({{{0, 0}, {20, 0}, {20, 8}, {9, 8}, {9, 17}, {0, 17}}}, angle));
+    const Surface b = sweep(with_profile({{0, 0}, {20, 0}, {20, 8}, {9, 8}, {9, 17}, {0, 17}},
+                                         Profile::straight(angle, 100.0, "roof")));
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i], b.vertices[i]);
+    ASSERT_EQ(a.faces.size(), b.faces.size());
+    for (std::size_t i = 0; i < a.faces.size(); ++i) EXPECT_EQ(a.faces[i].loops, b.faces[i].loops);
+  }
+}
+
+TEST(SweepProfiles, WallsThenHipRoof) {
+  //   roof  /\      ridge at 3 + 5 = 8
+  //   wall |  |     walls 3 high, then 45 degrees
+  const Profile house{"house", {{0, 0}, {0, 3}, {-10, 13}}, {"wall", "roof"}};
+  const Surface s = sweep(with_profile({{0, 0}, {20, 0}, {20, 10}, {0, 10}}, house));
+  const auto r = testing::check_surface(s, 1e-7);
+  EXPECT_TRUE(r.closed) << r.problem;
+  EXPECT_TRUE(r.planar) << r.problem;
+  EXPECT_NEAR(r.max_height, 8.0, 1e-9);
+  EXPECT_NEAR(r.volume, 200.0 * 3.0 + 100.0 * (60.0 - 10.0) / 12.0, 1e-7);
+  const std::map<std::string, int> expected{{"roof", 4}, {"wall", 4}};
+  EXPECT_EQ(faces_per_tag(s), expected);
+}
+
+TEST(SweepProfiles, Mansard) {
+  // Walls to 3, a steep lower roof leaning in 1 over 3, a shallow upper roof leaning in 3 per 1.
+  const Profile mansard{"mansard", {{0, 0}, {0, 3}, {-1, 6}, {-4, 7}}, {"wall", "mansard", "roof"}};
+  const Surface s = sweep(with_profile({{0, 0}, {20, 0}, {20, 10}, {0, 10}}, mansard));
+  const auto r = testing::check_surface(s, 1e-7);
+  EXPECT_TRUE(r.closed) << r.problem;
+  EXPECT_TRUE(r.planar) << r.problem;
+  // The 18 x 8 rectangle left at height 6 closes 8 / 2 / 3 higher.
+  EXPECT_NEAR(r.max_height, 6.0 + 4.0 / 3.0, 1e-9);
+  double lower = 0.0;  // integral of (20 - 2t/3)(10 - 2t/3) over t in [0, 3]
+  for (int i = 0; i < 30000; ++i) {
+    const double t = (i + 0.5) * 3.0 / 30000;
+    lower += (20 - 2 * t / 3) * (10 - 2 * t / 3) * 3.0 / 30000;
+  }
+  const double upper = (1.0 / 3.0) * 64.0 * (54.0 - 8.0) / 12.0;  // hip roof on 18 x 8, slope 3
+  EXPECT_NEAR(r.volume, 600.0 + lower + upper, 1e-6);
+  const std::map<std::string, int> expected{{"mansard", 4}, {"roof", 4}, {"wall", 4}};
+  EXPECT_EQ(faces_per_tag(s), expected);
+}
+
+TEST(SweepProfiles, GambrelOnTheLongSidesGablesOnTheEnds) {
+  Footprint fp = make_footprint({{{0, 0}, {20, 0}, {20, 10}, {0, 10}}}, 0);
+  fp.profiles.push_back({"gambrel", {{0, 0}, {0, 3}, {-2, 5}, {-5, 7}}, {"wall", "lower", "upper"}});
+  fp.profiles.push_back({"gable end", {{0, 0}, {0, 20}}, {"wall"}});
+  for (int e : {0, 2}) fp.loops[0].edges[e].profile = 0;
+  for (int e : {1, 3}) fp.loops[0].edges[e].profile = 1;
+  const Surface s = sweep(fp);
+  const auto r = testing::check_surface(s, 1e-7);
+  EXPECT_TRUE(r.closed) << r.problem;
+  EXPECT_TRUE(r.planar) << r.problem;
+  // Cross-section: 10 wide; 2 in at height 5, then 1.5 in per unit height: the
+  // 6 left close 3 / 1.5 = 2 higher.
+  EXPECT_NEAR(r.max_height, 7.0, 1e-9);
+  const double section = 10.0 * 3.0 + (10.0 + 6.0) / 2.0 * 2.0 + 6.0 * 2.0 / 2.0;
+  EXPECT_NEAR(r.volume, section * 20.0, 1e-6);
+}
+
+TEST(SweepProfiles, BadProfilesAreRefusedWithTheirNames) {
+  Profile down{"sags", {{0, 0}, {0, 3}, {-1, 2}}, {"wall", "roof"}};
+  try {
+    sweep(with_profile({{0, 0}, {20, 0}, {20, 10}, {0, 10}}, down));
+    FAIL() << "a descending profile was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'sags'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("segment 1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(sweep(with_profile({{0, 0}, {20, 0}, {20, 10}, {0, 10}}, Profile{"empty", {}, {}})), InputError);
+  EXPECT_THROW(sweep(with_profile({{0, 0}, {20, 0}, {20, 10}, {0, 10}},
+                                  Profile{"nan", {{0, 0}, {std::nan(""), 3}}, {"wall"}})),
+               InputError);
 }
 
 }  // namespace

@@ -1,0 +1,93 @@
+#include "core/sweep/settle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/error.h"
+#include "core/sweep/ambiguity.h"
+#include "core/sweep/spike.h"
+
+namespace procex::engine {
+namespace {
+
+// A loop with no area left (two corners, or all edges on one line) ends here:
+// its spans become horizontal ridges. On a line, a span's ridge passes through
+// every other corner of the loop that lies on it, so faces meet vertex to vertex.
+bool close_if_degenerate(State& st, int start) {
+  std::vector<int> loop;
+  int c = start;
+  bool collinear = true;
+  const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
+  do {
+    loop.push_back(c);
+    if (std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)) > Tolerances::parallel_sin) collinear = false;
+    c = st.corners[c].next;
+    if (loop.size() > st.corners.size()) throw SweepError("sweep: corrupt loop at height " + std::to_string(st.height), st.height, {});
+  } while (c != start);
+  if (loop.size() > 2 && !collinear) return false;
+  std::vector<std::uint32_t> v;
+  std::vector<double> along;
+  for (int x : loop) {
+    // Corners meeting at one point of the line share its vertex.
+    const glm::dvec2 px = st.position(x, st.height);
+    auto same = std::find_if(v.begin(), v.end(), [&](std::uint32_t u) {
+      return glm::length(glm::dvec2(st.vertices[u]) - px) <= st.tol().position();
+    });
+    if (same != v.end()) {
+      st.emit_trajectory(x, *same);
+      v.push_back(*same);
+    } else {
+      v.push_back(st.vertex_now(x));
+    }
+    along.push_back(glm::dot(px, d0));
+  }
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const std::size_t j = (i + 1) % loop.size();
+    // The ridge runs from the span's end back to its start, through the corners between.
+    std::vector<std::pair<double, std::uint32_t>> path;
+    const double lo = std::min(along[i], along[j]), hi = std::max(along[i], along[j]);
+    for (std::size_t m = 0; m < loop.size(); ++m)
+      if (v[m] != v[i] && v[m] != v[j] && along[m] > lo && along[m] < hi) path.push_back({along[m], v[m]});
+    std::sort(path.begin(), path.end());
+    if (along[j] > along[i]) std::reverse(path.begin(), path.end());
+    path.erase(std::unique(path.begin(), path.end(),
+                           [](const auto& a, const auto& b) { return a.second == b.second; }),
+               path.end());
+    std::uint32_t from = v[j];
+    for (const auto& [t, id] : path) {
+      st.emit_top(st.corners[loop[i]].next_edge, id, from);
+      from = id;
+    }
+    st.emit_top(st.corners[loop[i]].next_edge, v[i], from);
+  }
+  for (int x : loop) st.corners[x].alive = false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<int> settle(State& st, const std::vector<int>& made) {
+  std::vector<int> live;
+  std::vector<int> pending(made.rbegin(), made.rend());
+  while (!pending.empty()) {
+    const int n = pending.back();
+    pending.pop_back();
+    if (!st.corners[n].alive || close_if_degenerate(st, n)) continue;
+    std::vector<int> replaced;
+    if (st.corners[n].motion == Motion::Ridge) {
+      replaced = close_spike(st, n);
+    } else if (ambiguous(st, n)) {
+      replaced = resolve_ambiguity(st, n);
+    } else {
+      live.push_back(n);
+      continue;
+    }
+    pending.insert(pending.end(), replaced.rbegin(), replaced.rend());
+  }
+  return live;
+}
+
+}  // namespace procex::engine

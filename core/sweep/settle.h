@@ -1,0 +1,16 @@
+// New corners that have no direction of their own are settled before
+// anything is scheduled: loops of no area close into ridges, spikes fold,
+// ambiguous neighbours resolve (paper 4.5).
+#pragma once
+
+#include <vector>
+
+#include "core/sweep/sweep_state.h"
+
+namespace procex::engine {
+
+// Settles the corners just made (and those their settling makes); returns the
+// ones still alive, in order, ready for scheduling.
+std::vector<int> settle(State& st, const std::vector<int>& made);
+
+}  // namespace procex::engine
