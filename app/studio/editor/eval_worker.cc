@@ -51,6 +51,15 @@ void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef
   changed_.notify_all();
 }
 
+void EvalWorker::cancel() {
+  {
+    std::lock_guard lock(mutex_);
+    pending_.reset();
+    running_cancel_.cancel();
+  }
+  changed_.notify_all();
+}
+
 std::shared_ptr<const EvalSnapshot> EvalWorker::latest() const {
   std::lock_guard lock(mutex_);
   return latest_;

@@ -61,6 +61,8 @@ class EvalWorker {
               std::filesystem::path folder = {});
   // The newest finished (not cancelled) evaluation, or null before the first.
   std::shared_ptr<const EvalSnapshot> latest() const;
+  // Drops the pending evaluation and asks the running one to stop.
+  void cancel();
   // Nothing pending or running.
   bool idle() const;
   // Waits until idle; false on timeout.

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -65,6 +66,11 @@ class App {
   // Whether the last finished evaluation is of the current revision and its preview is on screen.
   bool settled() const { return worker_.idle() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision(); }
   bool busy() const { return !worker_.idle(); }
+  // Stops the evaluation; false if it is still running after `timeout` (a node that never polls cancellation).
+  bool stop_evaluation(std::chrono::milliseconds timeout) {
+    worker_.cancel();
+    return worker_.wait_idle(timeout);
+  }
   bool load_failed() const { return load_failed_; }
   Document& doc() { return *doc_; }
   const EvalSnapshot* shown() const { return shown_.get(); }
@@ -656,6 +662,12 @@ int run_studio(const Options& options) {
       }
     }
     if (!automated) app.leave();
+    if (!app.stop_evaluation(std::chrono::seconds(3))) {
+      // Joining the evaluation thread would hang the exit: everything worth keeping is written.
+      std::fprintf(stderr, "procex-studio: an evaluation does not stop; exiting without waiting for it\n");
+      std::fflush(nullptr);
+      std::_Exit(exit_code);
+    }
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
