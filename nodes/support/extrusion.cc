@@ -13,7 +13,9 @@ namespace {
 // Side faces without a profile: vertical ones are walls, the rest roofs.
 const char* tag_of_angle(double angle_deg) { return angle_deg == 0.0 ? "wall" : "roof"; }
 
-// The stand-in for profile support (see extrusion.h).
+// The stand-in for profile support (see extrusion.h): the engine gets plain
+// angles and no profiles, so what it does cannot depend on how far its own
+// profile support has come.
 void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>& notes) {
   std::optional<double> top;
   std::vector<bool> used(fp.profiles.size(), false);
@@ -23,6 +25,7 @@ void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>
       const Profile& p = fp.profiles[static_cast<std::size_t>(e.profile)];
       used[static_cast<std::size_t>(e.profile)] = true;
       e.angle_deg = p.angle_deg(0);
+      e.profile = -1;
       top = std::max(top.value_or(p.points.back().y), p.points.back().y);
     }
   if (!top) return;
@@ -35,7 +38,7 @@ void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>
 std::string side_tag(const EdgeSpec& e, const std::vector<Profile>& profiles) {
   if (e.profile >= 0) {
     const Profile& p = profiles[static_cast<std::size_t>(e.profile)];
-    if (!p.tags.empty() && !p.tags[0].empty()) return p.tags[0];
+    return !p.tags.empty() && !p.tags[0].empty() ? p.tags[0] : tag_of_angle(p.angle_deg(0));
   }
   return tag_of_angle(e.angle_deg);
 }
@@ -54,14 +57,16 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
   out.notes = std::move(prepared.notes);
   Footprint fp = std::move(prepared.footprint);
   fp.profiles = footprint.profiles;  // prepare_footprint keeps edge specs but not the profile list
+  Footprint engine = fp;
   SweepOptions engine_options = options;
-  engine_input(fp, engine_options, out.notes);
+  engine_input(engine, engine_options, out.notes);
+  engine.profiles.clear();
 
   std::map<std::int32_t, const EdgeSpec*> by_id;
   for (const Loop& loop : fp.loops)
     for (const EdgeSpec& e : loop.edges) by_id[e.id] = &e;
 
-  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(fp, engine_options)));
+  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(engine, engine_options)));
   TaggedMesh& t = out.mesh;
   std::map<std::string, std::uint32_t> tag_index;
   auto index_of = [&](const std::string& tag) {

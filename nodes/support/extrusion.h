@@ -4,8 +4,9 @@
 // The sweep does not follow profiles yet. Until it does, engine_input() stands
 // in: each edge with a profile leans at its profile's first segment and the
 // sweep is capped at the highest profile top; faces take that segment's tag.
-// When the engine follows profiles, engine_input() goes away and the faces'
-// segment tags come from the surface.
+// The engine gets plain angles, no profiles. When it follows profiles,
+// engine_input() goes away (the footprint goes to sweep() with its profiles)
+// and the faces' segment tags come from the surface.
 #pragma once
 
 #include <optional>
