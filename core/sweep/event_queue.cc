@@ -47,10 +47,12 @@ void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges
   const glm::dvec2 p = st.position(c, z);
   for (int e : edges) {
     if (e == k.prev_edge || e == k.next_edge) continue;
-    // Signed distance from the edge's line (positive inside) shrinks at `rate`.
+    // Signed distance from the edge's line changes at `rate`: a corner inside
+    // meets it when the distance falls to zero, a corner of another polygon
+    // growing towards it (from outside) when it rises to zero.
     const Plane& pl = st.edges[e].plane;
     const double rate = glm::dot(pl.n, k.velocity) - pl.k;
-    if (!(rate < 0.0)) continue;
+    if (rate == 0.0 || (rate > 0.0 && !st.any_outward)) continue;
     const double at = z - pl.signed_distance(p, z) / rate;
     // A corner made by a collision with this edge meets it there because of it.
     if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;

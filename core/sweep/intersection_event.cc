@@ -229,7 +229,8 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   });
   // Rays around a point alternate outgoing, incoming. Where rounding swapped
   // two nearly parallel rays (a sliver of no width), put the outgoing first,
-  // as for exact ties, smallest angular gap first.
+  // as for exact ties, smallest angular gap first (nested wedges of polygons
+  // growing into each other do not alternate either; they are paired below).
   auto alternates = [&] {
     for (std::size_t i = 0; i < rays.size(); ++i)
       if (rays[i].in == rays[(i + 1) % rays.size()].in) return false;
@@ -251,15 +252,31 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (best == rays.size()) break;
     std::swap(rays[best], rays[(best + 1) % rays.size()]);
   }
-  std::size_t first_out = 0;
-  while (first_out < rays.size() && rays[first_out].in) ++first_out;
+  // Pair rays like brackets, counter-clockwise from a wedge outside every
+  // chain: an outgoing ray opens an inside wedge, the incoming ray that closes
+  // it gets a corner with it. Alternating rays pair with their neighbours;
+  // where two polygons grow into each other their wedges nest, and the inner
+  // pair is the seam between them, folding away as a sliver.
+  std::size_t start = 0;
+  for (int depth = 0, lowest = 0, i = 0; i < static_cast<int>(rays.size()); ++i) {
+    depth += rays[i].in ? -1 : 1;
+    if (depth < lowest) {
+      lowest = depth;
+      start = static_cast<std::size_t>(i) + 1;
+    }
+  }
   std::vector<int> made;
-  for (std::size_t i = 0; i < rays.size(); i += 2) {
-    const Ray& out = rays[(first_out + i) % rays.size()];
-    const Ray& in = rays[(first_out + i + 1) % rays.size()];
-    if (out.in || !in.in) fail(st, "chains do not alternate around the collision", p, edges);
-    const Chain& cin = chains[in.chain];
-    const Chain& cout = chains[out.chain];
+  std::vector<const Ray*> open;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const Ray& ray = rays[(start + i) % rays.size()];
+    if (!ray.in) {
+      open.push_back(&ray);
+      continue;
+    }
+    if (open.empty()) fail(st, "chains do not pair around the collision", p, edges);
+    const Chain& cin = chains[ray.chain];
+    const Chain& cout = chains[open.back()->chain];
+    open.pop_back();
     const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
     st.link(cin.in_corner, n);
     st.link(n, cout.out_corner);

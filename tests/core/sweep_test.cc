@@ -240,3 +240,50 @@ TEST(SweepProfiles, BadProfilesAreRefusedWithTheirNames) {
 
 }  // namespace
 }  // namespace procex
+
+namespace procex {
+namespace {
+
+TEST(Sweep, TwoFootprintsGrowIntoEachOther) {
+  // Two 10 x 10 squares 2 apart, walls leaning out at 45 degrees: they touch
+  // at height 1 and grow on as one solid until the cap at 3.
+  SweepOptions o;
+  o.max_height = 3.0;
+  const Surface s = sweep(make_footprint({rect(0, 0, 10, 10), rect(12, 0, 10, 10)}, -45), o);
+  const auto r = testing::check_surface(s, 1e-7);
+  EXPECT_TRUE(r.closed) << r.problem;
+  EXPECT_TRUE(r.planar) << r.problem;
+  double volume = 0.0;  // each square is (10 + 2z)^2; past z = 1 they overlap by (2z - 2) x (10 + 2z)
+  const int steps = 300000;
+  for (int i = 0; i < steps; ++i) {
+    const double z = (i + 0.5) * 3.0 / steps;
+    const double side = 10 + 2 * z;
+    volume += (2 * side * side - (z > 1 ? (2 * z - 2) * side : 0.0)) * 3.0 / steps;
+  }
+  EXPECT_NEAR(r.volume, volume, 1e-6 * volume);
+  int caps = 0;
+  for (const auto& f : s.faces) caps += f.kind == FaceKind::Cap;
+  EXPECT_EQ(caps, 1) << "the two footprints end as one solid under one cap";
+}
+
+TEST(Sweep, VolumeMinimisingResolvesTheOtherWay) {
+  // Collinear neighbours at 30 and 60 degrees: maximising keeps the wall that
+  // leans in less (30), minimising the one that leans in more (60).
+  Footprint fp = make_footprint({{{0, 0}, {10, 0}, {20, 0}, {20, 10}, {0, 10}}}, 45);
+  fp.loops[0].edges[0].angle_deg = 30;
+  fp.loops[0].edges[1].angle_deg = 60;
+  SweepOptions max_o, min_o;
+  min_o.ambiguity = Ambiguity::MinimizeVolume;
+  const auto rmax = testing::check_surface(sweep(fp, max_o), 1e-7);
+  const auto rmin = testing::check_surface(sweep(fp, min_o), 1e-7);
+  EXPECT_TRUE(rmax.closed && rmin.closed) << rmax.problem << rmin.problem;
+  Footprint as30 = fp, as60 = fp;
+  as30.loops[0].edges[1].angle_deg = 30;
+  as60.loops[0].edges[0].angle_deg = 60;
+  EXPECT_NEAR(rmax.volume, testing::check_surface(sweep(as30), 1e-7).volume, 1e-9);
+  EXPECT_NEAR(rmin.volume, testing::check_surface(sweep(as60), 1e-7).volume, 1e-9);
+  EXPECT_GT(rmax.volume, rmin.volume);
+}
+
+}  // namespace
+}  // namespace procex
