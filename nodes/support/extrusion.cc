@@ -13,34 +13,17 @@ namespace {
 // Side faces without a profile: vertical ones are walls, the rest roofs.
 const char* tag_of_angle(double angle_deg) { return angle_deg == 0.0 ? "wall" : "roof"; }
 
-// The stand-in for profile support (see extrusion.h): the engine gets plain
-// angles and no profiles, so what it does cannot depend on how far its own
-// profile support has come.
-void engine_input(Footprint& fp, SweepOptions& options, std::vector<std::string>& notes) {
+// Profiles end at their last point; the building ends there too, with a flat
+// cap if its roof has not closed below.
+void cap_at_profile_tops(const Footprint& fp, SweepOptions& options) {
   std::optional<double> top;
-  std::vector<bool> used(fp.profiles.size(), false);
-  for (Loop& loop : fp.loops)
-    for (EdgeSpec& e : loop.edges) {
-      if (e.profile < 0) continue;
-      const Profile& p = fp.profiles[static_cast<std::size_t>(e.profile)];
-      used[static_cast<std::size_t>(e.profile)] = true;
-      e.angle_deg = p.angle_deg(0);
-      e.profile = -1;
-      top = std::max(top.value_or(p.points.back().y), p.points.back().y);
-    }
-  if (!top) return;
-  options.max_height = std::min(options.max_height.value_or(*top), *top);
-  for (std::size_t i = 0; i < fp.profiles.size(); ++i)
-    if (used[i] && fp.profiles[i].segments() > 1)
-      notes.push_back("profile '" + fp.profiles[i].name + "': the sweep follows only its first segment for now");
-}
-
-std::string side_tag(const EdgeSpec& e, const std::vector<Profile>& profiles) {
-  if (e.profile >= 0) {
-    const Profile& p = profiles[static_cast<std::size_t>(e.profile)];
-    return !p.tags.empty() && !p.tags[0].empty() ? p.tags[0] : tag_of_angle(p.angle_deg(0));
-  }
-  return tag_of_angle(e.angle_deg);
+  for (const Loop& loop : fp.loops)
+    for (const EdgeSpec& e : loop.edges)
+      if (e.profile >= 0) {
+        const double y = fp.profiles[static_cast<std::size_t>(e.profile)].points.back().y;
+        top = std::max(top.value_or(y), y);
+      }
+  if (top) options.max_height = std::min(options.max_height.value_or(*top), *top);
 }
 
 }  // namespace
@@ -57,16 +40,14 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
   out.notes = std::move(prepared.notes);
   Footprint fp = std::move(prepared.footprint);
   fp.profiles = footprint.profiles;  // prepare_footprint keeps edge specs but not the profile list
-  Footprint engine = fp;
   SweepOptions engine_options = options;
-  engine_input(engine, engine_options, out.notes);
-  engine.profiles.clear();
+  cap_at_profile_tops(fp, engine_options);
 
   std::map<std::int32_t, const EdgeSpec*> by_id;
   for (const Loop& loop : fp.loops)
     for (const EdgeSpec& e : loop.edges) by_id[e.id] = &e;
 
-  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(engine, engine_options)));
+  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(fp, engine_options)));
   TaggedMesh& t = out.mesh;
   std::map<std::string, std::uint32_t> tag_index;
   auto index_of = [&](const std::string& tag) {
@@ -76,6 +57,7 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
   };
   const auto kinds = face_kind_property(*mesh);
   const auto edges = source_edge_property(*mesh);
+  const auto tags = face_tag_property(*mesh);
   t.face_tags.reserve(mesh->n_faces());
   for (const auto f : mesh->faces()) {
     const FaceKind kind = mesh->property(kinds, f);
@@ -83,8 +65,10 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
       t.face_tags.push_back(index_of(face_kind_name(kind)));
       continue;
     }
+    // A profile's segment tag, else wall or roof by the edge's angle.
+    const std::string& tag = mesh->property(tags, f);
     const auto it = by_id.find(mesh->property(edges, f));
-    t.face_tags.push_back(index_of(it == by_id.end() ? "side" : side_tag(*it->second, fp.profiles)));
+    t.face_tags.push_back(index_of(!tag.empty() ? tag : it == by_id.end() ? "side" : tag_of_angle(it->second->angle_deg)));
   }
   t.mesh = std::move(mesh);
   return out;

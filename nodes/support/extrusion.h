@@ -1,12 +1,7 @@
-// Extrusion as the Extrude node runs it: prepare the footprint, sweep it,
-// build the mesh and tag every face.
-//
-// The sweep does not follow profiles yet. Until it does, engine_input() stands
-// in: each edge with a profile leans at its profile's first segment and the
-// sweep is capped at the highest profile top; faces take that segment's tag.
-// The engine gets plain angles, no profiles. When it follows profiles,
-// engine_input() goes away (the footprint goes to sweep() with its profiles)
-// and the faces' segment tags come from the surface.
+// Extrusion as the Extrude node runs it: prepare the footprint, sweep it along
+// its edges' profiles (capped at the highest profile top), build the mesh and
+// tag every face with its profile segment's tag (wall or roof by angle for
+// edges without a profile).
 #pragma once
 
 #include <optional>
@@ -21,7 +16,7 @@ namespace procex {
 
 struct Extrusion {
   TaggedMesh mesh;
-  std::vector<std::string> notes;  // repairs made by prepare_footprint and stand-ins taken
+  std::vector<std::string> notes;  // repairs made by prepare_footprint
 };
 
 // Throws what prepare_footprint, sweep and build_mesh throw (InputError,
