@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
@@ -72,8 +73,11 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
     return i;
   };
   // Grid of cell size `radius`: only neighbouring cells can hold partners.
-  std::unordered_map<long long, std::vector<int>> grid;
-  auto key = [](long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; };
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
+  auto key = [](long long x, long long y) {
+    return static_cast<std::uint64_t>(x) * 73856093ULL ^ static_cast<std::uint64_t>(y) * 19349663ULL;
+  };
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
     const long long gx = static_cast<long long>(std::floor(cs[i].p.x / radius));
     const long long gy = static_cast<long long>(std::floor(cs[i].p.y / radius));
