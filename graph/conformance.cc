@@ -72,13 +72,26 @@ Value vary_param(const ParamDecl& p) {
   return {};
 }
 
+namespace {
+
+// "folder/file.cc": what identifies a source file however __FILE__ spelled it.
+std::filesystem::path source_key(const std::filesystem::path& file) {
+  const std::filesystem::path p = file.lexically_normal();
+  return p.parent_path().filename() / p.filename();
+}
+
+}  // namespace
+
+bool registered_in(const NodeType& type, const std::filesystem::path& dir) {
+  std::error_code ec;
+  const std::filesystem::path folder = std::filesystem::weakly_canonical(dir, ec);
+  return source_key(type.source_file) == folder.filename() / std::filesystem::path(type.source_file).filename();
+}
+
 std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   std::set<fs::path> registered;
-  for (const auto& t : NodeRegistry::global().all()) {
-    std::error_code ec;
-    registered.insert(fs::weakly_canonical(t->source_file, ec));
-  }
+  for (const auto& t : NodeRegistry::global().all()) registered.insert(source_key(t->source_file));
   static const std::regex kRegistration(R"(^\s*PROCEX_REGISTER_NODE\()", std::regex::multiline);
   std::vector<fs::path> missing;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
@@ -87,7 +100,7 @@ std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem
     std::ostringstream text;
     text << in.rdbuf();
     std::error_code ec;
-    if (std::regex_search(text.str(), kRegistration) && !registered.count(fs::weakly_canonical(entry.path(), ec)))
+    if (std::regex_search(text.str(), kRegistration) && !registered.count(source_key(fs::weakly_canonical(entry.path(), ec))))
       missing.push_back(entry.path());
   }
   std::sort(missing.begin(), missing.end());

@@ -29,6 +29,11 @@ std::vector<std::string> check_node_type(const NodeType& type, const SampleInput
 // or that are missing from the build. Empty when every node file is registered.
 std::vector<std::filesystem::path> unregistered_node_files(const std::filesystem::path& dir);
 
+// Whether `type` was registered by a .cc file directly in `dir`. Registered
+// source files are compared by folder and file name only: __FILE__ is relative
+// to the compiler's working folder when ccache rewrites paths (CCACHE_BASEDIR).
+bool registered_in(const NodeType& type, const std::filesystem::path& dir);
+
 // Problems with a recipe file's round trip: it must load, save to exactly the
 // bytes it was read from, and keep every output hash. Empty when it conforms.
 // (For "every sample file round-trips byte-identically".)

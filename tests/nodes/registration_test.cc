@@ -14,9 +14,7 @@ namespace {
 
 const std::filesystem::path kNodesDir = std::filesystem::path(PROCEX_SAMPLES) / ".." / "nodes";
 
-bool from_nodes_dir(const NodeType& t) {
-  return std::filesystem::weakly_canonical(t.source_file).parent_path() == std::filesystem::weakly_canonical(kNodesDir);
-}
+bool from_nodes_dir(const NodeType& t) { return registered_in(t, kNodesDir); }
 
 TEST(NodeRegistration, EveryNodeFileIsRegistered) {
   EXPECT_EQ(unregistered_node_files(kNodesDir), std::vector<std::filesystem::path>{});
