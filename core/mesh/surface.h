@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/geom/anchor.h"
+
 namespace procex {
 
 enum class FaceKind : std::uint8_t {
@@ -29,6 +31,7 @@ struct SurfaceFace {
 struct Surface {
   std::vector<glm::dvec3> vertices;
   std::vector<SurfaceFace> faces;
+  std::vector<ResolvedAnchor> anchors;  // one per anchor and selected edge, in order
 };
 
 }  // namespace procex

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
+#include "core/geom/anchor.h"
 #include "core/geom/footprint.h"
 #include "core/mesh/surface.h"
 
@@ -17,6 +19,7 @@ enum class Ambiguity { MaximizeVolume, MinimizeVolume };
 struct SweepOptions {
   std::optional<double> max_height;  // caps the sweep with horizontal faces
   Ambiguity ambiguity = Ambiguity::MaximizeVolume;
+  std::vector<Anchor> anchors;  // resolved into Surface::anchors
 };
 
 // Throws InputError for unusable footprints and SweepError when an event
