@@ -1,0 +1,31 @@
+// Reading a mesh to place (a window, a pillar, a dormer) from a Wavefront OBJ
+// file into procex's mesh type, through OpenMesh.
+//
+// OpenMesh's OBJ reader is lenient: it drops a vertex with a malformed number
+// and the faces using it, and says nothing useful about where. So the file is
+// first checked line by line here (every 'v' has three finite coordinates,
+// every 'f' at least three distinct vertices that exist), and then handed to
+// OpenMesh from the same bytes, so what is checked is what is read.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+
+namespace procex {
+
+// The mesh in the file, with procex's face properties: each face's tag is
+// the material named by the last 'usemtl' before it ("" before any), its
+// source edge -1, its kind Side. Texture coordinates, normals, groups and
+// material libraries are ignored. Faces are in file order.
+//
+// Throws IoError naming the file, and the line where there is one, if the
+// file cannot be read, is not .obj, is not text, has a malformed 'v' or 'f'
+// line, has no faces, or OpenMesh refuses a face. Faces OpenMesh can only add
+// by duplicating vertices (more than two faces at an edge, or neighbours
+// facing opposite ways) are kept and reported in `warnings` when given.
+Mesh read_mesh_file(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace procex

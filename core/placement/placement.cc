@@ -1,0 +1,99 @@
+#include "core/placement/placement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/geom/error.h"
+#include "core/placement/placement_error.h"
+#include "core/placement/placement_tolerances.h"
+
+namespace procex {
+
+double linear_determinant(const glm::dmat4& transform) { return glm::determinant(glm::dmat3(transform)); }
+
+std::size_t PlacementResult::add_mesh(const PlaceableMesh& mesh) {
+  if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    if (meshes[i].mesh == mesh.mesh) return i;
+  meshes.push_back(mesh);
+  return meshes.size() - 1;
+}
+
+std::size_t PlacementResult::add_instance(Instance instance) {
+  instances.push_back(std::move(instance));
+  try {
+    check_instance(*this, instances.size() - 1);
+  } catch (...) {
+    instances.pop_back();
+    throw;
+  }
+  return instances.size() - 1;
+}
+
+void check_instance(const PlacementResult& result, std::size_t index) {
+  const Instance& in = result.instances.at(index);
+  const std::string name = "instance " + std::to_string(index);
+  if (in.mesh >= result.meshes.size() || !result.meshes[in.mesh].mesh)
+    throw PlacementError(name + " names mesh " + std::to_string(in.mesh) + " but there are " +
+                         std::to_string(result.meshes.size()));
+  const glm::dmat4& m = in.transform;
+  double largest = 0.0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a non-finite transform");
+  if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
+    throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a projective transform: its last row must be 0 0 0 1");
+  for (int c = 0; c < 3; ++c) largest = std::max(largest, glm::length(glm::dvec3(m[c])));
+  if (!(std::abs(linear_determinant(m)) > kSingularDeterminantRelative * largest * largest * largest))
+    throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a singular transform: it would collapse the mesh");
+}
+
+Mesh flatten(const PlacementResult& result) {
+  Mesh out;
+  if (result.building) out = *result.building;
+  add_face_properties(out);
+  OpenMesh::FPropHandleT<int> instance_prop;
+  if (!out.get_property_handle(instance_prop, kInstanceProperty)) {
+    out.add_property(instance_prop, kInstanceProperty);
+    for (const auto f : out.faces()) out.property(instance_prop, f) = -1;
+  }
+  const auto tag_prop = face_tag_property(out);
+  const auto edge_prop = source_edge_property(out);
+  const auto kind_prop = face_kind_property(out);
+
+  std::vector<Mesh::VertexHandle> handles, face;
+  for (std::size_t i = 0; i < result.instances.size(); ++i) {
+    check_instance(result, i);
+    const Instance& in = result.instances[i];
+    const PlaceableMesh& placed = result.meshes[in.mesh];
+    const Mesh& mesh = *placed.mesh;
+    const auto own_tags = face_tag_property(mesh);
+    const bool mirrored = linear_determinant(in.transform) < 0.0;
+    handles.clear();
+    for (const auto v : mesh.vertices()) {
+      const Mesh::Point& p = mesh.point(v);
+      const glm::dvec4 q = in.transform * glm::dvec4(p[0], p[1], p[2], 1.0);
+      handles.push_back(out.add_vertex({q.x, q.y, q.z}));
+    }
+    for (const auto f : mesh.faces()) {
+      face.clear();
+      for (const auto v : mesh.fv_range(f)) face.push_back(handles[static_cast<std::size_t>(v.idx())]);
+      if (mirrored) std::reverse(face.begin(), face.end());
+      const Mesh::FaceHandle g = out.add_face(face);
+      if (!g.is_valid())
+        throw MeshError("instance " + std::to_string(i) + " (" + placed.name + "): OpenMesh refused its face " +
+                        std::to_string(f.idx()));
+      const std::string* own = own_tags.is_valid() ? &mesh.property(own_tags, f) : nullptr;
+      out.property(tag_prop, g) = !in.tag.empty() ? in.tag : own && !own->empty() ? *own : placed.name;
+      out.property(edge_prop, g) = in.source_edge;
+      out.property(kind_prop, g) = FaceKind::Side;
+      out.property(instance_prop, g) = static_cast<int>(i);
+    }
+  }
+  return out;
+}
+
+}  // namespace procex

@@ -1,0 +1,65 @@
+// The result of placing meshes on a building: the building's own mesh and the
+// placed instances kept apart (each a shared mesh and a transform), so a
+// window used two hundred times is stored once, and a flattening into one
+// mesh for formats without instancing (OBJ, PLY).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "core/mesh/mesh.h"
+
+namespace procex {
+
+// Face property that flatten() adds: the instance a face came from, -1 for
+// the building's own faces.
+inline constexpr const char* kInstanceProperty = "procex:instance";  // int
+
+// A mesh to place (read_placeable_mesh in core/io/mesh_read.h makes one).
+struct PlaceableMesh {
+  std::string name;  // tags the faces that have no tag of their own
+  std::shared_ptr<const Mesh> mesh;
+};
+
+struct Instance {
+  std::size_t mesh = 0;           // index into PlacementResult::meshes
+  glm::dmat4 transform{1.0};      // the mesh's own coordinates to the world
+  std::string tag;                // when not empty, tags every face of this instance
+  std::int32_t source_edge = -1;  // the footprint edge it was placed on (EdgeSpec::id), -1 if none
+};
+
+struct PlacementResult {
+  std::shared_ptr<const Mesh> building;  // may be null: instances only
+  std::vector<PlaceableMesh> meshes;     // distinct meshes
+  std::vector<Instance> instances;
+
+  // The index of `mesh` in `meshes`, added if its Mesh is not there yet (the
+  // same shared Mesh is stored once). Throws PlacementError if it is null.
+  std::size_t add_mesh(const PlaceableMesh& mesh);
+  // Adds an instance after check_instance. Returns its index.
+  std::size_t add_instance(Instance instance);
+};
+
+// Throws PlacementError naming instance `index` if its mesh index is out of
+// range or its transform is not finite, not affine (last row 0 0 0 1), or
+// singular (it would collapse the mesh).
+void check_instance(const PlacementResult& result, std::size_t index);
+
+// det of the transform's 3x3 part: negative for a mirroring placement.
+double linear_determinant(const glm::dmat4& transform);
+
+// Everything in one mesh: the building's faces as they are, then each
+// instance's vertices transformed and its faces added, in order. An instance
+// face's tag is the instance's tag if set, else the face's own tag, else the
+// mesh's name; its source edge is the instance's, its kind Side, and
+// kInstanceProperty gives the instance. A mirroring transform (negative
+// determinant) reverses every face of its instance, so outward faces stay
+// outward and a closed 2-manifold part stays one. Throws PlacementError (from
+// check_instance) or MeshError if OpenMesh refuses a face.
+Mesh flatten(const PlacementResult& result);
+
+}  // namespace procex
