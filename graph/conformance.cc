@@ -129,7 +129,8 @@ std::vector<std::string> check_pxg_round_trip(const std::filesystem::path& file)
   return problems;
 }
 
-std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples) {
+std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples,
+                                         const std::filesystem::path& folder) {
   std::vector<std::string> problems;
   const std::string who = "node type '" + type.name() + "': ";
   const NodeDecl& decl = type.decl;
@@ -155,15 +156,17 @@ std::vector<std::string> check_node_type(const NodeType& type, const SampleInput
 
   ResultCache cache(64 << 20);
   Evaluator ev(cache, "conformance");
+  EvalOptions options;
+  options.folder = folder;
   auto hashes = [&](const Graph& graph) {
     std::vector<Hash128> out;
-    for (const OutputResult& r : ev.hash_outputs(graph, bindings).outputs) out.push_back(r.hash);
+    for (const OutputResult& r : ev.hash_outputs(graph, bindings, {}, options).outputs) out.push_back(r.hash);
     return out;
   };
   const auto base = hashes(g);
 
   // Defaults evaluate: errors are allowed (reported on the node), escapes are not.
-  EvalResult r = ev.evaluate(g, bindings);
+  EvalResult r = ev.evaluate(g, bindings, {}, options);
   for (const OutputResult& o : r.outputs)
     if (o.hash != base[&o - r.outputs.data()]) problems.push_back(who + "evaluation and hashing disagree on " + o.name);
 

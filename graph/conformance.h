@@ -21,8 +21,10 @@ namespace procex {
 // (built-in number, vector and string types have defaults).
 using SampleInputs = std::map<const ValueType*, Value>;
 
-// Problems found, one sentence each; empty when the type conforms.
-std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples);
+// Problems found, one sentence each; empty when the type conforms. Relative
+// file paths in parameters resolve against `folder` (EvalOptions::folder).
+std::vector<std::string> check_node_type(const NodeType& type, const SampleInputs& samples,
+                                         const std::filesystem::path& folder = {});
 
 // The .cc files under `dir` (recursively) that use PROCEX_REGISTER_NODE but
 // registered nothing in NodeRegistry::global(): node files the linker dropped

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <chrono>
 #include <unordered_map>
 #include <utility>
@@ -32,7 +33,8 @@ struct Source {
   std::string why;           // kMissing: for the consumer's error
 };
 
-enum class State { kPending, kHit, kCompute, kDone, kFailed, kInputFailed, kCancelled };
+// kHashed: needed by a hash-only request, nothing wrong found.
+enum class State { kPending, kHashed, kHit, kCompute, kDone, kFailed, kInputFailed, kCancelled };
 
 struct PlanNode {
   NodePath path;
@@ -86,33 +88,13 @@ class Run {
     return out;
   }
 
+  // Hash-only runs: marks the nodes the request needs, so that those whose
+  // inputs are missing (unbound, unconnected) report it as compute() would.
+  void check(const std::vector<Source>& wanted) { walk(wanted, false); }
+
   // Phase 2 and 3: finds what is not cached and computes it.
   void compute(const std::vector<Source>& wanted) {
-    std::vector<std::size_t> stack;
-    for (const Source& s : wanted)
-      if (s.kind == Source::kNode) stack.push_back(s.node);
-    std::vector<std::size_t> to_run;
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      PlanNode& n = *plan_[i];
-      if (n.state != State::kPending) continue;
-      if (!n.static_error.empty()) {
-        n.state = State::kFailed;
-        continue;
-      }
-      if (CachedOutputs hit = cache_.find(n.key)) {
-        n.state = State::kHit;
-        const std::size_t count = n.decl().outputs().size();
-        n.outputs.assign(hit->begin(), hit->begin() + static_cast<std::ptrdiff_t>(count));
-        if (hit->size() > count) n.warnings = hit->back().get<std::vector<std::string>>();
-        continue;
-      }
-      n.state = State::kCompute;
-      to_run.push_back(i);
-      for (const Source& s : n.inputs)
-        if (s.kind == Source::kNode) stack.push_back(s.node);
-    }
+    const std::vector<std::size_t> to_run = walk(wanted, true);
     std::vector<std::size_t> ready;
     for (std::size_t i : to_run) {
       PlanNode& n = *plan_[i];
@@ -167,11 +149,49 @@ class Run {
   }
 
  private:
+  // From the requested outputs towards the inputs: nodes with a static error
+  // fail; with `use_cache`, cache hits stop the walk and the nodes to compute
+  // are returned; without, every needed node is only marked as hashed.
+  std::vector<std::size_t> walk(const std::vector<Source>& wanted, bool use_cache) {
+    std::vector<std::size_t> stack;
+    for (const Source& s : wanted)
+      if (s.kind == Source::kNode) stack.push_back(s.node);
+    std::vector<std::size_t> to_run;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      PlanNode& n = *plan_[i];
+      if (n.state != State::kPending) continue;
+      if (!n.static_error.empty()) {
+        n.state = State::kFailed;
+        continue;
+      }
+      if (!use_cache) {
+        n.state = State::kHashed;
+      } else if (CachedOutputs hit = cache_.find(n.key)) {
+        n.state = State::kHit;
+        const std::size_t count = n.decl().outputs().size();
+        n.outputs.assign(hit->begin(), hit->begin() + static_cast<std::ptrdiff_t>(count));
+        if (hit->size() > count) n.warnings = hit->back().get<std::vector<std::string>>();
+        continue;
+      } else {
+        n.state = State::kCompute;
+        to_run.push_back(i);
+      }
+      for (const Source& s : n.inputs)
+        if (s.kind == Source::kNode) stack.push_back(s.node);
+    }
+    return to_run;
+  }
+
   Source bind(const GraphInput& in, const Bindings& bindings) {
     Source s;
     auto it = bindings.find(in.name);
     const Value* v = it != bindings.end() ? &it->second : (in.default_value.empty() ? nullptr : &in.default_value);
-    if (!v || v->empty()) {
+    if ((!v || v->empty()) && options_.assume_inputs_bound) {
+      s.kind = Source::kValue;  // no value: only hash_outputs may use this option
+      s.hash = Hasher().str("unbound graph input").str(in.name).result();
+    } else if (!v || v->empty()) {
       s.kind = Source::kMissing;
       s.why = "graph input '" + in.name + "' is not bound and has no default";
     } else if (!in.type->is_any() && v->type() != in.type) {
@@ -272,11 +292,13 @@ class Run {
     n.inputs.reserve(decl.inputs().size());
     for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
       Source s = resolve_input(f, PortRef{id, i});
+      const std::string& name = decl.inputs()[i].name;
       if (s.kind == Source::kUnconnected && !decl.inputs()[i].optional) {
         s.kind = Source::kMissing;
-        s.why = "input '" + decl.inputs()[i].name + "' is not connected";
+        s.why = "input '" + name + "' is not connected";
+        if (n.static_error.empty()) n.static_error = s.why;
       }
-      if (s.kind == Source::kMissing && n.static_error.empty()) n.static_error = s.why;
+      if (s.kind == Source::kMissing && n.static_error.empty()) n.static_error = "input '" + name + "': " + s.why;
       if (s.kind == Source::kNode || s.kind == Source::kValue) h.hash(s.hash);
       else h.u64(0x9e3779b97f4a7c15ull + s.kind);
       n.inputs.push_back(std::move(s));
@@ -443,6 +465,7 @@ class Run {
     NodeOutcome outcome = NodeOutcome::kCancelled;
     switch (n.state) {
       case State::kPending: return;  // not needed: upstream of a cache hit, or only passed through
+      case State::kHashed: return;
       case State::kHit: outcome = NodeOutcome::kCacheHit; break;
       case State::kDone: outcome = NodeOutcome::kComputed; break;
       case State::kFailed: outcome = NodeOutcome::kFailed; break;
@@ -489,12 +512,14 @@ Evaluator::Evaluator(ResultCache& cache, std::string engine_salt)
 
 EvalResult Evaluator::run(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports,
                           std::vector<std::string> names, const EvalOptions& options, bool compute) {
+  assert(!(compute && options.assume_inputs_bound) && "EvalOptions::assume_inputs_bound is for hash_outputs only");
   const auto t0 = Clock::now();
   EvalResult result;
   Run run(cache_, salt_hash_, options, result);
   std::vector<Source> wanted = run.plan(g, bindings, ports);
   result.stats.hash_ns = ns_since(t0);
   if (compute) run.compute(wanted);
+  else run.check(wanted);
   run.report(wanted, names);
   result.stats.total_ns = ns_since(t0);
   return result;

@@ -43,6 +43,10 @@ struct EvalOptions {
   // Relative file paths in parameters resolve against this folder, usually the
   // recipe's (EvalContext::folder(), NodeDecl::hash_extra). Empty: the working directory.
   std::filesystem::path folder;
+  // hash_outputs only: graph inputs without binding or default count as bound
+  // (to a value known only by name), so checking a recipe before its inputs
+  // are known reports every other problem. evaluate() asserts it is off.
+  bool assume_inputs_bound = false;
 };
 
 struct OutputResult {
@@ -76,7 +80,9 @@ class Evaluator {
                             const EvalOptions& options = {});
 
   // Hashes of the graph outputs without evaluating anything (empty = all).
-  // Problems that stop hashing (unbound inputs) appear as diagnostics.
+  // Problems that would stop evaluation (an unbound graph input, an
+  // unconnected required input) appear as error diagnostics on the node,
+  // naming its input, for every node the requested outputs need.
   EvalResult hash_outputs(const Graph& g, const Bindings& bindings, const std::vector<std::string>& outputs = {},
                           const EvalOptions& options = {});
 

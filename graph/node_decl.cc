@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "graph/hash.h"
+
 namespace procex {
 
 namespace {
@@ -190,6 +192,12 @@ std::string NodeDecl::markdown() const {
   }
   ports("Outputs", outputs_);
   return md.str();
+}
+
+void hash_file_stamp(const std::filesystem::path& file, Hasher& h) {
+  std::error_code ec;
+  h.u64(std::filesystem::file_size(file, ec));
+  h.i64(std::filesystem::last_write_time(file, ec).time_since_epoch().count());
 }
 
 }  // namespace procex

@@ -102,6 +102,10 @@ using UpgradeFn = void (*)(int saved_version, nlohmann::json& params);
 // EvalOptions::folder). Must be cheap: it runs whenever the graph is hashed.
 using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h);
 
+// What a HashExtraFn usually adds for a file it reads: its size and
+// modification time (a missing file hashes as such, and reading it fails later).
+void hash_file_stamp(const std::filesystem::path& file, Hasher& h);
+
 class NodeDecl {
  public:
   NodeDecl() = default;

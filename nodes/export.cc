@@ -2,7 +2,6 @@
 #include "core/io/io_error.h"
 #include "graph/registry.h"
 #include "nodes/support/mesh_export.h"
-#include "nodes/support/recipe_files.h"
 #include "nodes/values.h"
 
 namespace procex {
@@ -20,7 +19,7 @@ void declare(NodeDecl& d) {
 }
 
 void evaluate(EvalContext& ctx) {
-  const std::filesystem::path path = resolve_recipe_path(ctx.param<std::string>(0));
+  const std::filesystem::path path = ctx.folder() / ctx.param<std::string>(0);
   if (!is_mesh_file(path)) return ctx.error("file: '" + path.string() + "' does not end in .obj, .ply or .glb");
   try {
     write_mesh_set(path, ctx.input<MeshSet>(0));

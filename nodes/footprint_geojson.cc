@@ -2,11 +2,15 @@
 #include "core/io/geojson.h"
 #include "core/io/io_error.h"
 #include "graph/registry.h"
-#include "nodes/support/recipe_files.h"
 #include "nodes/values.h"
 
 namespace procex {
 namespace {
+
+// An edited file is read again.
+void hash_file(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
+  hash_file_stamp(folder / params[0].get<std::string>(), h);
+}
 
 void declare(NodeDecl& d) {
   d.doc("One Polygon or MultiPolygon feature of a GeoJSON FeatureCollection (coordinates in metres), chosen by id "
@@ -20,6 +24,7 @@ void declare(NodeDecl& d) {
   d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
       .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)");
   d.output<Footprint>("footprint");
+  d.hash_extra(hash_file);
 }
 
 void evaluate(EvalContext& ctx) {
@@ -28,7 +33,7 @@ void evaluate(EvalContext& ctx) {
   const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(2));
   GeoJsonCollection collection;
   try {
-    collection = read_geojson_file(resolve_recipe_path(file));
+    collection = read_geojson_file(ctx.folder() / file);
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }

@@ -12,6 +12,7 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "app/cli/feature_binding.h"
 #include "app/cli/recipe_session.h"
 #include "core/io/atomic_write.h"
 #include "core/io/geojson.h"
@@ -36,44 +37,20 @@ struct Building {
   double ms = 0;
 };
 
-// GeoJSON property names as graph names: [a-z0-9_], lower case.
-std::string identifier(const std::string& property) {
-  std::string out;
-  for (unsigned char c : property) out += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_';
-  return out;
-}
-
 std::string file_name(const std::string& id) {
   std::string out;
   for (unsigned char c : id) out += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
   return out.empty() || out[0] == '.' ? "_" + out : out;
 }
 
-void evaluate_building(const Graph& recipe, const Bindings& base, Evaluator& evaluator,
-                       const std::vector<std::string>& outputs, bool to_glb, Building& b) {
+void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb, Building& b) {
   const auto start = std::chrono::steady_clock::now();
-  Graph graph = recipe;
-  Bindings bindings = base;
-  bindings["footprint"] = Value::make(to_footprint(*b.feature, 45.0));
-  if (graph.input_index("building_id")) bindings["building_id"] = Value::make(b.id);
-  for (const auto& [name, json_text] : b.feature->properties) {
-    const std::string key = identifier(name);
-    if (key == "footprint" || key == "building_id") continue;
-    const bool known = graph.input_index(key).has_value() ||
-                       std::any_of(graph.exposed_params().begin(), graph.exposed_params().end(),
-                                   [&](const ExposedParam& p) { return p.name == key; });
-    if (!known) continue;
-    Status s = apply_setting(graph, bindings, key, *b.feature->property_text(name));
-    if (const auto number = b.feature->property_number(name); !s && number) {  // "12 m" for a float parameter
-      char text[32];
-      std::snprintf(text, sizeof text, "%.17g", *number);
-      s = apply_setting(graph, bindings, key, text);
-    }
-    if (!s) b.warnings.push_back("property " + name + ": " + s.message());
-  }
-  EvalOptions options;
+  Graph graph = recipe.graph;
+  Bindings bindings = recipe.bindings;
+  b.warnings = bind_feature(graph, bindings, *b.feature);
+  EvalOptions options = recipe.options;
   options.parallel = false;  // buildings run in parallel already
-  const EvalResult r = evaluator.evaluate(graph, bindings, outputs, options);
+  const EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
   for (const Diagnostic& d : r.diagnostics) {
     if (d.severity == Severity::kWarning) b.warnings.push_back(d.to_string());
     else b.reason += (b.reason.empty() ? "" : "; ") + d.to_string();
@@ -83,7 +60,7 @@ void evaluate_building(const Graph& recipe, const Bindings& base, Evaluator& eva
     if (b.reason.empty()) b.reason = "an output is missing";
   } else {
     b.meshes = gather_meshes(r);
-    for (TaggedMesh& part : b.meshes.parts) part.building = b.id, part.feature = static_cast<std::int64_t>(b.index);
+    label_parts(b.meshes, *b.feature);
     b.summary = summarize(b.meshes);
     if (to_glb) {
       b.gltf = to_gltf(b.meshes);
@@ -167,9 +144,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   }
   const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
   if (!recipe) return kExitUnusableInput;
-  const auto footprint_input = recipe->graph.input_index("footprint");
-  if (!footprint_input || recipe->graph.inputs()[*footprint_input].type != &value_type<Footprint>()) {
-    err << options.recipe.string() << ": the recipe needs a graph input named 'footprint' of type footprint\n";
+  if (Status s = check_footprint_input(recipe->graph); !s) {
+    err << options.recipe.string() << ": " << s.message() << "\n";
     return kExitUnusableInput;
   }
   GeoJsonCollection collection;
@@ -203,7 +179,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
       if (buildings[i].feature)
-        evaluate_building(recipe->graph, recipe->bindings, evaluator, recipe->outputs, one_glb, buildings[i]);
+        evaluate_building(*recipe, evaluator, one_glb, buildings[i]);
       progress.step();
     });
   });

@@ -2,7 +2,9 @@
 
 #include <ostream>
 
+#include "app/cli/feature_binding.h"
 #include "app/cli/recipe_session.h"
+#include "core/io/geojson.h"
 #include "core/io/io_error.h"
 #include "nodes/support/mesh_export.h"
 
@@ -13,17 +15,40 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply or .glb\n";
     return kExitUnusableInput;
   }
-  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
+  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
   if (!recipe) return kExitUnusableInput;
+  GeoJsonCollection collection;
+  const GeoJsonFeature* feature = nullptr;
+  if (!options.footprints.empty()) {
+    if (Status s = check_footprint_input(recipe->graph); !s) {
+      err << options.recipe.string() << ": " << s.message() << "\n";
+      return kExitUnusableInput;
+    }
+    try {
+      collection = read_geojson_file(options.footprints);
+    } catch (const IoError& e) {
+      err << "procex eval: " << e.what() << "\n";
+      return kExitUnusableInput;
+    }
+    const Result<const GeoJsonFeature*> found = find_feature(collection, options.feature, options.footprints.string());
+    if (!found) {
+      err << "procex eval: " << found.message() << "\n";
+      return kExitUnusableInput;
+    }
+    feature = *found;
+    for (const std::string& w : bind_feature(recipe->graph, recipe->bindings, *feature))
+      err << options.footprints.string() << ": feature " << feature->id << ": warning: " << w << "\n";
+  }
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);
-  const EvalResult r = evaluator.evaluate(recipe->graph, recipe->bindings, recipe->outputs);
+  const EvalResult r = evaluator.evaluate(recipe->graph, recipe->bindings, recipe->outputs, recipe->options);
   print_diagnostics(r, options.recipe, err);
   if (!r.ok()) {
     err << "procex eval: " << options.recipe.string() << ": evaluation failed, nothing written\n";
     return kExitEvaluationFailed;
   }
-  const MeshSet meshes = gather_meshes(r);
+  MeshSet meshes = gather_meshes(r);
+  if (feature) label_parts(meshes, *feature);
   try {
     write_mesh_set(options.output, meshes);
   } catch (const IoError& e) {

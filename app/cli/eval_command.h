@@ -1,5 +1,8 @@
-// `procex eval RECIPE -o out.(obj|ply|glb) [--set name=value ...]`: evaluates
-// a recipe's mesh outputs and writes them to one file (atomically).
+// `procex eval RECIPE -o out.(obj|ply|glb) [--set name=value ...]
+// [--footprints FILE.geojson --feature ID_OR_INDEX]`: evaluates a recipe's mesh
+// outputs and writes them to one file (atomically). With --footprints, one
+// feature is bound exactly as `procex batch` binds each one (feature_binding.h);
+// its properties are applied after --set, as in batch.
 #pragma once
 
 #include <filesystem>
@@ -13,6 +16,8 @@ struct EvalCommandOptions {
   std::filesystem::path recipe;
   std::filesystem::path output;       // .obj, .ply or .glb
   std::vector<std::string> settings;  // name=value: exposed parameters or graph inputs
+  std::filesystem::path footprints;   // GeoJSON FeatureCollection; empty: no feature bound
+  std::string feature;                // the feature's id, or its index in the file
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

@@ -3,21 +3,24 @@
 #include <ostream>
 
 #include "graph/pxg.h"
-#include "nodes/support/recipe_files.h"
 
 namespace procex {
 
 std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err) {
   try {
-    Graph g = load_pxg(file);
-    set_recipe_folder(std::filesystem::absolute(file).parent_path());
-    return g;
+    return load_pxg(file);
   } catch (const PxgError& e) {
     err << e.file() << ": " << (e.where().empty() ? "" : e.where() + ": ") << e.message() << "\n";
   } catch (const std::exception& e) {  // filesystem errors from resolving the path
     err << file.string() << ": " << e.what() << "\n";
   }
   return std::nullopt;
+}
+
+EvalOptions recipe_eval_options(const std::filesystem::path& file) {
+  EvalOptions options;
+  options.folder = std::filesystem::absolute(file).parent_path();
+  return options;
 }
 
 Status apply_setting(Graph& graph, Bindings& bindings, const std::string& name, const std::string& text) {
@@ -65,7 +68,7 @@ std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, co
                                            std::ostream& err) {
   std::optional<Graph> graph = load_recipe(file, err);
   if (!graph) return std::nullopt;
-  MeshRecipe r{std::move(*graph), {}, {}};
+  MeshRecipe r{std::move(*graph), {}, {}, recipe_eval_options(file)};
   if (!apply_settings(r.graph, r.bindings, settings, err)) return std::nullopt;
   r.outputs = mesh_outputs(r.graph);
   if (r.outputs.empty()) {

@@ -19,9 +19,12 @@ namespace procex {
 inline constexpr int kExitEvaluationFailed = 1;  // a node (or a building) failed
 inline constexpr int kExitUnusableInput = 2;     // the recipe or an input cannot be read, an output not written
 
-// "file: where: message" for a PxgError; the file's folder becomes the folder
-// nodes resolve relative paths against. nullopt after writing the error to err.
+// "file: where: message" for a PxgError. nullopt after writing the error to err.
 std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err);
+
+// Options for evaluating the recipe in `file`: its nodes resolve relative
+// paths against the file's folder.
+EvalOptions recipe_eval_options(const std::filesystem::path& file);
 
 // Applies "name=value" assignments: to the exposed parameter of that name, else
 // to the graph input of that name (added to bindings). False after writing
@@ -37,6 +40,7 @@ struct MeshRecipe {
   Graph graph;
   Bindings bindings;
   std::vector<std::string> outputs;  // graph outputs of type mesh, never empty
+  EvalOptions options;               // recipe_eval_options
 };
 // nullopt after writing the problem to err (load error, bad setting, no mesh output).
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,

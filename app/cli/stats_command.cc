@@ -13,11 +13,12 @@ int run_stats(const StatsCommandOptions& options, std::ostream& out, std::ostrea
   if (!apply_settings(*graph, bindings, options.settings, err)) return kExitUnusableInput;
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);
-  const EvalResult cold = evaluator.evaluate(*graph, bindings);
+  const EvalOptions eval_options = recipe_eval_options(options.recipe);
+  const EvalResult cold = evaluator.evaluate(*graph, bindings, {}, eval_options);
   print_diagnostics(cold, options.recipe, err);
   out << options.recipe.string() << ": first evaluation\n";
   cold.stats.print(out);
-  const EvalResult warm = evaluator.evaluate(*graph, bindings);
+  const EvalResult warm = evaluator.evaluate(*graph, bindings, {}, eval_options);
   const CacheCounters c = cache.counters();
   out << "second evaluation: " << warm.stats.count(NodeOutcome::kCacheHit) << " cache hits, "
       << warm.stats.computed() << " computed, " << static_cast<double>(warm.stats.total_ns) / 1e6 << " ms\n"

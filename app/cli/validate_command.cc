@@ -15,10 +15,13 @@ int run_validate(const ValidateCommandOptions& options, std::ostream& out, std::
     err << options.recipe.string() << ": " << d.to_string() << "\n";
   };
   for (const Diagnostic& d : graph->validate()) report(d);
-  // Hashing plans the whole evaluation (and finds unbound inputs) without running a node.
+  // Hashing plans the whole evaluation (and finds unconnected inputs) without running a node;
+  // graph inputs without a default are bound later, by --set or batch.
   ResultCache cache(1 << 20);
   Evaluator evaluator(cache, kEngineSalt);
-  for (const Diagnostic& d : evaluator.hash_outputs(*graph, {}).diagnostics) report(d);
+  EvalOptions hash_options = recipe_eval_options(options.recipe);
+  hash_options.assume_inputs_bound = true;
+  for (const Diagnostic& d : evaluator.hash_outputs(*graph, {}, {}, hash_options).diagnostics) report(d);
   // Not a problem: batch binds `footprint` per feature, --set binds the rest.
   for (const GraphInput& in : graph->inputs())
     if (in.default_value.empty())

@@ -62,7 +62,7 @@ TEST_F(EvaluatorTest, GraphInputsBindWithDefaultsAndTypeChecks) {
   EvalResult unbound = ev.evaluate(g, {});
   EXPECT_EQ(unbound.output("sum"), nullptr);
   ASSERT_FALSE(unbound.diagnostics.empty());
-  EXPECT_EQ(unbound.diagnostics[0].to_string(), "error: node 1 (test.Add): graph input 'x' is not bound and has no default");
+  EXPECT_EQ(unbound.diagnostics[0].to_string(), "error: node 1 (test.Add): input 'a': graph input 'x' is not bound and has no default");
 
   EvalResult wrong = ev.evaluate(g, {{"x", Value::make(std::string("1"))}, {"z", Value::make(1.0)}});
   EXPECT_FALSE(wrong.ok());
@@ -148,6 +148,37 @@ TEST_F(EvaluatorTest, HashesDependOnTheEngineSalt) {
   EXPECT_NE(ev.hash_outputs(d.g, {}).outputs[0].hash, other.hash_outputs(d.g, {}).outputs[0].hash);
   EXPECT_EQ(ev.hash_outputs(d.g, {}).outputs[0].hash, ev.evaluate(d.g, {}).outputs[0].hash);
   EXPECT_EQ(test::evaluations(), 7);  // hash_outputs computes nothing
+}
+
+// hash_outputs runs nothing but reports what would stop evaluate(), naming the node and its input;
+// with assume_inputs_bound (checking a recipe before binding) only the unconnected input remains.
+TEST_F(EvaluatorTest, HashOnlyRunsNameMissingInputs) {
+  Graph g;
+  ASSERT_TRUE(g.add_input(GraphInput{"x", &value_type<double>(), "", {}}));
+  const NodeId add_node = add(g, "test.Add");
+  const NodeId mul = add(g, "test.Mul");
+  ASSERT_TRUE(g.connect(PortRef{kGraphInputs, 0}, PortRef{add_node, 0}));
+  ASSERT_TRUE(g.connect(PortRef{add_node, 0}, PortRef{mul, 0}));  // mul's input b stays unconnected
+  test::output(g, "sum", add_node);
+  test::output(g, "product", mul);
+  auto messages = [](const EvalResult& r) {
+    std::vector<std::string> m;
+    for (const Diagnostic& d : r.diagnostics) m.push_back(d.to_string());
+    return m;
+  };
+  const EvalResult hashed = ev.hash_outputs(g, {});
+  EXPECT_FALSE(hashed.ok());
+  EXPECT_EQ(messages(hashed), (std::vector<std::string>{
+                                  "error: node 1 (test.Add): input 'a': graph input 'x' is not bound and has no default",
+                                  "error: node 2 (test.Mul): input 'b' is not connected"}));
+  EXPECT_EQ(messages(ev.hash_outputs(g, {}, {"sum"})).size(), 1u);  // only what the request needs
+  EXPECT_TRUE(ev.hash_outputs(g, {{"x", Value::make(1.0)}}, {"sum"}).diagnostics.empty());
+  EXPECT_EQ(messages(ev.evaluate(g, {})), messages(hashed));  // the same words as a real evaluation
+  EvalOptions before_binding;
+  before_binding.assume_inputs_bound = true;
+  EXPECT_EQ(messages(ev.hash_outputs(g, {}, {}, before_binding)),
+            (std::vector<std::string>{"error: node 2 (test.Mul): input 'b' is not connected"}));
+  EXPECT_EQ(test::evaluations(), 0);
 }
 
 TEST_F(EvaluatorTest, EditorStateIsNotHashed) {

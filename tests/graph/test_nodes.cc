@@ -126,10 +126,7 @@ std::filesystem::path resolve(const std::vector<Value>& params, const std::files
   return folder / params[0].get<std::string>();
 }
 void hash_file_state(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
-  std::error_code ec;
-  const auto path = resolve(params, folder);
-  h.u64(std::filesystem::file_size(path, ec));
-  h.i64(std::filesystem::last_write_time(path, ec).time_since_epoch().count());
+  hash_file_stamp(resolve(params, folder), h);
 }
 void declare_file_size(NodeDecl& d) {
   d.doc("Size of a file in bytes.").category("Test");

@@ -8,7 +8,6 @@
 
 #include "core/io/gltf_write.h"
 #include "core/mesh/validate.h"
-#include "nodes/support/recipe_files.h"
 #include "nodes/support/profile_presets.h"
 #include "nodes/values.h"
 #include "tests/nodes/node_runner.h"
@@ -160,32 +159,29 @@ TEST(TransformAndMerge, MoveAndJoin) {
 }
 
 TEST(FootprintGeoJson, ReadsOneFeatureByIdOrIndex) {
-  set_recipe_folder(PROCEX_SAMPLES);
+  const std::filesystem::path samples = PROCEX_SAMPLES;
   const auto by_id = run_node("Footprint GeoJSON", {{"file", Value::make(std::string("footprints/sample_block.geojson"))},
-                                                    {"id", Value::make(std::string("r1484217"))}});
+                                                    {"id", Value::make(std::string("r1484217"))}}, {}, samples);
   ASSERT_TRUE(by_id.ok()) << by_id.messages();
   EXPECT_EQ(by_id.outputs[0].get<Footprint>().loops.size(), 2u);  // a courtyard
-  const auto missing = run_node("Footprint GeoJSON", {{"id", Value::make(std::string("w0"))}});
+  const auto missing = run_node("Footprint GeoJSON", {{"id", Value::make(std::string("w0"))}}, {}, samples);
   EXPECT_NE(missing.messages().find("no feature with id 'w0' (18 features)"), std::string::npos) << missing.messages();
-  const auto no_file = run_node("Footprint GeoJSON", {{"file", Value::make(std::string("nowhere.geojson"))}});
+  const auto no_file = run_node("Footprint GeoJSON", {{"file", Value::make(std::string("nowhere.geojson"))}}, {}, samples);
   EXPECT_NE(no_file.messages().find("nowhere.geojson"), std::string::npos) << no_file.messages();
-  set_recipe_folder({});
 }
 
 TEST(Export, WritesTheMeshBesideTheRecipe) {
   const auto dir = std::filesystem::temp_directory_path() / "procex_export_node_test";
   std::filesystem::create_directories(dir);
-  set_recipe_folder(dir);
   const auto mesh = run_node("Extrude", {}, {{"footprint", rectangle(10, 6)}});
-  const auto r = run_node("Export", {{"file", Value::make(std::string("roof.glb"))}}, {{"mesh", mesh.outputs[0]}});
+  const auto r = run_node("Export", {{"file", Value::make(std::string("roof.glb"))}}, {{"mesh", mesh.outputs[0]}}, dir);
   ASSERT_TRUE(r.ok()) << r.messages();
   EXPECT_EQ(r.outputs[0].get<std::string>(), (dir / "roof.glb").string());
   const auto meshes = read_glb(dir / "roof.glb");
   ASSERT_EQ(meshes.size(), 1u);
   EXPECT_EQ(meshes[0].primitives.size(), 2u);  // base and roof
-  const auto bad = run_node("Export", {{"file", Value::make(std::string("roof.stl"))}}, {{"mesh", mesh.outputs[0]}});
+  const auto bad = run_node("Export", {{"file", Value::make(std::string("roof.stl"))}}, {{"mesh", mesh.outputs[0]}}, dir);
   EXPECT_NE(bad.messages().find("does not end in .obj, .ply or .glb"), std::string::npos) << bad.messages();
-  set_recipe_folder({});
   std::filesystem::remove_all(dir);
 }
 

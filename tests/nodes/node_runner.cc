@@ -17,7 +17,7 @@ std::string NodeRun::messages() const {
 }
 
 NodeRun run_node(const std::string& type, const std::map<std::string, Value>& params,
-                 const std::map<std::string, Value>& inputs) {
+                 const std::map<std::string, Value>& inputs, const std::filesystem::path& folder) {
   Graph g;
   const auto id = g.add_node(type);
   if (!id) throw std::invalid_argument(id.message());
@@ -42,7 +42,9 @@ NodeRun run_node(const std::string& type, const std::map<std::string, Value>& pa
   }
   ResultCache cache(64 << 20);
   Evaluator ev(cache, "nodes test");
-  EvalResult r = ev.evaluate(g, bindings, names);
+  EvalOptions options;
+  options.folder = folder;
+  EvalResult r = ev.evaluate(g, bindings, names, options);
   NodeRun run;
   for (const OutputResult& o : r.outputs) run.outputs.push_back(o.value);
   run.diagnostics = std::move(r.diagnostics);

@@ -2,6 +2,7 @@
 // evaluator, so tests see exactly what a recipe would.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,8 +18,9 @@ struct NodeRun {
   std::string messages() const;  // every diagnostic, one per line
 };
 
-// inputs: by input name (unlisted optional inputs stay unconnected).
+// inputs: by input name (unlisted optional inputs stay unconnected); relative
+// file paths in parameters resolve against folder (EvalOptions::folder).
 NodeRun run_node(const std::string& type, const std::map<std::string, Value>& params,
-                 const std::map<std::string, Value>& inputs = {});
+                 const std::map<std::string, Value>& inputs = {}, const std::filesystem::path& folder = {});
 
 }  // namespace procex::test

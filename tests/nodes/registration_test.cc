@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include "graph/conformance.h"
-#include "nodes/support/recipe_files.h"
 #include "nodes/values.h"
 
 namespace procex {
@@ -45,7 +44,6 @@ TEST(NodeRegistration, EveryTypeIsDocumented) {
 TEST(NodeRegistration, EveryTypeConforms) {
   const auto tmp = std::filesystem::temp_directory_path() / "procex_nodes_conformance";
   std::filesystem::create_directories(tmp);
-  set_recipe_folder(tmp);  // Export writes its default file here
   const Profile wall = Profile::straight(0, 3, "wall");
   MeshSet mesh;
   SampleInputs samples = {
@@ -57,9 +55,8 @@ TEST(NodeRegistration, EveryTypeConforms) {
   for (const auto& t : NodeRegistry::global().all()) {
     if (!from_nodes_dir(*t)) continue;
     SCOPED_TRACE(t->name());
-    EXPECT_EQ(check_node_type(*t, samples), std::vector<std::string>{});
+    EXPECT_EQ(check_node_type(*t, samples, tmp), std::vector<std::string>{});  // Export writes its default file there
   }
-  set_recipe_folder({});
 }
 
 }  // namespace

@@ -13,7 +13,6 @@
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
 #include "nodes/support/mesh_summary.h"
-#include "nodes/support/recipe_files.h"
 
 namespace procex {
 namespace {
@@ -56,10 +55,11 @@ class Sample : public ::testing::TestWithParam<std::string> {};
 TEST_P(Sample, EvaluatesToItsStoredSummary) {
   const fs::path file = kSamples / (GetParam() + ".pxg");
   const Graph g = load_pxg(file);
-  set_recipe_folder(kSamples);
   ResultCache cache(64 << 20);
   Evaluator ev(cache, "samples test");
-  const EvalResult r = ev.evaluate(g, {}, {"mesh"});
+  EvalOptions options;
+  options.folder = kSamples;
+  const EvalResult r = ev.evaluate(g, {}, {"mesh"}, options);
   for (const Diagnostic& d : r.diagnostics) EXPECT_NE(d.severity, Severity::kError) << d.to_string();
   ASSERT_TRUE(r.ok());
   const json got = summary_json(summarize(r.output("mesh")->get<MeshSet>()));

@@ -1,0 +1,78 @@
+#include "app/cli/feature_binding.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+
+#include "app/cli/recipe_session.h"
+
+namespace procex {
+namespace {
+
+// GeoJSON property names as graph names: [a-z0-9_], lower case.
+std::string identifier(const std::string& property) {
+  std::string out;
+  for (unsigned char c : property) out += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_';
+  return out;
+}
+
+bool names_setting(const Graph& graph, const std::string& key) {
+  return graph.input_index(key).has_value() ||
+         std::any_of(graph.exposed_params().begin(), graph.exposed_params().end(),
+                     [&](const ExposedParam& p) { return p.name == key; });
+}
+
+}  // namespace
+
+Status check_footprint_input(const Graph& recipe) {
+  const auto i = recipe.input_index("footprint");
+  if (!i || recipe.inputs()[*i].type != &value_type<Footprint>())
+    return Status::error("the recipe needs a graph input named 'footprint' of type footprint");
+  return Status::ok();
+}
+
+std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, const GeoJsonFeature& f) {
+  std::vector<std::string> warnings;
+  bindings["footprint"] = Value::make(to_footprint(f, 45.0));
+  if (graph.input_index("building_id")) bindings["building_id"] = Value::make(f.id);
+  for (const auto& [name, json_text] : f.properties) {
+    const std::string key = identifier(name);
+    if (key == "footprint" || key == "building_id" || !names_setting(graph, key)) continue;
+    Status s = apply_setting(graph, bindings, key, *f.property_text(name));
+    if (const auto number = f.property_number(name); !s && number) {  // "12 m" for a float parameter
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", *number);
+      s = apply_setting(graph, bindings, key, text);
+    }
+    if (!s) warnings.push_back("property " + name + ": " + s.message());
+  }
+  return warnings;
+}
+
+void label_parts(MeshSet& meshes, const GeoJsonFeature& f) {
+  for (TaggedMesh& part : meshes.parts) part.building = f.id, part.feature = static_cast<std::int64_t>(f.index);
+}
+
+Result<const GeoJsonFeature*> find_feature(const GeoJsonCollection& collection, const std::string& id_or_index,
+                                           const std::string& file) {
+  auto refused = [&](const GeoJsonFeatureError& e) -> Result<const GeoJsonFeature*> {
+    return Status::error(file + ": feature " + e.id + " (index " + std::to_string(e.index) + "): " + e.message);
+  };
+  for (const GeoJsonFeature& f : collection.features)
+    if (f.id == id_or_index) return &f;
+  for (const GeoJsonFeatureError& e : collection.errors)
+    if (e.id == id_or_index) return refused(e);
+  std::size_t index = 0;
+  const char* end = id_or_index.data() + id_or_index.size();
+  if (auto [p, ec] = std::from_chars(id_or_index.data(), end, index); ec == std::errc() && p == end && !id_or_index.empty()) {
+    for (const GeoJsonFeature& f : collection.features)
+      if (f.index == index) return &f;
+    for (const GeoJsonFeatureError& e : collection.errors)
+      if (e.index == index) return refused(e);
+  }
+  return Status::error(file + ": no feature with id or index '" + id_or_index + "' (" +
+                       std::to_string(collection.features.size() + collection.errors.size()) + " features)");
+}
+
+}  // namespace procex

@@ -1,0 +1,37 @@
+// One GeoJSON feature bound to a recipe: what `procex batch` does for every
+// feature and `procex eval --footprints F --feature ID` for one. The feature
+// becomes the graph input `footprint`, its id the input `building_id` (if the
+// recipe has one), and each property sets the exposed parameter or graph input
+// of the same name (characters other than a-z, 0-9 and _ become _, so
+// building:levels sets building_levels).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/io/geojson.h"
+#include "graph/evaluator.h"
+#include "graph/graph.h"
+#include "graph/status.h"
+#include "nodes/values.h"
+
+namespace procex {
+
+// Ok if the recipe has a graph input named `footprint` of type footprint.
+Status check_footprint_input(const Graph& recipe);
+
+// Binds f to graph (a copy of the recipe) and bindings. Returns one warning per
+// property that names a parameter but does not fit it; properties that name
+// nothing in the recipe are ignored.
+std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, const GeoJsonFeature& f);
+
+// Marks every part with f's id and index (written to .glb extras).
+void label_parts(MeshSet& meshes, const GeoJsonFeature& f);
+
+// The feature whose id is `id_or_index`, else (if it is a number) the one at
+// that position. The message names the file, the feature and, for a feature
+// that could not be read, why.
+Result<const GeoJsonFeature*> find_feature(const GeoJsonCollection& collection, const std::string& id_or_index,
+                                           const std::string& file);
+
+}  // namespace procex
