@@ -12,6 +12,8 @@
 #include "core/geom/polygon3.h"
 #include "core/io/atomic_write.h"
 #include "core/io/io_error.h"
+#include "core/placement/placement.h"
+#include "core/placement/trs_split.h"
 
 namespace procex {
 namespace {
@@ -27,11 +29,12 @@ struct Layout {
   std::size_t end = 0;
 };
 
-Layout layout_of(const std::vector<GltfMeshData>& meshes) {
+Layout layout_of(const std::vector<GltfMeshData>& meshes, const std::vector<GltfMeshData>& prototypes) {
   std::size_t floats = 0, indices = 0;
-  for (const GltfMeshData& mesh : meshes)
-    for (const GltfPrimitiveData& p : mesh.primitives)
-      if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
+  for (const auto* list : {&meshes, &prototypes})
+    for (const GltfMeshData& mesh : *list)
+      for (const GltfPrimitiveData& p : mesh.primitives)
+        if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
   Layout l;
   l.normals = floats * sizeof(float);
   l.indices = 2 * l.normals;
@@ -64,63 +67,142 @@ void add_material(tinygltf::Model& m, const std::string& tag) {
   mat.pbrMetallicRoughness.roughnessFactor = 0.9;
 }
 
-tinygltf::Model to_model(const std::vector<GltfMeshData>& meshes) {
+// Where the next primitive's data goes in the buffer, and the materials made so far.
+struct Writing {
+  tinygltf::Model& m;
+  std::size_t starts[3], at[3];
+  std::map<std::string, int> materials;
+};
+
+// Adds data's primitives as a glTF mesh named `name`; returns its index, or
+// -1 when it has no triangles (glTF meshes need a primitive).
+int add_mesh(Writing& w, const GltfMeshData& data, const std::string& name) {
+  tinygltf::Model& m = w.m;
+  tinygltf::Mesh mesh;
+  mesh.name = name;
+  std::vector<unsigned char>& buffer = m.buffers[0].data;
+  for (const GltfPrimitiveData& p : data.primitives) {
+    if (p.indices.empty()) continue;
+    auto [it, added] = w.materials.try_emplace(p.tag, static_cast<int>(w.materials.size()));
+    if (added) add_material(m, p.tag);
+    tinygltf::Primitive& prim = mesh.primitives.emplace_back();
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    prim.material = it->second;
+    prim.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(p.tag)}});
+    const std::size_t n = p.positions.size() / 3;
+    const int pos = add_accessor(m, 0, w.at[0] - w.starts[0], kFloat, TINYGLTF_TYPE_VEC3, n);
+    std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
+    for (std::size_t i = 0; i < p.positions.size(); ++i) {
+      lo[i % 3] = std::min<double>(lo[i % 3], p.positions[i]);
+      hi[i % 3] = std::max<double>(hi[i % 3], p.positions[i]);
+    }
+    m.accessors[static_cast<std::size_t>(pos)].minValues = std::move(lo);
+    m.accessors[static_cast<std::size_t>(pos)].maxValues = std::move(hi);
+    prim.attributes["POSITION"] = pos;
+    prim.attributes["NORMAL"] = add_accessor(m, 1, w.at[1] - w.starts[1], kFloat, TINYGLTF_TYPE_VEC3, n);
+    prim.indices = add_accessor(m, 2, w.at[2] - w.starts[2], kUint, TINYGLTF_TYPE_SCALAR, p.indices.size());
+    w.at[0] = append(buffer, w.at[0], p.positions);
+    w.at[1] = append(buffer, w.at[1], p.normals);
+    w.at[2] = append(buffer, w.at[2], p.indices);
+  }
+  if (mesh.primitives.empty()) return -1;
+  m.meshes.push_back(std::move(mesh));
+  return static_cast<int>(m.meshes.size() - 1);
+}
+
+int add_node(tinygltf::Model& m, tinygltf::Node node) {
+  m.nodes.push_back(std::move(node));
+  return static_cast<int>(m.nodes.size() - 1);
+}
+
+std::vector<double> matrix_values(const glm::dmat4& t) {
+  if (t == glm::dmat4(1.0)) return {};  // glTF's default: left out
+  std::vector<double> out;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) out.push_back(t[c][r]);
+  return out;
+}
+
+// An instance's node (two when its matrix is not translation * rotation *
+// scale); returns the outer one's index.
+int add_instance_node(tinygltf::Model& m, const GltfInstanceData& in, const std::string& name, int mesh) {
+  tinygltf::Node node;
+  node.name = name;
+  node.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(in.tag)}});
+  if (is_trs(in.transform)) {
+    node.matrix = matrix_values(in.transform);
+    node.mesh = mesh;
+    return add_node(m, std::move(node));
+  }
+  const TrsSplit split = split_trs(in.transform);
+  tinygltf::Node inner;
+  inner.name = name;
+  inner.matrix = matrix_values(split.inner);
+  inner.mesh = mesh;
+  node.matrix = matrix_values(split.outer);
+  node.children = {add_node(m, std::move(inner))};
+  return add_node(m, std::move(node));
+}
+
+void check_instances(const std::filesystem::path& path, const GltfMeshData& building,
+                     const std::vector<int>& prototype_meshes) {
+  for (std::size_t i = 0; i < building.instances.size(); ++i) {
+    const GltfInstanceData& in = building.instances[i];
+    const std::string where = "cannot write '" + path.string() + "': instance " + std::to_string(i) + " of building '" +
+                              building.building + "'";
+    if (in.prototype >= prototype_meshes.size())
+      throw IoError(where + " names placed mesh " + std::to_string(in.prototype) + " but there are " +
+                        std::to_string(prototype_meshes.size()),
+                    path.string());
+    if (prototype_meshes[in.prototype] < 0)
+      throw IoError(where + " places a mesh without triangles", path.string());
+    if (const std::string problem = transform_problem(in.transform); !problem.empty())
+      throw IoError(where + " has " + problem, path.string());
+  }
+}
+
+tinygltf::Model to_model(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
+                         const std::vector<GltfMeshData>& prototypes) {
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = "procex";
-  const Layout layout = layout_of(meshes);
+  const Layout layout = layout_of(meshes, prototypes);
   m.scenes.emplace_back();
   m.defaultScene = 0;
-  if (layout.end == 0) return m;
+  if (layout.end == 0) {  // no triangles anywhere: any instance names a mesh without any
+    for (const GltfMeshData& data : meshes) check_instances(path, data, std::vector<int>(prototypes.size(), -1));
+    return m;
+  }
   tinygltf::Buffer& buffer = m.buffers.emplace_back();
   buffer.data.resize(layout.end);
-  const std::size_t starts[3] = {layout.positions, layout.normals, layout.indices};
+  Writing w{m, {layout.positions, layout.normals, layout.indices}, {layout.positions, layout.normals, layout.indices}, {}};
   const std::size_t ends[3] = {layout.normals, layout.indices, layout.end};
   for (int v = 0; v < 3; ++v) {
     tinygltf::BufferView& view = m.bufferViews.emplace_back();
     view.buffer = 0;
-    view.byteOffset = starts[v];
-    view.byteLength = ends[v] - starts[v];
+    view.byteOffset = w.starts[v];
+    view.byteLength = ends[v] - w.starts[v];
     view.target = v < 2 ? TINYGLTF_TARGET_ARRAY_BUFFER : TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
     if (v < 2) view.byteStride = 3 * sizeof(float);  // required once several accessors share a vertex view
   }
-  std::size_t at[3] = {starts[0], starts[1], starts[2]};
-  std::map<std::string, int> materials;
+  // Placed meshes first, so instance nodes know their mesh.
+  std::vector<int> prototype_meshes;
+  for (const GltfMeshData& p : prototypes) {
+    const int mesh = prototype_meshes.emplace_back(add_mesh(w, p, p.building));
+    if (mesh >= 0) m.meshes[static_cast<std::size_t>(mesh)].extras = tinygltf::Value(tinygltf::Value::Object{{"placed", tinygltf::Value(p.building)}});
+  }
   for (const GltfMeshData& data : meshes) {
-    tinygltf::Mesh mesh;
-    mesh.name = data.building;
-    for (const GltfPrimitiveData& p : data.primitives) {
-      if (p.indices.empty()) continue;
-      auto [it, added] = materials.try_emplace(p.tag, static_cast<int>(materials.size()));
-      if (added) add_material(m, p.tag);
-      tinygltf::Primitive& prim = mesh.primitives.emplace_back();
-      prim.mode = TINYGLTF_MODE_TRIANGLES;
-      prim.material = it->second;
-      prim.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(p.tag)}});
-      const std::size_t n = p.positions.size() / 3;
-      const int pos = add_accessor(m, 0, at[0] - starts[0], kFloat, TINYGLTF_TYPE_VEC3, n);
-      std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
-      for (std::size_t i = 0; i < p.positions.size(); ++i) {
-        lo[i % 3] = std::min<double>(lo[i % 3], p.positions[i]);
-        hi[i % 3] = std::max<double>(hi[i % 3], p.positions[i]);
-      }
-      m.accessors[static_cast<std::size_t>(pos)].minValues = std::move(lo);
-      m.accessors[static_cast<std::size_t>(pos)].maxValues = std::move(hi);
-      prim.attributes["POSITION"] = pos;
-      prim.attributes["NORMAL"] = add_accessor(m, 1, at[1] - starts[1], kFloat, TINYGLTF_TYPE_VEC3, n);
-      prim.indices = add_accessor(m, 2, at[2] - starts[2], kUint, TINYGLTF_TYPE_SCALAR, p.indices.size());
-      at[0] = append(buffer.data, at[0], p.positions);
-      at[1] = append(buffer.data, at[1], p.normals);
-      at[2] = append(buffer.data, at[2], p.indices);
-    }
-    if (mesh.primitives.empty()) continue;  // glTF meshes need a primitive
-    m.meshes.push_back(std::move(mesh));
-    tinygltf::Node& node = m.nodes.emplace_back();
+    check_instances(path, data, prototype_meshes);
+    const int mesh = add_mesh(w, data, data.building);
+    if (mesh < 0 && data.instances.empty()) continue;
+    tinygltf::Node node;
     node.name = data.building;
-    node.mesh = static_cast<int>(m.meshes.size() - 1);
+    node.mesh = mesh;
     node.extras = tinygltf::Value(tinygltf::Value::Object{{"building", tinygltf::Value(data.building)},
                                                           {"feature", tinygltf::Value(static_cast<int>(data.feature))}});
-    m.scenes[0].nodes.push_back(static_cast<int>(m.nodes.size() - 1));
+    for (const GltfInstanceData& in : data.instances)
+      node.children.push_back(add_instance_node(m, in, prototypes[in.prototype].building, prototype_meshes[in.prototype]));
+    m.scenes[0].nodes.push_back(add_node(m, std::move(node)));
   }
   return m;
 }
@@ -148,6 +230,45 @@ std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component,
   std::vector<T> out(a.count * per);
   std::memcpy(out.data(), data.data() + v.byteOffset + a.byteOffset, bytes);
   return out;
+}
+
+const tinygltf::Node& node_at(const tinygltf::Model& m, int index, const std::filesystem::path& path) {
+  if (index < 0 || static_cast<std::size_t>(index) >= m.nodes.size()) bad(path, "node " + std::to_string(index) + " is missing");
+  return m.nodes[static_cast<std::size_t>(index)];
+}
+
+glm::dmat4 node_matrix(const tinygltf::Node& node, int index, const std::filesystem::path& path) {
+  if (!node.translation.empty() || !node.rotation.empty() || !node.scale.empty())
+    bad(path, "node " + std::to_string(index) + " has translation, rotation or scale instead of a matrix");
+  glm::dmat4 t(1.0);
+  if (node.matrix.empty()) return t;
+  if (node.matrix.size() != 16) bad(path, "node " + std::to_string(index) + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers");
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) t[c][r] = node.matrix[static_cast<std::size_t>(4 * c + r)];
+  return t;
+}
+
+std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mesh, const std::filesystem::path& path) {
+  if (mesh < 0 || static_cast<std::size_t>(mesh) >= m.meshes.size()) bad(path, "mesh " + std::to_string(mesh) + " is missing");
+  std::vector<GltfPrimitiveData> out;
+  for (const tinygltf::Primitive& p : m.meshes[static_cast<std::size_t>(mesh)].primitives) {
+    GltfPrimitiveData& prim = out.emplace_back();
+    if (p.extras.Has("tag")) prim.tag = p.extras.Get("tag").Get<std::string>();
+    const auto pos = p.attributes.find("POSITION"), nor = p.attributes.find("NORMAL");
+    if (pos == p.attributes.end() || nor == p.attributes.end()) bad(path, "a primitive lacks POSITION or NORMAL");
+    prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
+    prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
+    prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
+  }
+  return out;
+}
+
+void write_model(const std::filesystem::path& path, const tinygltf::Model& model) {
+  std::ostringstream bytes;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/false, /*writeBinary=*/true))
+    throw IoError("cannot encode '" + path.string() + "' as glTF", path.string());
+  write_file_atomically(path, std::move(bytes).str());
 }
 
 }  // namespace
@@ -207,16 +328,15 @@ GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
   return out;
 }
 
-void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
-  const tinygltf::Model model = to_model(meshes);
-  std::ostringstream bytes;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/false, /*writeBinary=*/true))
-    throw IoError("cannot encode '" + path.string() + "' as glTF", path.string());
-  write_file_atomically(path, std::move(bytes).str());
+void write_glb(const std::filesystem::path& path, const GltfScene& scene) {
+  write_model(path, to_model(path, scene.meshes, scene.prototypes));
 }
 
-std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
+void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
+  write_model(path, to_model(path, meshes, {}));
+}
+
+GltfScene read_glb_scene(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw IoError("cannot open '" + path.string() + "'", path.string());
   std::string bytes(static_cast<std::size_t>(in.tellg()), '\0');
@@ -229,26 +349,50 @@ std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
   if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                    static_cast<unsigned int>(bytes.size())))
     throw IoError("cannot read '" + path.string() + "' as glTF binary: " + err, path.string());
-  std::vector<GltfMeshData> out;
+  GltfScene out;
+  // Placed meshes carry their name in extras; the others are buildings'.
+  std::map<int, std::size_t> prototype_of_mesh;
+  for (std::size_t i = 0; i < m.meshes.size(); ++i) {
+    if (!m.meshes[i].extras.Has("placed")) continue;
+    prototype_of_mesh[static_cast<int>(i)] = out.prototypes.size();
+    GltfMeshData& p = out.prototypes.emplace_back();
+    p.building = m.meshes[i].extras.Get("placed").Get<std::string>();
+    p.primitives = read_primitives(m, static_cast<int>(i), path);
+  }
   if (m.scenes.empty()) return out;
   for (int ni : m.scenes[0].nodes) {
-    if (ni < 0 || static_cast<std::size_t>(ni) >= m.nodes.size()) bad(path, "scene names missing node " + std::to_string(ni));
-    const tinygltf::Node& node = m.nodes[static_cast<std::size_t>(ni)];
-    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= m.meshes.size()) bad(path, "node " + std::to_string(ni) + " has no mesh");
-    GltfMeshData& data = out.emplace_back();
+    const tinygltf::Node& node = node_at(m, ni, path);
+    if (node.mesh < 0 && node.children.empty()) bad(path, "node " + std::to_string(ni) + " has no mesh");
+    GltfMeshData& data = out.meshes.emplace_back();
     if (node.extras.Has("building")) data.building = node.extras.Get("building").Get<std::string>();
     if (node.extras.Has("feature")) data.feature = node.extras.Get("feature").GetNumberAsInt();
-    for (const tinygltf::Primitive& p : m.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
-      GltfPrimitiveData& prim = data.primitives.emplace_back();
-      if (p.extras.Has("tag")) prim.tag = p.extras.Get("tag").Get<std::string>();
-      const auto pos = p.attributes.find("POSITION"), nor = p.attributes.find("NORMAL");
-      if (pos == p.attributes.end() || nor == p.attributes.end()) bad(path, "a primitive lacks POSITION or NORMAL");
-      prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
-      prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
-      prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
+    if (node.mesh >= 0) data.primitives = read_primitives(m, node.mesh, path);
+    for (int ci : node.children) {
+      GltfInstanceData& instance = data.instances.emplace_back();
+      const tinygltf::Node* at = &node_at(m, ci, path);
+      if (at->extras.Has("tag")) instance.tag = at->extras.Get("tag").Get<std::string>();
+      instance.transform = node_matrix(*at, ci, path);
+      while (at->mesh < 0) {  // the inner node of a split matrix
+        if (at->children.size() != 1) bad(path, "instance node " + std::to_string(ci) + " leads to no mesh");
+        const int next = at->children[0];
+        at = &node_at(m, next, path);
+        instance.transform = instance.transform * node_matrix(*at, next, path);
+      }
+      const auto it = prototype_of_mesh.find(at->mesh);
+      if (it == prototype_of_mesh.end()) bad(path, "instance node " + std::to_string(ci) + " shows a mesh that is not a placed mesh");
+      instance.prototype = it->second;
     }
   }
   return out;
+}
+
+std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
+  GltfScene scene = read_glb_scene(path);
+  if (!scene.prototypes.empty())
+    throw IoError("'" + path.string() + "' holds placed meshes (" + std::to_string(scene.prototypes.size()) +
+                      "), which need read_glb_scene",
+                  path.string());
+  return std::move(scene.meshes);
 }
 
 }  // namespace procex

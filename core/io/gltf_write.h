@@ -2,6 +2,11 @@
 // building, one primitive per face tag (triangles, flat normals), the tag in the
 // primitive's extras and material name, the building id (and the feature's
 // position in its source file, for merging shards) in the node's extras.
+// Placed meshes (windows, pillars: core/placement) are instanced: one glTF
+// mesh per distinct placed mesh (its name in the mesh's extras as "placed"),
+// one child node of its building's node per instance, holding the instance's
+// matrix (a shear, which a glTF matrix cannot hold, as two nodes: see
+// core/placement/trs_split.h) and its tag in extras.
 // Reading back what was written gives the same data, so shards merge into
 // the same bytes an unsharded run writes.
 #pragma once
@@ -12,6 +17,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include <glm/mat4x4.hpp>
 
 #include "core/mesh/mesh.h"
 
@@ -34,10 +41,26 @@ struct GltfPrimitiveData {
   std::vector<std::uint32_t> indices;
 };
 
+// One placement of a placed mesh.
+struct GltfInstanceData {
+  std::size_t prototype = 0;   // index into GltfScene::prototypes
+  glm::dmat4 transform{1.0};   // the placed mesh's own coordinates to the world
+  std::string tag;             // the instance's tag ("" if none)
+};
+
 struct GltfMeshData {
   std::string building;
   std::int64_t feature = -1;
   std::vector<GltfPrimitiveData> primitives;  // in order of first use of the tag
+  std::vector<GltfInstanceData> instances;    // the meshes placed on this building
+};
+
+// A whole file: the buildings, and the distinct placed meshes their
+// instances name (for those, `building` holds the placed mesh's name and
+// feature and instances are unused).
+struct GltfScene {
+  std::vector<GltfMeshData> meshes;
+  std::vector<GltfMeshData> prototypes;
 };
 
 // Display colour (linear RGB) of a face tag: fixed for the usual tags, a grey
@@ -50,10 +73,15 @@ GltfMeshData to_gltf_mesh(const TaggedMeshView& view);
 // meshes): faces join the primitive of their tag, made if missing.
 void append_to_gltf_mesh(GltfMeshData& mesh, const TaggedMeshView& view);
 
-// Writes a .glb atomically. Throws IoError naming the file on failure.
+// Writes a .glb atomically. Throws IoError naming the file on failure, and
+// naming the building and instance if an instance's prototype is missing or
+// has no triangles, or its transform is not finite, affine and invertible.
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes);
+void write_glb(const std::filesystem::path& path, const GltfScene& scene);
 // Reads a .glb written by write_glb. Throws IoError naming the file and what
-// is not as write_glb writes it.
+// is not as write_glb writes it; read_glb also if the file holds placed-mesh
+// instances (they need read_glb_scene's prototypes).
 std::vector<GltfMeshData> read_glb(const std::filesystem::path& path);
+GltfScene read_glb_scene(const std::filesystem::path& path);
 
 }  // namespace procex

@@ -33,22 +33,27 @@ std::size_t PlacementResult::add_instance(Instance instance) {
   return instances.size() - 1;
 }
 
+std::string transform_problem(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return "a non-finite transform";
+  if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
+    return "a projective transform: its last row must be 0 0 0 1";
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c) largest = std::max(largest, glm::length(glm::dvec3(m[c])));
+  if (!(std::abs(linear_determinant(m)) > kSingularDeterminantRelative * largest * largest * largest))
+    return "a singular transform: it would collapse the mesh";
+  return {};
+}
+
 void check_instance(const PlacementResult& result, std::size_t index) {
   const Instance& in = result.instances.at(index);
   const std::string name = "instance " + std::to_string(index);
   if (in.mesh >= result.meshes.size() || !result.meshes[in.mesh].mesh)
     throw PlacementError(name + " names mesh " + std::to_string(in.mesh) + " but there are " +
                          std::to_string(result.meshes.size()));
-  const glm::dmat4& m = in.transform;
-  double largest = 0.0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a non-finite transform");
-  if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
-    throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a projective transform: its last row must be 0 0 0 1");
-  for (int c = 0; c < 3; ++c) largest = std::max(largest, glm::length(glm::dvec3(m[c])));
-  if (!(std::abs(linear_determinant(m)) > kSingularDeterminantRelative * largest * largest * largest))
-    throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has a singular transform: it would collapse the mesh");
+  if (const std::string problem = transform_problem(in.transform); !problem.empty())
+    throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has " + problem);
 }
 
 Mesh flatten(const PlacementResult& result) {

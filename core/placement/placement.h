@@ -44,9 +44,12 @@ struct PlacementResult {
   std::size_t add_instance(Instance instance);
 };
 
+// Why a transform cannot place a mesh, "" if it can: it is not finite, not
+// affine (last row 0 0 0 1), or singular (it would collapse the mesh).
+std::string transform_problem(const glm::dmat4& transform);
+
 // Throws PlacementError naming instance `index` if its mesh index is out of
-// range or its transform is not finite, not affine (last row 0 0 0 1), or
-// singular (it would collapse the mesh).
+// range or transform_problem finds one.
 void check_instance(const PlacementResult& result, std::size_t index);
 
 // det of the transform's 3x3 part: negative for a mirroring placement.

@@ -1,0 +1,52 @@
+#include "core/placement/placement_gltf.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace procex {
+namespace {
+
+// A mesh's face tags as TaggedMeshView wants them: an index per face into
+// the distinct tags; faces without a tag get `fallback`.
+struct FaceTags {
+  std::vector<std::uint32_t> of_face;
+  std::vector<std::string> names;
+};
+
+FaceTags face_tags(const Mesh& mesh, const std::string& fallback) {
+  FaceTags out;
+  const auto prop = face_tag_property(mesh);
+  for (const auto f : mesh.faces()) {
+    const std::string& own = prop.is_valid() ? mesh.property(prop, f) : fallback;
+    const std::string& tag = own.empty() ? fallback : own;
+    auto it = std::find(out.names.begin(), out.names.end(), tag);
+    if (it == out.names.end()) it = out.names.insert(out.names.end(), tag);
+    out.of_face.push_back(static_cast<std::uint32_t>(it - out.names.begin()));
+  }
+  return out;
+}
+
+GltfMeshData gltf_mesh(const Mesh& mesh, const std::string& name, const std::string& fallback_tag,
+                       std::int64_t feature) {
+  const FaceTags tags = face_tags(mesh, fallback_tag);
+  return to_gltf_mesh({&mesh, tags.of_face, tags.names, name, feature});
+}
+
+}  // namespace
+
+void GltfSceneBuilder::add(const PlacementResult& result, const std::string& building, std::int64_t feature) {
+  for (std::size_t i = 0; i < result.instances.size(); ++i) check_instance(result, i);
+  GltfMeshData data;
+  if (result.building) data = gltf_mesh(*result.building, building, "", feature);
+  data.building = building;
+  data.feature = feature;
+  for (const Instance& in : result.instances) {
+    const PlaceableMesh& placed = result.meshes[in.mesh];
+    auto [it, added] = prototype_of_.try_emplace(placed.mesh, scene_.prototypes.size());
+    if (added) scene_.prototypes.push_back(gltf_mesh(*placed.mesh, placed.name, placed.name, -1));
+    data.instances.push_back({it->second, in.transform, in.tag});
+  }
+  scene_.meshes.push_back(std::move(data));
+}
+
+}  // namespace procex

@@ -1,0 +1,31 @@
+// Placement results into a glTF scene (core/io/gltf_write.h): the building as
+// one mesh, each distinct placed mesh once as a prototype shared by every
+// building added to the same builder, each instance as a node with its matrix.
+// A prototype's primitives follow its faces' own tags (the mesh's name for
+// faces without one); an instance's own tag goes into its node's extras.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/io/gltf_write.h"
+#include "core/placement/placement.h"
+
+namespace procex {
+
+class GltfSceneBuilder {
+ public:
+  // Adds one building. Throws PlacementError (check_instance) for a bad instance.
+  void add(const PlacementResult& result, const std::string& building, std::int64_t feature = -1);
+  const GltfScene& scene() const { return scene_; }
+
+ private:
+  GltfScene scene_;
+  // Placed meshes already in scene_.prototypes, held so no other mesh can
+  // come to live at the same address.
+  std::map<std::shared_ptr<const Mesh>, std::size_t> prototype_of_;
+};
+
+}  // namespace procex

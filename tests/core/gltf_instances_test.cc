@@ -1,0 +1,175 @@
+// Placed meshes in .glb files: one glTF mesh per distinct placed mesh, one
+// node per instance with its matrix; the file passes the Khronos validator
+// and reads back to the same instances.
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/io/gltf_write.h"
+#include "core/io/io_error.h"
+#include "core/io/mesh_read.h"
+#include "core/placement/frame_transform.h"
+#include "core/placement/placement_gltf.h"
+#include "core/placement/stretch.h"
+#include "tests/core/mesh_fixtures.h"
+#include "tests/support/gltf_scripts.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::shared_ptr<const Mesh> read(const std::string& name) {
+  return std::make_shared<const Mesh>(read_mesh_file(fs::path(PROCEX_TEST_DATA) / name));
+}
+
+class GltfInstances : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("procex_gltf_instances_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Two buildings sharing a window and a pillar: windows on the front wall
+  // (rotation and translation), one pillar mirrored, one leaning (a shear).
+  GltfScene street() {
+    window_ = read("mesh_window_frame.obj");
+    pillar_ = read("mesh_pillar.obj");
+    GltfSceneBuilder builder;
+    for (int b = 0; b < 2; ++b) {
+      PlacementResult r;
+      const double x0 = 20.0 * b;
+      r.building = std::make_shared<const Mesh>(build_mesh(test::box({x0, 0, 0}, {x0 + 10, 6, 4})));
+      const std::size_t w = r.add_mesh({"window", window_});
+      const std::size_t p = r.add_mesh({"pillar", pillar_});
+      Frame front;  // along +x, up +z, normal -y
+      for (double x : {2.5, 7.5}) {
+        front.origin = {x0 + x, 0, 1};
+        r.add_instance({w, place_at(front), "", 0});
+      }
+      front.origin = {x0 - 1, 0, 0};
+      FramePlacement mirrored;
+      mirrored.scale = {-1, 1, 1};
+      r.add_instance({p, place_at(front, mirrored), "column", -1});
+      const Box3 box = bounds(*pillar_);
+      r.add_instance({p, stretch_between(box, front, {x0 + 11, 0, 0}, {x0 + 12, 0, 4}), "", -1});
+      builder.add(r, "b" + std::to_string(b), b);
+    }
+    return builder.scene();
+  }
+
+  fs::path dir_;
+  std::shared_ptr<const Mesh> window_, pillar_;
+};
+
+TEST_F(GltfInstances, OneMeshPerPlacedMeshOneNodePerInstance) {
+  const GltfScene scene = street();
+  ASSERT_EQ(scene.prototypes.size(), 2u);
+  EXPECT_EQ(scene.prototypes[0].building, "window");
+  EXPECT_EQ(scene.prototypes[1].building, "pillar");
+  EXPECT_EQ(scene.prototypes[1].primitives.at(0).tag, "stone");  // its own usemtl tag
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  EXPECT_EQ(scene.meshes[1].instances.size(), 4u);
+  EXPECT_EQ(scene.meshes[1].instances[2].prototype, 1u);
+  EXPECT_EQ(scene.meshes[1].instances[2].tag, "column");
+}
+
+TEST_F(GltfInstances, RoundTripKeepsEveryInstance) {
+  const GltfScene scene = street();
+  const fs::path file = dir_ / "street.glb";
+  write_glb(file, scene);
+  const GltfScene back = read_glb_scene(file);
+  ASSERT_EQ(back.prototypes.size(), 2u);
+  ASSERT_EQ(back.meshes.size(), 2u);
+  for (std::size_t p = 0; p < 2; ++p) {
+    EXPECT_EQ(back.prototypes[p].building, scene.prototypes[p].building);
+    ASSERT_EQ(back.prototypes[p].primitives.size(), scene.prototypes[p].primitives.size());
+    EXPECT_EQ(back.prototypes[p].primitives[0].positions, scene.prototypes[p].primitives[0].positions);
+  }
+  for (std::size_t b = 0; b < 2; ++b) {
+    EXPECT_EQ(back.meshes[b].building, scene.meshes[b].building);
+    EXPECT_EQ(back.meshes[b].feature, scene.meshes[b].feature);
+    ASSERT_EQ(back.meshes[b].instances.size(), scene.meshes[b].instances.size());
+    for (std::size_t i = 0; i < scene.meshes[b].instances.size(); ++i) {
+      const GltfInstanceData &want = scene.meshes[b].instances[i], &got = back.meshes[b].instances[i];
+      EXPECT_EQ(got.prototype, want.prototype);
+      EXPECT_EQ(got.tag, want.tag);
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(got.transform[c][r], want.transform[c][r], 1e-12) << b << " " << i;
+    }
+  }
+  // Files without placed meshes read as before; with them, read_glb says why not.
+  EXPECT_THROW(read_glb(file), IoError);
+}
+
+TEST_F(GltfInstances, PassesTheKhronosValidator) {
+  const fs::path file = dir_ / "street.glb";
+  write_glb(file, street());
+  const test::NodeScriptRun v = test::run_gltf_script("validate_gltf.mjs", file);
+  if (v.node_missing) GTEST_SKIP() << v.problem;
+  ASSERT_TRUE(v.problem.empty()) << v.problem;
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_EQ(v.report["issues"]["numErrors"], 0) << v.report["issues"]["messages"].dump(1);
+  EXPECT_EQ(v.report["issues"]["numWarnings"], 0) << v.report["issues"]["messages"].dump(1);
+  // The validator counts each mesh once: 2 buildings (12 triangles each), the
+  // window (32) and the pillar (12), though they are placed 4 times each.
+  EXPECT_EQ(v.report["info"]["totalTriangleCount"].get<int>(), 2 * 12 + 32 + 12);
+}
+
+// What a viewer shows: three.js applies the node matrices (decomposing each
+// into translation, rotation and scale, so a shear written as one matrix
+// would be lost) and every placed mesh lands where flatten() puts it.
+TEST_F(GltfInstances, ThreeJsPlacesEveryInstanceWhereFlattenDoes) {
+  const GltfScene scene = street();
+  const fs::path file = dir_ / "street.glb";
+  write_glb(file, scene);
+  const test::NodeScriptRun v = test::run_gltf_script("world_bounds_three.mjs", file);
+  if (v.node_missing) GTEST_SKIP() << v.problem;
+  ASSERT_TRUE(v.problem.empty()) << v.problem;
+  ASSERT_EQ(v.exit_code, 0);
+  using Bounds = std::array<double, 6>;
+  std::vector<Bounds> want, got;
+  for (const GltfMeshData& building : scene.meshes)
+    for (const GltfInstanceData& in : building.instances) {
+      PlacementResult one;
+      one.add_instance({one.add_mesh({"", in.prototype == 0 ? window_ : pillar_}), in.transform, "", -1});
+      const Box3 b = bounds(flatten(one));
+      want.push_back({b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z});
+    }
+  for (const auto& m : v.report["meshes"]) {
+    if (m["tag"] != "frame" && m["tag"] != "stone") continue;  // the buildings' own faces
+    got.push_back({m["min"][0], m["min"][1], m["min"][2], m["max"][0], m["max"][1], m["max"][2]});
+  }
+  std::sort(want.begin(), want.end());
+  std::sort(got.begin(), got.end());
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i)
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(got[i][static_cast<std::size_t>(k)], want[i][static_cast<std::size_t>(k)], 1e-4) << i << " " << k;
+}
+
+TEST_F(GltfInstances, BadInstancesAreRefusedByTheWriter) {
+  GltfScene scene = street();
+  scene.meshes[0].instances[1].prototype = 7;
+  try {
+    write_glb(dir_ / "bad.glb", scene);
+    FAIL() << "an instance of a missing placed mesh was written";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("instance 1 of building 'b0' names placed mesh 7"), std::string::npos) << e.what();
+  }
+  scene = street();
+  scene.meshes[1].instances[0].transform[1] = glm::dvec4(0.0);
+  EXPECT_THROW(write_glb(dir_ / "bad.glb", scene), IoError);
+  EXPECT_FALSE(fs::exists(dir_ / "bad.glb"));
+}
+
+}  // namespace
+}  // namespace procex
