@@ -55,15 +55,17 @@ Value vary_param(const ParamDecl& p) {
       if (c != v->choice) return Value::make(EnumValue{c});
     return {};
   }
-  // Other types through their JSON form: lists lose their last item, or repeat their first.
+  // Other types through their JSON form: lists lose their last item, or (when
+  // they set a port count, so that connected ports stay) repeat their first.
   if (p.type->has_json()) {
     nlohmann::json j;
     p.type->to_json(d.raw(), j);
     if (j.is_array() && !j.empty()) {
-      nlohmann::json shorter = j;
-      shorter.erase(shorter.size() - 1);
+      nlohmann::json other = j;
+      if (p.sets_port_count) other.push_back(j.front());
+      else other.erase(other.size() - 1);
       try {
-        return p.type->from_json(shorter);
+        return p.type->from_json(other);
       } catch (const std::invalid_argument&) {
         return {};
       }

@@ -37,7 +37,7 @@ Result<NodeId> Graph::add_node(std::shared_ptr<const NodeType> type, NodeId id) 
   Node n;
   n.id = id;
   n.params = type->decl.default_params();
-  n.type = std::move(type);
+  n.type = with_port_counts(type, n.params);  // a variant given: back to the declared counts
   nodes_.emplace(id, std::move(n));
   next_id_ = std::max(next_id_, id + 1);
   return id;
@@ -85,8 +85,34 @@ Status Graph::set_param(NodeId id, std::size_t param, Value v) {
   if (it == nodes_.end()) return Status::error("no node " + std::to_string(id));
   Node& n = it->second;
   if (param >= n.params.size()) return Status::error("node " + std::to_string(id) + " has no parameter #" + std::to_string(param));
-  if (Status s = n.decl().params()[param].check(v); !s) return s;
+  const ParamDecl& decl = n.decl().params()[param];
+  if (Status s = decl.check(v); !s) return s;
+  if (decl.sets_port_count) {
+    std::vector<Value> params = n.params;
+    params[param] = v;
+    std::shared_ptr<const NodeType> variant = with_port_counts(n.type, params);
+    if (Status s = ports_kept(id, variant->decl, decl.name, port_count_of(v)); !s) return s;
+    n.type = std::move(variant);
+  }
   n.params[param] = std::move(v);
+  return Status::ok();
+}
+
+Status Graph::ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count) const {
+  const NodeDecl& now = node(id)->decl();
+  auto refuse = [&](const char* what, const std::string& port) {
+    return Status::error("node " + std::to_string(id) + " (" + now.type_name() + "): " + q(param) + " = " +
+                         std::to_string(count) + " would remove " + what + " " + q(port) +
+                         ", which is connected; disconnect it first");
+  };
+  auto same = [](const std::vector<PortDecl>& a, const std::vector<PortDecl>& b, std::uint32_t i) {
+    return i < b.size() && a[i].name == b[i].name && a[i].type == b[i].type;
+  };
+  for (const auto& [to, from] : links_) {
+    if (to.node == id && !same(now.inputs(), next.inputs(), to.port)) return refuse("input", now.inputs()[to.port].name);
+    if (from.node == id && !same(now.outputs(), next.outputs(), from.port))
+      return refuse("output", now.outputs()[from.port].name);
+  }
   return Status::ok();
 }
 
@@ -258,6 +284,9 @@ Status Graph::expose_param(ExposedParam p) {
   if (p.param >= n->params.size())
     return Status::error("exposed parameter " + q(p.name) + ": node " + std::to_string(p.node) + " has no parameter #" +
                          std::to_string(p.param));
+  if (n->decl().params()[p.param].sets_port_count)
+    return Status::error("exposed parameter " + q(p.name) + ": " + q(n->decl().params()[p.param].name) + " of node " +
+                         std::to_string(p.node) + " sets its number of ports, which a group's users cannot change");
   exposed_.push_back(std::move(p));
   return Status::ok();
 }

@@ -170,6 +170,9 @@ class Graph {
 
  private:
   bool reaches(NodeId from, NodeId to) const;  // is `to` downstream of (or equal to) `from`?
+  // Ok if every connected port of node `id` is still there, same name and
+  // type, in `next` (its declaration once `param` asks for `count` ports).
+  Status ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count) const;
 
   std::map<NodeId, Node> nodes_;
   std::map<PortRef, PortRef> links_;

@@ -51,6 +51,9 @@ Status ParamDecl::check(const Value& v) const {
                            (min ? format_number(*min) : "-inf") + ", " + (max ? format_number(*max) : "inf") + "]");
     }
   }
+  if (sets_port_count && port_count_of(v) > kMaxPortCount)
+    return Status::error("parameter '" + name + "' asks for " + std::to_string(port_count_of(v)) +
+                         " ports; at most " + std::to_string(kMaxPortCount));
   if (!choices.empty()) {
     const std::string& c = v.get<EnumValue>().choice;
     if (std::find(choices.begin(), choices.end(), c) == choices.end()) {
@@ -60,6 +63,12 @@ Status ParamDecl::check(const Value& v) const {
     }
   }
   return Status::ok();
+}
+
+std::size_t port_count_of(const Value& v) {
+  if (const auto* list = v.get_if<std::vector<std::string>>()) return list->size();
+  const std::int64_t n = v.get<std::int64_t>();
+  return n < 0 ? 0 : static_cast<std::size_t>(n);
 }
 
 PortBuilder& PortBuilder::doc(std::string text) {
@@ -90,6 +99,10 @@ ParamBuilder& ParamBuilder::unit(std::string u) {
 }
 ParamBuilder& ParamBuilder::doc(std::string text) {
   p().doc = std::move(text);
+  return *this;
+}
+ParamBuilder& ParamBuilder::sets_port_count() {
+  p().sets_port_count = true;
   return *this;
 }
 
@@ -131,6 +144,13 @@ std::vector<Value> NodeDecl::default_params() const {
   return out;
 }
 
+std::size_t NodeDecl::count_of(std::string_view name) const {
+  const auto i = param_index(name);
+  assert(i && params_[*i].sets_port_count && "count_of: declare the parameter first, with .sets_port_count()");
+  if (auto it = counts_.find(name); it != counts_.end()) return it->second;
+  return port_count_of(params_[*i].default_value);
+}
+
 Status NodeDecl::validate() const {
   const std::string who = "node type '" + type_name_ + "': ";
   if (type_name_.empty()) return Status::error("node type without a name");
@@ -157,6 +177,11 @@ Status NodeDecl::validate() const {
     if ((p.min || p.max) && !is_number_type(p.type))
       return Status::error(who + "parameter '" + p.name + "' has a range but is not a number");
     if (Status s = p.check(p.default_value); !s) return Status::error(who + "default: " + s.message());
+    if (p.sets_port_count && !(p.type == &value_type<std::vector<std::string>>() ||
+                               (p.type == &value_type<std::int64_t>() && p.min && *p.min >= 0 && p.max &&
+                                *p.max <= static_cast<double>(kMaxPortCount))))
+      return Status::error(who + "parameter '" + p.name + "' sets a port count: make it a list<string>, or an int "
+                                 "with a range within 0.." + std::to_string(kMaxPortCount));
   }
   return Status::ok();
 }
@@ -186,7 +211,7 @@ std::string NodeDecl::markdown() const {
         range = (p.min ? format_number(*p.min) : "") + " .. " + (p.max ? format_number(*p.max) : "");
       for (const std::string& c : p.choices) range += (range.empty() ? "" : ", ") + c;
       md << "| `" << p.name << "` | " << p.type->name() << " | `" << d.dump() << "` | " << range << " | " << p.unit
-         << " | " << p.doc << " |\n";
+         << " | " << p.doc << (p.sets_port_count ? " (sets the number of ports)" : "") << " |\n";
     }
     md << "\n";
   }

@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,10 +44,18 @@ struct ParamDecl {
   std::string unit;                // "m", "deg", ... for docs and the editor
   std::string doc;
   std::vector<std::string> choices;  // enum parameters only
+  bool sets_port_count = false;      // ParamBuilder::sets_port_count
 
   // Ok, or why `v` is not acceptable (wrong type, out of range, unknown choice).
   Status check(const Value& v) const;
 };
+
+// Most ports a parameter that sets a port count may ask for.
+inline constexpr std::size_t kMaxPortCount = 64;
+
+// The port count a value of a port-count parameter asks for: an int's value,
+// a list<string>'s length.
+std::size_t port_count_of(const Value& v);
 
 // Chained setters for the port just declared.
 class PortBuilder {
@@ -75,6 +84,13 @@ class ParamBuilder {
   ParamBuilder& max(double v);
   ParamBuilder& unit(std::string u);
   ParamBuilder& doc(std::string text);
+  // Variadic ports: this parameter (an int with a range within 0..kMaxPortCount,
+  // or a list<string>, by its length) decides how many ports the node has. The
+  // declare function reads it with NodeDecl::count_of and declares that many;
+  // each node gets the declaration for its own value (with_port_counts in
+  // registry.h), so ports, links, files and the editor all follow it. Only
+  // ports may depend on it, never parameters; it cannot be exposed.
+  ParamBuilder& sets_port_count();
   std::size_t index() const { return index_; }
 
  private:
@@ -173,6 +189,14 @@ class NodeDecl {
   // The default value of every parameter, in declaration order.
   std::vector<Value> default_params() const;
 
+  // For declare functions: the port count that the (already declared)
+  // parameter `name` asks for in the node being declared -- its default when
+  // the type is registered, a node's own value for that node's variant.
+  std::size_t count_of(std::string_view name) const;
+  // Used by with_port_counts before it runs the declare function again:
+  // parameter name -> count.
+  void set_counts(std::map<std::string, std::size_t, std::less<>> counts) { counts_ = std::move(counts); }
+
   // Ok, or the first mistake in the declaration (duplicate or malformed names,
   // missing defaults, defaults outside their range). Checked at registration.
   Status validate() const;
@@ -189,6 +213,7 @@ class NodeDecl {
   PassThroughFn pass_through_ = nullptr;
   UpgradeFn upgrade_ = nullptr;
   HashExtraFn hash_extra_ = nullptr;
+  std::map<std::string, std::size_t, std::less<>> counts_;
 };
 
 // Names of ports, parameters and graph inputs/outputs: [a-z0-9_]+, starting with a letter.

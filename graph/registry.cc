@@ -1,12 +1,14 @@
 #include "graph/registry.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <tuple>
 
 namespace procex {
 
@@ -42,6 +44,7 @@ struct NodeRegistry::Impl {
         std::abort();
       }
       t->evaluate = p.evaluate;
+      t->declare = p.declare;
       t->source_file = p.file;
       t->key = type_key(t->decl);
       types.emplace(name, std::move(t));
@@ -86,6 +89,47 @@ std::vector<std::shared_ptr<const NodeType>> NodeRegistry::all() const {
   std::vector<std::shared_ptr<const NodeType>> out;
   for (const auto& [name, t] : impl_->types) out.push_back(t);
   return out;
+}
+
+std::shared_ptr<const NodeType> with_port_counts(const std::shared_ptr<const NodeType>& type,
+                                                 const std::vector<Value>& params) {
+  const NodeDecl& decl = type->decl;
+  std::map<std::string, std::size_t, std::less<>> counts;
+  std::vector<std::size_t> wanted, own;  // in parameter order
+  for (std::size_t i = 0; i < decl.params().size(); ++i) {
+    const ParamDecl& p = decl.params()[i];
+    if (!p.sets_port_count) continue;
+    counts.emplace(p.name, port_count_of(params.at(i)));
+    wanted.push_back(port_count_of(params.at(i)));
+    own.push_back(decl.count_of(p.name));
+  }
+  if (wanted == own) return type;
+  assert(type->declare && "with_port_counts: only registered types have port-count parameters");
+
+  // Every type asked for, by name, version and counts (the registered one
+  // among them, so that returning to its counts gives it back): few, and small.
+  using Key = std::tuple<std::string, int, std::vector<std::size_t>>;
+  static std::mutex mutex;
+  static std::map<Key, std::shared_ptr<const NodeType>> variants;
+  std::lock_guard lock(mutex);
+  variants.try_emplace(Key{decl.type_name(), decl.version(), own}, type);
+  const Key key{decl.type_name(), decl.version(), wanted};
+  if (auto it = variants.find(key); it != variants.end()) return it->second;
+  auto t = std::make_shared<NodeType>(*type);
+  t->decl = NodeDecl(decl.type_name(), decl.version());
+  t->decl.set_counts(std::move(counts));
+  type->declare(t->decl);
+  const bool same_params = t->decl.params().size() == decl.params().size() &&
+                           std::equal(decl.params().begin(), decl.params().end(), t->decl.params().begin(),
+                                      [](const ParamDecl& a, const ParamDecl& b) { return a.name == b.name && a.type == b.type; });
+  if (Status s = t->decl.validate(); !s || !same_params) {
+    std::fprintf(stderr, "procex: node type '%s' (registered in %s): %s\n", decl.type_name().c_str(),
+                 type->source_file.c_str(),
+                 s ? "its parameters depend on a port count; only ports may" : s.message().c_str());
+    std::abort();
+  }
+  variants.emplace(key, t);
+  return t;
 }
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {

@@ -33,6 +33,7 @@ using EvaluateFn = void (*)(EvalContext&);
 struct NodeType {
   NodeDecl decl;
   EvaluateFn evaluate = nullptr;
+  DeclareFn declare = nullptr;        // registered types: run again for port-count variants
   std::shared_ptr<const Graph> body;  // groups only
   std::string source_file;            // registered types: the .cc that registered it
   Hash128 key;                        // hash of (type name, version): start of every node key
@@ -72,6 +73,14 @@ class NodeRegistry {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The type a node of `type` with parameters `params` has: `type` itself when
+// every port-count parameter (ParamBuilder::sets_port_count) asks for the
+// counts its declaration has, else the variant declared for those counts
+// (made once, then shared; same name, version, key and evaluate function).
+// `params` must be complete and checked.
+std::shared_ptr<const NodeType> with_port_counts(const std::shared_ptr<const NodeType>& type,
+                                                 const std::vector<Value>& params);
 
 // Levenshtein distance, case-insensitive (ASCII).
 std::size_t edit_distance(std::string_view a, std::string_view b);

@@ -1,21 +1,34 @@
 // Switch: picks one of several inputs by an attribute's value (a building type).
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "graph/registry.h"
 
 namespace procex {
 namespace {
 
-constexpr std::size_t kCases = 5;
+// Version 1 had five fixed cases, each its own parameter case_1..case_5.
+void upgrade(int saved_version, nlohmann::json& params) {
+  if (saved_version >= 2) return;
+  nlohmann::json cases = nlohmann::json::array();
+  for (int k = 1; k <= 5; ++k) {
+    const std::string name = "case_" + std::to_string(k);
+    cases.push_back(params.contains(name) ? params[name] : nlohmann::json(""));
+    params.erase(name);
+  }
+  params["cases"] = std::move(cases);
+}
 
-// The input `value` chooses: 1..kCases for a matching case, 0 for default.
+// The input `value` chooses: k for the k-th case listing it, 0 (default) for none.
 std::size_t chosen(const std::vector<Value>& params) {
   const std::string& value = params[0].get<std::string>();
-  for (std::size_t k = 1; k <= kCases; ++k) {
-    std::istringstream list(params[k].get<std::string>());
+  const auto& cases = params[1].get<std::vector<std::string>>();
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::istringstream list(cases[k]);
     for (std::string item; std::getline(list, item, ',');) {
       const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
-      if (b != std::string::npos && item.substr(b, e - b + 1) == value) return k;
+      if (b != std::string::npos && item.substr(b, e - b + 1) == value) return k + 1;
     }
   }
   return 0;
@@ -25,28 +38,26 @@ std::optional<std::size_t> pass(const std::vector<Value>& params, std::size_t) {
 
 void declare(NodeDecl& d) {
   d.doc("Hands on one input, chosen by `value` (usually exposed as `building`, so `procex batch` sets it "
-        "from each feature's GeoJSON property of that name). `case_k` lists the values, comma-separated, that "
-        "choose input `case_k`; any other value (or an unconnected case) chooses `default`. Only the chosen "
-        "branch is evaluated.")
+        "from each feature's GeoJSON property of that name). Entry k of `cases` lists the values, comma-separated, "
+        "that choose input `case_k`; any other value (or an unconnected case) chooses `default`. One input per "
+        "entry. Only the chosen branch is evaluated.")
       .category("Flow");
   d.param<std::string>("value").default_value(std::string()).doc("the attribute's value for this building");
-  for (std::size_t k = 1; k <= kCases; ++k)
-    d.param<std::string>("case_" + std::to_string(k)).default_value(std::string())
-        .doc("values choosing input case_" + std::to_string(k) + ", comma-separated");
+  d.param<std::vector<std::string>>("cases").default_value(std::vector<std::string>{"", ""}).sets_port_count()
+      .doc("per case input, the values choosing it, comma-separated");
   d.input<Value>("default");
-  for (std::size_t k = 1; k <= kCases; ++k) d.input<Value>("case_" + std::to_string(k)).optional();
+  for (std::size_t k = 1; k <= d.count_of("cases"); ++k) d.input<Value>("case_" + std::to_string(k)).optional();
   d.output<Value>("out");
   d.pass_through(pass);
+  d.upgrade(upgrade);
 }
 
 // Reached only when the chosen case is not connected: fall back to default.
 void evaluate(EvalContext& ctx) {
-  std::vector<Value> params;
-  for (std::size_t i = 0; i <= kCases; ++i) params.push_back(ctx.param_value(i));
-  const std::size_t k = chosen(params);
+  const std::size_t k = chosen({ctx.param_value(0), ctx.param_value(1)});
   ctx.set_output_value(0, ctx.has_input(k) ? ctx.input_value(k) : ctx.input_value(0));
 }
 
 }  // namespace
-PROCEX_REGISTER_NODE("Switch", 1, declare, evaluate);
+PROCEX_REGISTER_NODE("Switch", 2, declare, evaluate);
 }  // namespace procex

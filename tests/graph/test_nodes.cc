@@ -200,10 +200,32 @@ void reset_evaluations() {
   per_type().clear();
 }
 
+// test.Sum: the sum of its connected terms; `terms` sets how many inputs it has
+// (variadic ports). Version 1 had three fixed terms.
+void upgrade_sum(int saved_version, nlohmann::json& params) {
+  if (saved_version < 2) params["terms"] = 3;
+}
+void declare_sum(NodeDecl& d) {
+  d.doc("Adds its connected terms.").category("Test");
+  d.param<std::int64_t>("terms").default_value<std::int64_t>(2).range(1, 8).sets_port_count().doc("number of inputs");
+  d.param<double>("offset").default_value(0.0).range(-100, 100).doc("added to the sum");
+  for (std::size_t i = 1; i <= d.count_of("terms"); ++i) d.input<double>("term_" + std::to_string(i)).optional();
+  d.output<double>("sum");
+  d.upgrade(upgrade_sum);
+}
+void eval_sum(EvalContext& ctx) {
+  count(ctx);
+  double sum = ctx.param<double>(1);
+  for (std::size_t i = 0; i < ctx.decl().inputs().size(); ++i)
+    if (ctx.has_input(i)) sum += ctx.input<double>(i);
+  ctx.set_output(0, sum);
+}
+
 }  // namespace procex::test
 
 namespace procex::test {
 PROCEX_REGISTER_NODE("test.Const", 1, declare_const, eval_const);
+PROCEX_REGISTER_NODE("test.Sum", 2, declare_sum, eval_sum);
 PROCEX_REGISTER_NODE("test.Add", 2, declare_add, eval_add);
 PROCEX_REGISTER_NODE("test.Mul", 1, declare_mul, eval_mul);
 PROCEX_REGISTER_NODE("test.Fail", 1, declare_fail, eval_fail);

@@ -1,6 +1,7 @@
 // test_nodes.h -- small node types for graph/ tests (and the .pxg fuzzer):
 // arithmetic on floats, a failing node, a pass-through switch, a slow node
-// that polls cancellation, and one node with a parameter of every built-in type.
+// that polls cancellation, a sum with a variadic number of inputs, and one node
+// with a parameter of every built-in type.
 #pragma once
 
 #include <atomic>

@@ -8,6 +8,8 @@
 
 #include "core/io/gltf_write.h"
 #include "core/mesh/validate.h"
+#include "graph/evaluator.h"
+#include "graph/pxg.h"
 #include "nodes/support/profile_presets.h"
 #include "nodes/values.h"
 #include "tests/nodes/node_runner.h"
@@ -132,15 +134,42 @@ TEST(Switch, ChoosesByValue) {
   auto run = [](const std::string& value) {
     const auto r = run_node("Switch",
                             {{"value", Value::make(value)},
-                             {"case_1", Value::make(std::string("church, chapel"))},
-                             {"case_2", Value::make(std::string("garage"))}},
-                            {{"default", Value::make(1.0)}, {"case_1", Value::make(2.0)}});
+                             {"cases", Value::make(std::vector<std::string>{"church, chapel", "garage", "shed", "hut"})}},
+                            {{"default", Value::make(1.0)}, {"case_1", Value::make(2.0)}, {"case_4", Value::make(4.0)}});
     return r.outputs.at(0).get<double>();
   };
   EXPECT_EQ(run("chapel"), 2.0);
   EXPECT_EQ(run("church"), 2.0);
   EXPECT_EQ(run("yes"), 1.0);
   EXPECT_EQ(run("garage"), 1.0);  // case_2 is not connected: default
+  EXPECT_EQ(run("hut"), 4.0);     // four cases, four case inputs
+}
+
+// Version 1 had six fixed Merge inputs and five fixed Switch cases: files of
+// that time load with those counts, every link in place.
+TEST(MergeAndSwitch, VersionOneFilesUpgrade) {
+  const std::string v1 = R"({"format": "procex-graph", "version": 2,
+    "nodes": [{"id": 1, "type": "Footprint Shape", "version": 1, "params": {}},
+              {"id": 2, "type": "Extrude", "version": 1, "params": {}},
+              {"id": 3, "type": "Merge", "version": 1, "params": {}},
+              {"id": 4, "type": "Switch", "version": 1,
+               "params": {"value": "hut", "case_1": "church", "case_5": "hut, shed"}}],
+    "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "3.mesh_1"},
+              {"from": "2.mesh", "to": "3.mesh_6"}, {"from": "3.mesh", "to": "4.default"},
+              {"from": "2.mesh", "to": "4.case_5"}],
+    "inputs": [], "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}], "exposed": [], "groups": []})";
+  Graph g = parse_pxg(v1, "v1.pxg");
+  EXPECT_EQ(g.node(3)->params[0].get<std::int64_t>(), 6);
+  EXPECT_EQ(g.node(4)->params[1].get<std::vector<std::string>>(),
+            (std::vector<std::string>{"church", "", "", "", "hut, shed"}));
+  EXPECT_EQ(g.source(PortRef{3, 5}), (PortRef{2, 0}));
+  EXPECT_EQ(g.source(PortRef{4, 5}), (PortRef{2, 0}));
+  ASSERT_TRUE(g.connect(PortRef{4, 0}, PortRef{kGraphOutputs, 0}));
+  ResultCache cache(16 << 20);
+  Evaluator ev(cache, "nodes test");
+  const EvalResult r = ev.evaluate(g, {});
+  ASSERT_TRUE(r.ok()) << r.diagnostics.at(0).to_string();
+  EXPECT_EQ(r.output("mesh")->get<MeshSet>().parts.size(), 1u);  // "hut" chose case_5, not the merge of two
 }
 
 TEST(TransformAndMerge, MoveAndJoin) {
@@ -153,7 +182,8 @@ TEST(TransformAndMerge, MoveAndJoin) {
   for (const auto v : m.vertices()) zmin = std::min(zmin, m.point(v)[2]), xmin = std::min(xmin, m.point(v)[0]);
   EXPECT_NEAR(zmin, 5, 1e-12);
   EXPECT_NEAR(xmin, -6, 1e-12);  // turned a quarter: y in [0, 6] became x in [-6, 0]
-  const auto merged = run_node("Merge", {}, {{"mesh_1", a.outputs[0]}, {"mesh_3", moved.outputs[0]}});
+  const auto merged = run_node("Merge", {{"inputs", Value::make<std::int64_t>(3)}},
+                               {{"mesh_1", a.outputs[0]}, {"mesh_3", moved.outputs[0]}});
   EXPECT_EQ(merged.outputs[0].get<MeshSet>().parts.size(), 2u);
   EXPECT_EQ(faces_per_tag(merged.outputs[0].get<MeshSet>()).at("roof"), 8u);
 }

@@ -21,9 +21,9 @@ NodeRun run_node(const std::string& type, const std::map<std::string, Value>& pa
   Graph g;
   const auto id = g.add_node(type);
   if (!id) throw std::invalid_argument(id.message());
-  const NodeDecl& decl = g.node(*id)->decl();
   for (const auto& [name, v] : params)
     if (Status s = g.set_param(*id, name, v); !s) throw std::invalid_argument(s.message());
+  const NodeDecl& decl = g.node(*id)->decl();  // after the parameters: they may set port counts
   Bindings bindings;
   for (const auto& [name, v] : inputs) {
     const auto index = decl.input_index(name);
