@@ -126,6 +126,7 @@ void reverse_loop(Loop& loop) {
 PreparedFootprint prepare_footprint(const Footprint& footprint) {
   check_values(footprint);
   PreparedFootprint out;
+  out.footprint.profiles = footprint.profiles;  // the kept edges still name them
   const double merge = merge_distance(footprint);
   const double scale = length_scale(footprint);
   std::vector<std::vector<std::size_t>> original;  // input vertex index of each kept vertex

@@ -39,7 +39,6 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options) {
   Extrusion out;
   out.notes = std::move(prepared.notes);
   Footprint fp = std::move(prepared.footprint);
-  fp.profiles = footprint.profiles;  // prepare_footprint keeps edge specs but not the profile list
   SweepOptions engine_options = options;
   cap_at_profile_tops(fp, engine_options);
 
