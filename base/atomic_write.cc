@@ -1,4 +1,4 @@
-#include "core/io/atomic_write.h"
+#include "base/atomic_write.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -7,8 +7,6 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
-
-#include "core/io/io_error.h"
 
 namespace procex {
 

@@ -32,6 +32,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/atomic_write.h"  // write_file_atomically: save_pxg uses it, and so do editors
 #include "graph/graph.h"
 
 namespace procex {
@@ -76,12 +77,9 @@ Graph parse_pxg(std::string_view text, const std::filesystem::path& file, const 
 
 // The canonical text of the current version (ends with a newline).
 std::string to_pxg(const Graph& g);
-// Writes to_pxg(g) through a temporary file in the same folder and a rename.
+// Writes to_pxg(g) through a temporary file in the same folder and a rename
+// (write_file_atomically: throws IoError, a std::runtime_error, naming the file).
 // Library groups are written as references; their files are not touched.
 void save_pxg(const Graph& g, const std::filesystem::path& file);
-
-// Writes `text` to `file` atomically (temp file in the same folder + rename).
-// Throws std::runtime_error naming the file on failure.
-void write_file_atomically(const std::filesystem::path& file, std::string_view text);
 
 }  // namespace procex

@@ -1,11 +1,6 @@
 // Writing .pxg files: canonical JSON (sorted keys, nodes by id, links by
 // destination) so that saving the same graph twice gives the same bytes.
 #include <algorithm>
-#include <atomic>
-#include <cstdio>
-#include <fstream>
-#include <system_error>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -154,28 +149,6 @@ std::string to_pxg(const Graph& g) {
   std::string out;
   print(j, 0, out);
   return out + "\n";
-}
-
-void write_file_atomically(const std::filesystem::path& file, std::string_view text) {
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path tmp = file;
-  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error(file.string() + ": cannot write (temporary file " + tmp.string() + " failed)");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(file.string() + ": cannot replace the file: " + ec.message());
-  }
 }
 
 void save_pxg(const Graph& g, const std::filesystem::path& file) { write_file_atomically(file, to_pxg(g)); }

@@ -1,15 +1,4 @@
-// Writing a whole file atomically: the bytes go to a temporary file beside the
-// target, which is then renamed over it, so readers see the old file or the
-// new one, never a half-written one.
+// write_file_atomically lives in base/ (graph writes .pxg files with it too).
 #pragma once
 
-#include <filesystem>
-#include <string_view>
-
-namespace procex {
-
-// Throws IoError naming the path and the system's reason on failure; the
-// temporary file is removed.
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
-
-}  // namespace procex
+#include "base/atomic_write.h"

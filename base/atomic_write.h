@@ -1,0 +1,18 @@
+// Writing a whole file atomically: the bytes go to a temporary file beside the
+// target, which is then renamed over it, so readers see the old file or the
+// new one, never a half-written one. Shared by core/io (meshes) and graph
+// (.pxg files), which must not depend on each other.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "base/io_error.h"
+
+namespace procex {
+
+// Throws IoError naming the path and the system's reason on failure; the
+// temporary file is removed.
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+}  // namespace procex

@@ -1,0 +1,78 @@
+// write_file_atomically: whole files or nothing, temporary files never left
+// behind, failures named.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "base/atomic_write.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+
+class AtomicWrite : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("procex_atomic_write_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  std::size_t files() { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
+  fs::path dir_;
+};
+
+TEST_F(AtomicWrite, WritesAndReplacesWholeFiles) {
+  const fs::path file = dir_ / "a.txt";
+  write_file_atomically(file, "first");
+  EXPECT_EQ(read(file), "first");
+  write_file_atomically(file, std::string("second\0with a zero byte", 23));
+  EXPECT_EQ(read(file), std::string("second\0with a zero byte", 23));
+  write_file_atomically(file, "");
+  EXPECT_EQ(read(file), "");
+  EXPECT_EQ(files(), 1u);  // no temporary file left
+}
+
+TEST_F(AtomicWrite, FailuresNameTheFileAndLeaveNothing) {
+  fs::create_directories(dir_ / "taken");  // a folder where the file should go: the rename fails
+  try {
+    write_file_atomically(dir_ / "taken", "x");
+    FAIL() << "writing over a folder succeeded";
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), (dir_ / "taken").string());
+    EXPECT_NE(std::string(e.what()).find("taken"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(write_file_atomically(dir_ / "no_such_folder" / "a.txt", "x"), IoError);
+  EXPECT_EQ(files(), 1u);  // only the folder: the temporary file was removed
+}
+
+// Concurrent writers to one file: each write is whole, the last rename wins.
+TEST_F(AtomicWrite, ConcurrentWritersNeverMix) {
+  const fs::path file = dir_ / "shared.txt";
+  std::vector<std::thread> writers;
+  for (char c = 'a'; c < 'e'; ++c)
+    writers.emplace_back([&file, c] {
+      for (int i = 0; i < 20; ++i) write_file_atomically(file, std::string(100000, c));
+    });
+  for (std::thread& t : writers) t.join();
+  const std::string text = read(file);
+  ASSERT_EQ(text.size(), 100000u);
+  EXPECT_EQ(text, std::string(100000, text[0]));
+  EXPECT_EQ(files(), 1u);
+}
+
+}  // namespace
+}  // namespace procex
