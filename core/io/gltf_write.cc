@@ -372,8 +372,8 @@ GltfScene read_glb_scene(const std::filesystem::path& path) {
       const tinygltf::Node* at = &node_at(m, ci, path);
       if (at->extras.Has("tag")) instance.tag = at->extras.Get("tag").Get<std::string>();
       instance.transform = node_matrix(*at, ci, path);
-      while (at->mesh < 0) {  // the inner node of a split matrix
-        if (at->children.size() != 1) bad(path, "instance node " + std::to_string(ci) + " leads to no mesh");
+      for (int depth = 0; at->mesh < 0; ++depth) {  // the inner node of a split matrix
+        if (at->children.size() != 1 || depth > 1) bad(path, "instance node " + std::to_string(ci) + " leads to no mesh");
         const int next = at->children[0];
         at = &node_at(m, next, path);
         instance.transform = instance.transform * node_matrix(*at, next, path);

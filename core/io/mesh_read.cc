@@ -1,14 +1,12 @@
 #include "core/io/mesh_read.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -49,10 +47,14 @@ bool parse_coordinate(std::string_view word, double& value) {
   return ec == std::errc() && end == word.data() + word.size() && std::isfinite(value);
 }
 
-// What the line-by-line check learns: the vertices at full precision and each face's tag.
+// What the line-by-line check learns: the vertices at full precision, each
+// face's tag, and the file reduced to its 'v' and 'f' lines with absolute
+// vertex numbers, which is what OpenMesh reads: it then has nothing to warn
+// about (material libraries, texture corners) on the terminal.
 struct ObjScan {
   std::vector<Mesh::Point> vertices;
   std::vector<std::string> face_tags;
+  std::string plain;
 };
 
 // The vertex a face corner names (its part before any '/'), 0-based; OBJ
@@ -90,14 +92,23 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
     if (words[0] == "v") {
       if (words.size() < 4) fail_at(path, line_no, line, "a vertex needs three coordinates");
       Mesh::Point& p = scan.vertices.emplace_back();
-      for (int k = 0; k < 3; ++k)
-        if (!parse_coordinate(words[static_cast<std::size_t>(k) + 1], p[k]))
-          fail_at(path, line_no, line, "vertex coordinate '" + std::string(words[static_cast<std::size_t>(k) + 1]) + "' is not a finite number");
+      scan.plain += 'v';
+      for (std::size_t k = 1; k < 4; ++k) {
+        if (!parse_coordinate(words[k], p[static_cast<int>(k) - 1]))
+          fail_at(path, line_no, line, "vertex coordinate '" + std::string(words[k]) + "' is not a finite number");
+        scan.plain += ' ';
+        scan.plain += words[k];
+      }
+      scan.plain += '\n';
     } else if (words[0] == "f") {
       if (words.size() < 4) fail_at(path, line_no, line, "a face needs at least three corners");
       corners.clear();
-      for (std::size_t k = 1; k < words.size(); ++k)
+      scan.plain += 'f';
+      for (std::size_t k = 1; k < words.size(); ++k) {
         corners.push_back(corner_vertex(path, line_no, line, words[k], scan.vertices.size()));
+        scan.plain += ' ' + std::to_string(corners.back() + 1);
+      }
+      scan.plain += '\n';
       std::sort(corners.begin(), corners.end());
       if (const auto dup = std::adjacent_find(corners.begin(), corners.end()); dup != corners.end())
         fail_at(path, line_no, line, "the face visits vertex " + std::to_string(*dup + 1) + " twice");
@@ -112,60 +123,6 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
                    std::to_string(scan.vertices.size()) + " vertices");
   return scan;
 }
-
-// OpenMesh reports through three global streams (omlog, omout, omerr). While
-// a file is read they go to a string instead of the terminal, so what OpenMesh
-// says ends up in the error or the warnings; reads are serialised because the
-// streams are shared by every thread.
-class OpenMeshMessages {
- public:
-  OpenMeshMessages() : lock_(mutex()) {
-    for (OpenMesh::mostream* s : streams()) {
-      s->flush();
-      s->connect(text_);
-      Restore& r = restore_.emplace_back();
-      r.cerr = s->disconnect(std::cerr);
-      r.cout = s->disconnect(std::cout);
-      r.clog = s->disconnect(std::clog);
-    }
-  }
-  ~OpenMeshMessages() {
-    std::size_t i = 0;
-    for (OpenMesh::mostream* s : streams()) {
-      s->flush();
-      s->disconnect(text_);
-      const Restore& r = restore_[i++];
-      if (r.cerr) s->connect(std::cerr);
-      if (r.cout) s->connect(std::cout);
-      if (r.clog) s->connect(std::clog);
-    }
-  }
-  OpenMeshMessages(const OpenMeshMessages&) = delete;
-  OpenMeshMessages& operator=(const OpenMeshMessages&) = delete;
-
-  // Each distinct line once, in order of first appearance.
-  std::vector<std::string> lines() {
-    for (OpenMesh::mostream* s : streams()) s->flush();
-    std::vector<std::string> out;
-    std::istringstream in(text_.str());
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && std::find(out.begin(), out.end(), line) == out.end()) out.push_back(line);
-    return out;
-  }
-
- private:
-  struct Restore {
-    bool cerr = false, cout = false, clog = false;
-  };
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static std::vector<OpenMesh::mostream*> streams() { return {&omlog(), &omout(), &omerr()}; }
-  std::lock_guard<std::mutex> lock_;
-  std::ostringstream text_;
-  std::vector<Restore> restore_;
-};
 
 // OpenMesh's OBJ reader keeps single-precision coordinates. Its vertices are
 // the file's, in order, followed by the copies it made for non-manifold faces
@@ -184,12 +141,6 @@ void restore_precision(Mesh& mesh, const std::vector<Mesh::Point>& exact) {
       mesh.set_point(v, exact[it->second]);
     }
   }
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string out;
-  for (const std::string& l : lines) out += (out.empty() ? "" : "; ") + l;
-  return out;
 }
 
 }  // namespace
@@ -211,28 +162,23 @@ Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings) {
   const ObjScan scan = scan_obj(path, text);
 
   Mesh mesh;
-  std::vector<std::string> said;
   {
-    OpenMeshMessages messages;
-    std::istringstream stream(text);
+    // OpenMesh's OBJ reader is one shared object with state of its own
+    // (materials, path): one read at a time, whatever thread asks.
+    static std::mutex reader;
+    const std::lock_guard<std::mutex> lock(reader);
+    std::istringstream stream(scan.plain);
     OpenMesh::IO::Options options;
-    const bool ok = OpenMesh::IO::read_mesh(mesh, stream, ".obj", options);
-    said = messages.lines();
-    if (!ok) fail(path, "OpenMesh could not read it" + (said.empty() ? std::string() : ": " + joined(said)));
+    if (!OpenMesh::IO::read_mesh(mesh, stream, ".obj", options)) fail(path, "OpenMesh could not read it");
   }
   if (mesh.n_faces() != scan.face_tags.size())
     fail(path, "OpenMesh added " + std::to_string(mesh.n_faces()) + " of its " + std::to_string(scan.face_tags.size()) +
-                   " faces" + (said.empty() ? std::string() : ": " + joined(said)));
+                   " faces");
   restore_precision(mesh, scan.vertices);
-  if (warnings) {
-    if (mesh.n_vertices() > scan.vertices.size())
-      warnings->push_back("'" + path.string() + "': " + std::to_string(mesh.n_vertices() - scan.vertices.size()) +
-                          " vertices were duplicated to add faces that meet in a non-manifold way (an edge with "
-                          "more than two faces, or neighbours facing opposite ways)");
-    // Material complaints are noise: tags come from 'usemtl' here, and no material library is read.
-    for (const std::string& line : said)
-      if (line.find("Material") == std::string::npos) warnings->push_back("'" + path.string() + "': OpenMesh: " + line);
-  }
+  if (warnings && mesh.n_vertices() > scan.vertices.size())
+    warnings->push_back("'" + path.string() + "': " + std::to_string(mesh.n_vertices() - scan.vertices.size()) +
+                        " vertices were duplicated to add faces that meet in a non-manifold way (an edge with "
+                        "more than two faces, or neighbours facing opposite ways)");
   add_face_properties(mesh);
   const auto tags = face_tag_property(mesh);
   for (const auto f : mesh.faces()) mesh.property(tags, f) = scan.face_tags[static_cast<std::size_t>(f.idx())];

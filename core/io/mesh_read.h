@@ -2,10 +2,11 @@
 // file into procex's mesh type, through OpenMesh.
 //
 // OpenMesh's OBJ reader is lenient: it drops a vertex with a malformed number
-// and the faces using it, and says nothing useful about where. So the file is
-// first checked line by line here (every 'v' has three finite coordinates,
-// every 'f' at least three distinct vertices that exist), and then handed to
-// OpenMesh from the same bytes, so what is checked is what is read.
+// and the faces using it, says nothing useful about where, and keeps single
+// precision. So the file is first checked line by line here (every 'v' has
+// three finite coordinates, every 'f' at least three distinct vertices that
+// exist); OpenMesh then reads exactly the checked 'v' and 'f' lines, and the
+// coordinates get their full precision back.
 #pragma once
 
 #include <filesystem>
@@ -25,7 +26,8 @@ namespace procex {
 // file cannot be read, is not .obj, is not text, has a malformed 'v' or 'f'
 // line, has no faces, or OpenMesh refuses a face. Faces OpenMesh can only add
 // by duplicating vertices (more than two faces at an edge, or neighbours
-// facing opposite ways) are kept and reported in `warnings` when given.
+// facing opposite ways) are kept and reported in `warnings` when given
+// (OpenMesh also prints "complex edge" on stderr for each). Thread-safe.
 Mesh read_mesh_file(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace procex

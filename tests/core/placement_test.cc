@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/io/mesh_read.h"
+#include "core/io/mesh_write.h"
 #include "core/mesh/validate.h"
 #include "core/placement/placement.h"
 #include "core/placement/placement_error.h"
@@ -134,6 +135,26 @@ TEST(Placement, FlattenedFacesCarryTagsEdgesAndInstances) {
         ADD_FAILURE() << "face " << f.idx() << " has instance " << i;
     }
   }
+}
+
+// OBJ and PLY have no instancing: they get the flattened mesh, which reads
+// back as the same closed solid.
+TEST(Placement, FlattenedResultsExportToObj) {
+  PlacementResult r;
+  r.building = std::make_shared<const Mesh>(build_mesh(test::box({0, 0, 0}, {10, 6, 4})));
+  const std::size_t dormer = r.add_mesh({"dormer", read("mesh_dormer_box.obj")});
+  r.add_instance({dormer, translation(2, 1, 4), "", 1});
+  r.add_instance({dormer, translation(6, 1, 4) * glm::scale(glm::dmat4(1.0), {-1, 1, 1}), "", 1});
+  const Mesh flat = flatten(r);
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "procex_placement_flat.obj";
+  write_obj(file, flat);
+  const Mesh back = read_mesh_file(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(back.n_faces(), flat.n_faces());
+  EXPECT_EQ(back.n_vertices(), flat.n_vertices());
+  const ValidationReport v = validate(back);
+  EXPECT_TRUE(v.closed && v.manifold && v.oriented) << testing::PrintToString(v.problems);
+  EXPECT_NEAR(v.volume, 240 + 2 * 2.496, 1e-9);
 }
 
 }  // namespace
