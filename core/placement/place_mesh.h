@@ -1,0 +1,54 @@
+// One call behind a "Mesh placement" node: a mesh placed at the resolutions
+// of a named anchor (one per footprint edge it resolved on), once each, in a
+// row or a grid on each resolution's face, or stretched between two anchors
+// on the same edge (a pillar from a ground anchor to an eave anchor). Absent
+// resolutions are reported, not errors (issue 4: the feature is simply not
+// there, as when a dormer's roof edge has vanished at its height).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/geom/anchor.h"
+#include "core/placement/placement.h"
+#include "core/placement/repeat.h"
+
+namespace procex {
+
+struct MeshPlacementSpec {
+  enum class Mode : std::uint8_t { Single, Row, Grid, Stretch };
+  Mode mode = Mode::Single;
+  std::string anchor;      // ResolvedAnchor::name; for Stretch, where the mesh's bottom (y lo) goes
+  std::string top_anchor;  // Stretch: the anchor its top (y hi) follows, on the same edge
+  // Fractions of the mesh's bounds (Box3::at) put on each frame's origin; by
+  // default the middle of its bottom back edge: a window stands on its anchor.
+  // A grid cell's origin is its centre, so (0.5, 0.5, 0) centres a mesh in
+  // it. Stretch uses the x and z fractions only.
+  glm::dvec3 pivot{0.5, 0.0, 0.0};
+  glm::dvec3 scale{1.0};   // Single, and Row / Grid without fit
+  glm::dvec3 offset{0.0};  // metres along, up and out of the face, applied last in every mode
+  Repeat columns;          // Row and Grid: along each resolution's span
+  Repeat rows;             // Grid: up the face from z_from to z_to (world heights)
+  double z_from = 0.0, z_to = 0.0;
+  bool fit = false;        // Row and Grid: fill each cell (less margin) instead of pivot and scale
+  double margin = 0.0;
+  std::string tag;         // Instance::tag
+};
+
+struct PlaceMeshReport {
+  std::size_t instances = 0;
+  std::vector<std::string> absent;  // one line per resolution that placed nothing, with the reason
+};
+
+// Adds the mesh (once) and its instances to `result`; each instance's source
+// edge is its anchor's edge. Throws PlacementError, leaving `result` as it
+// was, if no resolution carries the anchor's name (the message lists the
+// names there are), or for a bad spec (repetition, fit or frame errors,
+// naming the anchor and edge).
+PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
+                           const std::vector<ResolvedAnchor>& anchors, const MeshPlacementSpec& spec);
+
+}  // namespace procex
