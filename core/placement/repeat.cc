@@ -1,5 +1,6 @@
 #include "core/placement/repeat.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -60,14 +61,14 @@ std::vector<Slot> repeat_line(double length, const Repeat& r) {
     check_size(intervals + 1);
     pitch = r.fill && intervals > 0 ? usable / intervals : r.spacing;
     if (!r.fill) start += (usable - intervals * pitch) / 2;  // the group centred
-    if (!cells && intervals == 0) pitch = usable;
   }
+  const auto n = static_cast<std::size_t>(intervals);
   if (cells) {
-    for (double i = 0; i < intervals; ++i) out.push_back({start + (i + 0.5) * pitch, pitch});
-  } else if (intervals == 0) {
+    for (std::size_t i = 0; i < n; ++i) out.push_back({start + (static_cast<double>(i) + 0.5) * pitch, pitch});
+  } else if (n == 0) {
     out.push_back({r.margin_start + usable / 2, usable});
   } else {
-    for (double i = 0; i <= intervals; ++i) out.push_back({start + i * pitch, pitch});
+    for (std::size_t i = 0; i <= n; ++i) out.push_back({start + static_cast<double>(i) * pitch, pitch});
   }
   return out;
 }
