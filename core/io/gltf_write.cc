@@ -1,8 +1,10 @@
 #include "core/io/gltf_write.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -29,12 +31,14 @@ struct Layout {
   std::size_t end = 0;
 };
 
-Layout layout_of(const std::vector<GltfMeshData>& meshes, const std::vector<GltfMeshData>& prototypes) {
+Layout layout_of(const std::vector<GltfMeshData>& meshes, const std::vector<const GltfMeshData*>& prototypes) {
   std::size_t floats = 0, indices = 0;
-  for (const auto* list : {&meshes, &prototypes})
-    for (const GltfMeshData& mesh : *list)
-      for (const GltfPrimitiveData& p : mesh.primitives)
-        if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
+  const auto count = [&](const GltfMeshData& mesh) {
+    for (const GltfPrimitiveData& p : mesh.primitives)
+      if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
+  };
+  for (const GltfMeshData* p : prototypes) count(*p);
+  for (const GltfMeshData& mesh : meshes) count(mesh);
   Layout l;
   l.normals = floats * sizeof(float);
   l.indices = 2 * l.normals;
@@ -140,39 +144,77 @@ int add_instance_node(tinygltf::Model& m, const GltfInstanceData& in, const std:
   inner.matrix = matrix_values(split.inner);
   inner.mesh = mesh;
   node.matrix = matrix_values(split.outer);
+  // outer * inner is the transform only to rounding: the exact one rides
+  // along, so reading and writing again gives the same bytes.
+  tinygltf::Value::Array exact;
+  for (double v : matrix_values(in.transform)) exact.emplace_back(v);
+  node.extras.Get<tinygltf::Value::Object>()["transform"] = tinygltf::Value(std::move(exact));
   node.children = {add_node(m, std::move(inner))};
   return add_node(m, std::move(node));
 }
 
+bool has_triangles(const GltfMeshData& mesh) {
+  return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                     [](const GltfPrimitiveData& p) { return !p.indices.empty(); });
+}
+
 void check_instances(const std::filesystem::path& path, const GltfMeshData& building,
-                     const std::vector<int>& prototype_meshes) {
+                     const std::vector<GltfMeshData>& prototypes) {
   for (std::size_t i = 0; i < building.instances.size(); ++i) {
     const GltfInstanceData& in = building.instances[i];
     const std::string where = "cannot write '" + path.string() + "': instance " + std::to_string(i) + " of building '" +
                               building.building + "'";
-    if (in.prototype >= prototype_meshes.size())
+    if (in.prototype >= prototypes.size())
       throw IoError(where + " names placed mesh " + std::to_string(in.prototype) + " but there are " +
-                        std::to_string(prototype_meshes.size()),
+                        std::to_string(prototypes.size()),
                     path.string());
-    if (prototype_meshes[in.prototype] < 0)
-      throw IoError(where + " places a mesh without triangles", path.string());
+    if (!has_triangles(prototypes[in.prototype]))
+      throw IoError(where + " places a mesh without triangles ('" + prototypes[in.prototype].building + "')",
+                    path.string());
     if (const std::string problem = transform_problem(in.transform); !problem.empty())
       throw IoError(where + " has " + problem, path.string());
   }
 }
 
+// The placed meshes as written: in order of first use by the buildings'
+// instances, equal ones (same name and triangles) once, unused ones left
+// out. So the file depends only on what is placed where: a scene merged
+// from shards (append_scene) writes the bytes a single run writes.
+struct WrittenPrototypes {
+  std::vector<const GltfMeshData*> meshes;
+  std::vector<std::size_t> slot;  // per given prototype: its position in meshes (if used)
+};
+
+WrittenPrototypes written_prototypes(const std::vector<GltfMeshData>& buildings,
+                                     const std::vector<GltfMeshData>& prototypes) {
+  constexpr std::size_t kUnused = static_cast<std::size_t>(-1);
+  WrittenPrototypes out;
+  out.slot.assign(prototypes.size(), kUnused);
+  for (const GltfMeshData& b : buildings)
+    for (const GltfInstanceData& in : b.instances) {
+      std::size_t& slot = out.slot[in.prototype];
+      if (slot != kUnused) continue;
+      const GltfMeshData& p = prototypes[in.prototype];
+      const auto same = std::find_if(out.meshes.begin(), out.meshes.end(), [&](const GltfMeshData* q) {
+        return q->building == p.building && q->primitives == p.primitives;
+      });
+      slot = static_cast<std::size_t>(same - out.meshes.begin());
+      if (same == out.meshes.end()) out.meshes.push_back(&p);
+    }
+  return out;
+}
+
 tinygltf::Model to_model(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
                          const std::vector<GltfMeshData>& prototypes) {
+  for (const GltfMeshData& data : meshes) check_instances(path, data, prototypes);
+  const WrittenPrototypes written = written_prototypes(meshes, prototypes);
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = "procex";
-  const Layout layout = layout_of(meshes, prototypes);
+  const Layout layout = layout_of(meshes, written.meshes);
   m.scenes.emplace_back();
   m.defaultScene = 0;
-  if (layout.end == 0) {  // no triangles anywhere: any instance names a mesh without any
-    for (const GltfMeshData& data : meshes) check_instances(path, data, std::vector<int>(prototypes.size(), -1));
-    return m;
-  }
+  if (layout.end == 0) return m;
   tinygltf::Buffer& buffer = m.buffers.emplace_back();
   buffer.data.resize(layout.end);
   Writing w{m, {layout.positions, layout.normals, layout.indices}, {layout.positions, layout.normals, layout.indices}, {}};
@@ -186,13 +228,13 @@ tinygltf::Model to_model(const std::filesystem::path& path, const std::vector<Gl
     if (v < 2) view.byteStride = 3 * sizeof(float);  // required once several accessors share a vertex view
   }
   // Placed meshes first, so instance nodes know their mesh.
-  std::vector<int> prototype_meshes;
-  for (const GltfMeshData& p : prototypes) {
-    const int mesh = prototype_meshes.emplace_back(add_mesh(w, p, p.building));
-    if (mesh >= 0) m.meshes[static_cast<std::size_t>(mesh)].extras = tinygltf::Value(tinygltf::Value::Object{{"placed", tinygltf::Value(p.building)}});
+  std::vector<int> written_mesh;
+  for (const GltfMeshData* p : written.meshes) {
+    const int mesh = written_mesh.emplace_back(add_mesh(w, *p, p->building));  // >= 0: check_instances saw triangles
+    m.meshes[static_cast<std::size_t>(mesh)].extras =
+        tinygltf::Value(tinygltf::Value::Object{{"placed", tinygltf::Value(p->building)}});
   }
   for (const GltfMeshData& data : meshes) {
-    check_instances(path, data, prototype_meshes);
     const int mesh = add_mesh(w, data, data.building);
     if (mesh < 0 && data.instances.empty()) continue;
     tinygltf::Node node;
@@ -200,8 +242,10 @@ tinygltf::Model to_model(const std::filesystem::path& path, const std::vector<Gl
     node.mesh = mesh;
     node.extras = tinygltf::Value(tinygltf::Value::Object{{"building", tinygltf::Value(data.building)},
                                                           {"feature", tinygltf::Value(static_cast<int>(data.feature))}});
-    for (const GltfInstanceData& in : data.instances)
-      node.children.push_back(add_instance_node(m, in, prototypes[in.prototype].building, prototype_meshes[in.prototype]));
+    for (const GltfInstanceData& in : data.instances) {
+      const std::size_t slot = written.slot[in.prototype];
+      node.children.push_back(add_instance_node(m, in, written.meshes[slot]->building, written_mesh[slot]));
+    }
     m.scenes[0].nodes.push_back(add_node(m, std::move(node)));
   }
   return m;
@@ -245,6 +289,32 @@ glm::dmat4 node_matrix(const tinygltf::Node& node, int index, const std::filesys
   if (node.matrix.size() != 16) bad(path, "node " + std::to_string(index) + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers");
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) t[c][r] = node.matrix[static_cast<std::size_t>(4 * c + r)];
+  return t;
+}
+
+double max_abs(const glm::dmat4& t) {
+  double out = 0.0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) out = std::max(out, std::abs(t[c][r]));
+  return out;
+}
+
+double max_difference(const glm::dmat4& a, const glm::dmat4& b) { return max_abs(a - b); }
+
+// The transform a split instance node carries in extras (see
+// add_instance_node), else `otherwise`.
+glm::dmat4 exact_transform(const tinygltf::Node& node, int index, const std::filesystem::path& path,
+                           const glm::dmat4& otherwise) {
+  if (!node.extras.Has("transform")) return otherwise;
+  const tinygltf::Value& v = node.extras.Get("transform");
+  if (!v.IsArray() || v.ArrayLen() != 16) bad(path, "node " + std::to_string(index) + "'s transform extras are not 16 numbers");
+  glm::dmat4 t;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      const tinygltf::Value& x = v.Get(4 * c + r);
+      if (!x.IsNumber()) bad(path, "node " + std::to_string(index) + "'s transform extras are not 16 numbers");
+      t[c][r] = x.GetNumberAsDouble();
+    }
   return t;
 }
 
@@ -372,11 +442,17 @@ GltfScene read_glb_scene(const std::filesystem::path& path) {
       const tinygltf::Node* at = &node_at(m, ci, path);
       if (at->extras.Has("tag")) instance.tag = at->extras.Get("tag").Get<std::string>();
       instance.transform = node_matrix(*at, ci, path);
+      const glm::dmat4 exact = exact_transform(*at, ci, path, instance.transform);
       for (int depth = 0; at->mesh < 0; ++depth) {  // the inner node of a split matrix
         if (at->children.size() != 1 || depth > 1) bad(path, "instance node " + std::to_string(ci) + " leads to no mesh");
         const int next = at->children[0];
         at = &node_at(m, next, path);
         instance.transform = instance.transform * node_matrix(*at, next, path);
+      }
+      if (exact != instance.transform) {
+        if (max_difference(exact, instance.transform) > 1e-6 * (1.0 + max_abs(exact)))
+          bad(path, "instance node " + std::to_string(ci) + "'s transform in extras disagrees with its node matrices");
+        instance.transform = exact;
       }
       const auto it = prototype_of_mesh.find(at->mesh);
       if (it == prototype_of_mesh.end()) bad(path, "instance node " + std::to_string(ci) + " shows a mesh that is not a placed mesh");
@@ -384,6 +460,15 @@ GltfScene read_glb_scene(const std::filesystem::path& path) {
     }
   }
   return out;
+}
+
+void append_scene(GltfScene& into, GltfScene part) {
+  const std::size_t shift = into.prototypes.size();
+  for (GltfMeshData& b : part.meshes) {
+    for (GltfInstanceData& in : b.instances) in.prototype += shift;
+    into.meshes.push_back(std::move(b));
+  }
+  std::move(part.prototypes.begin(), part.prototypes.end(), std::back_inserter(into.prototypes));
 }
 
 std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {

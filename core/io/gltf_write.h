@@ -39,6 +39,8 @@ struct GltfPrimitiveData {
   std::vector<float> positions;  // x y z per vertex
   std::vector<float> normals;    // unit, per vertex (faces do not share vertices)
   std::vector<std::uint32_t> indices;
+
+  bool operator==(const GltfPrimitiveData&) const = default;
 };
 
 // One placement of a placed mesh.
@@ -55,13 +57,19 @@ struct GltfMeshData {
   std::vector<GltfInstanceData> instances;    // the meshes placed on this building
 };
 
-// A whole file: the buildings, and the distinct placed meshes their
-// instances name (for those, `building` holds the placed mesh's name and
-// feature and instances are unused).
+// A whole file: the buildings, and the placed meshes their instances name
+// (for those, `building` holds the placed mesh's name; feature and instances
+// are unused). write_glb writes the placed meshes in order of first use,
+// equal ones (same name and triangles) once, unused ones not at all.
 struct GltfScene {
   std::vector<GltfMeshData> meshes;
   std::vector<GltfMeshData> prototypes;
 };
+
+// Adds part's buildings after into's, and its placed meshes after into's
+// (its instances renumbered): how shard files join before they are sorted
+// and written again. Placed meshes both hold are written once.
+void append_scene(GltfScene& into, GltfScene part);
 
 // Display colour (linear RGB) of a face tag: fixed for the usual tags, a grey
 // derived from the name otherwise. Shared with other writers (OBJ materials).

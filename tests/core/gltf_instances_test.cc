@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -39,32 +41,39 @@ class GltfInstances : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Two buildings sharing a window and a pillar: windows on the front wall
-  // (rotation and translation), one pillar mirrored, one leaning (a shear).
-  GltfScene street() {
-    window_ = read("mesh_window_frame.obj");
-    pillar_ = read("mesh_pillar.obj");
-    GltfSceneBuilder builder;
-    for (int b = 0; b < 2; ++b) {
-      PlacementResult r;
-      const double x0 = 20.0 * b;
-      r.building = std::make_shared<const Mesh>(build_mesh(test::box({x0, 0, 0}, {x0 + 10, 6, 4})));
-      const std::size_t w = r.add_mesh({"window", window_});
-      const std::size_t p = r.add_mesh({"pillar", pillar_});
-      Frame front;  // along +x, up +z, normal -y
-      for (double x : {2.5, 7.5}) {
-        front.origin = {x0 + x, 0, 1};
-        r.add_instance({w, place_at(front), "", 0});
-      }
-      front.origin = {x0 - 1, 0, 0};
-      FramePlacement mirrored;
-      mirrored.scale = {-1, 1, 1};
-      r.add_instance({p, place_at(front, mirrored), "column", -1});
-      const Box3 box = bounds(*pillar_);
-      r.add_instance({p, stretch_between(box, front, {x0 + 11, 0, 0}, {x0 + 12, 0, 4}), "", -1});
-      builder.add(r, "b" + std::to_string(b), b);
+  // Building b of a street: windows on the front wall (rotation and
+  // translation), one pillar mirrored, one leaning (a shear).
+  PlacementResult building(int b) {
+    if (!window_) window_ = read("mesh_window_frame.obj");
+    if (!pillar_) pillar_ = read("mesh_pillar.obj");
+    PlacementResult r;
+    const double x0 = 20.0 * b;
+    r.building = std::make_shared<const Mesh>(build_mesh(test::box({x0, 0, 0}, {x0 + 10, 6, 4})));
+    const std::size_t w = r.add_mesh({"window", window_});
+    const std::size_t p = r.add_mesh({"pillar", pillar_});
+    Frame front;  // along +x, up +z, normal -y
+    for (double x : {2.5, 7.5}) {
+      front.origin = {x0 + x, 0, 1};
+      r.add_instance({w, place_at(front), "", 0});
     }
+    front.origin = {x0 - 1, 0, 0};
+    FramePlacement mirrored;
+    mirrored.scale = {-1, 1, 1};
+    r.add_instance({p, place_at(front, mirrored), "column", -1});
+    r.add_instance({p, stretch_between(bounds(*pillar_), front, {x0 + 11, 0, 0}, {x0 + 12, 0, 4}), "", -1});
+    return r;
+  }
+
+  // Two buildings sharing the window and the pillar.
+  GltfScene street() {
+    GltfSceneBuilder builder;
+    for (int b = 0; b < 2; ++b) builder.add(building(b), "b" + std::to_string(b), b);
     return builder.scene();
+  }
+
+  std::string bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
 
   fs::path dir_;
@@ -154,6 +163,35 @@ TEST_F(GltfInstances, ThreeJsPlacesEveryInstanceWhereFlattenDoes) {
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i)
     for (int k = 0; k < 6; ++k) EXPECT_NEAR(got[i][static_cast<std::size_t>(k)], want[i][static_cast<std::size_t>(k)], 1e-4) << i << " " << k;
+}
+
+// Two shards, each with its own copies of the placed meshes, joined the way
+// procex merge joins them: the same bytes as one run over both buildings.
+TEST_F(GltfInstances, ShardsMergeIntoTheBytesOfOneRun) {
+  write_glb(dir_ / "one.glb", street());
+  GltfScene merged;
+  for (int b : {1, 0}) {  // shards finish in any order; merge sorts by feature
+    window_ = pillar_ = nullptr;  // each shard reads the meshes itself
+    GltfSceneBuilder shard;
+    shard.add(building(b), "b" + std::to_string(b), b);
+    write_glb(dir_ / "shard.glb", shard.scene());
+    append_scene(merged, read_glb_scene(dir_ / "shard.glb"));
+  }
+  EXPECT_EQ(merged.prototypes.size(), 4u);
+  std::stable_sort(merged.meshes.begin(), merged.meshes.end(),
+                   [](const GltfMeshData& a, const GltfMeshData& b) { return a.feature < b.feature; });
+  write_glb(dir_ / "merged.glb", merged);
+  EXPECT_TRUE(bytes(dir_ / "merged.glb") == bytes(dir_ / "one.glb"));
+  EXPECT_EQ(read_glb_scene(dir_ / "merged.glb").prototypes.size(), 2u);  // equal placed meshes written once
+}
+
+TEST_F(GltfInstances, UnusedPlacedMeshesAreNotWritten) {
+  GltfScene scene = street();
+  scene.prototypes.push_back(scene.prototypes[0]);
+  scene.prototypes.back().building = "spare";
+  write_glb(dir_ / "spare.glb", scene);
+  write_glb(dir_ / "plain.glb", street());
+  EXPECT_TRUE(bytes(dir_ / "spare.glb") == bytes(dir_ / "plain.glb"));
 }
 
 TEST_F(GltfInstances, BadInstancesAreRefusedByTheWriter) {
