@@ -260,9 +260,41 @@ class Run {
       }
       seen[id] = false;
       stack.back().second = true;
+      const std::optional<std::uint32_t> only = passed_input(f, id);
       for (auto it = links.lower_bound(PortRef{id, 0}); it != links.end() && it->first.node == id; ++it)
-        if (it->second.node != kGraphInputs && !seen.count(it->second.node)) stack.emplace_back(it->second.node, false);
+        if (it->second.node != kGraphInputs && !seen.count(it->second.node) && (!only || it->first.port == *only))
+          stack.emplace_back(it->second.node, false);
     }
+  }
+
+  // A node's parameters with the exposed parameters of enclosing groups
+  // applied; `storage` holds them when they differ from the node's own.
+  static const std::vector<Value>& params_in(const Frame& f, const Node& node, std::vector<Value>& storage) {
+    auto o = f.overrides.find(node.id);
+    if (o == f.overrides.end()) return node.params;
+    storage = node.params;
+    for (const auto& [param, v] : o->second) storage[param] = v;
+    return storage;
+  }
+
+  // The input that every output of node `id` hands on, when its parameters
+  // say so and that input is linked (a Switch): nothing upstream of its other
+  // inputs is needed, so none of it is planned or hashed.
+  static std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) {
+    const Node* node = f.graph->node(id);
+    if (!node || node->type->is_group() || !node->decl().pass_through()) return std::nullopt;
+    std::vector<Value> storage;
+    const std::vector<Value>& params = params_in(f, *node, storage);
+    std::optional<std::size_t> only;
+    for (std::size_t o = 0; o < node->decl().outputs().size(); ++o) {
+      const std::optional<std::size_t> p = node->decl().pass_through()(params, o);
+      if (!p || (only && *p != *only)) return std::nullopt;
+      only = p;
+    }
+    if (!only || *only >= node->decl().inputs().size()) return std::nullopt;
+    const auto input = static_cast<std::uint32_t>(*only);
+    if (!f.graph->links().count(PortRef{id, input})) return std::nullopt;
+    return input;
   }
 
   void emit(Frame& f, NodeId id, std::size_t depth) {
@@ -272,10 +304,7 @@ class Run {
     NodePath path = f.prefix;
     path.push_back(id);
     std::vector<Value> overridden;
-    if (auto o = f.overrides.find(id); o != f.overrides.end()) {
-      overridden = node->params;
-      for (auto& [param, v] : o->second) overridden[param] = v;
-    }
+    params_in(f, *node, overridden);
     if (node->type->is_group()) {
       emit_group(f, *node, std::move(path), overridden.empty() ? node->params : overridden, depth);
       return;
@@ -290,7 +319,13 @@ class Run {
     for (const Value& v : n.params()) v.hash(h);
     if (decl.hash_extra()) decl.hash_extra()(n.params(), options_.folder, h);
     n.inputs.reserve(decl.inputs().size());
+    const std::optional<std::uint32_t> only = passed_input(f, id);
     for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
+      if (only && i != *only) {  // not planned (flatten): never read, since every output passes *only on
+        n.inputs.emplace_back();
+        h.u64(0x9e3779b97f4a7c15ull + Source::kUnconnected);
+        continue;
+      }
       Source s = resolve_input(f, PortRef{id, i});
       const std::string& name = decl.inputs()[i].name;
       if (s.kind == Source::kUnconnected && !decl.inputs()[i].optional) {
@@ -303,6 +338,8 @@ class Run {
       else h.u64(0x9e3779b97f4a7c15ull + s.kind);
       n.inputs.push_back(std::move(s));
     }
+    if (only && n.static_error.empty() && n.inputs[*only].kind != Source::kNode && n.inputs[*only].kind != Source::kValue)
+      n.static_error = "input '" + decl.inputs()[*only].name + "' has no value";  // and the others were not planned
     n.key = h.result();
     const std::size_t outs = decl.outputs().size();
     n.out_hash.resize(outs);

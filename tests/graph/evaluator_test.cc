@@ -142,6 +142,48 @@ TEST_F(EvaluatorTest, PassThroughHandsOnTheInputHash) {
   EXPECT_EQ(on.output("through")->get<double>(), 8.0);
 }
 
+// A node that hands on one input (a building-type switch) needs nothing
+// upstream of its other inputs: that branch is not even planned or hashed.
+//   c ---------------- first
+//                            pick -> "out"
+//   size -> add(x2) -- second
+TEST_F(EvaluatorTest, BranchesAPassThroughDoesNotTakeAreNotPlanned) {
+  Graph g;
+  const NodeId c = constant(g, 4);
+  const NodeId size = add(g, "test.FileSize");
+  const NodeId twice = add(g, "test.Add");
+  const NodeId pick = add(g, "test.Pick");
+  ASSERT_TRUE(g.add_input(GraphInput{"x", &value_type<double>(), "", Value::make(0.5)}));
+  link(g, c, 0, pick, 0);
+  ASSERT_TRUE(g.connect(PortRef{kGraphInputs, 0}, PortRef{twice, 0}));
+  link(g, twice, 0, pick, 1);
+  ASSERT_TRUE(g.set_param(size, "path", Value::make(std::string("nowhere.txt"))));
+  test::output(g, "out", pick);
+  ASSERT_TRUE(g.add_output(GraphOutput{"size", &value_type<std::int64_t>(), ""}));  // planned only when asked for
+  ASSERT_TRUE(g.connect(PortRef{size, 0}, PortRef{kGraphOutputs, 1}));
+  test::file_size_hashes() = 0;
+  const EvalResult first = ev.evaluate(g, {}, {"out"});
+  ASSERT_TRUE(first.ok());
+  EXPECT_EQ(first.output("out")->get<double>(), 4.0);
+  EXPECT_EQ(first.outputs[0].hash, ev.hash_outputs(g, {}, {"out"}).outputs[0].hash);
+  EXPECT_EQ(test::evaluations(), 1);  // the constant
+  ASSERT_TRUE(g.set_param(pick, "which", Value::make<std::int64_t>(1)));
+  const EvalResult second = ev.evaluate(g, {}, {"out"});
+  ASSERT_TRUE(second.ok());
+  EXPECT_EQ(second.output("out")->get<double>(), 0.5);
+  EXPECT_EQ(test::evaluations_of("test.Add"), 1);
+  EXPECT_EQ(test::evaluations_of("test.Pick"), 0);
+  EXPECT_EQ(second.stats.find({pick})->outcome, NodeOutcome::kPassThrough);
+  EXPECT_EQ(test::file_size_hashes(), 0);  // FileSize feeds neither: never planned
+  (void)ev.hash_outputs(g, {}, {"size"});
+  EXPECT_EQ(test::file_size_hashes(), 1);
+  // A chosen input that is not connected: no pass-through, the usual checks.
+  ASSERT_TRUE(g.disconnect(PortRef{pick, 1}));
+  const EvalResult open = ev.evaluate(g, {}, {"out"});
+  ASSERT_FALSE(open.diagnostics.empty());
+  EXPECT_EQ(open.diagnostics[0].to_string(), "error: node 4 (test.Pick): input 'second' is not connected");
+}
+
 TEST_F(EvaluatorTest, HashesDependOnTheEngineSalt) {
   test::Diamond d = test::diamond();
   Evaluator other(cache, "test-engine-2");

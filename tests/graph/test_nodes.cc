@@ -126,6 +126,7 @@ std::filesystem::path resolve(const std::vector<Value>& params, const std::files
   return folder / params[0].get<std::string>();
 }
 void hash_file_state(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
+  ++file_size_hashes();
   hash_file_stamp(resolve(params, folder), h);
 }
 void declare_file_size(NodeDecl& d) {
@@ -181,23 +182,21 @@ void eval_everything(EvalContext& ctx) {
   ctx.set_output(1, std::vector<std::int64_t>{ctx.param<std::int64_t>(1), static_cast<std::int64_t>(ctx.choice_index(6))});
 }
 
-}  // namespace
-
-std::atomic<int>& evaluations() {
-  static std::atomic<int> n{0};
-  return n;
+// test.Pick: hands on input `which` (0 or 1) unchanged, like a building-type switch.
+std::optional<std::size_t> pick_pass(const std::vector<Value>& params, std::size_t) {
+  return static_cast<std::size_t>(params[0].get<std::int64_t>());
 }
-
-int evaluations_of(const std::string& type) {
-  std::lock_guard lock(g_mutex);
-  auto it = per_type().find(type);
-  return it == per_type().end() ? 0 : it->second;
+void declare_pick(NodeDecl& d) {
+  d.doc("Hands on one of two inputs.").category("Test");
+  d.param<std::int64_t>("which").default_value<std::int64_t>(0).range(0, 1).doc("0: first, 1: second");
+  d.input<Value>("first");
+  d.input<Value>("second");
+  d.output<Value>("out");
+  d.pass_through(pick_pass);
 }
-
-void reset_evaluations() {
-  evaluations() = 0;
-  std::lock_guard lock(g_mutex);
-  per_type().clear();
+void eval_pick(EvalContext& ctx) {  // reached only when the chosen input is not connected
+  count(ctx);
+  ctx.set_output_value(0, ctx.input_value(static_cast<std::size_t>(ctx.param<std::int64_t>(0))));
 }
 
 // test.Sum: the sum of its connected terms; `terms` sets how many inputs it has
@@ -221,11 +220,36 @@ void eval_sum(EvalContext& ctx) {
   ctx.set_output(0, sum);
 }
 
+}  // namespace
+
+std::atomic<int>& evaluations() {
+  static std::atomic<int> n{0};
+  return n;
+}
+
+std::atomic<int>& file_size_hashes() {
+  static std::atomic<int> n{0};
+  return n;
+}
+
+int evaluations_of(const std::string& type) {
+  std::lock_guard lock(g_mutex);
+  auto it = per_type().find(type);
+  return it == per_type().end() ? 0 : it->second;
+}
+
+void reset_evaluations() {
+  evaluations() = 0;
+  std::lock_guard lock(g_mutex);
+  per_type().clear();
+}
+
 }  // namespace procex::test
 
 namespace procex::test {
 PROCEX_REGISTER_NODE("test.Const", 1, declare_const, eval_const);
 PROCEX_REGISTER_NODE("test.Sum", 2, declare_sum, eval_sum);
+PROCEX_REGISTER_NODE("test.Pick", 1, declare_pick, eval_pick);
 PROCEX_REGISTER_NODE("test.Add", 2, declare_add, eval_add);
 PROCEX_REGISTER_NODE("test.Mul", 1, declare_mul, eval_mul);
 PROCEX_REGISTER_NODE("test.Fail", 1, declare_fail, eval_fail);
