@@ -144,17 +144,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   }
   const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
   if (!recipe) return kExitUnusableInput;
-  if (Status s = check_footprint_input(recipe->graph); !s) {
-    err << options.recipe.string() << ": " << s.message() << "\n";
-    return kExitUnusableInput;
-  }
-  GeoJsonCollection collection;
-  try {
-    collection = read_geojson_file(options.footprints);
-  } catch (const IoError& e) {
-    err << "procex batch: " << e.what() << "\n";
-    return kExitUnusableInput;
-  }
+  const std::optional<GeoJsonCollection> opened =
+      open_footprints(recipe->graph, options.recipe, options.footprints, "batch", err);
+  if (!opened) return kExitUnusableInput;
+  const GeoJsonCollection& collection = *opened;
 
   std::vector<Building> buildings;
   for (const GeoJsonFeature& f : collection.features)
@@ -184,6 +177,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     });
   });
 
+  cache.clear();  // per-building results are never asked for again: free them before the write's peak
   const auto evaluated = std::chrono::steady_clock::now();
   std::size_t ok = 0, refused = 0, failed = 0;
   MeshSet all;

@@ -17,20 +17,12 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
   }
   std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
   if (!recipe) return kExitUnusableInput;
-  GeoJsonCollection collection;
+  std::optional<GeoJsonCollection> collection;
   const GeoJsonFeature* feature = nullptr;
   if (!options.footprints.empty()) {
-    if (Status s = check_footprint_input(recipe->graph); !s) {
-      err << options.recipe.string() << ": " << s.message() << "\n";
-      return kExitUnusableInput;
-    }
-    try {
-      collection = read_geojson_file(options.footprints);
-    } catch (const IoError& e) {
-      err << "procex eval: " << e.what() << "\n";
-      return kExitUnusableInput;
-    }
-    const Result<const GeoJsonFeature*> found = find_feature(collection, options.feature, options.footprints.string());
+    collection = open_footprints(recipe->graph, options.recipe, options.footprints, "eval", err);
+    if (!collection) return kExitUnusableInput;
+    const Result<const GeoJsonFeature*> found = find_feature(*collection, options.feature, options.footprints.string());
     if (!found) {
       err << "procex eval: " << found.message() << "\n";
       return kExitUnusableInput;

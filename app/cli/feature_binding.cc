@@ -4,8 +4,10 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <ostream>
 
 #include "app/cli/recipe_session.h"
+#include "core/io/io_error.h"
 
 namespace procex {
 namespace {
@@ -25,11 +27,20 @@ bool names_setting(const Graph& graph, const std::string& key) {
 
 }  // namespace
 
-Status check_footprint_input(const Graph& recipe) {
+std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
+                                                 const std::filesystem::path& footprints, const std::string& command,
+                                                 std::ostream& err) {
   const auto i = recipe.input_index("footprint");
-  if (!i || recipe.inputs()[*i].type != &value_type<Footprint>())
-    return Status::error("the recipe needs a graph input named 'footprint' of type footprint");
-  return Status::ok();
+  if (!i || recipe.inputs()[*i].type != &value_type<Footprint>()) {
+    err << recipe_file.string() << ": the recipe needs a graph input named 'footprint' of type footprint\n";
+    return std::nullopt;
+  }
+  try {
+    return read_geojson_file(footprints);
+  } catch (const IoError& e) {
+    err << "procex " << command << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
 }
 
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, const GeoJsonFeature& f) {

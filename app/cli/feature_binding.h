@@ -6,6 +6,9 @@
 // building:levels sets building_levels).
 #pragma once
 
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,8 +20,12 @@
 
 namespace procex {
 
-// Ok if the recipe has a graph input named `footprint` of type footprint.
-Status check_footprint_input(const Graph& recipe);
+// The features a recipe loaded from recipe_file is to be evaluated for: checks
+// that it has a graph input named `footprint` of type footprint, then reads
+// `footprints`. nullopt after writing the problem to err ("procex <command>: ...").
+std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
+                                                 const std::filesystem::path& footprints, const std::string& command,
+                                                 std::ostream& err);
 
 // Binds f to graph (a copy of the recipe) and bindings. Returns one warning per
 // property that names a parameter but does not fit it; properties that name

@@ -17,6 +17,7 @@
 #include "app/cli/merge_command.h"
 #include "app/cli/recipe_session.h"
 #include "core/io/gltf_write.h"
+#include "tests/app/command_test.h"
 
 namespace procex {
 namespace {
@@ -27,20 +28,10 @@ using json = nlohmann::ordered_json;
 const fs::path kSamples = PROCEX_SAMPLES;
 const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
 
-class Batch : public ::testing::Test {
+class Batch : public test::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_batch_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   BatchCommandOptions options(const std::string& output) {
     BatchCommandOptions o;
     o.recipe = kSamples / "city.pxg";
@@ -49,8 +40,6 @@ class Batch : public ::testing::Test {
     o.progress = false;
     return o;
   }
-  fs::path dir_;
-  std::ostringstream out_, err_;
 };
 
 // Per building: its summary, compared with samples/expected/city.json.

@@ -15,6 +15,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/recipe_session.h"
+#include "tests/app/command_test.h"
 
 namespace procex {
 namespace {
@@ -24,12 +25,7 @@ namespace fs = std::filesystem;
 const fs::path kSamples = PROCEX_SAMPLES;
 const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
 
 // The same 20 m x 12 m plan three times: a church, a garage; then a point, which is no footprint.
 constexpr const char* kTwoTypes = R"({"type": "FeatureCollection", "features": [
@@ -41,14 +37,12 @@ constexpr const char* kTwoTypes = R"({"type": "FeatureCollection", "features": [
   "geometry": {"type": "Point", "coordinates": [0,0]}}
 ]})";
 
-class EvalFeature : public ::testing::Test {
+class EvalFeature : public test::CommandTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_eval_feature_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
+    CommandTest::SetUp();
     std::ofstream(dir_ / "two_types.geojson") << kTwoTypes;
   }
-  void TearDown() override { fs::remove_all(dir_); }
   EvalCommandOptions options(const fs::path& footprints, const std::string& feature, const fs::path& output) {
     EvalCommandOptions o;
     o.recipe = kSamples / "city.pxg";
@@ -68,8 +62,6 @@ class EvalFeature : public ::testing::Test {
       }
     return z;
   }
-  fs::path dir_;
-  std::ostringstream out_, err_;
 };
 
 // Byte for byte what batch writes for that building, by id and by index.

@@ -15,6 +15,7 @@
 #include "app/cli/recipe_session.h"
 #include "app/cli/stats_command.h"
 #include "app/cli/validate_command.h"
+#include "tests/app/command_test.h"
 
 namespace procex {
 namespace {
@@ -23,27 +24,15 @@ namespace fs = std::filesystem;
 
 const fs::path kSamples = PROCEX_SAMPLES;
 
-class RecipeCommands : public ::testing::Test {
+class RecipeCommands : public test::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_recipe_commands_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
     return dir_ / name;
   }
-  fs::path dir_;
-  std::ostringstream out_, err_;
 };
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
 
 TEST_F(RecipeCommands, EvalWritesEveryFormat) {
   for (const char* ext : {".obj", ".ply", ".glb"}) {

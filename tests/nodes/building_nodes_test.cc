@@ -5,6 +5,7 @@
 #include <set>
 
 #include <filesystem>
+#include <fstream>
 
 #include "core/io/gltf_write.h"
 #include "core/mesh/validate.h"
@@ -198,6 +199,35 @@ TEST(FootprintGeoJson, ReadsOneFeatureByIdOrIndex) {
   EXPECT_NE(missing.messages().find("no feature with id 'w0' (18 features)"), std::string::npos) << missing.messages();
   const auto no_file = run_node("Footprint GeoJSON", {{"file", Value::make(std::string("nowhere.geojson"))}}, {}, samples);
   EXPECT_NE(no_file.messages().find("nowhere.geojson"), std::string::npos) << no_file.messages();
+}
+
+// An edited GeoJSON file is read again: its size and time are in the node's cache key.
+TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
+  const auto dir = std::filesystem::temp_directory_path() / "procex_geojson_node_test";
+  std::filesystem::create_directories(dir);
+  auto write = [&](double x) {
+    std::ofstream(dir / "plan.geojson") << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+      "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[)" << x << R"(,0],[10,8],[0,8],[0,0]]]}}]})";
+  };
+  Graph g;
+  const NodeId n = g.add_node("Footprint GeoJSON").value();
+  ASSERT_TRUE(g.set_param(n, "file", Value::make(std::string("plan.geojson"))));
+  ASSERT_TRUE(g.add_output({"footprint", &value_type<Footprint>(), ""}));
+  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  ResultCache cache(1 << 20);
+  Evaluator ev(cache, "nodes test");
+  EvalOptions options;
+  options.folder = dir;
+  write(10);
+  const EvalResult first = ev.evaluate(g, {}, {}, options);
+  ASSERT_TRUE(first.ok());
+  write(12.5);  // a different size, whatever the clock's resolution
+  const EvalResult second = ev.evaluate(g, {}, {}, options);
+  ASSERT_TRUE(second.ok());
+  EXPECT_NE(first.outputs[0].hash, second.outputs[0].hash);
+  EXPECT_EQ(second.stats.computed(), 1u);
+  EXPECT_EQ(second.output("footprint")->get<Footprint>().loops[0].points[1].x, 12.5);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Export, WritesTheMeshBesideTheRecipe) {
