@@ -123,6 +123,31 @@ TEST(VariadicPorts, OlderVersionsUpgradeToTheirFixedCount) {
   }
 }
 
+// Grouping keeps a node's own ports (the group's body holds the same node),
+// and so does ungrouping.
+TEST(VariadicPorts, GroupingKeepsThePorts) {
+  Sum4 s = sum_of_four();
+  ResultCache cache(1 << 20);
+  Evaluator ev(cache, "variadic");
+  const Hash128 before = ev.hash_outputs(s.g, {}).outputs[0].hash;
+  UndoStack stack(s.g);
+  const Result<NodeId> group = stack.group({s.sum, 5}, "sum_group");  // the sum and its fourth term
+  ASSERT_TRUE(group) << group.message();
+  EXPECT_EQ(ev.evaluate(s.g, {}).output("sum")->get<double>(), 10.0);
+  EXPECT_EQ(ev.hash_outputs(s.g, {}).outputs[0].hash, before);
+  const std::string text = to_pxg(s.g);
+  EXPECT_EQ(to_pxg(parse_pxg(text, "grouped.pxg")), text);
+  ASSERT_TRUE(stack.ungroup(*group));
+  EXPECT_EQ(ev.evaluate(s.g, {}).output("sum")->get<double>(), 10.0);
+  std::size_t sums = 0;
+  for (const auto& [id, node] : s.g.nodes()) {
+    if (node.type->name() != "test.Sum") continue;
+    ++sums;
+    EXPECT_EQ(node.decl().inputs().size(), 4u);
+  }
+  EXPECT_EQ(sums, 1u);
+}
+
 TEST(VariadicPorts, ACountCannotBeExposed) {
   Graph g;
   const NodeId sum = add(g, "test.Sum");
