@@ -66,16 +66,18 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
   try {
-    std::vector<GltfMeshData> all;
+    // Each part's placed meshes come along (renumbered); write_glb keeps one
+    // of equal ones, so the bytes are those of an unsharded run.
+    GltfScene all;
     for (const auto& p : meshes) {
       if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
-      std::vector<GltfMeshData> part = read_glb(p);
-      std::move(part.begin(), part.end(), std::back_inserter(all));
+      append_scene(all, read_glb_scene(p));
     }
-    std::stable_sort(all.begin(), all.end(), [](const GltfMeshData& a, const GltfMeshData& b) { return a.feature < b.feature; });
+    std::stable_sort(all.meshes.begin(), all.meshes.end(),
+                     [](const GltfMeshData& a, const GltfMeshData& b) { return a.feature < b.feature; });
     write_glb(options.output, all);
     if (!options.report.empty()) write_file_atomically(options.report, merge_reports(reports).dump(1) + "\n");
-    out << "procex merge: " << meshes.size() << " parts, " << all.size() << " meshes -> " << options.output.string() << "\n";
+    out << "procex merge: " << meshes.size() << " parts, " << all.meshes.size() << " meshes -> " << options.output.string() << "\n";
   } catch (const IoError& e) {
     err << "procex merge: " << e.what() << "\n";
     return kExitUnusableInput;

@@ -1,7 +1,8 @@
 // `procex merge PARTS... -o OUT.glb [--report OUT.json]`: joins the outputs of
 // a sharded `procex batch` (its .glb files, and its .json reports if --report
 // is given) into the file an unsharded run writes: buildings ordered by their
-// feature's position in the GeoJSON file.
+// feature's position in the GeoJSON file, placed meshes (instanced windows) kept
+// instanced and written once.
 #pragma once
 
 #include <filesystem>
