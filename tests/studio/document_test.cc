@@ -195,5 +195,41 @@ TEST(Document, OpenOfBadFileThrowsWithLocation) {
   }
 }
 
+// Variadic ports: Merge's `inputs` (an int) and Switch's `cases` (a list of strings).
+TEST(Document, PortCountsChangeAsOneUndoStepAndNeverDropAConnectedPort) {
+  Document doc;
+  const NodeId extrude = *doc.add_node("Extrude", 0, 0);
+  const NodeId merge = *doc.add_node("Merge", 250, 0);
+  const std::size_t inputs = *doc.graph().node(merge)->decl().param_index("inputs");
+  ASSERT_EQ(doc.graph().node(merge)->decl().inputs().size(), 2u);
+  ASSERT_TRUE(doc.set_port_count(merge, inputs, 3));
+  EXPECT_EQ(doc.graph().node(merge)->decl().inputs().size(), 3u);
+  ASSERT_TRUE(doc.connect({extrude, 0}, {merge, 2}));  // mesh_3
+  const std::uint64_t before = doc.revision();
+  const Status refused = doc.set_port_count(merge, inputs, 2);
+  EXPECT_FALSE(refused);
+  EXPECT_NE(refused.message().find("'mesh_3'"), std::string::npos) << refused.message();
+  EXPECT_NE(refused.message().find("disconnect"), std::string::npos) << refused.message();
+  EXPECT_EQ(doc.revision(), before);
+  EXPECT_EQ(doc.graph().node(merge)->decl().inputs().size(), 3u);
+  EXPECT_FALSE(doc.set_port_count(merge, inputs, 0));  // below the declared range
+  ASSERT_TRUE(doc.set_port_count(merge, inputs, 5));
+  EXPECT_EQ(doc.graph().node(merge)->decl().inputs().size(), 5u);
+  EXPECT_TRUE(doc.undo());
+  EXPECT_EQ(doc.graph().node(merge)->decl().inputs().size(), 3u);
+  EXPECT_EQ(doc.graph().source({merge, 2}), (PortRef{extrude, 0}));
+
+  const NodeId sw = *doc.add_node("Switch", 250, 200);
+  const std::size_t cases = *doc.graph().node(sw)->decl().param_index("cases");
+  ASSERT_TRUE(doc.set_param(sw, cases, Value::make(std::vector<std::string>{"house", "shop"})));
+  ASSERT_TRUE(doc.set_port_count(sw, cases, 3));
+  EXPECT_EQ(doc.graph().node(sw)->params[cases].get<std::vector<std::string>>(), (std::vector<std::string>{"house", "shop", ""}));
+  EXPECT_EQ(doc.graph().node(sw)->decl().inputs().size(), 4u);  // default + 3 cases
+  ASSERT_TRUE(doc.set_port_count(sw, cases, 1));
+  EXPECT_EQ(doc.graph().node(sw)->params[cases].get<std::vector<std::string>>(), (std::vector<std::string>{"house"}));
+  // Not a port-count parameter.
+  EXPECT_FALSE(doc.set_port_count(sw, *doc.graph().node(sw)->decl().param_index("value"), 2));
+}
+
 }  // namespace
 }  // namespace procex::studio

@@ -83,6 +83,21 @@ Status Document::set_param(NodeId id, std::size_t param, Value v) {
   return changed(stack_.set_param(id, n->decl().params()[param].name, std::move(v)));
 }
 
+Status Document::set_port_count(NodeId id, std::size_t param, std::size_t count) {
+  const Node* n = graph_.node(id);
+  if (!n) return Status::error("no node " + std::to_string(id));
+  if (param >= n->decl().params().size() || !n->decl().params()[param].sets_port_count)
+    return Status::error("node " + std::to_string(id) + " has no port-count parameter " + std::to_string(param));
+  const Value& now = n->params[param];
+  if (now.is<std::int64_t>()) return set_param(id, param, Value::make(static_cast<std::int64_t>(count)));
+  if (now.is<std::vector<std::string>>()) {
+    std::vector<std::string> entries = now.get<std::vector<std::string>>();
+    entries.resize(count);
+    return set_param(id, param, Value::make(std::move(entries)));
+  }
+  return Status::error("parameter '" + n->decl().params()[param].name + "' sets a port count but is neither an int nor a list of strings");
+}
+
 Status Document::move_selection(double dx, double dy) {
   if (selection_.empty() || (dx == 0 && dy == 0)) return Status::ok();
   stack_.begin_macro(selection_.size() == 1 ? "move node" : "move nodes");

@@ -48,6 +48,10 @@ class Document {
   Status connect(PortRef from, PortRef to);
   Status disconnect(PortRef to);
   Status set_param(NodeId id, std::size_t param, Value v);
+  // Variadic ports: sets the count asked for by port-count parameter `param`
+  // (an int to `count`; a list of strings cut at the end, or padded with empty
+  // entries). Refused, naming the port, when a connected port would go.
+  Status set_port_count(NodeId id, std::size_t param, std::size_t count);
   // Moves every selected node by (dx, dy) canvas units.
   Status move_selection(double dx, double dy);
   Status remove_selection();

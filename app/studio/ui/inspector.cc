@@ -69,6 +69,27 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
     const Value& v = n.params[i];
     ImGui::PushID(static_cast<int>(i));
     const char* label = p.name.c_str();
+    if (p.sets_port_count) {
+      // Variadic ports: one more or one fewer, each an undo step; the graph refuses to drop a connected port.
+      const std::size_t count = port_count_of(v);
+      auto step = [&](const char* text, const char* key, std::size_t to) {
+        if (ImGui::Button(text, ImVec2(ImGui::GetFrameHeight(), 0)))
+          if (Status s = doc.set_port_count(id, i, to); !s) status = s.message();
+        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+        widgets_[p.name + key] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+        ImGui::SameLine();
+      };
+      if (count > 0) step("-", ".remove", count - 1);
+      step("+", ".add", count + 1);
+      ImGui::Text("%zu %s", count, count == 1 ? "port" : "ports");
+      if (v.is<std::int64_t>()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(%s)", label);
+        if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%s", p.doc.c_str());
+        ImGui::PopID();
+        continue;
+      }
+    }
     if (!p.choices.empty()) {
       const std::string& cur = v.get<EnumValue>().choice;
       if (ImGui::BeginCombo(label, cur.c_str())) {

@@ -1,7 +1,8 @@
 // inspector.h -- the selected node's parameters, drawn from its declaration:
 // sliders with ranges and units for numbers, combos for enums, checkboxes,
 // text for strings and tags, JSON text for anything else (lists, points).
-// A drag of a slider is one undo step. Also shows the node's documentation,
+// A drag of a slider is one undo step. A parameter that sets a port count
+// (Merge inputs, Switch cases) gets - and + buttons. Also shows the node's documentation,
 // its diagnostics and its last evaluation outcome.
 #pragma once
 

@@ -240,5 +240,59 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
   fs::remove_all(dir);
 }
 
+bool has_pin(const json& map, std::uint64_t node, int port, bool output) {
+  return std::any_of(map["pins"].begin(), map["pins"].end(),
+                     [&](const json& p) { return p["node"] == node && p["port"] == port && p["output"] == output; });
+}
+
+// Variadic ports: the inspector's + and - change Merge's input count (pins
+// follow), a connected input is never dropped (the status bar says why), undo.
+TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_ports_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path recipe = dir / "merge.pxg";
+  std::ofstream(recipe) << R"({
+  "format": "procex-graph", "version": 2, "metadata": {"name": "merge"}, "inputs": [],
+  "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
+  "nodes": [
+    {"id": 1, "type": "Footprint Shape", "version": 1, "params": {"shape": "l"}},
+    {"id": 2, "type": "Extrude", "version": 1, "params": {}},
+    {"id": 3, "type": "Merge", "version": 2, "params": {"inputs": 2}}
+  ],
+  "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "3.mesh_1"},
+            {"from": "2.mesh", "to": "3.mesh_2"}, {"from": "3.mesh", "to": "@mesh"}],
+  "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}, "3": {"x": 520, "y": 20}}}
+})";
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "3"});
+  json map = studio.wait("the merge evaluated", [](const json& j) { return j["settled"] && j["params"].contains("inputs.add"); });
+  EXPECT_FALSE(has_pin(map, 3, 2, false));
+  std::uint64_t rev = revision(map);
+  click(widget_centre(map, "inputs.add"));
+  map = studio.wait("a third input", [&](const json& j) { return revision(j) > rev && has_pin(j, 3, 2, false); });
+  rev = revision(map);
+  click(widget_centre(map, "inputs.remove"));
+  map = studio.wait("back to two inputs", [&](const json& j) { return revision(j) > rev && !has_pin(j, 3, 2, false); });
+  rev = revision(map);
+  click(widget_centre(map, "inputs.remove"));  // mesh_2 is connected
+  map = studio.wait("the refusal", [](const json& j) { return j["status"].get<std::string>().find("'mesh_2'") != std::string::npos; });
+  EXPECT_EQ(revision(map), rev);
+  EXPECT_TRUE(has_pin(map, 3, 1, false));
+  press("ctrl+z");
+  map = studio.wait("the removal undone", [&](const json& j) { return revision(j) > rev && has_pin(j, 3, 2, false); });
+  press("ctrl+s");
+  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+
+  const Graph g = load_pxg(recipe);
+  const Node* merge = g.node(3);
+  ASSERT_TRUE(merge);
+  EXPECT_EQ(merge->params[*merge->decl().param_index("inputs")].get<std::int64_t>(), 3);
+  EXPECT_EQ(merge->decl().inputs().size(), 3u);
+  EXPECT_EQ(g.source({3, 1}), (PortRef{2, 0}));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
