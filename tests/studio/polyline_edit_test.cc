@@ -61,5 +61,19 @@ TEST(PolylineEdit, HitTests) {
   EXPECT_FALSE(nearest_edge(square, {0.2, 5}, 0.5, false));  // open: no closing edge
 }
 
+TEST(PolylineEdit, SnapsLevelOrPlumbWithANeighbourButNeverOntoIt) {
+  // Point 2 dragged near the height of point 1: a horizontal run (a ledge).
+  EXPECT_EQ(snap_to_neighbours(kProfile, 2, {1.6, 1.05}, 0.1, false), (Vec2{1.6, 1}));
+  // Near point 3's offset: plumb below it.
+  EXPECT_EQ(snap_to_neighbours(kProfile, 2, {1.95, 3}, 0.1, false), (Vec2{2, 3}));
+  // Out of reach: unchanged.
+  EXPECT_EQ(snap_to_neighbours(kProfile, 2, {1.5, 3}, 0.1, false), (Vec2{1.5, 3}));
+  // Near both of point 1's coordinates: only the closer snap, so the points stay apart.
+  EXPECT_EQ(snap_to_neighbours(kProfile, 2, {1.02, 1.05}, 0.1, false), (Vec2{1, 1.05}));
+  // A closed loop's first point has the last one as a neighbour.
+  const std::vector<Vec2> square = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  EXPECT_EQ(snap_to_neighbours(square, 0, {0.05, -1}, 0.1, true), (Vec2{0, -1}));
+}
+
 }  // namespace
 }  // namespace procex::studio

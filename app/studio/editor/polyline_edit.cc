@@ -30,6 +30,24 @@ std::vector<Vec2> move_point(std::vector<Vec2> pts, std::size_t i, Vec2 to, cons
   return pts;
 }
 
+Vec2 snap_to_neighbours(const std::vector<Vec2>& pts, std::size_t i, Vec2 to, double tolerance, bool closed) {
+  const std::size_t n = pts.size();
+  if (i >= n) return to;
+  std::vector<Vec2> neighbours;
+  if (i > 0 || (closed && n > 1)) neighbours.push_back(pts[(i + n - 1) % n]);
+  if (i + 1 < n || (closed && n > 1)) neighbours.push_back(pts[(i + 1) % n]);
+  double best_x = tolerance, best_y = tolerance;
+  Vec2 out = to;
+  for (const Vec2& q : neighbours) {
+    if (const double d = std::abs(q.x - to.x); d <= best_x) best_x = d, out.x = q.x;
+    if (const double d = std::abs(q.y - to.y); d <= best_y) best_y = d, out.y = q.y;
+  }
+  // Both snapped onto one neighbour would merge the two points: keep the closer snap only.
+  for (const Vec2& q : neighbours)
+    if (out.x == q.x && out.y == q.y) (best_x <= best_y ? out.y : out.x) = best_x <= best_y ? to.y : to.x;
+  return out;
+}
+
 std::vector<Vec2> insert_point(std::vector<Vec2> pts, std::size_t e, Vec2 at, const PolylineRules& rules) {
   const std::size_t n = pts.size();
   if (n == 0 || e >= (rules.closed ? n : n - 1)) return pts;

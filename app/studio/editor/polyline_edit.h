@@ -26,6 +26,11 @@ inline constexpr PolylineRules kProfileRules{false, true, true, 2};
 // polyline's point keeps its height between its neighbours' heights; a pinned
 // start does not move.
 std::vector<Vec2> move_point(std::vector<Vec2> pts, std::size_t i, Vec2 to, const PolylineRules& rules);
+// `to` for point i, with each coordinate within `tolerance` of a
+// neighbour's moved onto it: the edge to that neighbour becomes exactly
+// horizontal (a profile's soffit or ledge) or vertical (a wall, an
+// axis-aligned plan edge).
+Vec2 snap_to_neighbours(const std::vector<Vec2>& pts, std::size_t i, Vec2 to, double tolerance, bool closed);
 // Inserts a point on edge e (between points e and e + 1), at `at` projected
 // onto the edge so that a monotone polyline stays monotone.
 std::vector<Vec2> insert_point(std::vector<Vec2> pts, std::size_t e, Vec2 at, const PolylineRules& rules);

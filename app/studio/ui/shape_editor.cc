@@ -72,10 +72,13 @@ Fit fit(const std::vector<Vec2>& pts, ImVec2 corner, ImVec2 size) {
 
 void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
   const NodeId id = doc.selected();
+  buttons_.clear();
   if (id != node_) {
     node_ = id;
     dragging_.reset();
     selected_edges_.clear();
+    issue_.reset();
+    check_revision_ = 0;
   }
   const Node* n = id ? doc.graph().node(id) : nullptr;
   if (!n) {
@@ -91,6 +94,10 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   const PolylineRules rules = is_profile ? kProfileRules : kPlanRules;
   const auto points_param = param_of_type(*n, "points", typeid(std::vector<Vec2>));
   std::vector<Vec2> pts = points_param ? n->params[*points_param].get<std::vector<Vec2>>() : std::vector<Vec2>{};
+  // A plain index, not an optional: g++ 12 wrongly warns an optional's value may be uninitialised here.
+  const std::size_t hole_param = plan_out ? param_of_type(*n, "hole", typeid(std::vector<Vec2>)).value_or(SIZE_MAX) : SIZE_MAX;
+  const bool has_hole_param = hole_param != SIZE_MAX;
+  const std::vector<Vec2> hole = has_hole_param ? n->params[hole_param].get<std::vector<Vec2>>() : std::vector<Vec2>{};
 
   // The evaluated plan (all loops, with edge ids, angles and profiles).
   const Footprint* fp = nullptr;
@@ -104,7 +111,17 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     ImGui::TextDisabled("Nothing evaluated yet.");
     return;
   }
-  ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone), double-click a segment to add, right-click to delete."
+  if (has_hole_param && points_param) {
+    if (hole.empty() ? ImGui::SmallButton("Add hole") : ImGui::SmallButton("Delete hole")) {
+      std::vector<Vec2> next = hole.empty() ? hole_inside(pts) : std::vector<Vec2>{};
+      if (hole.empty() && next.empty()) status = "the outer loop has no inside to put a hole in";
+      else if (Status s = doc.set_param(id, hole_param, Value::make(std::move(next))); !s) status = s.message();
+    }
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons_["hole"] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    ImGui::SameLine();
+  }
+  ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone, snapped level or plumb; Alt: free), double-click a segment to add, right-click to delete."
                       : points_param ? "Plan: drag corners, double-click an edge to add one, right-click a corner to delete, click edges to select."
                                      : "Plan: click edges to select them.");
   const ImVec2 corner = ImGui::GetCursorScreenPos();
@@ -150,46 +167,73 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
       }
     }
   }
-  // The editable polyline.
-  if (points_param) {
-    const std::size_t segs = rules.closed ? pts.size() : (pts.empty() ? 0 : pts.size() - 1);
-    std::vector<std::string> tags;
-    if (auto t = param_of_type(*n, "tags", typeid(std::vector<std::string>))) tags = n->params[*t].get<std::vector<std::string>>();
+  // The editable polylines: the points, and a Footprint Polygon's hole.
+  struct Editable {
+    std::size_t param;
+    std::vector<Vec2> pts;
+    bool is_hole;
+  };
+  std::vector<Editable> loops;
+  if (points_param) loops.push_back({*points_param, pts, false});
+  if (!hole.empty()) loops.push_back({hole_param, hole, true});
+  if (plan_out && points_param && check_revision_ != doc.revision()) {
+    check_revision_ = doc.revision();
+    issue_ = check_plan(pts, hole);
+  }
+  std::vector<std::string> tags;
+  if (auto t = param_of_type(*n, "tags", typeid(std::vector<std::string>))) tags = n->params[*t].get<std::vector<std::string>>();
+  std::optional<Grab> near_point;
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    const std::vector<Vec2>& lp = loops[k].pts;
+    const std::size_t segs = rules.closed ? lp.size() : (lp.empty() ? 0 : lp.size() - 1);
     for (std::size_t e = 0; e < segs && !fp; ++e) {
-      const Vec2 a = pts[e], b = pts[(e + 1) % pts.size()];
+      const Vec2 a = lp[e], b = lp[(e + 1) % lp.size()];
       dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), tag_color_u32(e < tags.size() ? tags[e] : ""), 2.5f);
       if (e < tags.size()) {
         const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
         dl->AddText(ImVec2(mid.x + 6, mid.y - 7), IM_COL32(220, 220, 220, 255), tags[e].c_str());
       }
     }
-    const auto near_point = hovered ? nearest_point(pts, mw, tol) : std::nullopt;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const bool hot = dragging_ == i || near_point == i;
-      dl->AddCircleFilled(f.to_screen(pts[i].x, pts[i].y), hot ? 6.0f : 4.5f, hot ? IM_COL32(255, 170, 40, 255) : IM_COL32(240, 240, 240, 255));
+    if (hovered && !near_point)
+      if (auto i = nearest_point(lp, mw, tol)) near_point = Grab{k, *i};
+  }
+  for (std::size_t k = 0; k < loops.size(); ++k)
+    for (std::size_t i = 0; i < loops[k].pts.size(); ++i) {
+      const Grab here{k, i};
+      const bool hot = dragging_ == here || near_point == here;
+      const bool bad = issue_ && issue_->loop == static_cast<int>(k) && issue_->vertex == static_cast<int>(i);
+      const ImVec2 at = f.to_screen(loops[k].pts[i].x, loops[k].pts[i].y);
+      if (bad) dl->AddCircle(at, 10.0f, IM_COL32(235, 70, 60, 255), 0, 2.5f);
+      dl->AddCircleFilled(at, hot ? 6.0f : 4.5f, hot ? IM_COL32(255, 170, 40, 255) : bad ? IM_COL32(235, 70, 60, 255) : IM_COL32(240, 240, 240, 255));
     }
-    auto apply = [&](std::vector<Vec2> v) {
-      if (Status s = doc.set_param(id, *points_param, Value::make(std::move(v))); !s) status = s.message();
-    };
-    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point) {
-      dragging_ = near_point;
-      doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
+  auto apply = [&](std::size_t k, std::vector<Vec2> v) {
+    if (Status s = doc.set_param(id, loops[k].param, Value::make(std::move(v))); !s) status = s.message();
+  };
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point) {
+    dragging_ = near_point;
+    doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
+  }
+  if (dragging_ && dragging_->loop < loops.size()) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      const std::vector<Vec2>& lp = loops[dragging_->loop].pts;
+      // Alt drags freely; otherwise a point snaps level with (or plumb above) its neighbours.
+      const Vec2 to = ImGui::GetIO().KeyAlt ? mw : snap_to_neighbours(lp, dragging_->point, mw, tol, rules.closed);
+      apply(dragging_->loop, move_point(lp, dragging_->point, to, rules));
+    } else {
+      dragging_.reset();
+      doc.end_gesture();
     }
-    if (dragging_) {
-      if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        apply(move_point(pts, *dragging_, mw, rules));
-      } else {
-        dragging_.reset();
-        doc.end_gesture();
+  }
+  if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point)
+    for (std::size_t k = 0; k < loops.size(); ++k)
+      if (auto e = nearest_edge(loops[k].pts, mw, tol, rules.closed)) {
+        apply(k, insert_point(loops[k].pts, *e, mw, rules));
+        break;
       }
-    }
-    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point)
-      if (auto e = nearest_edge(pts, mw, tol, rules.closed)) apply(insert_point(pts, *e, mw, rules));
-    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near_point) {
-      auto r = remove_point(pts, *near_point, rules);
-      if (r) apply(r.value());
-      else status = r.message();
-    }
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near_point) {
+    auto r = remove_point(loops[near_point->loop].pts, near_point->point, rules);
+    if (r) apply(near_point->loop, r.value());
+    else status = loops[near_point->loop].is_hole ? "hole: " + r.message() + " (Delete hole removes it)" : r.message();
   }
   // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge) {
@@ -197,6 +241,13 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     if (!selected_edges_.erase(*hover_edge)) selected_edges_.insert(*hover_edge);
   }
   dl->PopClipRect();
+  if (issue_) {  // at the bottom of the view, over a dark band so the plan does not hide it
+    const float wrap = size.x - 12;
+    const ImVec2 text = ImGui::CalcTextSize(issue_->message.c_str(), nullptr, false, wrap);
+    const ImVec2 at(corner.x + 6, corner.y + size.y - text.y - 6);
+    dl->AddRectFilled(ImVec2(corner.x, at.y - 3), ImVec2(corner.x + size.x, corner.y + size.y), IM_COL32(24, 25, 30, 220));
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(255, 102, 90, 255), issue_->message.c_str(), nullptr, wrap);
+  }
   if (!selected_edges_.empty()) {
     ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));
     std::string text = "selected edges:";

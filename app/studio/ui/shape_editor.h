@@ -5,28 +5,44 @@
 // their id and angle or profile; click edges to select them (Assign
 // Profiles' `selection` can take them). When the node's plan comes from a
 // `points` parameter (Footprint Polygon), drag vertices, double-click an
-// edge to add one, right-click a vertex to delete it.
+// edge to add one, right-click a vertex to delete it; the same for its hole,
+// which Add hole / Delete hole make and remove. A plan core would refuse is
+// flagged at the loop and vertex at fault.
 // Profile: a Profile node's `points` polyline in (offset, height), segments
-// labelled with their tags; dragging keeps it monotone and (0, 0) fixed.
+// labelled with their tags; dragging keeps it monotone and (0, 0) fixed,
+// and snaps a point level with a neighbour (a soffit or ledge) or plumb.
 // Every change is a set_param on the document, one undo step per drag.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
+#include "app/studio/editor/plan_edit.h"
 
 namespace procex::studio {
 
 class ShapeEditor {
  public:
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
+  // Buttons drawn in the last frame (window pixels), for the --ui-map.
+  const std::map<std::string, std::array<float, 4>>& buttons() const { return buttons_; }
 
  private:
+  struct Grab {
+    std::size_t loop = 0, point = 0;  // loop 0: the points, 1: the hole
+    bool operator==(const Grab&) const = default;
+  };
   NodeId node_ = 0;
-  std::optional<std::size_t> dragging_;
+  std::optional<Grab> dragging_;
+  std::uint64_t check_revision_ = 0;  // the plan is checked again only after an edit
+  std::optional<PlanIssue> issue_;
+  std::map<std::string, std::array<float, 4>> buttons_;
   std::set<std::int32_t> selected_edges_;  // edge ids of the footprint
 };
 

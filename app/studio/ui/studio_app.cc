@@ -455,6 +455,7 @@ class App {
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
     j["buttons"] = buttons_;
+    for (const auto& [name, r] : shape_editor_.buttons()) j["buttons"][name] = r;
     j["links"] = nlohmann::json::array();
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();

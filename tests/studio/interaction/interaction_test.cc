@@ -294,5 +294,43 @@ TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
   fs::remove_all(dir);
 }
 
+// The plan editor's Add hole / Delete hole on a Footprint Polygon, undone.
+TEST(StudioInteraction, AddsAndDeletesAHole) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_hole_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path recipe = dir / "polygon.pxg";
+  std::ofstream(recipe) << R"({
+  "format": "procex-graph", "version": 2, "metadata": {"name": "polygon"}, "inputs": [],
+  "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
+  "nodes": [
+    {"id": 1, "type": "Footprint Polygon", "version": 1, "params": {"points": [[0, 0], [12, 0], [12, 9], [0, 9]]}},
+    {"id": 2, "type": "Extrude", "version": 1, "params": {}}
+  ],
+  "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "@mesh"}],
+  "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}}}
+})";
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
+  json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("hole"); });
+  const std::size_t faces = map["preview_faces"];
+  std::uint64_t rev = revision(map);
+  click(button_centre(map, "hole"));  // Add hole
+  map = studio.wait("the courtyard evaluated", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > faces; });
+  EXPECT_EQ(map["errors"], 0);
+  press("ctrl+s");
+  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  const auto hole_of = [&] { return load_pxg(recipe).node(1)->params[1].get<std::vector<Vec2>>(); };
+  EXPECT_EQ(hole_of().size(), 4u);
+  rev = revision(map);
+  click(button_centre(map, "hole"));  // Delete hole
+  map = studio.wait("the hole deleted", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] == faces; });
+  rev = revision(map);
+  press("ctrl+z");
+  studio.wait("the deletion undone", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > faces; });
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
