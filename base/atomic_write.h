@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 #include "base/io_error.h"
@@ -14,5 +15,8 @@ namespace procex {
 // Throws IoError naming the path and the system's reason on failure; the
 // temporary file is removed.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+// The same for a file made of pieces, written in order without joining them
+// first (a .glb's binary chunk straight from each building's arrays).
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> pieces);
 
 }  // namespace procex

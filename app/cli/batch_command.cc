@@ -195,7 +195,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       ++(b.status == "refused" ? refused : failed);
       err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason << "\n";
     }
-    if (one_glb) write_glb(options.output, all_gltf);
+    if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
     else if (!per_building) write_mesh_set(options.output, all);
     const auto written = std::chrono::steady_clock::now();
     if (!options.report.empty()) {

@@ -1,13 +1,19 @@
 #include "core/io/gltf_write.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <concepts>
+#include <cstdint>
 #include <cstring>
+#include <deque>
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <sstream>
+#include <string_view>
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
 #include <tiny_gltf.h>
 
 #include "core/geom/convex_partition.h"
@@ -23,139 +29,93 @@ namespace {
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
 constexpr int kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 
-// The buffer holds three views, each tightly packed: every position, then every
-// normal (both vertex attributes), then every index; accessors point into them.
-// Three views instead of three per primitive keep the JSON small for whole cities.
-struct Layout {
-  std::size_t positions = 0, normals = 0, indices = 0;  // byte offsets of the views
-  std::size_t end = 0;
-};
+// The file is written without an in-memory glTF model: each building's (and
+// placed mesh's) JSON is rendered on its own, in parallel, once counting has
+// told it its first index in every array; the pieces are joined in file
+// order, and the binary chunk goes to the file straight from the primitives'
+// arrays. So the bytes do not depend on threads, and nothing is copied twice.
 
-Layout layout_of(const std::vector<GltfMeshData>& meshes, const std::vector<const GltfMeshData*>& prototypes) {
-  std::size_t floats = 0, indices = 0;
-  const auto count = [&](const GltfMeshData& mesh) {
-    for (const GltfPrimitiveData& p : mesh.primitives)
-      if (!p.indices.empty()) floats += p.positions.size(), indices += p.indices.size();
-  };
-  for (const GltfMeshData* p : prototypes) count(*p);
-  for (const GltfMeshData& mesh : meshes) count(mesh);
-  Layout l;
-  l.normals = floats * sizeof(float);
-  l.indices = 2 * l.normals;
-  l.end = l.indices + indices * sizeof(std::uint32_t);
-  return l;
+// JSON numbers in their shortest round-trip form: reading the file gives back
+// the same doubles, so a merged file has the bytes of one run.
+void put_number(std::string& out, double v) {
+  char buf[32];
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
-template <class T>
-std::size_t append(std::vector<unsigned char>& buffer, std::size_t at, const std::vector<T>& data) {
-  std::memcpy(buffer.data() + at, data.data(), data.size() * sizeof(T));
-  return at + data.size() * sizeof(T);
+template <std::integral T>
+void put_index(std::string& out, T v) {
+  char buf[24];
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
-int add_accessor(tinygltf::Model& m, int view, std::size_t offset, int component, int type, std::size_t count) {
-  tinygltf::Accessor& a = m.accessors.emplace_back();
-  a.bufferView = view;
-  a.byteOffset = offset;
-  a.componentType = component;
-  a.type = type;
-  a.count = count;
-  return static_cast<int>(m.accessors.size() - 1);
+// Whether s is UTF-8, as JSON text must be.
+bool is_utf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2) return false;
+    i += n;
+  }
+  return true;
 }
 
-void add_material(tinygltf::Model& m, const std::string& tag) {
-  tinygltf::Material& mat = m.materials.emplace_back();
-  mat.name = tag;
-  const auto c = tag_colour(tag);
-  mat.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
-  mat.pbrMetallicRoughness.metallicFactor = 0.0;
-  mat.pbrMetallicRoughness.roughnessFactor = 0.9;
-}
-
-// Where the next primitive's data goes in the buffer, and the materials made so far.
-struct Writing {
-  tinygltf::Model& m;
-  std::size_t starts[3], at[3];
-  std::map<std::string, int> materials;
-};
-
-// Adds data's primitives as a glTF mesh named `name`; returns its index, or
-// -1 when it has no triangles (glTF meshes need a primitive).
-int add_mesh(Writing& w, const GltfMeshData& data, const std::string& name) {
-  tinygltf::Model& m = w.m;
-  tinygltf::Mesh mesh;
-  mesh.name = name;
-  std::vector<unsigned char>& buffer = m.buffers[0].data;
-  for (const GltfPrimitiveData& p : data.primitives) {
-    if (p.indices.empty()) continue;
-    auto [it, added] = w.materials.try_emplace(p.tag, static_cast<int>(w.materials.size()));
-    if (added) add_material(m, p.tag);
-    tinygltf::Primitive& prim = mesh.primitives.emplace_back();
-    prim.mode = TINYGLTF_MODE_TRIANGLES;
-    prim.material = it->second;
-    prim.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(p.tag)}});
-    const std::size_t n = p.positions.size() / 3;
-    const int pos = add_accessor(m, 0, w.at[0] - w.starts[0], kFloat, TINYGLTF_TYPE_VEC3, n);
-    std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
-    for (std::size_t i = 0; i < p.positions.size(); ++i) {
-      lo[i % 3] = std::min<double>(lo[i % 3], p.positions[i]);
-      hi[i % 3] = std::max<double>(hi[i % 3], p.positions[i]);
+void put_string(std::string& out, std::string_view s) {
+  out += '"';
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c < 0x20) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\u00";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += ch;
     }
-    m.accessors[static_cast<std::size_t>(pos)].minValues = std::move(lo);
-    m.accessors[static_cast<std::size_t>(pos)].maxValues = std::move(hi);
-    prim.attributes["POSITION"] = pos;
-    prim.attributes["NORMAL"] = add_accessor(m, 1, w.at[1] - w.starts[1], kFloat, TINYGLTF_TYPE_VEC3, n);
-    prim.indices = add_accessor(m, 2, w.at[2] - w.starts[2], kUint, TINYGLTF_TYPE_SCALAR, p.indices.size());
-    w.at[0] = append(buffer, w.at[0], p.positions);
-    w.at[1] = append(buffer, w.at[1], p.normals);
-    w.at[2] = append(buffer, w.at[2], p.indices);
   }
-  if (mesh.primitives.empty()) return -1;
-  m.meshes.push_back(std::move(mesh));
-  return static_cast<int>(m.meshes.size() - 1);
+  out += '"';
 }
 
-int add_node(tinygltf::Model& m, tinygltf::Node node) {
-  m.nodes.push_back(std::move(node));
-  return static_cast<int>(m.nodes.size() - 1);
-}
-
-std::vector<double> matrix_values(const glm::dmat4& t) {
-  if (t == glm::dmat4(1.0)) return {};  // glTF's default: left out
-  std::vector<double> out;
+void put_matrix(std::string& out, const glm::dmat4& t) {
+  out += '[';
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out.push_back(t[c][r]);
-  return out;
-}
-
-// An instance's node (two when its matrix is not translation * rotation *
-// scale); returns the outer one's index.
-int add_instance_node(tinygltf::Model& m, const GltfInstanceData& in, const std::string& name, int mesh) {
-  tinygltf::Node node;
-  node.name = name;
-  node.extras = tinygltf::Value(tinygltf::Value::Object{{"tag", tinygltf::Value(in.tag)}});
-  if (is_trs(in.transform)) {
-    node.matrix = matrix_values(in.transform);
-    node.mesh = mesh;
-    return add_node(m, std::move(node));
-  }
-  const TrsSplit split = split_trs(in.transform);
-  tinygltf::Node inner;
-  inner.name = name;
-  inner.matrix = matrix_values(split.inner);
-  inner.mesh = mesh;
-  node.matrix = matrix_values(split.outer);
-  // outer * inner is the transform only to rounding: the exact one rides
-  // along, so reading and writing again gives the same bytes.
-  tinygltf::Value::Array exact;
-  for (double v : matrix_values(in.transform)) exact.emplace_back(v);
-  node.extras.Get<tinygltf::Value::Object>()["transform"] = tinygltf::Value(std::move(exact));
-  node.children = {add_node(m, std::move(inner))};
-  return add_node(m, std::move(node));
+    for (int r = 0; r < 4; ++r) {
+      if (c + r > 0) out += ',';
+      put_number(out, t[c][r]);
+    }
+  out += ']';
 }
 
 bool has_triangles(const GltfMeshData& mesh) {
   return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
                      [](const GltfPrimitiveData& p) { return !p.indices.empty(); });
+}
+
+// What write_glb needs of a building (or placed mesh) to be written as procex
+// reads it: names that JSON can hold, as many normals as positions, whole
+// vertices, indices that name one of them. Throws IoError naming the building.
+void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
+  const auto refuse = [&](const std::string& what) {
+    throw IoError("cannot write '" + path.string() + "': mesh '" + mesh.building + "' " + what, path.string());
+  };
+  if (!is_utf8(mesh.building)) refuse("has a name that is not UTF-8");
+  for (const GltfPrimitiveData& p : mesh.primitives) {
+    if (!is_utf8(p.tag)) refuse("has a tag that is not UTF-8");
+    if (p.positions.size() % 3 != 0 || p.normals.size() != p.positions.size())
+      refuse("has " + std::to_string(p.normals.size()) + " normal and " + std::to_string(p.positions.size()) +
+             " position coordinates in primitive '" + p.tag + "'");
+    const std::size_t vertices = p.positions.size() / 3;
+    if (p.indices.size() % 3 != 0 ||
+        std::any_of(p.indices.begin(), p.indices.end(), [&](std::uint32_t i) { return i >= vertices; }))
+      refuse("has indices that are not triangles of its " + std::to_string(vertices) + " vertices in primitive '" +
+             p.tag + "'");
+    if (!std::all_of(p.positions.begin(), p.positions.end(), [](float x) { return std::isfinite(x); }))
+      refuse("has a vertex that is not finite in primitive '" + p.tag + "'");
+  }
 }
 
 void check_instances(const std::filesystem::path& path, const GltfMeshData& building,
@@ -173,6 +133,7 @@ void check_instances(const std::filesystem::path& path, const GltfMeshData& buil
                     path.string());
     if (const std::string problem = transform_problem(in.transform); !problem.empty())
       throw IoError(where + " has " + problem, path.string());
+    if (!is_utf8(in.tag)) throw IoError(where + " has a tag that is not UTF-8", path.string());
   }
 }
 
@@ -204,51 +165,326 @@ WrittenPrototypes written_prototypes(const std::vector<GltfMeshData>& buildings,
   return out;
 }
 
-tinygltf::Model to_model(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
-                         const std::vector<GltfMeshData>& prototypes) {
+// One thing written with its own glTF mesh and nodes: a placed mesh (written
+// first, so its mesh index is its slot) or a building.
+struct Item {
+  const GltfMeshData* data = nullptr;
+  bool placed = false;
+  // Its first index in each array, and its first float in the position and
+  // normal views and first index in the index view.
+  std::size_t accessor = 0, mesh = 0, node = 0, floats = 0, indices = 0;
+  bool has_mesh = false, has_node = false;
+  // Its JSON, each a comma-separated run of array elements ("" if none).
+  std::string nodes_json, mesh_json, accessors_json;
+};
+
+// Counts every item's share of each array: its first indices follow.
+struct Totals {
+  std::size_t accessors = 0, meshes = 0, nodes = 0, floats = 0, indices = 0;
+};
+
+Totals place_items(std::vector<Item>& items) {
+  Totals t;
+  for (Item& item : items) {
+    const GltfMeshData& d = *item.data;
+    item.accessor = t.accessors, item.mesh = t.meshes, item.node = t.nodes;
+    item.floats = t.floats, item.indices = t.indices;
+    for (const GltfPrimitiveData& p : d.primitives)
+      if (!p.indices.empty()) t.accessors += 3, t.floats += p.positions.size(), t.indices += p.indices.size();
+    item.has_mesh = t.accessors > item.accessor;
+    t.meshes += item.has_mesh;
+    item.has_node = !item.placed && (item.has_mesh || !d.instances.empty());
+    if (!item.has_node) continue;
+    t.nodes += 1;
+    for (const GltfInstanceData& in : d.instances) t.nodes += is_trs(in.transform) ? 1 : 2;
+  }
+  return t;
+}
+
+void put_accessor(std::string& out, int view, std::size_t byte_offset, int component, const char* type,
+                  std::size_t count) {
+  if (!out.empty()) out += ',';
+  out += "{\"bufferView\":";
+  put_index(out, view);
+  out += ",\"byteOffset\":";
+  put_index(out, byte_offset);
+  out += ",\"componentType\":";
+  put_index(out, component);
+  out += ",\"count\":";
+  put_index(out, count);
+  out += ",\"type\":\"";
+  out += type;
+  out += '"';
+}
+
+// The item's mesh and accessors (the validator wants each position
+// accessor's exact bounds).
+void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials) {
+  const GltfMeshData& d = *item.data;
+  std::string& mesh = item.mesh_json;
+  std::string& acc = item.accessors_json;
+  std::size_t a = item.accessor, floats = item.floats, indices = item.indices;
+  mesh += "{\"name\":";
+  put_string(mesh, d.building);
+  mesh += ",\"primitives\":[";
+  bool first = true;
+  for (const GltfPrimitiveData& p : d.primitives) {
+    if (p.indices.empty()) continue;
+    if (!first) mesh += ',';
+    first = false;
+    mesh += "{\"attributes\":{\"NORMAL\":";
+    put_index(mesh, a + 1);
+    mesh += ",\"POSITION\":";
+    put_index(mesh, a);
+    mesh += "},\"indices\":";
+    put_index(mesh, a + 2);
+    mesh += ",\"material\":";
+    put_index(mesh, materials.at(p.tag));
+    mesh += ",\"mode\":4,\"extras\":{\"tag\":";
+    put_string(mesh, p.tag);
+    mesh += "}}";
+    a += 3;
+
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (std::size_t i = 0; i < p.positions.size(); i += 3)
+      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p.positions[i + k]), hi[k] = std::max(hi[k], p.positions[i + k]);
+    const std::size_t n = p.positions.size() / 3;
+    put_accessor(acc, 0, floats * sizeof(float), kFloat, "VEC3", n);
+    for (const auto& [key, bound] : {std::pair{",\"min\":[", lo}, std::pair{",\"max\":[", hi}}) {
+      acc += key;
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (k > 0) acc += ',';
+        put_number(acc, bound[k]);
+      }
+      acc += ']';
+    }
+    acc += '}';
+    put_accessor(acc, 1, floats * sizeof(float), kFloat, "VEC3", n);
+    acc += '}';
+    put_accessor(acc, 2, indices * sizeof(std::uint32_t), kUint, "SCALAR", p.indices.size());
+    acc += '}';
+    floats += p.positions.size();
+    indices += p.indices.size();
+  }
+  mesh += ']';
+  if (item.placed) {
+    mesh += ",\"extras\":{\"placed\":";
+    put_string(mesh, d.building);
+    mesh += '}';
+  }
+  mesh += '}';
+}
+
+// The building's node, then each instance's node (its outer node, then the
+// inner one when its matrix is not translation * rotation * scale).
+void render_nodes(Item& item, const WrittenPrototypes& written) {
+  const GltfMeshData& d = *item.data;
+  std::string& out = item.nodes_json;
+  out += "{\"name\":";
+  put_string(out, d.building);
+  if (item.has_mesh) {
+    out += ",\"mesh\":";
+    put_index(out, item.mesh);
+  }
+  std::string children;
+  std::size_t next = item.node + 1;
+  for (const GltfInstanceData& in : d.instances) {
+    if (!children.empty()) children += ',';
+    put_index(children, next);
+    next += is_trs(in.transform) ? 1 : 2;
+  }
+  if (!children.empty()) out += ",\"children\":[" + children + "]";
+  out += ",\"extras\":{\"building\":";
+  put_string(out, d.building);
+  out += ",\"feature\":";
+  put_index(out, d.feature);
+  out += "}}";
+
+  next = item.node + 1;
+  for (const GltfInstanceData& in : d.instances) {
+    const std::size_t slot = written.slot[in.prototype];  // also the placed mesh's glTF mesh
+    const std::string& name = written.meshes[slot]->building;
+    const bool trs = is_trs(in.transform);
+    const TrsSplit split = trs ? TrsSplit{in.transform, glm::dmat4(1.0)} : split_trs(in.transform);
+    out += ",{\"name\":";
+    put_string(out, name);
+    if (trs) {
+      out += ",\"mesh\":";
+      put_index(out, slot);
+    } else {
+      out += ",\"children\":[";
+      put_index(out, next + 1);
+      out += ']';
+    }
+    if (split.outer != glm::dmat4(1.0)) {  // the identity is glTF's default: left out
+      out += ",\"matrix\":";
+      put_matrix(out, split.outer);
+    }
+    out += ",\"extras\":{\"tag\":";
+    put_string(out, in.tag);
+    if (!trs) {
+      // outer * inner is the transform only to rounding: the exact one rides
+      // along, so reading and writing again gives the same bytes.
+      out += ",\"transform\":";
+      put_matrix(out, in.transform);
+    }
+    out += "}}";
+    if (!trs) {
+      out += ",{\"name\":";
+      put_string(out, name);
+      out += ",\"mesh\":";
+      put_index(out, slot);
+      if (split.inner != glm::dmat4(1.0)) {
+        out += ",\"matrix\":";
+        put_matrix(out, split.inner);
+      }
+      out += '}';
+    }
+    next += trs ? 1 : 2;
+  }
+}
+
+void put_material(std::string& out, const std::string& tag) {
+  out += "{\"name\":";
+  put_string(out, tag);
+  out += ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[";
+  for (double c : tag_colour(tag)) put_number(out, c), out += ',';
+  out += "1],\"metallicFactor\":0,\"roughnessFactor\":0.9}}";
+}
+
+// A file as views of the text it is made of, in order, for
+// write_file_atomically: the items' JSON is never joined into one string.
+// Text made on the way is held here (a deque: its strings do not move).
+class Pieces {
+ public:
+  void add(std::string_view text) {
+    if (text.empty()) return;
+    views_.push_back(text);
+    size_ += text.size();
+  }
+  void add_own(std::string text) { add(owned_.emplace_back(std::move(text))); }
+  // `,"key":[` + the items' non-empty runs joined by commas + `]`, nothing if all are empty.
+  void add_array(std::string_view key, const std::vector<Item>& items, std::string Item::*run) {
+    bool first = true;
+    for (const Item& item : items) {
+      if ((item.*run).empty()) continue;
+      if (first) add_own(",\"" + std::string(key) + "\":[");
+      else add(",");
+      add(item.*run);
+      first = false;
+    }
+    if (!first) add("]");
+  }
+  std::size_t size() const { return size_; }
+  const std::vector<std::string_view>& views() const { return views_; }
+
+ private:
+  std::vector<std::string_view> views_;
+  std::deque<std::string> owned_;
+  std::size_t size_ = 0;
+};
+
+void append_u32(std::string& out, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);  // little-endian, as GLB wants
+}
+
+void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
+                 const std::vector<GltfMeshData>& prototypes) {
   for (const GltfMeshData& data : meshes) check_instances(path, data, prototypes);
   const WrittenPrototypes written = written_prototypes(meshes, prototypes);
-  tinygltf::Model m;
-  m.asset.version = "2.0";
-  m.asset.generator = "procex";
-  const Layout layout = layout_of(meshes, written.meshes);
-  m.scenes.emplace_back();
-  m.defaultScene = 0;
-  if (layout.end == 0) return m;
-  tinygltf::Buffer& buffer = m.buffers.emplace_back();
-  buffer.data.resize(layout.end);
-  Writing w{m, {layout.positions, layout.normals, layout.indices}, {layout.positions, layout.normals, layout.indices}, {}};
-  const std::size_t ends[3] = {layout.normals, layout.indices, layout.end};
-  for (int v = 0; v < 3; ++v) {
-    tinygltf::BufferView& view = m.bufferViews.emplace_back();
-    view.buffer = 0;
-    view.byteOffset = w.starts[v];
-    view.byteLength = ends[v] - w.starts[v];
-    view.target = v < 2 ? TINYGLTF_TARGET_ARRAY_BUFFER : TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
-    if (v < 2) view.byteStride = 3 * sizeof(float);  // required once several accessors share a vertex view
-  }
-  // Placed meshes first, so instance nodes know their mesh.
-  std::vector<int> written_mesh;
-  for (const GltfMeshData* p : written.meshes) {
-    const int mesh = written_mesh.emplace_back(add_mesh(w, *p, p->building));  // >= 0: check_instances saw triangles
-    m.meshes[static_cast<std::size_t>(mesh)].extras =
-        tinygltf::Value(tinygltf::Value::Object{{"placed", tinygltf::Value(p->building)}});
-  }
-  for (const GltfMeshData& data : meshes) {
-    const int mesh = add_mesh(w, data, data.building);
-    if (mesh < 0 && data.instances.empty()) continue;
-    tinygltf::Node node;
-    node.name = data.building;
-    node.mesh = mesh;
-    node.extras = tinygltf::Value(tinygltf::Value::Object{{"building", tinygltf::Value(data.building)},
-                                                          {"feature", tinygltf::Value(static_cast<int>(data.feature))}});
-    for (const GltfInstanceData& in : data.instances) {
-      const std::size_t slot = written.slot[in.prototype];
-      node.children.push_back(add_instance_node(m, in, written.meshes[slot]->building, written_mesh[slot]));
+  std::vector<Item> items;
+  items.reserve(written.meshes.size() + meshes.size());
+  for (const GltfMeshData* p : written.meshes) items.emplace_back().data = p, items.back().placed = true;
+  for (const GltfMeshData& b : meshes) items.emplace_back().data = &b;
+  const Totals totals = place_items(items);
+  // Materials in order of first use.
+  std::map<std::string, std::size_t> materials;
+  std::string materials_json;
+  for (const Item& item : items)
+    for (const GltfPrimitiveData& p : item.data->primitives)
+      if (!p.indices.empty() && materials.try_emplace(p.tag, materials.size()).second) {
+        if (!materials_json.empty()) materials_json += ',';
+        put_material(materials_json, p.tag);
+      }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      Item& item = items[i];
+      check_mesh(path, *item.data);
+      if (item.has_mesh) render_mesh(item, materials);
+      if (item.has_node) render_nodes(item, written);
     }
-    m.scenes[0].nodes.push_back(add_node(m, std::move(node)));
+  });
+
+  Pieces json;
+  std::string scene = "{\"asset\":{\"generator\":\"procex\",\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{";
+  bool first = true;
+  for (const Item& item : items) {
+    if (!item.has_node) continue;
+    scene += first ? "\"nodes\":[" : ",";
+    put_index(scene, item.node);
+    first = false;
   }
-  return m;
+  scene += first ? "}]" : "]}]";
+  json.add(scene);
+  json.add_array("nodes", items, &Item::nodes_json);
+  json.add_array("meshes", items, &Item::mesh_json);
+  if (!materials_json.empty()) json.add_own(",\"materials\":[" + materials_json + "]");
+  json.add_array("accessors", items, &Item::accessors_json);
+  const std::size_t vertex_bytes = totals.floats * sizeof(float), index_bytes = totals.indices * sizeof(std::uint32_t);
+  const std::size_t bin_bytes = 2 * vertex_bytes + index_bytes;
+  std::string tail;
+  if (bin_bytes > 0) {
+    // Three views, each tightly packed: every position, then every normal
+    // (vertex attributes, so a stride), then every index. Three views instead
+    // of three per primitive keep the JSON small for whole cities.
+    const std::size_t offsets[3] = {0, vertex_bytes, 2 * vertex_bytes};
+    const std::size_t lengths[3] = {vertex_bytes, vertex_bytes, index_bytes};
+    tail += ",\"bufferViews\":[";
+    for (int v = 0; v < 3; ++v) {
+      if (v > 0) tail += ',';
+      tail += "{\"buffer\":0,\"byteOffset\":";
+      put_index(tail, offsets[v]);
+      tail += ",\"byteLength\":";
+      put_index(tail, lengths[v]);
+      tail += v < 2 ? ",\"byteStride\":12,\"target\":34962}" : ",\"target\":34963}";
+    }
+    tail += "],\"buffers\":[{\"byteLength\":";
+    put_index(tail, bin_bytes);
+    tail += "}]";
+  }
+  tail += '}';
+  tail.append((4 - (json.size() + tail.size()) % 4) % 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
+  json.add(tail);
+
+  const std::size_t total = 12 + 8 + json.size() + (bin_bytes > 0 ? 8 + bin_bytes : 0);  // bin_bytes: 4-byte multiple
+  if (total > UINT32_MAX)
+    throw IoError("cannot write '" + path.string() + "': " + std::to_string(total) + " bytes, more than a .glb holds (4 GiB)",
+                  path.string());
+  std::string header = "glTF";
+  append_u32(header, 2);
+  append_u32(header, static_cast<std::uint32_t>(total));
+  append_u32(header, static_cast<std::uint32_t>(json.size()));
+  header += "JSON";
+  std::string bin_header;
+  append_u32(bin_header, static_cast<std::uint32_t>(bin_bytes));
+  bin_header += std::string_view("BIN\0", 4);
+
+  std::vector<std::string_view> pieces = {header};
+  pieces.insert(pieces.end(), json.views().begin(), json.views().end());
+  if (bin_bytes > 0) {
+    pieces.push_back(bin_header);
+    const auto add = [&](const auto& data) {
+      pieces.emplace_back(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(data[0]));
+    };
+    for (const auto member : {&GltfPrimitiveData::positions, &GltfPrimitiveData::normals})
+      for (const Item& item : items)
+        for (const GltfPrimitiveData& p : item.data->primitives)
+          if (!p.indices.empty()) add(p.*member);
+    for (const Item& item : items)
+      for (const GltfPrimitiveData& p : item.data->primitives)
+        if (!p.indices.empty()) add(p.indices);
+  }
+  write_file_atomically(path, pieces);
 }
 
 [[noreturn]] void bad(const std::filesystem::path& path, const std::string& what) {
@@ -333,14 +569,6 @@ std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mes
   return out;
 }
 
-void write_model(const std::filesystem::path& path, const tinygltf::Model& model) {
-  std::ostringstream bytes;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/false, /*writeBinary=*/true))
-    throw IoError("cannot encode '" + path.string() + "' as glTF", path.string());
-  write_file_atomically(path, std::move(bytes).str());
-}
-
 }  // namespace
 
 std::array<double, 3> tag_colour(const std::string& tag) {
@@ -399,11 +627,11 @@ GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
 }
 
 void write_glb(const std::filesystem::path& path, const GltfScene& scene) {
-  write_model(path, to_model(path, scene.meshes, scene.prototypes));
+  write_scene(path, scene.meshes, scene.prototypes);
 }
 
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
-  write_model(path, to_model(path, meshes, {}));
+  write_scene(path, meshes, {});
 }
 
 GltfScene read_glb_scene(const std::filesystem::path& path) {

@@ -1,4 +1,6 @@
-// glTF 2.0 binary (.glb) output through tinygltf: one glTF mesh (and node) per
+// glTF 2.0 binary (.glb) output, written directly (each building's JSON
+// rendered in parallel, the binary chunk streamed from its arrays; tinygltf
+// only reads files back): one glTF mesh (and node) per
 // building, one primitive per face tag (triangles, flat normals), the tag in the
 // primitive's extras and material name, the building id (and the feature's
 // position in its source file, for merging shards) in the node's extras.

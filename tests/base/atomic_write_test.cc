@@ -46,6 +46,18 @@ TEST_F(AtomicWrite, WritesAndReplacesWholeFiles) {
   EXPECT_EQ(files(), 1u);  // no temporary file left
 }
 
+// More pieces than one writev takes (IOV_MAX, 1024 on Linux), empty ones among them.
+TEST_F(AtomicWrite, PiecesAreWrittenInOrder) {
+  std::vector<std::string> texts;
+  for (int i = 0; i < 3000; ++i) texts.push_back(i % 7 == 0 ? std::string() : std::to_string(i) + ",");
+  const std::vector<std::string_view> pieces(texts.begin(), texts.end());
+  std::string joined;
+  for (const std::string& t : texts) joined += t;
+  write_file_atomically(dir_ / "pieces.txt", pieces);
+  EXPECT_EQ(read(dir_ / "pieces.txt"), joined);
+  EXPECT_EQ(files(), 1u);
+}
+
 TEST_F(AtomicWrite, FailuresNameTheFileAndLeaveNothing) {
   fs::create_directories(dir_ / "taken");  // a folder where the file should go: the rename fails
   try {
