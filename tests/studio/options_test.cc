@@ -17,6 +17,10 @@ TEST(Options, ParsesTheCommandLine) {
   EXPECT_EQ(o.height, 600);
   EXPECT_EQ(o.autosave_s, 0);
   EXPECT_TRUE(parse_options({"--help"}).help);
+  const Options view = parse_options({"--view", "-60,-12.5"});
+  ASSERT_TRUE(view.view);
+  EXPECT_EQ((*view.view)[0], -60.0f);
+  EXPECT_EQ((*view.view)[1], -12.5f);
 }
 
 TEST(Options, BadArgumentsAreNamed) {
@@ -34,6 +38,9 @@ TEST(Options, BadArgumentsAreNamed) {
   EXPECT_NE(message({"a.pxg", "b.pxg"}).find("one recipe"), std::string::npos);
   EXPECT_NE(message({"--screenshot"}).find("needs a value"), std::string::npos);
   EXPECT_NE(message({"--screenshot-info", "x.json"}).find("--screenshot"), std::string::npos);
+  EXPECT_NE(message({"--view", "30"}).find("YAW,PITCH"), std::string::npos);
+  EXPECT_NE(message({"--view", "30,95"}).find("[-89, 89]"), std::string::npos);
+  EXPECT_NE(message({"--view", "a,5"}).find("YAW,PITCH"), std::string::npos);
 }
 
 }  // namespace

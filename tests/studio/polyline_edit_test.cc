@@ -75,5 +75,20 @@ TEST(PolylineEdit, SnapsLevelOrPlumbWithANeighbourButNeverOntoIt) {
   EXPECT_EQ(snap_to_neighbours(square, 0, {0.05, -1}, 0.1, true), (Vec2{0, -1}));
 }
 
+TEST(PolylineEdit, ProfileTagsStayOnePerSegment) {
+  const std::vector<std::string> tags = {"wall", "soffit", "roof"};  // kProfile's three segments
+  // A point inserted on the soffit: both halves are soffit.
+  EXPECT_EQ(tags_after_insert(tags, 3, 1), (std::vector<std::string>{"wall", "soffit", "soffit", "roof"}));
+  // Point 2 deleted: the soffit and the roof become one segment, the soffit's.
+  EXPECT_EQ(tags_after_remove(tags, 3, 2), (std::vector<std::string>{"wall", "soffit"}));
+  // The last point deleted: the last segment goes.
+  EXPECT_EQ(tags_after_remove(tags, 3, 3), (std::vector<std::string>{"wall", "soffit"}));
+  // Untagged profiles (or tags that do not match) are left alone.
+  EXPECT_TRUE(tags_after_insert({}, 3, 1).empty());
+  EXPECT_EQ(tags_after_remove({"a"}, 3, 1), (std::vector<std::string>{"a"}));
+  const auto inserted = insert_point(kProfile, 1, {1, 1.5}, kProfileRules);
+  EXPECT_EQ(tags_after_insert(tags, 3, 1).size(), inserted.size() - 1);
+}
+
 }  // namespace
 }  // namespace procex::studio

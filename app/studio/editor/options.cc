@@ -1,5 +1,6 @@
 #include "app/studio/editor/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <stdexcept>
 
@@ -15,6 +16,7 @@ std::string usage() {
          "  --report-frames FILE        on exit, write frame and evaluation timings as JSON\n"
          "  --bench-edits N             benchmark: make N parameter edits, time each to the screen, exit\n"
          "  --select NODE               select this node id at start\n"
+         "  --view YAW,PITCH            the 3D preview's direction in degrees (pitch below 0: from below)\n"
          "  --ui-map FILE               keep a JSON map of the pins and widgets on screen (for input-driving tests)\n"
          "  -h, --help                  this text\n";
 }
@@ -61,6 +63,18 @@ Options parse_options(const std::vector<std::string>& args) {
       o.autosave_s = value() == "0" ? 0 : parse_int(args[i], "--autosave");
     } else if (a == "--bench-edits") {
       o.bench_edits = parse_int(value(), "--bench-edits");
+    } else if (a == "--view") {
+      const std::string& v = value();
+      float yaw = 0, pitch = 0;
+      const auto comma = v.find(',');
+      const char* end = v.data() + v.size();
+      auto [yaw_end, yaw_ec] = std::from_chars(v.data(), v.data() + std::min(comma, v.size()), yaw);
+      if (comma == std::string::npos || yaw_ec != std::errc() || yaw_end != v.data() + comma)
+        throw std::invalid_argument("--view: '" + v + "' is not YAW,PITCH in degrees");
+      auto [pitch_end, pitch_ec] = std::from_chars(v.data() + comma + 1, end, pitch);
+      if (pitch_ec != std::errc() || pitch_end != end || pitch < -89 || pitch > 89)
+        throw std::invalid_argument("--view: '" + v + "' is not YAW,PITCH in degrees with PITCH in [-89, 89]");
+      o.view = std::array<float, 2>{yaw, pitch};
     } else if (a == "--timeout") {
       o.timeout_s = parse_int(value(), "--timeout");
     } else if (!a.empty() && a[0] == '-') {

@@ -3,8 +3,10 @@
 //   procex-studio [RECIPE.pxg] [--screenshot OUT.png [--screenshot-info OUT.json]]
 //                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
 //                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE] [--select NODE]
+//                 [--view YAW,PITCH]
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,6 +25,7 @@ struct Options {
   int autosave_s = 30;                   // 0: no autosave
   unsigned select = 0;                   // a node id to select at start (screenshots of the inspector and editors)
   int bench_edits = 0;                   // benchmark: this many parameter edits, timed to the screen
+  std::optional<std::array<float, 2>> view;  // the preview camera's yaw and pitch in degrees (e.g. from below the eaves)
   bool help = false;
 };
 

@@ -66,6 +66,20 @@ Result<std::vector<Vec2>> remove_point(std::vector<Vec2> pts, std::size_t i, con
   return pts;
 }
 
+std::vector<std::string> tags_after_insert(std::vector<std::string> tags, std::size_t segments, std::size_t e) {
+  if (tags.size() != segments || e >= segments) return tags;
+  tags.insert(tags.begin() + static_cast<std::ptrdiff_t>(e), tags[e]);
+  return tags;
+}
+
+std::vector<std::string> tags_after_remove(std::vector<std::string> tags, std::size_t segments, std::size_t i) {
+  if (tags.size() != segments || segments == 0 || i > segments) return tags;
+  // Point i ends segment i - 1 and starts segment i: segment i's tag goes (the last point's: the last segment's).
+  const std::size_t drop = std::min(i, segments - 1);
+  tags.erase(tags.begin() + static_cast<std::ptrdiff_t>(drop));
+  return tags;
+}
+
 std::optional<std::size_t> nearest_point(const std::vector<Vec2>& pts, Vec2 p, double tolerance) {
   std::optional<std::size_t> best;
   double best_d = tolerance;

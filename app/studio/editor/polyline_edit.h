@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "graph/status.h"
@@ -36,6 +37,13 @@ Vec2 snap_to_neighbours(const std::vector<Vec2>& pts, std::size_t i, Vec2 to, do
 std::vector<Vec2> insert_point(std::vector<Vec2> pts, std::size_t e, Vec2 at, const PolylineRules& rules);
 // Refused (with the reason) below the minimum count or for a pinned start.
 Result<std::vector<Vec2>> remove_point(std::vector<Vec2> pts, std::size_t i, const PolylineRules& rules);
+
+// A profile's segment tags (one per segment) kept in step with its points:
+// after insert_point on segment e both halves keep e's tag; after
+// remove_point(i) the two segments meeting at i become one with the first
+// one's tag. Tags that do not match the segment count are returned as they are.
+std::vector<std::string> tags_after_insert(std::vector<std::string> tags, std::size_t segments, std::size_t e);
+std::vector<std::string> tags_after_remove(std::vector<std::string> tags, std::size_t segments, std::size_t i);
 
 // The point within `tolerance` of p, nearest first; nullopt if none.
 std::optional<std::size_t> nearest_point(const std::vector<Vec2>& pts, Vec2 p, double tolerance);

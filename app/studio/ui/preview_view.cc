@@ -144,6 +144,12 @@ struct PreviewView::Gl {
 PreviewView::PreviewView() : gl_(std::make_unique<Gl>()) {}
 PreviewView::~PreviewView() = default;
 
+void PreviewView::look_from(float yaw_deg, float pitch_deg) {
+  camera_.yaw = yaw_deg;
+  camera_.pitch = pitch_deg;
+  stale_ = true;
+}
+
 void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   if (mesh == mesh_) return;
   mesh_ = std::move(mesh);

@@ -23,6 +23,8 @@ class PreviewView {
   // Draws into the current ImGui window, filling its content region.
   void draw();
   void frame_all();
+  // Turns the camera to yaw and pitch (degrees), keeping its target and distance.
+  void look_from(float yaw_deg, float pitch_deg);
 
   bool wireframe = false;
   // Screen rectangle of the last rendered image (for screenshot checks).

@@ -1,6 +1,7 @@
 #include "app/studio/ui/shape_editor.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +80,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     selected_edges_.clear();
     issue_.reset();
     check_revision_ = 0;
+    selected_segment_.reset();
   }
   const Node* n = id ? doc.graph().node(id) : nullptr;
   if (!n) {
@@ -180,14 +182,17 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     check_revision_ = doc.revision();
     issue_ = check_plan(pts, hole);
   }
-  std::vector<std::string> tags;
-  if (auto t = param_of_type(*n, "tags", typeid(std::vector<std::string>))) tags = n->params[*t].get<std::vector<std::string>>();
+  const std::size_t tags_param = is_profile ? param_of_type(*n, "tags", typeid(std::vector<std::string>)).value_or(SIZE_MAX) : SIZE_MAX;
+  const std::vector<std::string> tags = tags_param != SIZE_MAX ? n->params[tags_param].get<std::vector<std::string>>() : std::vector<std::string>{};
+  const std::size_t profile_segments = is_profile && pts.size() >= 2 ? pts.size() - 1 : 0;
+  if (selected_segment_ && *selected_segment_ >= profile_segments) selected_segment_.reset();
   std::optional<Grab> near_point;
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const std::vector<Vec2>& lp = loops[k].pts;
     const std::size_t segs = rules.closed ? lp.size() : (lp.empty() ? 0 : lp.size() - 1);
     for (std::size_t e = 0; e < segs && !fp; ++e) {
       const Vec2 a = lp[e], b = lp[(e + 1) % lp.size()];
+      if (is_profile && selected_segment_ == e) dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), IM_COL32(255, 170, 40, 255), 6.0f);
       dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), tag_color_u32(e < tags.size() ? tags[e] : ""), 2.5f);
       if (e < tags.size()) {
         const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
@@ -209,6 +214,14 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   auto apply = [&](std::size_t k, std::vector<Vec2> v) {
     if (Status s = doc.set_param(id, loops[k].param, Value::make(std::move(v))); !s) status = s.message();
   };
+  // A profile's points and its tags (one per segment) change together, as one undo step.
+  auto apply_with_tags = [&](std::size_t k, std::vector<Vec2> v, std::vector<std::string> t, const char* label) {
+    if (tags_param == SIZE_MAX || t == tags) return apply(k, std::move(v));
+    doc.begin_gesture(label);
+    apply(k, std::move(v));
+    if (Status s = doc.set_param(id, tags_param, Value::make(std::move(t))); !s) status = s.message();
+    doc.end_gesture();
+  };
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point) {
     dragging_ = near_point;
     doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
@@ -227,14 +240,17 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point)
     for (std::size_t k = 0; k < loops.size(); ++k)
       if (auto e = nearest_edge(loops[k].pts, mw, tol, rules.closed)) {
-        apply(k, insert_point(loops[k].pts, *e, mw, rules));
+        apply_with_tags(k, insert_point(loops[k].pts, *e, mw, rules), tags_after_insert(tags, profile_segments, *e), "insert point");
         break;
       }
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near_point) {
     auto r = remove_point(loops[near_point->loop].pts, near_point->point, rules);
-    if (r) apply(near_point->loop, r.value());
+    if (r) apply_with_tags(near_point->loop, r.value(), tags_after_remove(tags, profile_segments, near_point->point), "delete point");
     else status = loops[near_point->loop].is_hole ? "hole: " + r.message() + " (Delete hole removes it)" : r.message();
   }
+  // A profile segment clicked: its tag is edited in a field over the view.
+  if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point)
+    selected_segment_ = nearest_edge(pts, mw, tol, false);
   // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge) {
     if (!ImGui::GetIO().KeyCtrl && !ImGui::GetIO().KeyShift) selected_edges_.clear();
@@ -247,6 +263,21 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     const ImVec2 at(corner.x + 6, corner.y + size.y - text.y - 6);
     dl->AddRectFilled(ImVec2(corner.x, at.y - 3), ImVec2(corner.x + size.x, corner.y + size.y), IM_COL32(24, 25, 30, 220));
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(255, 102, 90, 255), issue_->message.c_str(), nullptr, wrap);
+  }
+  if (selected_segment_ && tags.size() == profile_segments) {
+    ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));
+    ImGui::SetNextItemWidth(140);
+    const std::size_t e = *selected_segment_;
+    if (segment_tag_edit_ != e) segment_tag_ = tags[e];
+    segment_tag_edit_ = e;
+    const std::string label = "tag of segment " + std::to_string(e) + (pts[e].y == pts[e + 1].y ? " (horizontal)" : "");
+    ImGui::InputText(label.c_str(), &segment_tag_);
+    if (ImGui::IsItemDeactivatedAfterEdit() && segment_tag_ != tags[e]) {
+      std::vector<std::string> next = tags;
+      next[e] = segment_tag_;
+      if (Status s = doc.set_param(id, tags_param, Value::make(std::move(next))); !s) status = s.message();
+    }
+    if (!ImGui::IsItemActive()) segment_tag_ = tags[e];
   }
   if (!selected_edges_.empty()) {
     ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));

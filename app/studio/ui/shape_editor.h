@@ -9,12 +9,14 @@
 // which Add hole / Delete hole make and remove. A plan core would refuse is
 // flagged at the loop and vertex at fault.
 // Profile: a Profile node's `points` polyline in (offset, height), segments
-// labelled with their tags; dragging keeps it monotone and (0, 0) fixed,
+// labelled with their tags (click a segment to edit its tag; adding and
+// deleting points keeps one tag per segment); dragging keeps it monotone and (0, 0) fixed,
 // and snaps a point level with a neighbour (a soffit or ledge) or plumb.
 // Every change is a set_param on the document, one undo step per drag.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -43,6 +45,9 @@ class ShapeEditor {
   std::uint64_t check_revision_ = 0;  // the plan is checked again only after an edit
   std::optional<PlanIssue> issue_;
   std::map<std::string, std::array<float, 4>> buttons_;
+  std::optional<std::size_t> selected_segment_;  // a profile segment whose tag is being edited
+  std::size_t segment_tag_edit_ = SIZE_MAX;
+  std::string segment_tag_;
   std::set<std::int32_t> selected_edges_;  // edge ids of the footprint
 };
 

@@ -77,7 +77,10 @@ class App {
   const PreviewView& preview() const { return *preview_; }
 
   void frame() {
-    if (!preview_) preview_ = std::make_unique<PreviewView>();
+    if (!preview_) {
+      preview_ = std::make_unique<PreviewView>();
+      if (options_.view) preview_->look_from((*options_.view)[0], (*options_.view)[1]);
+    }
     if (submitted_ != doc_->revision() || submitted_node_ != doc_->selected()) {
       submitted_ = doc_->revision();
       submitted_node_ = doc_->selected();

@@ -1,8 +1,9 @@
-// studio_png_check IMAGE.png INFO.json -- checks a procex-studio screenshot:
+// studio_png_check IMAGE.png INFO.json [--require-tag NAME]... -- checks a procex-studio screenshot:
 // the image is not blank, and the 3D preview shows the geometry: enough
 // pixels differ from the preview's background, most of them carry a tag's
 // (lit) colour, and the tags seen cover most of the mesh's coloured area
-// (some faces may hide behind others). INFO.json is
+// (some faces may hide behind others), and each required tag is clearly
+// visible (a soffit seen from below the eaves). INFO.json is
 // what `procex-studio --screenshot-info` wrote beside the image.
 #include <stb_image.h>
 
@@ -40,8 +41,16 @@ void check(bool ok, const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json\n");
+  std::vector<std::string> required;
+  for (int i = 3; i < argc; i += 2) {
+    if (std::string(argv[i]) != "--require-tag" || i + 1 >= argc) {
+      std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]...\n");
+      return 2;
+    }
+    required.push_back(argv[i + 1]);
+  }
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]...\n");
     return 2;
   }
   int w = 0, h = 0, n = 0;
@@ -112,6 +121,11 @@ int main(int argc, char** argv) {
     std::printf("     tag '%s': %ld pixels, %.1f m2\n", tag_names[i].c_str(), tag_pixels[i], tag_areas[i]);
   }
   check(coloured_area > 0 && seen_area >= 0.5 * coloured_area, "the tags seen cover " + std::to_string(100.0 * seen_area / std::max(coloured_area, 1e-9)) + "% of the coloured mesh area");
+  for (const std::string& name : required) {
+    const auto it = std::find(tag_names.begin(), tag_names.end(), name);
+    const long pixels = it == tag_names.end() ? 0 : tag_pixels[static_cast<std::size_t>(it - tag_names.begin())];
+    check(pixels >= 200, "required tag '" + name + "' " + (it == tag_names.end() ? "is not in the mesh" : "covers " + std::to_string(pixels) + " pixels (at least 200)"));
+  }
   check(tagged > geometry / 2, std::to_string(tagged) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
   stbi_image_free(data);
   std::printf("%d failed\n", failures);
