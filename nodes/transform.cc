@@ -1,6 +1,9 @@
 // Transform: scales, turns about the vertical and moves meshes.
 #include <cmath>
 
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
 #include "graph/registry.h"
 #include "nodes/values.h"
 
@@ -17,8 +20,8 @@ std::optional<std::size_t> pass(const std::vector<Value>& params, std::size_t) {
 }
 
 void declare(NodeDecl& d) {
-  d.doc("Scales every mesh uniformly about the origin, turns it about the vertical axis, then moves it. "
-        "The identity hands the input on untouched.")
+  d.doc("Scales every mesh uniformly about the origin, turns it about the vertical axis, then moves it, with "
+        "the meshes placed on it and its resolved anchors. The identity hands the input on untouched.")
       .category("Geometry");
   d.input<MeshSet>("mesh");
   d.param<Vec3>("translate").default_value(Vec3{}).unit("m").doc("x, y, z offset");
@@ -31,15 +34,27 @@ void declare(NodeDecl& d) {
 void evaluate(EvalContext& ctx) {
   const Vec3& t = ctx.param<Vec3>(0);
   const double a = ctx.param<double>(1) * M_PI / 180.0, s = ctx.param<double>(2);
+  // Column-major: x' = c x - n y + t.x, y' = n x + c y + t.y, z' = s z + t.z.
   const double c = std::cos(a) * s, n = std::sin(a) * s;
+  const glm::dmat4 m(c, n, 0, 0, -n, c, 0, 0, 0, 0, s, 0, t.x, t.y, t.z, 1);
+  const auto point = [&](const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); };
+  // Directions turn only (the scale is uniform and positive).
+  const auto turn = [&](const glm::dvec3& d) { return glm::dvec3(m * glm::dvec4(d, 0.0)) / s; };
   MeshSet out = ctx.input<MeshSet>(0);
   for (TaggedMesh& part : out.parts) {
     auto mesh = std::make_shared<Mesh>(*part.mesh);
     for (const auto v : mesh->vertices()) {
       Mesh::Point& p = mesh->point(v);
-      p = Mesh::Point(c * p[0] - n * p[1] + t.x, n * p[0] + c * p[1] + t.y, s * p[2] + t.z);
+      const glm::dvec3 q = point({p[0], p[1], p[2]});
+      p = Mesh::Point(q.x, q.y, q.z);
     }
     part.mesh = std::move(mesh);
+    for (Instance& in : part.placed.instances) in.transform = m * in.transform;
+    for (ResolvedAnchor& r : part.anchors) {
+      r.frame.origin = point(r.frame.origin);
+      r.frame.along = turn(r.frame.along), r.frame.up = turn(r.frame.up), r.frame.normal = turn(r.frame.normal);
+      r.span_from = point(r.span_from), r.span_to = point(r.span_to);
+    }
   }
   ctx.set_output(0, std::move(out));
 }

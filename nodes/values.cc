@@ -46,20 +46,59 @@ std::size_t footprint_size(const Footprint& fp) {
   return n;
 }
 
+void hash_str(const std::string& s, Hasher& h) { h.u64(s.size()).str(s); }
+
+void hash_vec3(const glm::dvec3& p, Hasher& h) { h.f64(p.x).f64(p.y).f64(p.z); }
+
+void hash_mesh(const Mesh& m, Hasher& h) {
+  h.u64(m.n_vertices()).u64(m.n_faces());
+  for (const auto v : m.vertices())
+    for (int k = 0; k < 3; ++k) h.f64(m.point(v)[k]);
+  for (const auto f : m.faces()) {
+    h.u64(m.valence(f));
+    for (const auto v : m.fv_range(f)) h.u64(static_cast<std::uint64_t>(v.idx()));
+  }
+}
+
+void hash_anchor(const ResolvedAnchor& a, Hasher& h) {
+  hash_str(a.name, h);
+  h.u64(a.anchor).i64(a.edge_id).u64(a.present ? 1 : 0);
+  hash_str(a.reason, h);
+  for (const glm::dvec3& v : {a.frame.origin, a.frame.along, a.frame.up, a.frame.normal, a.span_from, a.span_to})
+    hash_vec3(v, h);
+}
+
+// Placed meshes by content (their own face tags included): two runs that
+// read the same file hash alike.
+void hash_placed(const PlacementResult& placed, Hasher& h) {
+  h.u64(placed.meshes.size());
+  for (const PlaceableMesh& m : placed.meshes) {
+    hash_str(m.name, h);
+    hash_mesh(*m.mesh, h);
+    const auto tags = face_tag_property(*m.mesh);
+    if (tags.is_valid())
+      for (const auto f : m.mesh->faces()) hash_str(m.mesh->property(tags, f), h);
+  }
+  h.u64(placed.instances.size());
+  for (const Instance& in : placed.instances) {
+    h.u64(in.mesh).i64(in.source_edge);
+    hash_str(in.tag, h);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) h.f64(in.transform[c][r]);
+  }
+}
+
 void hash_mesh_set(const MeshSet& set, Hasher& h) {
   h.u64(set.parts.size());
   for (const TaggedMesh& part : set.parts) {
-    h.u64(part.building.size()).str(part.building).i64(part.feature).u64(part.tags.size());
-    for (const std::string& t : part.tags) h.u64(t.size()).str(t);
+    hash_str(part.building, h);
+    h.i64(part.feature).u64(part.tags.size());
+    for (const std::string& t : part.tags) hash_str(t, h);
     h.bytes(part.face_tags.data(), part.face_tags.size() * sizeof(std::uint32_t));
-    const Mesh& m = *part.mesh;
-    h.u64(m.n_vertices()).u64(m.n_faces());
-    for (const auto v : m.vertices())
-      for (int k = 0; k < 3; ++k) h.f64(m.point(v)[k]);
-    for (const auto f : m.faces()) {
-      h.u64(m.valence(f));
-      for (const auto v : m.fv_range(f)) h.u64(static_cast<std::uint64_t>(v.idx()));
-    }
+    hash_mesh(*part.mesh, h);
+    h.u64(part.anchors.size());
+    for (const ResolvedAnchor& a : part.anchors) hash_anchor(a, h);
+    hash_placed(part.placed, h);
   }
 }
 
@@ -72,9 +111,14 @@ std::size_t mesh_size(const Mesh& m) {
 // A mesh shared by several sets is charged to each: the cache errs on the safe side.
 std::size_t mesh_set_size(const MeshSet& set) {
   std::size_t n = sizeof(MeshSet) + set.parts.capacity() * sizeof(TaggedMesh);
-  for (const TaggedMesh& part : set.parts)
+  for (const TaggedMesh& part : set.parts) {
     n += mesh_size(*part.mesh) + part.face_tags.capacity() * sizeof(std::uint32_t) + strings_size(part.tags) +
          part.building.capacity();
+    n += part.anchors.capacity() * sizeof(ResolvedAnchor);
+    for (const ResolvedAnchor& a : part.anchors) n += a.name.capacity() + a.reason.capacity();
+    n += part.placed.instances.capacity() * sizeof(Instance) + part.placed.meshes.capacity() * sizeof(PlaceableMesh);
+    for (const PlaceableMesh& m : part.placed.meshes) n += mesh_size(*m.mesh);
+  }
   return n;
 }
 
@@ -84,7 +128,10 @@ const bool kRegistered = [] {
                     hash_footprint, footprint_size});
   r.add<Profile>({"profile", "A polyline (outward offset, height) with a tag per segment", hash_profile, profile_size});
   r.add_list<Profile>();
-  r.add<MeshSet>({"mesh", "Closed meshes with a tag per face and a building id per mesh", hash_mesh_set, mesh_set_size});
+  r.add<MeshSet>({"mesh",
+                  "Closed meshes with a tag per face and a building id per mesh, their resolved anchors and the "
+                  "meshes placed on them",
+                  hash_mesh_set, mesh_set_size});
   return true;
 }();
 

@@ -1,6 +1,7 @@
 // The value types the building nodes pass along links, registered with the
 // graph's value registry in values.cc: "footprint" (core Footprint, profiles
-// included), "profile", "list<profile>" and "mesh" (a MeshSet).
+// included), "profile", "list<profile>" and "mesh" (a MeshSet: building
+// meshes with their resolved anchors and the meshes placed on them).
 #pragma once
 
 #include <cstdint>
@@ -8,9 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "core/geom/anchor.h"
 #include "core/geom/footprint.h"
 #include "core/geom/profile.h"
 #include "core/mesh/mesh.h"
+#include "core/placement/placement.h"
 
 namespace procex {
 
@@ -22,6 +25,13 @@ struct TaggedMesh {
   std::vector<std::string> tags;         // distinct tag names, in order of first use
   std::string building;                  // building id ("" when not bound)
   std::int64_t feature = -1;             // the building's position in its GeoJSON file (batch), else -1
+  // Where the sweep resolved the footprint's anchors on this mesh (Extrude),
+  // in the same coordinates as the mesh: what Mesh placement places at.
+  std::vector<ResolvedAnchor> anchors;
+  // Meshes placed on this one (windows, chimneys), kept as instances
+  // (placed.building is null; transforms in the mesh's coordinates): .glb
+  // files instance them, OBJ and PLY get them flattened into the mesh.
+  PlacementResult placed;
 };
 
 // What "mesh" links carry: any number of tagged meshes (one Extrude makes one,

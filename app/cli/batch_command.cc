@@ -32,7 +32,7 @@ struct Building {
   std::string reason;
   std::vector<std::string> warnings;
   MeshSet meshes;                     // dropped once converted for a single .glb
-  std::vector<GltfMeshData> gltf;     // for a single .glb: converted by the worker, in parallel
+  GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
   MeshSummary summary;
   double ms = 0;
 };
@@ -181,14 +181,14 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   const auto evaluated = std::chrono::steady_clock::now();
   std::size_t ok = 0, refused = 0, failed = 0;
   MeshSet all;
-  std::vector<GltfMeshData> all_gltf;
+  GltfScene all_gltf;
   try {
     if (per_building) std::filesystem::create_directories(options.output);
     for (Building& b : buildings) {
       if (b.status == "ok") {
         ++ok;
         if (per_building) write_mesh_set(options.output / (file_name(b.id) + format), b.meshes);
-        else if (one_glb) std::move(b.gltf.begin(), b.gltf.end(), std::back_inserter(all_gltf));
+        else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
         else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
         continue;
       }

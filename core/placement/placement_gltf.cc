@@ -1,6 +1,7 @@
 #include "core/placement/placement_gltf.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 namespace procex {
@@ -40,13 +41,26 @@ void GltfSceneBuilder::add(const PlacementResult& result, const std::string& bui
   if (result.building) data = gltf_mesh(*result.building, building, "", feature);
   data.building = building;
   data.feature = feature;
-  for (const Instance& in : result.instances) {
-    const PlaceableMesh& placed = result.meshes[in.mesh];
-    auto [it, added] = prototype_of_.try_emplace(placed.mesh, scene_.prototypes.size());
-    if (added) scene_.prototypes.push_back(gltf_mesh(*placed.mesh, placed.name, placed.name, -1));
+  add(std::move(data));
+  place(result);
+}
+
+void GltfSceneBuilder::add(GltfMeshData building) { scene_.meshes.push_back(std::move(building)); }
+
+GltfMeshData& GltfSceneBuilder::last() {
+  if (scene_.meshes.empty()) throw std::logic_error("GltfSceneBuilder: no building was added");
+  return scene_.meshes.back();
+}
+
+void GltfSceneBuilder::place(const PlacementResult& placed) {
+  GltfMeshData& data = last();
+  for (std::size_t i = 0; i < placed.instances.size(); ++i) check_instance(placed, i);
+  for (const Instance& in : placed.instances) {
+    const PlaceableMesh& mesh = placed.meshes[in.mesh];
+    auto [it, added] = prototype_of_.try_emplace(mesh.mesh, scene_.prototypes.size());
+    if (added) scene_.prototypes.push_back(gltf_mesh(*mesh.mesh, mesh.name, mesh.name, -1));
     data.instances.push_back({it->second, in.transform, in.tag});
   }
-  scene_.meshes.push_back(std::move(data));
 }
 
 }  // namespace procex

@@ -19,7 +19,17 @@ class GltfSceneBuilder {
  public:
   // Adds one building. Throws PlacementError (check_instance) for a bad instance.
   void add(const PlacementResult& result, const std::string& building, std::int64_t feature = -1);
+  // Adds a building already in glTF form (to_gltf_mesh), without instances.
+  void add(GltfMeshData building);
+  // Adds placed's instances (its building mesh is not looked at) to the last
+  // building added. Throws PlacementError (check_instance) for a bad instance,
+  // std::logic_error if no building was added.
+  void place(const PlacementResult& placed);
+  // The last building added, to join more faces to it (append_to_gltf_mesh).
+  // Throws std::logic_error if there is none.
+  GltfMeshData& last();
   const GltfScene& scene() const { return scene_; }
+  GltfScene take() && { return std::move(scene_); }
 
  private:
   GltfScene scene_;

@@ -8,6 +8,7 @@
 #include "core/io/atomic_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
+#include "core/placement/placement_gltf.h"
 
 namespace procex {
 namespace {
@@ -71,15 +72,36 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set) {
 
 }  // namespace
 
-std::vector<GltfMeshData> to_gltf(const MeshSet& set) {
-  std::vector<GltfMeshData> out;
+GltfScene to_gltf(const MeshSet& set) {
+  GltfSceneBuilder builder;
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
     const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature};
     const bool same_building = i > 0 && set.parts[i - 1].building == part.building && set.parts[i - 1].feature == part.feature;
-    if (same_building) append_to_gltf_mesh(out.back(), view);
-    else out.push_back(to_gltf_mesh(view));
+    if (same_building) append_to_gltf_mesh(builder.last(), view);
+    else builder.add(to_gltf_mesh(view));
+    builder.place(part.placed);
   }
+  return std::move(builder).take();
+}
+
+TaggedMesh flattened(const TaggedMesh& part) {
+  if (part.placed.instances.empty()) return part;
+  PlacementResult all = part.placed;
+  all.building = part.mesh;
+  auto mesh = std::make_shared<const Mesh>(flatten(all));
+  TaggedMesh out = part;
+  out.placed = {};
+  // The part's own faces come first, as they were; then the instances' faces.
+  const std::size_t own = part.mesh->n_faces();
+  const auto tags = face_tag_property(*mesh);
+  for (std::size_t f = own; f < mesh->n_faces(); ++f) {
+    const std::string& tag = mesh->property(tags, Mesh::FaceHandle(static_cast<int>(f)));
+    auto it = std::find(out.tags.begin(), out.tags.end(), tag);
+    if (it == out.tags.end()) it = out.tags.insert(out.tags.end(), tag);
+    out.face_tags.push_back(static_cast<std::uint32_t>(it - out.tags.begin()));
+  }
+  out.mesh = std::move(mesh);
   return out;
 }
 
@@ -90,11 +112,13 @@ bool is_mesh_file(const std::filesystem::path& path) {
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set) {
   const std::string ext = lower_extension(path);
-  if (ext == ".obj") return write_tagged_obj(path, set);
   if (ext == ".glb") return write_glb(path, to_gltf(set));
+  MeshSet flat;
+  for (const TaggedMesh& part : set.parts) flat.parts.push_back(flattened(part));
+  if (ext == ".obj") return write_tagged_obj(path, flat);
   if (ext == ".ply") {
     std::vector<NamedMesh> named;
-    for (const TaggedMesh& part : set.parts) named.push_back({part.building, part.mesh.get()});
+    for (const TaggedMesh& part : flat.parts) named.push_back({part.building, part.mesh.get()});
     return write_ply(path, named);
   }
   throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply or .glb)",

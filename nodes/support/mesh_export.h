@@ -2,7 +2,8 @@
 // .obj (one group per mesh, one material per face tag, with a .mtl beside it),
 // .ply (core's writer: source edges and face kinds, one group per mesh) or
 // .glb (one glTF mesh per building: consecutive parts with the same building
-// id and feature join; one primitive per tag). Atomic writes;
+// id and feature join; one primitive per tag; placed meshes instanced). OBJ
+// and PLY get placed meshes flattened into their part. Atomic writes;
 // IoError naming the file on failure.
 #pragma once
 
@@ -16,8 +17,14 @@ namespace procex {
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set);
 
-// The glTF form of the parts, in order, consecutive parts of one building joined.
-std::vector<GltfMeshData> to_gltf(const MeshSet& set);
+// The glTF form of the parts, in order, consecutive parts of one building
+// joined, their placed meshes as instances (each distinct placed mesh once).
+GltfScene to_gltf(const MeshSet& set);
+
+// The part with its placed meshes flattened into its mesh (core flatten():
+// instance faces tagged by the instance's tag, else their own, else the
+// placed mesh's name) and no placed meshes left; the part itself if it has none.
+TaggedMesh flattened(const TaggedMesh& part);
 
 // Whether write_mesh_set knows the extension (case-insensitive).
 bool is_mesh_file(const std::filesystem::path& path);
