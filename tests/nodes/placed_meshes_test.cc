@@ -2,8 +2,6 @@
 // moves them (and the resolved anchors), Merge keeps them, Export writes them
 // as instanced nodes in .glb and flattened into the building in OBJ and PLY.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +10,7 @@
 #include "core/placement/box.h"
 #include "core/placement/place_mesh.h"
 #include "nodes/values.h"
+#include "tests/app/command_test.h"
 #include "tests/nodes/hand_anchors.h"
 #include "tests/nodes/node_runner.h"
 #include "tests/support/gltf_scripts.h"
@@ -48,22 +47,9 @@ Box3 instance_bounds(const TaggedMesh& part, std::size_t i) {
   return bounds(flatten(one));
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class PlacedMeshes : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_placed_meshes_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+// A fresh folder per test, as the command tests have.
+using PlacedMeshes = test::CommandTest;
+using test::read_text;
 
 TEST_F(PlacedMeshes, TransformMovesInstancesAndAnchors) {
   const MeshSet before = block_with_windows();
