@@ -113,6 +113,7 @@ nlohmann::ordered_json building_json(const Building& b) {
   j["faces_per_tag"] = s.faces_per_tag;
   j["bounds"] = {{"min", {s.min.x, s.min.y, s.min.z}}, {"max", {s.max.x, s.max.y, s.max.z}}};
   j["volume"] = s.volume;
+  j["placed"] = s.placed;
   j["ms"] = b.ms;
   return j;
 }

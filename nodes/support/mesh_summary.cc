@@ -14,6 +14,7 @@ MeshSummary summarize(const MeshSet& set) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   std::vector<glm::dvec3> pts;
   for (const TaggedMesh& part : set.parts) {
+    for (const Instance& in : part.placed.instances) ++s.placed[part.placed.meshes[in.mesh].name];
     const Mesh& m = *part.mesh;
     for (const auto v : m.vertices()) {
       const glm::dvec3 p(m.point(v)[0], m.point(v)[1], m.point(v)[2]);

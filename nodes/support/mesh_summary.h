@@ -17,6 +17,9 @@ struct MeshSummary {
   std::map<std::string, std::size_t> faces_per_tag;
   glm::dvec3 min{0}, max{0};  // bounding box; zero when there are no vertices
   double volume = 0;          // sum of the meshes' signed volumes
+  // Meshes placed on them (windows, chimneys), per placed mesh's name; not
+  // in the counts and volume above.
+  std::map<std::string, std::size_t> placed;
 };
 
 MeshSummary summarize(const MeshSet& set);

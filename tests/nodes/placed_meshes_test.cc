@@ -9,6 +9,7 @@
 #include "core/io/mesh_read.h"
 #include "core/placement/box.h"
 #include "core/placement/place_mesh.h"
+#include "nodes/support/mesh_summary.h"
 #include "nodes/values.h"
 #include "tests/app/command_test.h"
 #include "tests/nodes/hand_anchors.h"
@@ -72,6 +73,18 @@ TEST_F(PlacedMeshes, TransformMovesInstancesAndAnchors) {
   EXPECT_NEAR(glm::distance(front.frame.along, glm::dvec3(0, 1, 0)), 0, 1e-12);
   EXPECT_NEAR(glm::distance(front.span_to, glm::dvec3(100, 20, 5.4)), 0, 1e-12);
   EXPECT_NE(Value::make(before).content_hash(), moved.outputs[0].content_hash());
+}
+
+TEST_F(PlacedMeshes, SummaryCountsThemApart) {
+  const MeshSet set = block_with_windows();
+  const MeshSummary with = summarize(set);
+  MeshSet bare = set;
+  bare.parts[0].placed = {};
+  const MeshSummary without = summarize(bare);
+  EXPECT_EQ(with.placed, (std::map<std::string, std::size_t>{{"window", 4}}));
+  EXPECT_TRUE(without.placed.empty());
+  EXPECT_EQ(with.faces, without.faces);
+  EXPECT_EQ(with.volume, without.volume);
 }
 
 TEST_F(PlacedMeshes, HashSeesInstancesAndAnchors) {
