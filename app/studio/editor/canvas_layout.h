@@ -19,6 +19,7 @@ struct Rect {
   bool contains(glm::vec2 p) const { return p.x >= min.x && p.y >= min.y && p.x <= max.x && p.y <= max.y; }
   bool overlaps(const Rect& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
   glm::vec2 size() const { return max - min; }
+  bool operator==(const Rect&) const = default;
 };
 
 // Canvas units to screen pixels: screen = origin + (canvas + pan) * zoom.

@@ -34,7 +34,14 @@ std::unique_ptr<Document> Document::recovered(Graph graph, std::filesystem::path
 
 std::string Document::title() const { return path_.empty() ? "untitled" : path_.filename().string(); }
 
-bool Document::dirty() const { return revision_ != saved_revision_ && to_pxg(graph_) != saved_text_; }
+bool Document::dirty() const {
+  if (revision_ == saved_revision_) return false;
+  if (dirty_revision_ != revision_) {
+    dirty_ = to_pxg(graph_) != saved_text_;
+    dirty_revision_ = revision_;
+  }
+  return dirty_;
+}
 
 void Document::save() {
   if (path_.empty()) throw std::runtime_error("the recipe has no file name yet: use Save As");

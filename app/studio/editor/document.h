@@ -36,6 +36,8 @@ class Document {
   std::string title() const;                                    // file name or "untitled"
   std::uint64_t revision() const { return revision_; }
   bool dirty() const;
+  // Whether dirty() is cheap now (known for this revision without serialising the graph).
+  bool dirty_known() const { return revision_ == saved_revision_ || dirty_revision_ == revision_; }
 
   // Atomic (temp file + rename); throws std::runtime_error naming the file.
   void save();
@@ -95,6 +97,9 @@ class Document {
   std::uint64_t revision_ = 1;
   std::uint64_t saved_revision_ = 1;
   std::string saved_text_;  // the file's text as last loaded or saved
+  // dirty() serialises the graph: asked every frame, it is worked out once per revision.
+  mutable std::uint64_t dirty_revision_ = 0;
+  mutable bool dirty_ = false;
   bool gesture_open_ = false;
   std::set<NodeId> selection_;
 };

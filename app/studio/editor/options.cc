@@ -17,6 +17,7 @@ std::string usage() {
          "  --bench-edits N             benchmark: make N parameter edits, time each to the screen, exit\n"
          "  --select NODE               select this node id at start\n"
          "  --view YAW,PITCH            the 3D preview's direction in degrees (pitch below 0: from below)\n"
+         "  --full-redraw               draw the whole window every frame, not only what changed\n"
          "  --ui-map FILE               keep a JSON map of the pins and widgets on screen (for input-driving tests)\n"
          "  -h, --help                  this text\n";
 }
@@ -63,6 +64,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.autosave_s = value() == "0" ? 0 : parse_int(args[i], "--autosave");
     } else if (a == "--bench-edits") {
       o.bench_edits = parse_int(value(), "--bench-edits");
+    } else if (a == "--full-redraw") {
+      o.full_redraw = true;
     } else if (a == "--view") {
       const std::string& v = value();
       float yaw = 0, pitch = 0;

@@ -3,7 +3,7 @@
 //   procex-studio [RECIPE.pxg] [--screenshot OUT.png [--screenshot-info OUT.json]]
 //                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
 //                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE] [--select NODE]
-//                 [--view YAW,PITCH]
+//                 [--view YAW,PITCH] [--full-redraw]
 #pragma once
 
 #include <array>
@@ -26,6 +26,7 @@ struct Options {
   unsigned select = 0;                   // a node id to select at start (screenshots of the inspector and editors)
   int bench_edits = 0;                   // benchmark: this many parameter edits, timed to the screen
   std::optional<std::array<float, 2>> view;  // the preview camera's yaw and pitch in degrees (e.g. from below the eaves)
+  bool full_redraw = false;              // draw the whole window every frame (no partial redraw)
   bool help = false;
 };
 

@@ -144,6 +144,8 @@ struct PreviewView::Gl {
 PreviewView::PreviewView() : gl_(std::make_unique<Gl>()) {}
 PreviewView::~PreviewView() = default;
 
+std::uintptr_t PreviewView::texture() const { return gl_->color; }
+
 void PreviewView::look_from(float yaw_deg, float pitch_deg) {
   camera_.yaw = yaw_deg;
   camera_.pitch = pitch_deg;
@@ -189,6 +191,7 @@ void PreviewView::frame_all() {
 void PreviewView::render(int width, int height) {
   if (!stale_ && wireframe == drawn_wireframe_ && width == gl_->width && height == gl_->height) return;
   stale_ = false;
+  ++renders_;
   drawn_wireframe_ = wireframe;
   GLint previous_fbo = 0, previous_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
@@ -246,7 +249,7 @@ void PreviewView::draw() {
   const int w = std::max(static_cast<int>(avail.x), 16), h = std::max(static_cast<int>(avail.y), 16);
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   render(w, h);
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(gl_->color)), ImVec2(static_cast<float>(w), static_cast<float>(h)),
+  ImGui::Image(reinterpret_cast<ImTextureID>(texture()), ImVec2(static_cast<float>(w), static_cast<float>(h)),
                ImVec2(0, 1), ImVec2(1, 0));
   image_x = corner.x;
   image_y = corner.y;

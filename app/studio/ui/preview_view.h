@@ -4,6 +4,7 @@
 // shift+left), the wheel zooms.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "app/studio/editor/orbit_camera.h"
@@ -26,6 +27,11 @@ class PreviewView {
   // Turns the camera to yaw and pitch (degrees), keeping its target and distance.
   void look_from(float yaw_deg, float pitch_deg);
 
+  // The offscreen image's texture, and how many times it has been redrawn
+  // (a new count: the pixels showing it are stale).
+  std::uintptr_t texture() const;
+  std::uint64_t renders() const { return renders_; }
+
   bool wireframe = false;
   // Screen rectangle of the last rendered image (for screenshot checks).
   float image_x = 0, image_y = 0, image_w = 0, image_h = 0;
@@ -41,6 +47,7 @@ class PreviewView {
   // (software GL under Xvfb makes every redraw count).
   bool stale_ = true;
   bool drawn_wireframe_ = false;
+  std::uint64_t renders_ = 0;
 };
 
 }  // namespace procex::studio
