@@ -6,39 +6,14 @@
 
 #include <algorithm>
 
+#include "app/studio/ui/offscreen_image.h"
+
 namespace procex::studio {
 
 static_assert(sizeof(ImDrawVert) == sizeof(DrawVertex) && sizeof(ImDrawIdx) == sizeof(std::uint16_t),
               "FrameDamage copies ImGui's vertices and 16-bit indices as they are");
 
-struct PartialRedraw::Gl {
-  GLuint fbo = 0, color = 0;
-  int width = 0, height = 0;
-  ~Gl() {
-    if (fbo) glDeleteFramebuffers(1, &fbo);
-    if (color) glDeleteTextures(1, &color);
-  }
-  // True when the image was (re)made: its content is undefined.
-  bool resize(int w, int h) {
-    if (fbo && w == width && h == height) return false;
-    if (!fbo) {
-      glGenFramebuffers(1, &fbo);
-      glGenTextures(1, &color);
-    }
-    width = w;
-    height = h;
-    glBindTexture(GL_TEXTURE_2D, color);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return true;
-  }
-};
-
-PartialRedraw::PartialRedraw() : gl_(std::make_unique<Gl>()) {}
+PartialRedraw::PartialRedraw() : image_(std::make_unique<OffscreenImage>(false)) {}
 PartialRedraw::~PartialRedraw() = default;
 
 namespace {
@@ -85,10 +60,10 @@ void draw_within(ImDrawData* draw, const Rect& r, int height) {
 PartialRedraw::Outcome PartialRedraw::render(ImDrawData* draw, int width, int height, int back_buffer_age,
                                              const std::vector<std::uintptr_t>& redrawn_textures, bool present) {
   const Rect screen{{0.0f, 0.0f}, {static_cast<float>(width), static_cast<float>(height)}};
-  if (gl_->resize(width, height)) damage_.reset();
+  if (image_->resize(width, height)) damage_.reset();
   const std::vector<Rect> damage = damage_.update(copy_lists(*draw), screen, redrawn_textures);
   Outcome outcome;
-  glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, image_->framebuffer());
   for (const Rect& r : damage) {
     draw_within(draw, r, height);
     outcome.pixels_redrawn += static_cast<double>(r.size().x) * r.size().y;
@@ -104,7 +79,7 @@ PartialRedraw::Outcome PartialRedraw::render(ImDrawData* draw, int width, int he
       for (const Rect& r : history_[static_cast<std::size_t>(i)]) add_damage(copy, r, FrameDamage::kMaxRects);
   }
   if (!copy.empty()) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, image_->framebuffer());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     for (const Rect& r : copy) {
       // Framebuffers count rows from the bottom.

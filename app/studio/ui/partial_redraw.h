@@ -18,6 +18,8 @@ struct ImDrawData;
 
 namespace procex::studio {
 
+class OffscreenImage;
+
 class PartialRedraw {
  public:
   PartialRedraw();
@@ -39,8 +41,7 @@ class PartialRedraw {
   void invalidate() { damage_.reset(); }
 
  private:
-  struct Gl;
-  std::unique_ptr<Gl> gl_;
+  std::unique_ptr<OffscreenImage> image_;
   FrameDamage damage_;
   std::deque<std::vector<Rect>> history_;  // the damage of the last frames presented, newest first
   static constexpr std::size_t kHistory = 4;

@@ -12,6 +12,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/studio/ui/offscreen_image.h"
+
 namespace procex::studio {
 
 namespace {
@@ -82,8 +84,7 @@ struct PreviewView::Gl {
   GLuint mesh_program = 0, line_program = 0;
   GLuint mesh_vao = 0, mesh_vbo = 0, edge_vao = 0, edge_vbo = 0, grid_vao = 0, grid_vbo = 0;
   GLsizei mesh_vertices = 0, edge_vertices = 0, grid_vertices = 0;
-  GLuint fbo = 0, color = 0, depth = 0;
-  int width = 0, height = 0;
+  OffscreenImage image{true};
 
   Gl() {
     mesh_program = program(kMeshVs, kMeshFs);
@@ -106,45 +107,24 @@ struct PreviewView::Gl {
       glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
     }
     glBindVertexArray(0);
-    glGenFramebuffers(1, &fbo);
-    glGenTextures(1, &color);
-    glGenRenderbuffers(1, &depth);
   }
   ~Gl() {
     glDeleteProgram(mesh_program);
     glDeleteProgram(line_program);
     for (GLuint* v : {&mesh_vao, &edge_vao, &grid_vao}) glDeleteVertexArrays(1, v);
     for (GLuint* b : {&mesh_vbo, &edge_vbo, &grid_vbo}) glDeleteBuffers(1, b);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &color);
-    glDeleteRenderbuffers(1, &depth);
   }
   void upload(GLuint vbo, const std::vector<float>& data) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
   }
-  void resize(int w, int h) {
-    if (w == width && h == height) return;
-    width = w;
-    height = h;
-    glBindTexture(GL_TEXTURE_2D, color);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  }
 };
 
 PreviewView::PreviewView() : gl_(std::make_unique<Gl>()) {}
 PreviewView::~PreviewView() = default;
 
-std::uintptr_t PreviewView::texture() const { return gl_->color; }
+std::uintptr_t PreviewView::texture() const { return gl_->image.texture(); }
 
 void PreviewView::look_from(float yaw_deg, float pitch_deg) {
   camera_.yaw = yaw_deg;
@@ -189,15 +169,15 @@ void PreviewView::frame_all() {
 }
 
 void PreviewView::render(int width, int height) {
-  if (!stale_ && wireframe == drawn_wireframe_ && width == gl_->width && height == gl_->height) return;
+  if (!stale_ && wireframe == drawn_wireframe_ && width == gl_->image.width() && height == gl_->image.height()) return;
   stale_ = false;
   ++renders_;
   drawn_wireframe_ = wireframe;
   GLint previous_fbo = 0, previous_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
-  gl_->resize(width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, gl_->fbo);
+  gl_->image.resize(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, gl_->image.framebuffer());
   glViewport(0, 0, width, height);
   glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

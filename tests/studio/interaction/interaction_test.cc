@@ -147,10 +147,16 @@ void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first)
 
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
 
-TEST(StudioInteraction, AddConnectEditUndoSave) {
-  const fs::path dir = fs::temp_directory_path() / ("procex_studio_interaction_" + std::to_string(getpid()));
+// An empty folder for one test's files (removed by the test when it passes).
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  return dir;
+}
+
+TEST(StudioInteraction, AddConnectEditUndoSave) {
+  const fs::path dir = fresh_dir("interaction");
   const fs::path recipe = dir / "house.pxg";
   fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
   Studio studio(recipe, dir);
@@ -207,9 +213,7 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
 
 // An edit autosaved, then the studio killed: the next start offers the edit back.
 TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
-  const fs::path dir = fs::temp_directory_path() / ("procex_studio_recovery_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("recovery");
   const fs::path recipe = dir / "house.pxg";
   fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
   fs::last_write_time(recipe, fs::file_time_type::clock::now() - std::chrono::minutes(1));
@@ -248,9 +252,7 @@ bool has_pin(const json& map, std::uint64_t node, int port, bool output) {
 // Variadic ports: the inspector's + and - change Merge's input count (pins
 // follow), a connected input is never dropped (the status bar says why), undo.
 TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
-  const fs::path dir = fs::temp_directory_path() / ("procex_studio_ports_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("ports");
   const fs::path recipe = dir / "merge.pxg";
   std::ofstream(recipe) << R"({
   "format": "procex-graph", "version": 2, "metadata": {"name": "merge"}, "inputs": [],
@@ -296,9 +298,7 @@ TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
 
 // The plan editor's Add hole / Delete hole on a Footprint Polygon, undone.
 TEST(StudioInteraction, AddsAndDeletesAHole) {
-  const fs::path dir = fs::temp_directory_path() / ("procex_studio_hole_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("hole");
   const fs::path recipe = dir / "polygon.pxg";
   std::ofstream(recipe) << R"({
   "format": "procex-graph", "version": 2, "metadata": {"name": "polygon"}, "inputs": [],
