@@ -140,6 +140,29 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const s
   throw SweepError(msg.str(), st.height, ids);
 }
 
+// Whether the wedge outside the solid between an incoming ray (edge a, at
+// angle in_angle) and the next outgoing ray counter-clockwise (edge b) closes
+// as the sweep rises: the lines of a and b then cross inside that wedge.
+bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle) {
+  if (a == b) return false;
+  const Plane& pa = st.edges[a].plane;
+  const Plane& pb = st.edges[b].plane;
+  if (std::abs(cross(pa.n, pb.n)) <= Tolerances::parallel_sin) {
+    // Lines facing each other across a sliver close it when they lean out more than in.
+    return glm::dot(pa.n, pb.n) < 0.0 && pa.k + pb.k < 0.0;
+  }
+  const glm::dvec2 v = crossing_velocity(pa, pb);
+  if (v == glm::dvec2(0.0)) return false;
+  auto ccw_from_in = [&](double angle) {
+    double d = angle - in_angle;
+    while (d < 0.0) d += 2.0 * M_PI;
+    while (d >= 2.0 * M_PI) d -= 2.0 * M_PI;
+    return d;
+  };
+  const double at = ccw_from_in(std::atan2(v.y, v.x));
+  return at > 0.0 && at < ccw_from_in(out_angle);
+}
+
 void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {
   const double z = st.height;
   glm::dvec2 p{0.0};
@@ -256,6 +279,33 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (best == rays.size()) break;
     std::swap(rays[best], rays[(best + 1) % rays.size()]);
   }
+  std::vector<int> made;
+  auto join = [&](const Ray& in, const Ray& out) {
+    const Chain& cin = chains[in.chain];
+    const Chain& cout = chains[out.chain];
+    const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
+    st.link(cin.in_corner, n);
+    st.link(n, cout.out_corner);
+    made.push_back(n);
+  };
+  // Where faces lean out, the gap outside two chains can close: the regions
+  // grow into each other and merge across it, with a corner that spans it.
+  if (st.any_outward && alternates()) {
+    std::vector<Ray> rest;
+    std::vector<char> taken(rays.size(), 0);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const std::size_t j = (i + 1) % rays.size();
+      if (!taken[i] && !taken[j] && rays[i].in && !rays[j].in && gap_closes(st, chains[rays[i].chain].in_edge,
+                                                                         chains[rays[j].chain].out_edge, rays[i].angle,
+                                                                         rays[j].angle)) {
+        join(rays[i], rays[j]);
+        taken[i] = taken[j] = 1;
+      }
+    }
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      if (!taken[i]) rest.push_back(rays[i]);
+    rays = std::move(rest);
+  }
   // Pair rays like brackets, counter-clockwise from a wedge outside every
   // chain: an outgoing ray opens an inside wedge, the incoming ray that closes
   // it gets a corner with it. Alternating rays pair with their neighbours;
@@ -269,7 +319,6 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
       start = static_cast<std::size_t>(i) + 1;
     }
   }
-  std::vector<int> made;
   std::vector<const Ray*> open;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const Ray& ray = rays[(start + i) % rays.size()];
@@ -278,13 +327,8 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
       continue;
     }
     if (open.empty()) fail(st, "chains do not pair around the collision", p, edges);
-    const Chain& cin = chains[ray.chain];
-    const Chain& cout = chains[open.back()->chain];
+    join(ray, *open.back());
     open.pop_back();
-    const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
-    st.link(cin.in_corner, n);
-    st.link(n, cout.out_corner);
-    made.push_back(n);
   }
 
   const std::vector<int> live = settle(st, made);

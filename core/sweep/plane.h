@@ -23,4 +23,12 @@ struct Plane {
 
 inline double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
+// How the line where planes a and b cross moves over the sweep plane per unit
+// of height: differentiating n.x - k z = c, v solves n_a.v = k_a, n_b.v = k_b.
+// Meaningful only where cross(a.n, b.n) is well away from zero.
+inline glm::dvec2 crossing_velocity(const Plane& a, const Plane& b) {
+  const double det = cross(a.n, b.n);
+  return {(a.k * b.n.y - b.k * a.n.y) / det, (a.n.x * b.k - b.n.x * a.k) / det};
+}
+
 }  // namespace procex::engine

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/geom/error.h"
+#include "core/sweep/horizontal_event.h"
 #include "core/sweep/settle.h"
 
 namespace procex::engine {
@@ -15,17 +17,18 @@ double segment_slope(const Profile& profile, std::size_t segment) {
   return std::clamp(k, -Tolerances::max_slope, Tolerances::max_slope);
 }
 
-NextPlane next_plane(const Profile& profile, std::size_t point) {
+NextPlane next_plane(const Profile& profile, std::size_t point, double flat) {
+  auto horizontal = [&](std::size_t seg) { return profile.points[seg + 1].y - profile.points[seg].y <= flat; };
   double step = 0.0;
   std::size_t seg = point;
-  while (seg < profile.segments() && profile.points[seg + 1].y == profile.points[seg].y) {
+  while (seg < profile.segments() && horizontal(seg)) {
     step += profile.points[seg + 1].x - profile.points[seg].x;
     ++seg;
   }
   if (seg < profile.segments()) return {seg, seg, step};
   // Above its last point an edge carries on with the profile's last slope.
   std::size_t last = profile.segments() - 1;
-  while (last > 0 && profile.points[last + 1].y == profile.points[last].y) --last;
+  while (last > 0 && horizontal(last)) --last;
   return {last, profile.points.size() - 1, step};
 }
 
@@ -50,22 +53,31 @@ std::vector<int> ProfileEvents::pop(double tolerance) {
 
 void apply_profile_events(State& st, EventQueue& queue, ProfileEvents& events, const std::vector<int>& sources) {
   const double z = st.height;
-  // New planes through each changing edge's current line.
-  std::vector<int> replaced(st.edges.size(), kNone);
+  std::map<int, SourceStep> steps;
+  bool sideways = false;
   for (int s : sources) {
     Source& src = st.sources[s];
-    const NextPlane next = next_plane(*src.profile, src.point + 1);
-    if (next.outward_step != 0.0)
-      throw InputError("profile '" + src.profile->name + "': horizontal segments above the base are not supported yet");
-    const int old = src.edge;
+    const Profile& profile = *src.profile;
+    auto tag = [&](std::size_t segment) { return profile.tags.empty() ? std::string() : profile.tags[segment]; };
+    const NextPlane next = next_plane(profile, src.point + 1, st.tol().height());
+    steps[s] = {-next.outward_step, next.outward_step != 0.0 ? tag(src.point + 1) : std::string(),
+                segment_slope(profile, next.segment), tag(next.segment)};
+    sideways = sideways || next.outward_step != 0.0;
     src.point = next.point;
     events.schedule(st, s);
+  }
+  if (sideways) {
+    apply_horizontal_run(st, queue, steps);
+    return;
+  }
+  // New planes through each changing edge's current line.
+  std::vector<int> replaced(st.edges.size(), kNone);
+  for (const auto& [s, step] : steps) {
+    const int old = st.sources[s].edge;
     const Edge& e = st.edges[old];
-    const double k = segment_slope(*src.profile, next.segment);
-    const std::string& tag = src.profile->tags.empty() ? std::string() : src.profile->tags[next.segment];
-    if (k == e.plane.k && tag == st.faces[e.face].tag) continue;  // the same plane goes on
+    if (step.slope == e.plane.k && step.tag == st.faces[e.face].tag) continue;  // the same plane goes on
     const glm::dvec2 on_line = e.plane.n * e.plane.offset_at(z);
-    replaced[old] = st.add_edge(on_line, z, e.dir, k, s, tag);
+    replaced[old] = st.add_edge(on_line, z, e.dir, step.slope, s, step.tag);
   }
   replaced.resize(st.edges.size(), kNone);
   auto now = [&](int e) { return replaced[e] == kNone ? e : replaced[e]; };

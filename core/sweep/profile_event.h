@@ -27,22 +27,22 @@ class ProfileEvents {
 };
 
 // The first segment at or after profile point `point` that is not horizontal
-// (the slope a source continues with), the point it starts at (the last point
-// once the profile is used up, so no event follows), and the outward offset of
-// the horizontal segments skipped on the way.
+// (rises more than `flat`): the slope a source continues with, the point it
+// starts at (the last point once the profile is used up, so no event follows),
+// and the outward offset of the horizontal segments skipped on the way.
 struct NextPlane {
   std::size_t segment;
   std::size_t point;
   double outward_step;
 };
-NextPlane next_plane(const Profile& profile, std::size_t point);
+NextPlane next_plane(const Profile& profile, std::size_t point, double flat);
 
 // Slope (inward offset per unit height) and tag of a profile segment.
 double segment_slope(const Profile& profile, std::size_t segment);
 
 // Moves every source in `sources` on to its next profile segment at the
 // current height: new planes, new corners, output where the old faces end.
-// Throws InputError for horizontal runs after the base, not handled yet.
+// Horizontal runs step the cross-section sideways (horizontal_event.h).
 void apply_profile_events(State& st, EventQueue& queue, ProfileEvents& events, const std::vector<int>& sources);
 
 }  // namespace procex::engine

@@ -42,10 +42,9 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
   const Plane& a = edges[prev_edge].plane;
   const Plane& b = edges[next_edge].plane;
   const bool same_direction = glm::dot(edges[prev_edge].dir, edges[next_edge].dir) > 0.0;
-  // Differentiating n.x - k z = c: the velocity v solves n_a.v = k_a, n_b.v = k_b.
   const double det = cross(a.n, b.n);
   if (std::abs(det) > Tolerances::parallel_sin) {
-    c.velocity = {(a.k * b.n.y - b.k * a.n.y) / det, (a.n.x * b.k - b.n.x * a.k) / det};
+    c.velocity = crossing_velocity(a, b);
     if (glm::length(c.velocity) > Tolerances::max_speed * (1.0 + std::abs(a.k) + std::abs(b.k)))
       c.motion = same_direction ? Motion::Ambiguous : Motion::Ridge;
   } else if (!same_direction) {

@@ -1,0 +1,110 @@
+#include "core/sweep/driver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/error.h"
+#include "core/sweep/intersection_event.h"
+
+namespace procex::engine {
+namespace {
+
+// Collinear neighbouring edges with different slopes are the ambiguous case
+// (paper 4.5) from the start: the whole run takes the slope the volume rule
+// picks, so each edge keeps its own (coplanar) face.
+void unify_collinear_slopes(const std::vector<glm::dvec2>& dirs, std::vector<double>& slopes, Ambiguity rule) {
+  const std::size_t n = dirs.size();
+  auto straight = [&](std::size_t j) {  // the corner at the start of edge j
+    const glm::dvec2 a = dirs[(j + n - 1) % n], b = dirs[j];
+    return std::abs(cross(a, b)) <= Tolerances::parallel_sin && glm::dot(a, b) > 0.0;
+  };
+  std::size_t start = 0;
+  while (start < n && straight(start)) ++start;
+  if (start == n) return;  // no corner at all: not a polygon, refused elsewhere
+  for (std::size_t i = 0; i < n;) {
+    const std::size_t first = (start + i) % n;
+    std::size_t len = 1;
+    while (i + len < n && straight((first + len) % n)) ++len;
+    double pick = slopes[first];
+    for (std::size_t m = 0; m < len; ++m) {
+      const double k = slopes[(first + m) % n];
+      pick = rule == Ambiguity::MaximizeVolume ? std::min(pick, k) : std::max(pick, k);
+    }
+    for (std::size_t m = 0; m < len; ++m) slopes[(first + m) % n] = pick;
+    i += len;
+  }
+}
+
+}  // namespace
+
+void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<double> slopes,
+               const std::vector<std::string>& tags, int first_source, int loop) {
+  const std::size_t n = points.size();
+  if (n < 3) throw InputError("loop needs at least 3 vertices and one edge spec per vertex", loop);
+  const auto v0 = static_cast<std::uint32_t>(st.vertices.size());
+  for (glm::dvec2 p : points) st.add_vertex({p, st.height});
+  const int e0 = static_cast<int>(st.edges.size());
+  std::vector<glm::dvec2> dirs(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const glm::dvec2 d = points[(j + 1) % n] - points[j];
+    const double len = glm::length(d);
+    if (!(len > 0.0)) throw InputError("zero-length edge", loop, static_cast<int>(j));
+    dirs[j] = d / len;
+  }
+  unify_collinear_slopes(dirs, slopes, st.options().ambiguity);
+  for (std::size_t j = 0; j < n; ++j) {
+    st.add_edge(points[j], st.height, dirs[j], slopes[j], first_source + static_cast<int>(j), tags[j]);
+    const auto va = v0 + static_cast<std::uint32_t>(j), vb = v0 + static_cast<std::uint32_t>((j + 1) % n);
+    st.faces[st.edges.back().face].half_edges.push_back({va, vb});
+    st.faces[st.base_face].half_edges.push_back({vb, va});
+  }
+  const int c0 = static_cast<int>(st.corners.size());
+  for (std::size_t j = 0; j < n; ++j) {
+    const int prev = e0 + static_cast<int>((j + n - 1) % n), next = e0 + static_cast<int>(j);
+    st.add_corner(prev, next, v0 + static_cast<std::uint32_t>(j));
+  }
+  for (std::size_t j = 0; j < n; ++j) st.link(c0 + static_cast<int>(j), c0 + static_cast<int>((j + 1) % n));
+}
+
+void schedule_all(State& st, EventQueue& queue) {
+  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c)
+    if (st.corners[c].alive) queue.schedule(st, c);
+}
+
+void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events) {
+  const std::optional<double> max_height = st.options().max_height;
+  std::size_t stalled = 0, stall_limit = 0;
+  double last = -1.0;
+  while (!queue.empty() || !profile_events.empty()) {
+    // Collisions at a profile vertex's height are resolved before the planes change.
+    const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
+    const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();
+    if (z_profile < z_collide - st.tol().height()) {
+      if (max_height && z_profile > *max_height) break;
+      st.height = std::max(st.height, z_profile);
+      apply_profile_events(st, queue, profile_events, profile_events.pop(st.tol().height()));
+      continue;
+    }
+    const double z = z_collide;
+    if (max_height && z > *max_height) break;
+    if (z > st.tol().runaway_height()) break;
+    // Bounded work: every event removes a span or splits one, so a sweep that
+    // keeps resolving events at one height without rising is going in circles.
+    if (z > last + st.tol().height()) {
+      stalled = 0;
+      stall_limit = 8 * st.corners.size() + 64;
+    } else {
+      ++stalled;
+    }
+    last = std::max(last, z);
+    if (stalled > stall_limit) {
+      throw SweepError("sweep: events repeat without rising at height " + std::to_string(st.height), st.height, {});
+    }
+    st.height = std::max(st.height, z);
+    resolve_intersections(st, queue, queue.pop_cluster(st.tol().height()));
+  }
+}
+
+}  // namespace procex::engine

@@ -1,0 +1,29 @@
+// Horizontal profile runs (paper 4.4, fig. 17). Where profiles step sideways
+// at one height, the whole cross-section is offset there, each edge by its own
+// distance. The offset is a nested sweep of the current loops, one slope per
+// edge, flattened onto the sweep plane: the faces of edges stepping in face up
+// (ledges), those stepping out face down (soffits), and the nested sweep's top
+// is the new cross-section. Its loops stay simple where edges meet or vanish
+// on the way, because the nested sweep resolves those as events.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "core/sweep/event_queue.h"
+
+namespace procex::engine {
+
+// What a source does at the run's height. Sources not listed keep their plane.
+struct SourceStep {
+  double inward = 0.0;    // horizontal step, inward positive (0: no step)
+  std::string step_tag;   // tag of the horizontal faces it makes
+  double slope = 0.0;     // the plane it continues with above the run
+  std::string tag;        // that plane's tag
+};
+
+// Steps every live loop at the current height; every corner is replaced and
+// scheduled again.
+void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps);
+
+}  // namespace procex::engine
