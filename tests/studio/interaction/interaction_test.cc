@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -223,9 +224,19 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
     const std::uint64_t rev = revision(map);
     type_into_slider(widget_centre(map, "width"), "23");
     studio.wait("width set", [&](const json& j) { return revision(j) > rev && j["dirty"].get<bool>(); });
+    // Typing applies each digit ("2", then "23"): wait for an autosave of the whole value.
+    auto autosaved_23 = [&] {
+      if (!fs::exists(dir / "home" / "autosave")) return false;
+      for (const auto& f : fs::directory_iterator(dir / "home" / "autosave")) {
+        std::ifstream in(f.path());
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (text.find("\"width\": 23.0") != std::string::npos) return true;
+      }
+      return false;
+    };
     const auto end = std::chrono::steady_clock::now() + 20s;
-    while (!fs::exists(dir / "home" / "autosave") && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(100ms);
-    std::this_thread::sleep_for(300ms);
+    while (!autosaved_23() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(100ms);
+    EXPECT_TRUE(autosaved_23());
   }  // killed: no clean exit
   EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 14.0);  // the file itself is untouched
   Studio again(recipe, dir);
