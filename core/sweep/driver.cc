@@ -55,6 +55,9 @@ void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<dou
   }
   unify_collinear_slopes(dirs, slopes, st.options().ambiguity);
   for (std::size_t j = 0; j < n; ++j) {
+    Source& src = st.sources[static_cast<std::size_t>(first_source) + j];
+    src.start = points[j];
+    src.end = points[(j + 1) % n];
     st.add_edge(points[j], st.height, dirs[j], slopes[j], first_source + static_cast<int>(j), tags[j]);
     const auto va = v0 + static_cast<std::uint32_t>(j), vb = v0 + static_cast<std::uint32_t>((j + 1) % n);
     st.faces[st.edges.back().face].half_edges.push_back({va, vb});
@@ -73,14 +76,18 @@ void schedule_all(State& st, EventQueue& queue) {
     if (st.corners[c].alive) queue.schedule(st, c);
 }
 
-void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events) {
+void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors) {
   const std::optional<double> max_height = st.options().max_height;
+  auto anchors_up_to = [&](double z) {
+    if (anchors) anchors->resolve_up_to(st, max_height ? std::min(z, *max_height) : z);
+  };
   std::size_t stalled = 0, stall_limit = 0;
   double last = -1.0;
   while (!queue.empty() || !profile_events.empty()) {
     // Collisions at a profile vertex's height are resolved before the planes change.
     const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
     const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();
+    anchors_up_to(std::min(z_collide, z_profile));
     if (z_profile < z_collide - st.tol().height()) {
       if (max_height && z_profile > *max_height) break;
       st.height = std::max(st.height, z_profile);
@@ -105,6 +112,8 @@ void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events) {
     st.height = std::max(st.height, z);
     resolve_intersections(st, queue, queue.pop_cluster(st.tol().height()));
   }
+  // Open loops (capped) still carry anchors up to the cap.
+  anchors_up_to(max_height.value_or(st.height));
 }
 
 }  // namespace procex::engine

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sweep/anchor_event.h"
 #include "core/sweep/event_queue.h"
 #include "core/sweep/profile_event.h"
 #include "core/sweep/sweep_state.h"
@@ -22,7 +23,8 @@ void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<dou
 void schedule_all(State& st, EventQueue& queue);
 
 // Resolves events in height order until none is left at or below the
-// options' max height. Corners still alive afterwards are open loops.
-void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events);
+// options' max height. Corners still alive afterwards are open loops. Anchors
+// resolve on the loops as they are at their height, before events there.
+void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors = nullptr);
 
 }  // namespace procex::engine

@@ -61,6 +61,7 @@ FirstPlane first_plane(engine::State& st, const Footprint& fp, const EdgeSpec& s
     throw InputError("profile '" + profile.name + "' starts with a horizontal segment; a profile must rise from the "
                      "footprint first (move the footprint edge instead)", loop, vertex);
   src.profile = &profile;
+  src.profile_index = spec.profile;
   src.point = next.point;
   st.sources.push_back(src);
   return {engine::segment_slope(profile, next.segment), profile.tags.empty() ? std::string() : profile.tags[next.segment]};
@@ -96,7 +97,8 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   engine::schedule_all(st, queue);
   engine::ProfileEvents profile_events;
   for (int s = 0; s < static_cast<int>(st.sources.size()); ++s) profile_events.schedule(st, s);
-  engine::run_events(st, queue, profile_events);
+  engine::AnchorEvents anchors(st, options.anchors);
+  engine::run_events(st, queue, profile_events, &anchors);
   const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
   if (open) {
     if (!options.max_height) {
@@ -108,6 +110,7 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   }
   Surface surface = engine::build_surface(st);
   engine::check_closed(surface);
+  surface.anchors = anchors.finish();
   return surface;
 }
 

@@ -26,6 +26,8 @@ struct Source {
   const Profile* profile = nullptr;  // null: one plane all the way up
   std::size_t point = 0;             // the profile point the current plane starts at
   int edge = -1;                     // its current plane
+  int profile_index = -1;            // EdgeSpec::profile
+  glm::dvec2 start{0.0}, end{0.0};   // the footprint edge (for plan anchors)
 };
 
 // A p-edge: one plane of one footprint edge.
