@@ -126,6 +126,30 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone, snapped level or plumb; Alt: free), double-click a segment to add, right-click to delete."
                       : points_param ? "Plan: drag corners, double-click an edge to add one, right-click a corner to delete, click edges to select."
                                      : "Plan: click edges to select them.");
+  const std::size_t tags_param = is_profile ? param_of_type(*n, "tags", typeid(std::vector<std::string>)).value_or(SIZE_MAX) : SIZE_MAX;
+  const std::vector<std::string> tags = tags_param != SIZE_MAX ? n->params[tags_param].get<std::vector<std::string>>() : std::vector<std::string>{};
+  const std::size_t profile_segments = is_profile && pts.size() >= 2 ? pts.size() - 1 : 0;
+  if (selected_segment_ && (*selected_segment_ >= profile_segments || tags.size() != profile_segments)) selected_segment_.reset();
+  // A selected segment's tag, edited in a row above the view (not over it: the view would take the clicks).
+  if (selected_segment_ && tags.size() == profile_segments) {
+    constexpr float kFieldWidth = 140.0f;
+    ImGui::SetNextItemWidth(kFieldWidth);
+    const std::size_t e = *selected_segment_;
+    if (segment_tag_edit_ != e) segment_tag_ = tags[e];
+    segment_tag_edit_ = e;
+    const std::string label = "tag of segment " + std::to_string(e) + (pts[e].y == pts[e + 1].y ? " (horizontal)" : "");
+    ImGui::InputText(label.c_str(), &segment_tag_);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons_["segment_tag"] = {lo.x, lo.y, kFieldWidth, hi.y - lo.y};  // the text field, not its label
+    if (ImGui::IsItemDeactivatedAfterEdit() && segment_tag_ != tags[e]) {
+      std::vector<std::string> next = tags;
+      next[e] = segment_tag_;
+      if (Status s = doc.set_param(id, tags_param, Value::make(std::move(next))); !s) status = s.message();
+    }
+    if (!ImGui::IsItemActive()) segment_tag_ = tags[e];
+  } else if (profile_segments > 0 && tags.size() == profile_segments) {
+    ImGui::TextDisabled("Click a segment to edit its tag.");  // the row stays: the view does not jump
+  }
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 50.0f), std::max(ImGui::GetContentRegionAvail().y - 4, 50.0f));
   ImGui::InvisibleButton("shape", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
@@ -182,10 +206,6 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     check_revision_ = doc.revision();
     issue_ = check_plan(pts, hole);
   }
-  const std::size_t tags_param = is_profile ? param_of_type(*n, "tags", typeid(std::vector<std::string>)).value_or(SIZE_MAX) : SIZE_MAX;
-  const std::vector<std::string> tags = tags_param != SIZE_MAX ? n->params[tags_param].get<std::vector<std::string>>() : std::vector<std::string>{};
-  const std::size_t profile_segments = is_profile && pts.size() >= 2 ? pts.size() - 1 : 0;
-  if (selected_segment_ && *selected_segment_ >= profile_segments) selected_segment_.reset();
   std::optional<Grab> near_point;
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const std::vector<Vec2>& lp = loops[k].pts;
@@ -194,8 +214,9 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
       const Vec2 a = lp[e], b = lp[(e + 1) % lp.size()];
       if (is_profile && selected_segment_ == e) dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), IM_COL32(255, 170, 40, 255), 6.0f);
       dl->AddLine(f.to_screen(a.x, a.y), f.to_screen(b.x, b.y), tag_color_u32(e < tags.size() ? tags[e] : ""), 2.5f);
+      const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
+      if (is_profile) buttons_["segment_" + std::to_string(e)] = {mid.x, mid.y, 0.0f, 0.0f};  // where tests click a segment
       if (e < tags.size()) {
-        const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
         dl->AddText(ImVec2(mid.x + 6, mid.y - 7), IM_COL32(220, 220, 220, 255), tags[e].c_str());
       }
     }
@@ -248,9 +269,9 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     if (r) apply_with_tags(near_point->loop, r.value(), tags_after_remove(tags, profile_segments, near_point->point), "delete point");
     else status = loops[near_point->loop].is_hole ? "hole: " + r.message() + " (Delete hole removes it)" : r.message();
   }
-  // A profile segment clicked: its tag is edited in a field over the view.
+  // A profile segment clicked: its tag is edited in the row above the view.
   if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point)
-    selected_segment_ = nearest_edge(pts, mw, tol, false);
+    selected_segment_ = nearest_edge(pts, mw, tol, false);  // the field appears next frame
   // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge) {
     if (!ImGui::GetIO().KeyCtrl && !ImGui::GetIO().KeyShift) selected_edges_.clear();
@@ -263,21 +284,6 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     const ImVec2 at(corner.x + 6, corner.y + size.y - text.y - 6);
     dl->AddRectFilled(ImVec2(corner.x, at.y - 3), ImVec2(corner.x + size.x, corner.y + size.y), IM_COL32(24, 25, 30, 220));
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(255, 102, 90, 255), issue_->message.c_str(), nullptr, wrap);
-  }
-  if (selected_segment_ && tags.size() == profile_segments) {
-    ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));
-    ImGui::SetNextItemWidth(140);
-    const std::size_t e = *selected_segment_;
-    if (segment_tag_edit_ != e) segment_tag_ = tags[e];
-    segment_tag_edit_ = e;
-    const std::string label = "tag of segment " + std::to_string(e) + (pts[e].y == pts[e + 1].y ? " (horizontal)" : "");
-    ImGui::InputText(label.c_str(), &segment_tag_);
-    if (ImGui::IsItemDeactivatedAfterEdit() && segment_tag_ != tags[e]) {
-      std::vector<std::string> next = tags;
-      next[e] = segment_tag_;
-      if (Status s = doc.set_param(id, tags_param, Value::make(std::move(next))); !s) status = s.message();
-    }
-    if (!ImGui::IsItemActive()) segment_tag_ = tags[e];
   }
   if (!selected_edges_.empty()) {
     ImGui::SetCursorScreenPos(ImVec2(corner.x + 6, corner.y + 6));

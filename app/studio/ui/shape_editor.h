@@ -32,7 +32,8 @@ namespace procex::studio {
 class ShapeEditor {
  public:
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
-  // Buttons drawn in the last frame (window pixels), for the --ui-map.
+  // Buttons and profile segment midpoints (segment_K) drawn in the last frame
+  // (window pixels), for the --ui-map.
   const std::map<std::string, std::array<float, 4>>& buttons() const { return buttons_; }
 
  private:
