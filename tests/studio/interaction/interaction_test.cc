@@ -149,6 +149,14 @@ void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first)
 
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
 
+// Ctrl+S, then Ctrl+Q: saved, and a clean exit.
+void save_and_quit(Studio& studio) {
+  press("ctrl+s");
+  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+}
+
 // An empty folder for one test's files (removed by the test when it passes).
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("procex_studio_" + name + "_" + std::to_string(getpid()));
@@ -246,10 +254,7 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
   json map = again.wait("the recovery prompt placed", [](const json& j) { return j["buttons"].contains("recover"); });
   click(button_centre(map, "recover"));
   map = again.wait("recovered", [](const json& j) { return j["dirty"].get<bool>() && !j["buttons"].contains("recover"); });
-  press("ctrl+s");
-  again.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
-  press("ctrl+q");
-  EXPECT_EQ(again.wait_exit(20s), 0);
+  save_and_quit(again);
   EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 23.0);
   // Saving removed the autosave: nothing is offered next time.
   EXPECT_TRUE(fs::is_empty(dir / "home" / "autosave"));
@@ -294,10 +299,7 @@ TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
   EXPECT_TRUE(has_pin(map, 3, 1, false));
   press("ctrl+z");
   map = studio.wait("the removal undone", [&](const json& j) { return revision(j) > rev && has_pin(j, 3, 2, false); });
-  press("ctrl+s");
-  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
-  press("ctrl+q");
-  EXPECT_EQ(studio.wait_exit(20s), 0);
+  save_and_quit(studio);
 
   const Graph g = load_pxg(recipe);
   const Node* merge = g.node(3);
@@ -371,10 +373,7 @@ TEST(StudioInteraction, EditsAProfileSegmentsTagAndKeepsTagsPerSegment) {
     map = studio.wait("a point inserted", inserted, 8s, attempt == 3);
   }
   EXPECT_EQ(map["errors"], 0);  // the tags still match the segments: the profile evaluates
-  press("ctrl+s");
-  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
-  press("ctrl+q");
-  EXPECT_EQ(studio.wait_exit(20s), 0);
+  save_and_quit(studio);
   const Graph saved = load_pxg(recipe);
   const Node* profile = saved.node(2);
   ASSERT_TRUE(profile);
