@@ -3,7 +3,6 @@
 // profiles with eaves stepping out) and every OpenStreetMap footprint of
 // ../shared/data/footprints under a four-segment house profile (wall, soffit,
 // fascia, roof). Footprints are read and prepared before timing; one thread.
-#include <cmath>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -12,40 +11,14 @@
 #include "core/geom/prepare.h"
 #include "core/io/geojson.h"
 #include "core/sweep/sweep.h"
+#include "tests/support/figure25.h"
 #include "tests/support/shared_data.h"
 
 namespace procex {
 namespace {
 
-Footprint figure25_analogue() {
-  auto ring = [](glm::dvec2 centre, double r, bool clockwise) {
-    std::vector<glm::dvec2> pts;
-    for (int i = 0; i < 23; ++i) {
-      const double a = 2 * M_PI * i / 23 * (clockwise ? -1 : 1);
-      pts.push_back(centre + r * (1.0 + 0.04 * std::sin(5.0 * a)) * glm::dvec2{std::cos(a), std::sin(a)});
-    }
-    return pts;
-  };
-  std::vector<std::vector<glm::dvec2>> loops;
-  for (int b = 0; b < 6; ++b) {
-    const glm::dvec2 c{100.0 * (b % 3), 100.0 * (b / 3)};
-    loops.push_back(ring(c, 40, false));
-    loops.push_back(ring(c + glm::dvec2{-12, 0}, 20, true));
-    loops.push_back(ring(c + glm::dvec2{-12, 0}, 8, false));
-    loops.push_back(ring(c + glm::dvec2{22, 14}, 6, true));
-  }
-  Footprint fp = make_footprint(loops, 45.0);
-  fp.profiles = {{"soffit", {{0, 0}, {0, 3}, {0.5, 3}, {-10, 13.5}}, {"wall", "soffit", "roof"}},
-                 {"mansard", {{0, 0}, {0, 3}, {0.3, 3}, {-1, 6}, {-4, 7}}, {"wall", "soffit", "mansard", "roof"}},
-                 {"deep eave", {{0, 0}, {0, 3}, {0.8, 3}, {-6, 9}}, {"wall", "soffit", "roof"}}};
-  int k = 0;
-  for (Loop& loop : fp.loops)
-    for (EdgeSpec& e : loop.edges) e.profile = k++ % 3;
-  return fp;
-}
-
 void BM_Figure25Analogue(benchmark::State& state) {
-  const Footprint fp = figure25_analogue();
+  const Footprint fp = testing::figure25_analogue();
   for (auto _ : state) benchmark::DoNotOptimize(sweep(fp));
 }
 BENCHMARK(BM_Figure25Analogue)->Unit(benchmark::kMillisecond);

@@ -8,7 +8,7 @@
 
 #include "core/geom/error.h"
 #include "core/placement/placement_error.h"
-#include "core/placement/placement_tolerances.h"
+#include "core/geom/tolerances.h"
 
 namespace procex {
 

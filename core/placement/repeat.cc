@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/placement/placement_error.h"
-#include "core/placement/placement_tolerances.h"
+#include "core/geom/tolerances.h"
 
 namespace procex {
 namespace {

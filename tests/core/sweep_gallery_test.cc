@@ -16,6 +16,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "tests/core/surface_checks.h"
+#include "tests/support/figure25.h"
 
 namespace procex {
 namespace {
@@ -227,37 +228,12 @@ TEST(Gallery, Figure2HouseOnAnLShape) {
   EXPECT_EQ(tags.at("roof"), 6);
 }
 
-// Fig. 25 analogue: six blocks, each with a courtyard holding an island and a
-// second courtyard, 24 loops of 23 vertices (552), three profiles by edge:
-// every edge's eave steps out at 3 m (by 0.3, 0.5 or 0.8), then a roof or a
-// mansard.
+// Fig. 25 analogue (tests/support/figure25.h): 24 nested loops, 552
+// vertices, three profiles.
 TEST(Gallery, TwentyFourNestedLoopsThreeProfiles) {
-  auto ring = [](glm::dvec2 centre, double r, bool clockwise) {
-    std::vector<glm::dvec2> pts;
-    for (int i = 0; i < 23; ++i) {
-      const double a = 2 * M_PI * i / 23 * (clockwise ? -1 : 1);
-      const double wobble = 1.0 + 0.04 * std::sin(5.0 * a);
-      pts.push_back(centre + r * wobble * glm::dvec2{std::cos(a), std::sin(a)});
-    }
-    return pts;
-  };
-  std::vector<std::vector<glm::dvec2>> loops;
-  for (int b = 0; b < 6; ++b) {
-    const glm::dvec2 c{100.0 * (b % 3), 100.0 * (b / 3)};
-    loops.push_back(ring(c, 40, false));
-    loops.push_back(ring(c + glm::dvec2{-12, 0}, 20, true));  // courtyard
-    loops.push_back(ring(c + glm::dvec2{-12, 0}, 8, false));  // island in it
-    loops.push_back(ring(c + glm::dvec2{22, 14}, 6, true));   // a small courtyard
-  }
-  Footprint fp = make_footprint(loops, 45.0);
-  fp.profiles = {kSoffit,
-                 {"mansard", {{0, 0}, {0, 3}, {0.3, 3}, {-1, 6}, {-4, 7}}, {"wall", "soffit", "mansard", "roof"}},
-                 {"deep eave", {{0, 0}, {0, 3}, {0.8, 3}, {-6, 9}}, {"wall", "soffit", "roof"}}};
-  std::size_t vertices = 0, k = 0;
-  for (Loop& loop : fp.loops) {
-    vertices += loop.points.size();
-    for (EdgeSpec& e : loop.edges) e.profile = static_cast<int>(k++ % 3);
-  }
+  const Footprint fp = testing::figure25_analogue();
+  std::size_t vertices = 0;
+  for (const Loop& loop : fp.loops) vertices += loop.points.size();
   ASSERT_EQ(fp.loops.size(), 24u);
   ASSERT_EQ(vertices, 552u);
   const Surface s = sweep(fp);
