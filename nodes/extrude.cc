@@ -12,7 +12,9 @@ void declare(NodeDecl& d) {
   d.doc("Sweeps a plane up from the footprint: every edge's face follows its profile (or leans at its angle), "
         "meeting faces are resolved into a closed 2-manifold. Faces are tagged by their profile segment's tag, "
         "else wall (vertical) or roof; the footprint face is tagged base, flat tops cap. Repairs of the footprint "
-        "(merged vertices, fixed orientation) become warnings.")
+        "(merged vertices, fixed orientation) become warnings. Anchors (Anchor nodes on `anchor_k`) are resolved "
+        "on the way up and carried on the mesh for Mesh Placement; where one is absent (its edge gone at its "
+        "height) or selects no edge of this footprint, a warning says so.")
       .category("Geometry");
   d.input<Footprint>("footprint");
   d.param<double>("max_height").default_value(0.0).range(0, 10000).unit("m")
@@ -21,6 +23,10 @@ void declare(NodeDecl& d) {
       .doc("how parallel edges that meet are resolved (paper 4.5)");
   d.param<bool>("validate").default_value(false)
       .doc("check the mesh (closed, manifold, oriented, planar, no self-intersection) and fail if it is not");
+  d.param<std::int64_t>("anchors").default_value<std::int64_t>(0).range(0, static_cast<double>(kMaxPortCount))
+      .sets_port_count().doc("how many anchor inputs the node has");
+  for (std::size_t i = 1; i <= d.count_of("anchors"); ++i)
+    d.input<AnchorSpec>("anchor_" + std::to_string(i)).optional();
   d.output<MeshSet>("mesh");
 }
 
@@ -28,9 +34,12 @@ void evaluate(EvalContext& ctx) {
   SweepOptions options;
   if (const double h = ctx.param<double>(0); h > 0) options.max_height = h;
   options.ambiguity = ctx.choice(1) == "minimize_volume" ? Ambiguity::MinimizeVolume : Ambiguity::MaximizeVolume;
+  std::vector<AnchorSpec> anchors;
+  for (std::size_t i = 1; i < ctx.decl().inputs().size(); ++i)
+    if (ctx.has_input(i)) anchors.push_back(ctx.input<AnchorSpec>(i));
   Extrusion result;
   try {
-    result = extrude(ctx.input<Footprint>(0), options);
+    result = extrude(ctx.input<Footprint>(0), options, anchors);
   } catch (const std::exception& e) {
     return ctx.error(describe(e));
   }

@@ -50,6 +50,20 @@ void hash_str(const std::string& s, Hasher& h) { h.u64(s.size()).str(s); }
 
 void hash_vec3(const glm::dvec3& p, Hasher& h) { h.f64(p.x).f64(p.y).f64(p.z); }
 
+void hash_anchor_spec(const AnchorSpec& s, Hasher& h) {
+  const Anchor& a = s.anchor;
+  hash_str(a.name, h);
+  h.u64(static_cast<std::uint64_t>(a.plan.mode)).f64(a.plan.value).f64(a.height).i64(a.profile);
+  h.u64(a.edges.size());
+  for (const std::int32_t e : a.edges) h.i64(e);
+  hash_str(s.profile, h);
+}
+
+std::size_t anchor_spec_size(const AnchorSpec& s) {
+  return sizeof(AnchorSpec) + s.anchor.name.capacity() + s.anchor.edges.capacity() * sizeof(std::int32_t) +
+         s.profile.capacity();
+}
+
 void hash_mesh(const Mesh& m, Hasher& h) {
   h.u64(m.n_vertices()).u64(m.n_faces());
   for (const auto v : m.vertices())
@@ -128,6 +142,10 @@ const bool kRegistered = [] {
                     hash_footprint, footprint_size});
   r.add<Profile>({"profile", "A polyline (outward offset, height) with a tag per segment", hash_profile, profile_size});
   r.add_list<Profile>();
+  r.add<AnchorSpec>({"anchor",
+                      "A named point on the footprint's edges (a position along each selected edge and a height) "
+                      "that Extrude resolves on the building",
+                      hash_anchor_spec, anchor_spec_size});
   r.add<MeshSet>({"mesh",
                   "Closed meshes with a tag per face and a building id per mesh, their resolved anchors and the "
                   "meshes placed on them",

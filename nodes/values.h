@@ -1,7 +1,8 @@
 // The value types the building nodes pass along links, registered with the
 // graph's value registry in values.cc: "footprint" (core Footprint, profiles
-// included), "profile", "list<profile>" and "mesh" (a MeshSet: building
-// meshes with their resolved anchors and the meshes placed on them).
+// included), "profile", "list<profile>", "anchor" (an AnchorSpec for Extrude)
+// and "mesh" (a MeshSet: building meshes with their resolved anchors and the
+// meshes placed on them).
 #pragma once
 
 #include <cstdint>
@@ -38,6 +39,14 @@ struct TaggedMesh {
 // Merge concatenates).
 struct MeshSet {
   std::vector<TaggedMesh> parts;
+};
+
+// An anchor as the Anchor node makes it: the edges it selects name their
+// profile by Profile::name (empty: every edge, whatever its profile), which
+// Extrude resolves against its footprint's profiles into anchor.profile.
+struct AnchorSpec {
+  Anchor anchor;
+  std::string profile;
 };
 
 // The tag of face f of a part.

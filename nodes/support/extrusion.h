@@ -1,7 +1,7 @@
 // Extrusion as the Extrude node runs it: prepare the footprint, sweep it along
 // its edges' profiles (capped at the highest profile top), build the mesh and
 // tag every face with its profile segment's tag (wall or roof by angle for
-// edges without a profile).
+// edges without a profile), resolving the anchors it is given on the way up.
 #pragma once
 
 #include <optional>
@@ -16,11 +16,15 @@ namespace procex {
 
 struct Extrusion {
   TaggedMesh mesh;
-  std::vector<std::string> notes;  // repairs made by prepare_footprint
+  // For warnings: repairs made by prepare_footprint, anchors that select no
+  // edge of this footprint (dropped) and anchors resolved absent (with why).
+  std::vector<std::string> notes;
 };
 
-// Throws what prepare_footprint, sweep and build_mesh throw (InputError,
-// SweepError, MeshError).
-Extrusion extrude(const Footprint& footprint, const SweepOptions& options);
+// `anchors` are resolved on the mesh (Extrusion::mesh.anchors); they replace
+// options.anchors. Throws what prepare_footprint, sweep and build_mesh throw
+// (InputError, SweepError, MeshError), and InputError for an anchor naming a
+// profile or an edge id the footprint does not have.
+Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const std::vector<AnchorSpec>& anchors = {});
 
 }  // namespace procex

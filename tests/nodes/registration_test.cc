@@ -28,7 +28,7 @@ TEST(NodeRegistration, EveryNodeFileRegistersOneType) {
   std::sort(files.begin(), files.end());
   std::sort(registered.begin(), registered.end());
   EXPECT_EQ(files, registered);
-  EXPECT_EQ(registered.size(), 13u);
+  EXPECT_GE(registered.size(), 14u);  // not zero: the linker kept the registrations
 }
 
 TEST(NodeRegistration, EveryTypeIsDocumented) {
