@@ -32,6 +32,9 @@ struct Surface {
   std::vector<glm::dvec3> vertices;
   std::vector<SurfaceFace> faces;
   std::vector<ResolvedAnchor> anchors;  // one per anchor and selected edge, in order
+  // One per plan edit and selected edge, in order: the anchor frame where the
+  // edit was inserted, or absent with the reason (edge gone, no room on it).
+  std::vector<ResolvedAnchor> plan_edits;
 };
 
 }  // namespace procex

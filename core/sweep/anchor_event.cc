@@ -16,11 +16,6 @@ std::string named(const Anchor& a, std::size_t i) {
   return "anchor '" + (a.name.empty() ? std::to_string(i) : a.name) + "'";
 }
 
-bool selects(const Anchor& a, const Source& s) {
-  if (a.profile >= 0 && s.profile_index != a.profile) return false;
-  return a.edges.empty() || std::find(a.edges.begin(), a.edges.end(), s.id) != a.edges.end();
-}
-
 // Where along the edge's direction the plan anchor sits, given the extent of
 // the edge's live spans at this height (for fractions).
 double along(const PlanAnchor& plan, const Source& src, glm::dvec2 dir, double lo, double hi) {
@@ -37,15 +32,49 @@ double along(const PlanAnchor& plan, const Source& src, glm::dvec2 dir, double l
 
 }  // namespace
 
+bool selects(const Anchor& a, const Source& s) {
+  if (a.profile >= 0 && s.profile_index != a.profile) return false;
+  return a.edges.empty() || std::find(a.edges.begin(), a.edges.end(), s.id) != a.edges.end();
+}
+
+void check_anchor(const Anchor& a, const std::string& what) {
+  if (!std::isfinite(a.height) || a.height < 0.0)
+    throw InputError(what + ": height " + std::to_string(a.height) + " is not a height above the footprint");
+  if (!std::isfinite(a.plan.value)) throw InputError(what + ": its position on the edge is not a finite number");
+  if (a.plan.mode == PlanAnchor::Mode::Fraction && (a.plan.value < 0.0 || a.plan.value > 1.0))
+    throw InputError(what + ": fraction " + std::to_string(a.plan.value) + " is outside [0, 1]");
+}
+
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason) {
+  const double z = st.height;
+  const Source& src = st.sources[source];
+  const Edge& edge = st.edges[src.edge];
+  const auto& spans = st.spans(src.edge);
+  if (spans.empty()) {
+    reason = "edge " + std::to_string(src.id) + " no longer exists at height " + std::to_string(z);
+    return std::nullopt;
+  }
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (int s : spans) {
+    lo = std::min(lo, glm::dot(st.position(s, z), edge.dir));
+    hi = std::max(hi, glm::dot(st.position(st.corners[s].next, z), edge.dir));
+  }
+  const double u = along(plan, src, edge.dir, lo, hi);
+  const glm::dvec2 on_line = edge.plane.n * edge.plane.offset_at(z);
+  const double margin = st.tol().span_margin();
+  for (int s : spans) {
+    const glm::dvec2 a = st.position(s, z), b = st.position(st.corners[s].next, z);
+    if (glm::dot(a, edge.dir) - margin > u || glm::dot(b, edge.dir) + margin < u) continue;
+    return EdgePoint{s, on_line + edge.dir * (u - glm::dot(on_line, edge.dir)), u};
+  }
+  reason = "it lies beyond the ends of edge " + std::to_string(src.id) + " at height " + std::to_string(z);
+  return std::nullopt;
+}
+
 AnchorEvents::AnchorEvents(const State& st, const std::vector<Anchor>& anchors) {
   for (std::size_t i = 0; i < anchors.size(); ++i) {
     const Anchor& a = anchors[i];
-    if (!std::isfinite(a.height) || a.height < 0.0)
-      throw InputError(named(a, i) + ": height " + std::to_string(a.height) + " is not a height above the footprint");
-    if (!std::isfinite(a.plan.value))
-      throw InputError(named(a, i) + ": its position on the edge is not a finite number");
-    if (a.plan.mode == PlanAnchor::Mode::Fraction && (a.plan.value < 0.0 || a.plan.value > 1.0))
-      throw InputError(named(a, i) + ": fraction " + std::to_string(a.plan.value) + " is outside [0, 1]");
+    check_anchor(a, named(a, i));
     bool any = false;
     for (int s = 0; s < static_cast<int>(st.sources.size()); ++s) {
       if (!selects(a, st.sources[s])) continue;
@@ -67,42 +96,26 @@ AnchorEvents::AnchorEvents(const State& st, const std::vector<Anchor>& anchors) 
 }
 
 void AnchorEvents::resolve_up_to(State& st, double height) {
+  const double z = st.height;
   while (!empty() && next_height() <= height) {
     const std::size_t i = order_[next_++];
     const Request& q = requests_[i];
     ResolvedAnchor& r = out_[i];
-    const Source& src = st.sources[q.source];
-    const int e = src.edge;
-    const Edge edge = st.edges[e];
-    const auto& spans = st.spans(e);
-    if (spans.empty()) {
-      r.reason = "edge " + std::to_string(src.id) + " no longer exists at height " + std::to_string(q.height);
-      continue;
-    }
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (int s : spans) {
-      lo = std::min(lo, glm::dot(st.position(s, q.height), edge.dir));
-      hi = std::max(hi, glm::dot(st.position(st.corners[s].next, q.height), edge.dir));
-    }
-    const double u = along(q.plan, src, edge.dir, lo, hi);
-    const glm::dvec2 on_line = edge.plane.n * edge.plane.offset_at(q.height);
-    const glm::dvec2 p = on_line + edge.dir * (u - glm::dot(on_line, edge.dir));
-    r.reason = "it lies beyond the ends of edge " + std::to_string(src.id) + " at height " + std::to_string(q.height);
-    for (int s : spans) {
-      const glm::dvec2 a = st.position(s, q.height), b = st.position(st.corners[s].next, q.height);
-      const double margin = st.tol().span_margin();
-      if (glm::dot(a, edge.dir) - margin > u || glm::dot(b, edge.dir) + margin < u) continue;
-      const FaceGroup& face = st.faces[edge.face];
-      r.present = true;
-      r.reason.clear();
-      r.frame.origin = {p, q.height};
-      r.frame.along = {edge.dir, 0.0};
-      r.frame.normal = face.outward;
-      r.frame.up = glm::cross(face.outward, r.frame.along);
-      r.span_from = {a, q.height};
-      r.span_to = {b, q.height};
-      break;
-    }
+    // Resolved on the loops as they are at the anchor's height.
+    st.height = q.height;
+    const std::optional<EdgePoint> hit = locate(st, q.source, q.plan, r.reason);
+    st.height = z;
+    if (!hit) continue;
+    const Edge& edge = st.edges[st.sources[q.source].edge];
+    const FaceGroup& face = st.faces[edge.face];
+    r.present = true;
+    r.reason.clear();
+    r.frame.origin = {hit->point, q.height};
+    r.frame.along = {edge.dir, 0.0};
+    r.frame.normal = face.outward;
+    r.frame.up = glm::cross(face.outward, r.frame.along);
+    r.span_from = {st.position(hit->span, q.height), q.height};
+    r.span_to = {st.position(st.corners[hit->span].next, q.height), q.height};
   }
 }
 

@@ -5,11 +5,29 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/sweep/sweep_state.h"
 
 namespace procex::engine {
+
+// Whether anchor `a` selects source s (by its profile and edge ids).
+bool selects(const Anchor& a, const Source& s);
+
+// Throws InputError, starting with `what`, for an anchor whose numbers are unusable.
+void check_anchor(const Anchor& a, const std::string& what);
+
+// Where a plan anchor lies on a source's edge at the current height.
+struct EdgePoint {
+  int span = kNone;       // the corner starting the live span that holds it
+  glm::dvec2 point{0.0};  // on the edge's line
+  double u = 0.0;         // the point along the edge's direction
+};
+// The point, or nothing (with `reason` saying why) when the edge is gone or
+// the plan anchor lies beyond its ends.
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason);
 
 class AnchorEvents {
  public:

@@ -7,6 +7,7 @@
 
 #include "core/geom/error.h"
 #include "core/sweep/intersection_event.h"
+#include "core/sweep/plan_edit_event.h"
 
 namespace procex::engine {
 namespace {
@@ -38,6 +39,29 @@ void unify_collinear_slopes(const std::vector<glm::dvec2>& dirs, std::vector<dou
 }
 
 }  // namespace
+
+double slope_of(double angle_deg) {
+  if (!(angle_deg >= -90.0 && angle_deg <= 90.0)) throw InputError("edge angle outside [-90, 90] degrees");
+  const double k = std::tan(angle_deg * M_PI / 180.0);
+  return std::clamp(k, -Tolerances::max_slope, Tolerances::max_slope);
+}
+
+FirstPlane add_source(State& st, const std::vector<Profile>& profiles, const EdgeSpec& spec, double base) {
+  Source src;
+  src.id = spec.id;
+  src.base = base;
+  if (spec.profile < 0) {
+    st.sources.push_back(src);
+    return {slope_of(spec.angle_deg), {}};
+  }
+  const Profile& profile = profiles[static_cast<std::size_t>(spec.profile)];
+  const NextPlane next = next_plane(profile, 0, st.tol().height());
+  src.profile = &profile;
+  src.profile_index = spec.profile;
+  src.point = next.point;
+  st.sources.push_back(src);
+  return {segment_slope(profile, next.segment), profile.tags.empty() ? std::string() : profile.tags[next.segment]};
+}
 
 void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<double> slopes,
                const std::vector<std::string>& tags, int first_source, int loop) {
@@ -76,18 +100,27 @@ void schedule_all(State& st, EventQueue& queue) {
     if (st.corners[c].alive) queue.schedule(st, c);
 }
 
-void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors) {
+void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors,
+                PlanEditEvents* plan_edits) {
   const std::optional<double> max_height = st.options().max_height;
   auto anchors_up_to = [&](double z) {
     if (anchors) anchors->resolve_up_to(st, max_height ? std::min(z, *max_height) : z);
   };
   std::size_t stalled = 0, stall_limit = 0;
   double last = -1.0;
-  while (!queue.empty() || !profile_events.empty()) {
+  auto edits_pending = [&] { return plan_edits && !plan_edits->empty(); };
+  while (!queue.empty() || !profile_events.empty() || edits_pending()) {
     // Collisions at a profile vertex's height are resolved before the planes change.
     const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
     const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();
-    anchors_up_to(std::min(z_collide, z_profile));
+    const double z_edit = edits_pending() ? plan_edits->next_height() : HUGE_VAL;
+    anchors_up_to(std::min({z_collide, z_profile, z_edit}));
+    if (z_edit <= std::min(z_collide, z_profile) + st.tol().height()) {
+      if ((max_height && z_edit > *max_height) || z_edit == HUGE_VAL) break;
+      st.height = std::max(st.height, z_edit);
+      plan_edits->apply_next(st, queue, profile_events);
+      continue;
+    }
     if (z_profile < z_collide - st.tol().height()) {
       if (max_height && z_profile > *max_height) break;
       st.height = std::max(st.height, z_profile);

@@ -12,6 +12,21 @@
 
 namespace procex::engine {
 
+class PlanEditEvents;
+
+// The slope of a constant angle in degrees from the vertical (clamped short
+// of horizontal). Throws InputError outside [-90, 90].
+double slope_of(double angle_deg);
+
+// The first plane of an edge whose profile starts at height `base`.
+struct FirstPlane {
+  double slope;
+  std::string tag;
+};
+// Adds the source of edge `spec` (its profile, if any, indexes `profiles`, is
+// valid and rises first) and returns its first plane.
+FirstPlane add_source(State& st, const std::vector<Profile>& profiles, const EdgeSpec& spec, double base);
+
 // Adds one closed loop: edge j runs from points[j] to points[j + 1] with
 // slope slopes[j] and face tag tags[j], and belongs to source first_source + j
 // (already in st.sources). Collinear neighbours with different slopes take the
@@ -24,7 +39,10 @@ void schedule_all(State& st, EventQueue& queue);
 
 // Resolves events in height order until none is left at or below the
 // options' max height. Corners still alive afterwards are open loops. Anchors
-// resolve on the loops as they are at their height, before events there.
-void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors = nullptr);
+// resolve on the loops as they are at their height, before events there;
+// plan edits are inserted after the collisions below them and before the
+// profile events at their height.
+void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, AnchorEvents* anchors = nullptr,
+                PlanEditEvents* plan_edits = nullptr);
 
 }  // namespace procex::engine

@@ -37,7 +37,7 @@ void ProfileEvents::schedule(const State& st, int s) {
   if (!src.profile) return;
   const std::size_t next = src.point + 1;
   if (next >= src.profile->points.size()) return;
-  heap_.push({src.profile->points[next].y, s});
+  heap_.push({src.base + src.profile->points[next].y, s});
 }
 
 std::vector<int> ProfileEvents::pop(double tolerance) {

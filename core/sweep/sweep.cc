@@ -13,6 +13,7 @@
 #include "core/geom/error.h"
 #include "core/sweep/cap_event.h"
 #include "core/sweep/driver.h"
+#include "core/sweep/plan_edit_event.h"
 #include "core/sweep/surface_output.h"
 
 namespace procex {
@@ -30,41 +31,26 @@ engine::Tolerances tolerances_for(const Footprint& fp) {
   return {extent};
 }
 
-double slope_of(double angle_deg) {
-  if (!(angle_deg >= -90.0 && angle_deg <= 90.0)) throw InputError("edge angle outside [-90, 90] degrees");
-  const double k = std::tan(angle_deg * M_PI / 180.0);
-  return std::clamp(k, -engine::Tolerances::max_slope, engine::Tolerances::max_slope);
-}
-
-// The first plane of an edge: its profile's first slope, or its constant angle.
-struct FirstPlane {
-  double slope;
-  std::string tag;
-};
-FirstPlane first_plane(engine::State& st, const Footprint& fp, const EdgeSpec& spec, int loop, int vertex) {
-  engine::Source src;
-  src.id = spec.id;
-  if (spec.profile < 0) {
-    st.sources.push_back(src);
-    return {slope_of(spec.angle_deg), {}};
-  }
+// The first plane of a footprint edge, checked: errors name its loop and vertex.
+engine::FirstPlane first_plane(engine::State& st, const Footprint& fp, const EdgeSpec& spec, int loop, int vertex) {
   if (spec.profile >= static_cast<int>(fp.profiles.size()))
     throw InputError("edge names profile " + std::to_string(spec.profile) + " but the footprint has " +
                          std::to_string(fp.profiles.size()),
                      loop, vertex);
-  const Profile& profile = fp.profiles[static_cast<std::size_t>(spec.profile)];
-  check_profile(profile);
-  const engine::NextPlane next = engine::next_plane(profile, 0, st.tol().height());
-  // A step at height 0 would lay a face on the base (inward: a sheet of no
-  // thickness); the footprint itself is the place to make an edge wider.
-  if (next.outward_step != 0.0)
-    throw InputError("profile '" + profile.name + "' starts with a horizontal segment; a profile must rise from the "
-                     "footprint first (move the footprint edge instead)", loop, vertex);
-  src.profile = &profile;
-  src.profile_index = spec.profile;
-  src.point = next.point;
-  st.sources.push_back(src);
-  return {engine::segment_slope(profile, next.segment), profile.tags.empty() ? std::string() : profile.tags[next.segment]};
+  if (spec.profile >= 0) {
+    const Profile& profile = fp.profiles[static_cast<std::size_t>(spec.profile)];
+    check_profile(profile);
+    // A step at height 0 would lay a face on the base (inward: a sheet of no
+    // thickness); the footprint itself is the place to make an edge wider.
+    if (engine::next_plane(profile, 0, st.tol().height()).outward_step != 0.0)
+      throw InputError("profile '" + profile.name + "' starts with a horizontal segment; a profile must rise from the "
+                       "footprint first (move the footprint edge instead)", loop, vertex);
+  }
+  try {
+    return engine::add_source(st, fp.profiles, spec, 0.0);
+  } catch (const InputError& e) {
+    throw InputError(e.what(), loop, vertex);
+  }
 }
 
 void load(engine::State& st, const Footprint& fp) {
@@ -82,7 +68,7 @@ void load(engine::State& st, const Footprint& fp) {
     std::vector<double> slopes(n);
     std::vector<std::string> tags(n);
     for (std::size_t j = 0; j < n; ++j) {
-      FirstPlane first = first_plane(st, fp, loop.edges[j], static_cast<int>(li), static_cast<int>(j));
+      engine::FirstPlane first = first_plane(st, fp, loop.edges[j], static_cast<int>(li), static_cast<int>(j));
       slopes[j] = first.slope;
       tags[j] = std::move(first.tag);
     }
@@ -98,7 +84,8 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   engine::ProfileEvents profile_events;
   for (int s = 0; s < static_cast<int>(st.sources.size()); ++s) profile_events.schedule(st, s);
   engine::AnchorEvents anchors(st, options.anchors);
-  engine::run_events(st, queue, profile_events, &anchors);
+  engine::PlanEditEvents plan_edits(st, footprint.profiles);
+  engine::run_events(st, queue, profile_events, &anchors, &plan_edits);
   const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
   if (open) {
     if (!options.max_height) {
@@ -111,6 +98,7 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   Surface surface = engine::build_surface(st);
   engine::check_closed(surface);
   surface.anchors = anchors.finish();
+  surface.plan_edits = plan_edits.finish();
   return surface;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/geom/anchor.h"
 #include "core/geom/footprint.h"
+#include "core/geom/plan_edit.h"
 #include "core/mesh/surface.h"
 
 namespace procex {
@@ -20,6 +21,10 @@ struct SweepOptions {
   std::optional<double> max_height;  // caps the sweep with horizontal faces
   Ambiguity ambiguity = Ambiguity::MaximizeVolume;
   std::vector<Anchor> anchors;  // resolved into Surface::anchors
+  // Inserted into the cross-section at their anchors' heights; where each was
+  // applied (or why not) goes to Surface::plan_edits. Their edges' profiles
+  // index into the footprint's.
+  std::vector<PlanEdit> plan_edits;
 };
 
 // Throws InputError for unusable footprints and SweepError when an event

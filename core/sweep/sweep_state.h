@@ -25,6 +25,7 @@ struct Source {
   std::int32_t id = -1;              // EdgeSpec::id
   const Profile* profile = nullptr;  // null: one plane all the way up
   std::size_t point = 0;             // the profile point the current plane starts at
+  double base = 0.0;                 // the height the profile starts at (plan edits insert edges above 0)
   int edge = -1;                     // its current plane
   int profile_index = -1;            // EdgeSpec::profile
   glm::dvec2 start{0.0}, end{0.0};   // the footprint edge (for plan anchors)

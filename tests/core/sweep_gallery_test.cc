@@ -15,7 +15,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
-#include "tests/core/surface_checks.h"
+#include "tests/core/sweep_expectations.h"
 #include "tests/support/figure25.h"
 
 namespace procex {
@@ -61,23 +61,8 @@ Closed integrate_rectangle(double w, double d, const Profile& p) {
   return r;
 }
 
-std::map<std::string, int> faces_per_tag(const Surface& s) {
-  std::map<std::string, int> n;
-  for (const SurfaceFace& f : s.faces)
-    if (f.kind == FaceKind::Side) ++n[f.tag];
-  return n;
-}
-
-// Closed, oriented and planar by the engine's own terms, then as an OpenMesh
-// mesh by the full validator (manifold, no self-intersections).
-testing::SurfaceCheck expect_valid(const Surface& s) {
-  const testing::SurfaceCheck c = testing::check_surface(s, 1e-6);
-  EXPECT_TRUE(c.closed) << c.problem;
-  EXPECT_TRUE(c.planar) << c.problem;
-  const ValidationReport v = validate(build_mesh(s), {});
-  EXPECT_TRUE(v.ok()) << (v.problems.empty() ? std::string() : v.problems.front());
-  return c;
-}
+using testing::expect_valid;
+using testing::faces_per_tag;
 
 const Profile kHip{"hip", {{0, 0}, {0, 3}, {-10, 13}}, {"wall", "roof"}};
 const Profile kGableEnd{"gable end", {{0, 0}, {0, 3}, {0, 30}}, {"wall", "gable"}};
