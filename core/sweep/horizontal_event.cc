@@ -119,10 +119,65 @@ std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z
   return out;
 }
 
+// Where an edge does not step, its nested face is a strip of no width on its
+// own line, and everything meeting that line at z meets it at some vertex of
+// that strip: the top of its face below, the bottom of its plane above and
+// the horizontal faces of its neighbours. Each half-edge written at z along
+// such a line is split at every vertex of the strip it passes, so faces meet
+// vertex to vertex there (the strip itself is no face).
+void split_along_lines(State& st, std::map<int, std::vector<std::uint32_t>> on_line,
+                       const std::vector<std::size_t>& written_before) {
+  std::map<std::uint32_t, std::vector<int>> lines_of;  // vertex -> the edges whose line it is on
+  for (auto& [e, vs] : on_line) {
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    for (std::uint32_t v : vs) lines_of[v].push_back(e);
+  }
+  auto common_line = [&](std::uint32_t a, std::uint32_t b) -> int {
+    const auto ia = lines_of.find(a), ib = lines_of.find(b);
+    if (ia == lines_of.end() || ib == lines_of.end()) return kNone;
+    for (int e : ia->second)
+      if (std::find(ib->second.begin(), ib->second.end(), e) != ib->second.end()) return e;
+    return kNone;
+  };
+  for (std::size_t f = 0; f < st.faces.size(); ++f) {
+    std::vector<HalfEdge>& hs = st.faces[f].half_edges;
+    const std::size_t from = f < written_before.size() ? written_before[f] : 0;
+    std::vector<HalfEdge> split;
+    for (std::size_t i = from; i < hs.size(); ++i) {
+      const HalfEdge h = hs[i];
+      const int e = common_line(h.from, h.to);
+      if (e == kNone) {
+        split.push_back(h);
+        continue;
+      }
+      const glm::dvec2 d = st.edges[e].dir;
+      auto along = [&](std::uint32_t v) { return glm::dot(glm::dvec2(st.vertices[v]), d); };
+      const double ta = along(h.from), tb = along(h.to);
+      std::vector<std::pair<double, std::uint32_t>> between;
+      for (std::uint32_t v : on_line.at(e)) {
+        const double t = (along(v) - ta) / (tb - ta);
+        if (v != h.from && v != h.to && t > 0.0 && t < 1.0) between.push_back({t, v});
+      }
+      std::sort(between.begin(), between.end());
+      std::uint32_t a = h.from;
+      for (const auto& [t, v] : between) {
+        split.push_back({a, v});
+        a = v;
+      }
+      split.push_back({a, h.to});
+    }
+    hs.resize(from);
+    hs.insert(hs.end(), split.begin(), split.end());
+  }
+}
+
 }  // namespace
 
 void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps) {
   const double z = st.height;
+  std::vector<std::size_t> written_before;
+  for (const FaceGroup& f : st.faces) written_before.push_back(f.half_edges.size());
   const std::vector<std::vector<int>> loops = live_loops(st);
   std::vector<std::uint32_t> at(st.corners.size(), 0);
   for (const auto& loop : loops)
@@ -140,33 +195,35 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     for (int c : loop) st.emit_top(st.corners[c].next_edge, at[c], at[st.corners[c].next]);
 
   // Flattened nested faces: an edge that steps makes a horizontal face; one
-  // that does not adds only segments along its own line, to its own face.
+  // that does not only marks the vertices on its line (split_along_lines).
   std::map<int, int> ledge;  // outer edge -> its horizontal face
+  std::map<int, std::vector<std::uint32_t>> on_line;  // outer edge that does not step -> vertices on its line
   auto slope_in_nested = [&](int j) { return n.st.edges[n.st.sources[j].edge].plane.k; };
   for (const FaceGroup& f : n.st.faces) {
     if (f.kind != FaceKind::Side) continue;
     const int j = f.source_edge;
     const int e = n.span_edge[j];
     const double k = slope_in_nested(j);
-    int target = st.edges[e].face;
-    if (k != 0.0) {
-      auto [it, fresh] = ledge.try_emplace(e, 0);
-      if (fresh) {
-        const auto step = steps.find(st.edges[e].source);
-        FaceGroup h;
-        h.kind = FaceKind::Side;
-        h.source_edge = st.edges[e].source_id;
-        h.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
-        h.outward = {0.0, 0.0, k > 0.0 ? 1.0 : -1.0};
-        h.origin = {0.0, 0.0, z};
-        it->second = static_cast<int>(st.faces.size());
-        st.faces.push_back(std::move(h));
-      }
-      target = it->second;
+    if (k == 0.0) {
+      std::vector<std::uint32_t>& vs = on_line[e];
+      for (const HalfEdge& h : f.half_edges) vs.insert(vs.end(), {vertex[h.from], vertex[h.to]});
+      continue;
+    }
+    auto [it, fresh] = ledge.try_emplace(e, 0);
+    if (fresh) {
+      const auto step = steps.find(st.edges[e].source);
+      FaceGroup h;
+      h.kind = FaceKind::Side;
+      h.source_edge = st.edges[e].source_id;
+      h.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
+      h.outward = {0.0, 0.0, k > 0.0 ? 1.0 : -1.0};
+      h.origin = {0.0, 0.0, z};
+      it->second = static_cast<int>(st.faces.size());
+      st.faces.push_back(std::move(h));
     }
     for (const HalfEdge& h : f.half_edges) {
       const std::uint32_t a = vertex[h.from], b = vertex[h.to];
-      if (a != b) st.faces[target].half_edges.push_back({a, b});
+      if (a != b) st.faces[it->second].half_edges.push_back({a, b});
     }
   }
 
@@ -210,6 +267,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     const std::uint32_t a = vertex[n.top[c]], b = vertex[n.top[k.next]];
     if (a != b) st.faces[st.edges[st.corners[fresh[c]].next_edge].face].half_edges.push_back({a, b});
   }
+  split_along_lines(st, std::move(on_line), written_before);
   for (int c : settle(st, made)) {
     queue.schedule(st, c);
     queue.schedule_edge_event(st, st.corners[c].prev);
