@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/geom/footprint.h"
 #include "core/mesh/mesh.h"
@@ -77,6 +78,105 @@ TEST(PreviewMesh, OnlyMeshValuesHaveMeshes) {
   set.parts.push_back(l_block(2.0));
   set.parts.push_back(l_block(4.0));
   EXPECT_EQ(meshes_in(Value::make(set)).size(), 2u);
+}
+
+// A 1 x 1 x 1 cube at the origin, its faces tagged "frame", as a placeable mesh.
+PlaceableMesh unit_cube(const std::string& name) {
+  const Footprint fp = make_footprint({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, 0.0);
+  SweepOptions o;
+  o.max_height = 1.0;
+  auto mesh = std::make_shared<Mesh>(build_mesh(sweep(fp, o)));
+  const auto tags = face_tag_property(*mesh);
+  for (Mesh::FaceHandle f : mesh->faces()) mesh->property(tags, f) = "frame";
+  return {name, std::move(mesh)};
+}
+
+TEST(PreviewMesh, PlacedMeshesAreGroupedPerMeshWithOneTransformPerInstance) {
+  TaggedMesh part = l_block(3.0);
+  const PlaceableMesh window = unit_cube("window");
+  part.placed.add_mesh(window);
+  // Two plain instances, one scaled by (2, 1, 3) and one retagged: two groups.
+  Instance a;
+  a.transform = glm::translate(glm::dmat4(1.0), glm::dvec3(1, -1, 0));
+  Instance b;
+  b.transform = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(20, 0, 0)), glm::dvec3(2, 1, 3));
+  Instance c = a;
+  c.tag = "glass";
+  for (const Instance& in : {a, b, c}) part.placed.add_instance(in);
+  const PreviewMesh p = make_preview({&part});
+  EXPECT_EQ(p.instances, 3u);
+  ASSERT_EQ(p.placed.size(), 2u);
+  EXPECT_EQ(p.placed[0].count(), 2u);
+  EXPECT_EQ(p.placed[1].count(), 1u);
+  // The cube's triangles once per group, in its own coordinates (12 triangles).
+  EXPECT_EQ(p.placed[0].vertices.size(), 36 * PreviewMesh::kFloatsPerVertex);
+  // Instance b's model matrix, column-major: the translation in floats 12..14.
+  const float* m = p.placed[0].transforms.data() + PreviewInstances::kFloatsPerInstance;
+  EXPECT_FLOAT_EQ(m[0], 2.0f);
+  EXPECT_FLOAT_EQ(m[10], 3.0f);
+  EXPECT_FLOAT_EQ(m[12], 20.0f);
+  // Its normal matrix (inverse transpose): x normals shrink by 2, z by 3 (renormalised in the shader).
+  EXPECT_FLOAT_EQ(m[16], 0.5f);
+  EXPECT_FLOAT_EQ(m[24], 1.0f / 3.0f);
+  // Areas per tag count every instance as placed: two unit cubes and a 2 x 1 x 3 box (22 m2).
+  ASSERT_TRUE(p.tag("frame"));
+  EXPECT_NEAR(p.tag("frame")->area, 6.0 + 22.0, 1e-9);
+  EXPECT_NEAR(p.tag("frame")->area_up, 1.0 + 2.0, 1e-9);
+  ASSERT_TRUE(p.tag("glass"));
+  EXPECT_EQ(p.tag("glass")->faces, 6u);
+  EXPECT_EQ(p.tag("glass")->color, tag_color("glass"));
+  // Bounds take the placed meshes in: the scaled box reaches x = 22 and z = 3, the others y = -1.
+  EXPECT_EQ(p.max, glm::dvec3(22, 8, 3));
+  EXPECT_EQ(p.min, glm::dvec3(0, -1, 0));
+}
+
+TEST(PreviewMesh, UntaggedPlacedFacesTakeTheMeshName) {
+  TaggedMesh part = l_block(3.0);
+  PlaceableMesh bare = unit_cube("pillar");
+  auto mesh = std::make_shared<Mesh>(*bare.mesh);
+  const auto tags = face_tag_property(*mesh);
+  for (Mesh::FaceHandle f : mesh->faces()) mesh->property(tags, f) = "";
+  bare.mesh = mesh;
+  part.placed.add_mesh(bare);
+  part.placed.add_instance(Instance{});
+  const PreviewMesh p = make_preview({&part});
+  ASSERT_TRUE(p.tag("pillar"));
+  EXPECT_EQ(p.tag("pillar")->faces, 6u);
+}
+
+TEST(PreviewMesh, PresentAnchorsGetMarkersAbsentOnesAreListed) {
+  TaggedMesh part = l_block(3.0);
+  part.building = "b7";
+  ResolvedAnchor present;
+  present.name = "door";
+  present.edge_id = 0;
+  present.present = true;
+  present.frame = {{5, 0, 1}, {1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+  ResolvedAnchor absent;
+  absent.name = "door";
+  absent.edge_id = 3;
+  absent.reason = "the edge is gone at 1 m";
+  part.anchors = {present, absent};
+  const PreviewMesh p = make_preview({&part});
+  ASSERT_EQ(p.anchors.size(), 2u);
+  EXPECT_EQ(p.absent_anchors(), 1u);
+  EXPECT_EQ(p.anchors[0].building, "b7");
+  EXPECT_EQ(p.anchors[1].anchor.reason, "the edge is gone at 1 m");
+  // One marker: a square (two triangles) in the anchor colour, just off the face, centred on the origin.
+  ASSERT_EQ(p.marker_triangles.size(), 6 * PreviewMesh::kFloatsPerVertex);
+  glm::dvec3 centre(0.0);
+  for (std::size_t v = 0; v < 6; ++v) {
+    const float* at = p.marker_triangles.data() + v * PreviewMesh::kFloatsPerVertex;
+    EXPECT_LT(at[1], 0.0f);  // in front of the wall y = 0 (outward is -y)
+    EXPECT_EQ(glm::vec3(at[6], at[7], at[8]), PreviewMesh::kAnchorColor);
+    centre += glm::dvec3(at[0], at[1], at[2]) / 6.0;
+  }
+  EXPECT_NEAR(centre.x, 5.0, 0.05);
+  EXPECT_NEAR(centre.z, 1.0, 0.05);
+  // And its three axes: along (red), up (green), out (blue).
+  ASSERT_EQ(p.marker_lines.size(), 6 * PreviewMesh::kFloatsPerVertex);
+  const float* out_tip = p.marker_lines.data() + 5 * PreviewMesh::kFloatsPerVertex;
+  EXPECT_LT(out_tip[1], -0.3f);
 }
 
 TEST(TagColor, StableAndDistinguishableByChromaticity) {

@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <typeindex>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
 
 #include "core/geom/convex_partition.h"
@@ -94,63 +97,188 @@ void push(std::vector<float>& out, const glm::dvec3& p) {
   out.push_back(static_cast<float>(p.z));
 }
 
+void push_vertex(std::vector<float>& out, const glm::dvec3& p, const glm::dvec3& normal, const glm::vec3& color) {
+  push(out, p);
+  push(out, normal);
+  out.insert(out.end(), {color.r, color.g, color.b});
+}
+
+std::vector<glm::dvec3> face_points(const Mesh& mesh, Mesh::FaceHandle f) {
+  std::vector<glm::dvec3> pts;
+  for (Mesh::VertexHandle vh : mesh.fv_range(f)) {
+    const auto& p = mesh.point(vh);
+    pts.emplace_back(p[0], p[1], p[2]);
+  }
+  return pts;
+}
+
+// Newell's normal: robust for any planar polygon, its length is twice the area.
+glm::dvec3 newell(const std::vector<glm::dvec3>& pts) {
+  glm::dvec3 n(0.0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const glm::dvec3& a = pts[i];
+    const glm::dvec3& b = pts[(i + 1) % pts.size()];
+    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  return n;
+}
+
+glm::dvec3 unit_or_up(const glm::dvec3& n) {
+  const double len = glm::length(n);
+  return len > 0 ? n / len : glm::dvec3(0, 0, 1);
+}
+
+// Appends the triangles of polygon `pts` (Newell normal `n`) coloured `color`.
+void append_face(std::vector<float>& out, const std::vector<glm::dvec3>& pts, const glm::dvec3& n, const glm::vec3& color) {
+  const glm::dvec3 unit = unit_or_up(n);
+  for (const auto& tri : triangulate(pts, unit))
+    for (std::size_t i : tri) push_vertex(out, pts[i], unit, color);
+}
+
+class Builder {
+ public:
+  explicit Builder(PreviewMesh& out) : out_(out) {}
+
+  TagSummary& tag(const std::string& name) {
+    TagSummary& t = tags_[name];
+    if (t.name.empty()) {
+      t.name = name;
+      t.color = tag_color(name);
+    }
+    return t;
+  }
+  void count_face(TagSummary& t, const glm::dvec3& n) {
+    const double area = 0.5 * glm::length(n);
+    ++t.faces;
+    t.area += area;
+    if (n.z > 0) t.area_up += area;
+    ++out_.faces;
+  }
+  void extend(const glm::dvec3& p) {
+    out_.min = first_ ? p : glm::min(out_.min, p);
+    out_.max = first_ ? p : glm::max(out_.max, p);
+    first_ = false;
+  }
+
+  void add_building(const TaggedMesh& part) {
+    const Mesh& mesh = *part.mesh;
+    ++out_.meshes;
+    for (Mesh::FaceHandle f : mesh.faces()) {
+      const std::vector<glm::dvec3> pts = face_points(mesh, f);
+      if (pts.size() < 3) continue;
+      const glm::dvec3 n = newell(pts);
+      TagSummary& t = tag(preview_tag(part, f));
+      count_face(t, n);
+      append_face(out_.vertices, pts, n, t.color);
+      for (const glm::dvec3& p : pts) extend(p);
+    }
+    for (Mesh::EdgeHandle e : mesh.edges()) {
+      const Mesh::HalfedgeHandle h = mesh.halfedge_handle(e, 0);
+      for (Mesh::VertexHandle vh : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
+        const auto& p = mesh.point(vh);
+        push(out_.edge_points, glm::dvec3(p[0], p[1], p[2]));
+      }
+    }
+    for (const Instance& in : part.placed.instances)
+      if (in.mesh < part.placed.meshes.size() && part.placed.meshes[in.mesh].mesh) add_instance(part.placed.meshes[in.mesh], in);
+    for (const ResolvedAnchor& a : part.anchors) out_.anchors.push_back({part.building, a});
+  }
+
+  // After every building: the sizes of the markers follow the scene's.
+  void finish() {
+    const glm::dvec3 extent = out_.max - out_.min;
+    const double size = std::clamp(0.05 * std::max({extent.x, extent.y, extent.z}), 0.3, 1.5);
+    for (const PreviewAnchor& a : out_.anchors)
+      if (a.anchor.present) add_marker(a.anchor.frame, size);
+    for (auto& [name, t] : tags_) out_.tags.push_back(std::move(t));
+  }
+
+ private:
+  // A placed mesh's faces, in its own coordinates: tag and Newell normal.
+  struct Prototype {
+    std::size_t group = 0;
+    std::vector<std::pair<TagSummary*, glm::dvec3>> faces;
+    glm::dvec3 lo{0.0}, hi{0.0};
+  };
+
+  void add_instance(const PlaceableMesh& placed, const Instance& in) {
+    if (!transform_problem(in.transform).empty()) return;  // Mesh Placement refuses these; never drawn
+    Prototype& proto = prototype(placed, in.tag);
+    const glm::dmat4& m = in.transform;
+    const glm::dmat3 linear(m);
+    // Faces map by the cofactor matrix: det * inverse transpose (area and orientation).
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    const glm::dmat3 cofactor = glm::determinant(linear) * normal_matrix;
+    for (auto& [t, n] : proto.faces) count_face(*t, cofactor * n);
+    for (int c = 0; c < 8; ++c) {
+      const glm::dvec3 corner((c & 1 ? proto.hi : proto.lo).x, (c & 2 ? proto.hi : proto.lo).y, (c & 4 ? proto.hi : proto.lo).z);
+      extend(glm::dvec3(m * glm::dvec4(corner, 1.0)));
+    }
+    std::vector<float>& out = out_.placed[proto.group].transforms;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) out.push_back(static_cast<float>(m[c][r]));
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) out.push_back(static_cast<float>(normal_matrix[c][r]));
+    ++out_.instances;
+  }
+
+  // The triangles of a placed mesh under an instance tag, made on first use.
+  Prototype& prototype(const PlaceableMesh& placed, const std::string& instance_tag) {
+    auto [it, fresh] = prototypes_.try_emplace({placed.mesh.get(), instance_tag, placed.name});
+    Prototype& proto = it->second;
+    if (!fresh) return proto;
+    proto.group = out_.placed.size();
+    PreviewInstances& group = out_.placed.emplace_back();
+    const Mesh& mesh = *placed.mesh;
+    const auto own_tags = face_tag_property(mesh);
+    bool first = true;
+    for (Mesh::FaceHandle f : mesh.faces()) {
+      const std::vector<glm::dvec3> pts = face_points(mesh, f);
+      if (pts.size() < 3) continue;
+      // As core's flatten() tags an instance's faces: the instance's tag, the face's own, the mesh's name.
+      const std::string* own = own_tags.is_valid() ? &mesh.property(own_tags, f) : nullptr;
+      TagSummary& t = tag(!instance_tag.empty() ? instance_tag : own && !own->empty() ? *own : placed.name);
+      const glm::dvec3 n = newell(pts);
+      proto.faces.emplace_back(&t, n);
+      append_face(group.vertices, pts, n, t.color);
+      for (const glm::dvec3& p : pts) {
+        proto.lo = first ? p : glm::min(proto.lo, p);
+        proto.hi = first ? p : glm::max(proto.hi, p);
+        first = false;
+      }
+    }
+    return proto;
+  }
+
+  void add_marker(const Frame& fr, double size) {
+    const glm::dvec3 o = fr.origin + 0.02 * size * fr.normal;  // just off the face
+    const glm::dvec3 a = 0.5 * size * fr.along, u = 0.5 * size * fr.up;
+    const glm::dvec3 c[4] = {o - a - u, o + a - u, o + a + u, o - a + u};
+    for (int i : {0, 1, 2, 0, 2, 3}) push_vertex(out_.marker_triangles, c[i], fr.normal, PreviewMesh::kAnchorColor);
+    const std::pair<glm::dvec3, glm::vec3> axes[3] = {{fr.along, {1.0f, 0.2f, 0.2f}}, {fr.up, {0.2f, 1.0f, 0.2f}}, {fr.normal, {0.3f, 0.4f, 1.0f}}};
+    for (const auto& [dir, color] : axes) {
+      push_vertex(out_.marker_lines, o, fr.normal, color);
+      push_vertex(out_.marker_lines, o + 1.5 * size * dir, fr.normal, color);
+    }
+  }
+
+  PreviewMesh& out_;
+  std::map<std::string, TagSummary> tags_;  // std::map: references stay valid as tags are added
+  std::map<std::tuple<const Mesh*, std::string, std::string>, Prototype> prototypes_;
+  bool first_ = true;
+};
+
 }  // namespace
+
+std::size_t PreviewMesh::absent_anchors() const {
+  return static_cast<std::size_t>(std::count_if(anchors.begin(), anchors.end(), [](const PreviewAnchor& a) { return !a.anchor.present; }));
+}
 
 PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes) {
   PreviewMesh out;
-  std::map<std::string, TagSummary> tags;
-  bool first = true;
-  for (const TaggedMesh* part : meshes) {
-    const Mesh* mesh = part->mesh.get();
-    ++out.meshes;
-    for (Mesh::FaceHandle f : mesh->faces()) {
-      std::vector<glm::dvec3> pts;
-      for (Mesh::VertexHandle vh : mesh->fv_range(f)) {
-        const auto& p = mesh->point(vh);
-        pts.emplace_back(p[0], p[1], p[2]);
-      }
-      if (pts.size() < 3) continue;
-      // Newell's normal: robust for any planar polygon, its length is twice the area.
-      glm::dvec3 n(0.0);
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        const glm::dvec3& a = pts[i];
-        const glm::dvec3& b = pts[(i + 1) % pts.size()];
-        n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-      }
-      const double len = glm::length(n);
-      const glm::dvec3 unit = len > 0 ? n / len : glm::dvec3(0, 0, 1);
-      const std::string name = preview_tag(*part, f);
-      TagSummary& t = tags[name];
-      if (t.name.empty()) {
-        t.name = name;
-        t.color = tag_color(name);
-      }
-      ++t.faces;
-      t.area += 0.5 * len;
-      if (unit.z > 0) t.area_up += 0.5 * len;
-      for (const auto& tri : triangulate(pts, unit)) {
-        for (std::size_t i : tri) {
-          push(out.vertices, pts[i]);
-          push(out.vertices, unit);
-          out.vertices.insert(out.vertices.end(), {t.color.r, t.color.g, t.color.b});
-        }
-      }
-      for (const glm::dvec3& p : pts) {
-        out.min = first ? p : glm::min(out.min, p);
-        out.max = first ? p : glm::max(out.max, p);
-        first = false;
-      }
-      ++out.faces;
-    }
-    for (Mesh::EdgeHandle e : mesh->edges()) {
-      const Mesh::HalfedgeHandle h = mesh->halfedge_handle(e, 0);
-      for (Mesh::VertexHandle vh : {mesh->from_vertex_handle(h), mesh->to_vertex_handle(h)}) {
-        const auto& p = mesh->point(vh);
-        push(out.edge_points, glm::dvec3(p[0], p[1], p[2]));
-      }
-    }
-  }
-  for (auto& [name, t] : tags) out.tags.push_back(std::move(t));
+  Builder builder(out);
+  for (const TaggedMesh* part : meshes) builder.add_building(*part);
+  builder.finish();
   return out;
 }
 

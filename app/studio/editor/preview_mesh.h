@@ -1,6 +1,8 @@
 // preview_mesh.h -- evaluation results turned into what the 3D preview draws:
-// triangles coloured by face tag and the polygon edges for the wireframe.
-// Built on the evaluation thread so the UI thread only uploads buffers.
+// triangles coloured by face tag, the polygon edges for the wireframe, the
+// meshes placed on the buildings (one set of triangles per distinct placed
+// mesh, drawn instanced) and markers at the resolved anchors. Built on the
+// evaluation thread so the UI thread only uploads buffers, once per result.
 #pragma once
 
 #include <cstddef>
@@ -25,19 +27,45 @@ struct TagSummary {
   double area_up = 0.0;    // of which faces whose normal has a positive z component
 };
 
+// A mesh placed on the buildings (a window model), drawn instanced: its
+// triangles once, in its own coordinates, and a transform per placement.
+struct PreviewInstances {
+  std::vector<float> vertices;    // as PreviewMesh::vertices, in the placed mesh's own coordinates
+  // Per instance: the model matrix (16 floats, column-major), then the matrix
+  // that carries its normals (the inverse transpose of its 3x3 part, 9 floats).
+  std::vector<float> transforms;
+  static constexpr std::size_t kFloatsPerInstance = 25;
+  std::size_t count() const { return transforms.size() / kFloatsPerInstance; }
+};
+
+// A resolved anchor of a shown mesh (present or absent), for the anchor list.
+struct PreviewAnchor {
+  std::string building;
+  ResolvedAnchor anchor;
+};
+
 struct PreviewMesh {
   // Interleaved per vertex: position xyz, normal xyz, colour rgb (flat shaded:
   // every triangle has its own three vertices).
   std::vector<float> vertices;
   // Polygon edges (not the triangulation's diagonals): pairs of xyz points.
   std::vector<float> edge_points;
-  std::vector<TagSummary> tags;  // sorted by name
-  glm::dvec3 min{0.0}, max{0.0};
+  std::vector<TagSummary> tags;  // sorted by name; placed meshes' faces included
+  glm::dvec3 min{0.0}, max{0.0};  // buildings and placed meshes
   std::size_t meshes = 0, faces = 0;
+  std::vector<PreviewInstances> placed;  // one per distinct placed mesh (and instance tag)
+  std::size_t instances = 0;
+  std::vector<PreviewAnchor> anchors;
+  // Markers at the present anchors, in the vertex layout above, drawn over the
+  // meshes: a small square on the face (triangles) and the frame's axes
+  // along, up and out (lines, red, green, blue).
+  std::vector<float> marker_triangles, marker_lines;
+  static constexpr glm::vec3 kAnchorColor{0.95f, 0.25f, 0.85f};
 
   static constexpr std::size_t kFloatsPerVertex = 9;
   std::size_t vertex_count() const { return vertices.size() / kFloatsPerVertex; }
-  bool empty() const { return vertices.empty(); }
+  bool empty() const { return vertices.empty() && placed.empty(); }
+  std::size_t absent_anchors() const;
   const TagSummary* tag(std::string_view name) const;
 };
 
@@ -45,7 +73,8 @@ struct PreviewMesh {
 // other type.
 std::vector<const TaggedMesh*> meshes_in(const Value& v);
 
-// Triangulates every face (non-convex faces through core's convex partition).
+// Triangulates every face (non-convex faces through core's convex partition),
+// groups the placed instances by mesh and builds the anchor markers.
 PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes);
 
 // The tag a face shows: its tag, or its face kind ("base", "side", "cap")

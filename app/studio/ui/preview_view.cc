@@ -22,14 +22,19 @@ const char* kMeshVs = R"(#version 330 core
 layout(location = 0) in vec3 pos;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;
+// Placed meshes: one per instance; the buildings' own triangles get the identity (kIdentityModel).
+layout(location = 3) in mat4 model;
+layout(location = 7) in mat3 normal_matrix;
 uniform mat4 mvp;
 out vec3 v_normal;
 out vec3 v_color;
 void main() {
-  v_normal = normal;
+  v_normal = normal_matrix * normal;
   v_color = color;
-  gl_Position = mvp * vec4(pos, 1.0);
+  gl_Position = mvp * model * vec4(pos, 1.0);
 })";
+
+constexpr GLuint kModelAttribute = 3, kNormalMatrixAttribute = 7;
 
 // Lighting only scales the tag colour, so its chromaticity stays recognisable.
 const char* kMeshFs = R"(#version 330 core
@@ -80,24 +85,84 @@ GLuint program(const char* vs, const char* fs) {
 
 }  // namespace
 
-struct PreviewView::Gl {
-  GLuint mesh_program = 0, line_program = 0;
-  GLuint mesh_vao = 0, mesh_vbo = 0, edge_vao = 0, edge_vbo = 0, grid_vao = 0, grid_vbo = 0;
-  GLsizei mesh_vertices = 0, edge_vertices = 0, grid_vertices = 0;
-  OffscreenImage image{true};
+// Triangles or lines in PreviewMesh's vertex layout, and for placed meshes
+// the instances' transforms.
+struct ShadedBuffer {
+  GLuint vao = 0, vbo = 0, instance_vbo = 0;
+  GLsizei vertices = 0, instances = 0;
 
-  Gl() {
-    mesh_program = program(kMeshVs, kMeshFs);
-    line_program = program(kLineVs, kLineFs);
-    glGenVertexArrays(1, &mesh_vao);
-    glGenBuffers(1, &mesh_vbo);
-    glBindVertexArray(mesh_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, mesh_vbo);
+  ShadedBuffer() {
+    glGenVertexArrays(1, &vao);
+    glGenBuffers(1, &vbo);
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     const GLsizei stride = static_cast<GLsizei>(PreviewMesh::kFloatsPerVertex * sizeof(float));
     for (GLuint a = 0; a < 3; ++a) {
       glEnableVertexAttribArray(a);
       glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(std::uintptr_t{a} * 3 * sizeof(float)));
     }
+    glBindVertexArray(0);
+  }
+  ~ShadedBuffer() {
+    glDeleteVertexArrays(1, &vao);
+    glDeleteBuffers(1, &vbo);
+    if (instance_vbo) glDeleteBuffers(1, &instance_vbo);
+  }
+  ShadedBuffer(const ShadedBuffer&) = delete;
+  ShadedBuffer& operator=(const ShadedBuffer&) = delete;
+
+  void upload(const std::vector<float>& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    vertices = static_cast<GLsizei>(data.size() / PreviewMesh::kFloatsPerVertex);
+  }
+  // Makes this an instanced buffer: the model and normal matrices become per-instance attributes.
+  void upload_instances(const std::vector<float>& transforms) {
+    glBindVertexArray(vao);
+    if (!instance_vbo) glGenBuffers(1, &instance_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, instance_vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(transforms.size() * sizeof(float)), transforms.data(), GL_STATIC_DRAW);
+    const GLsizei stride = static_cast<GLsizei>(PreviewInstances::kFloatsPerInstance * sizeof(float));
+    for (GLuint c = 0; c < 4; ++c) {
+      glEnableVertexAttribArray(kModelAttribute + c);
+      glVertexAttribPointer(kModelAttribute + c, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(std::uintptr_t{c} * 4 * sizeof(float)));
+      glVertexAttribDivisor(kModelAttribute + c, 1);
+    }
+    for (GLuint c = 0; c < 3; ++c) {
+      glEnableVertexAttribArray(kNormalMatrixAttribute + c);
+      glVertexAttribPointer(kNormalMatrixAttribute + c, 3, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>((16 + std::uintptr_t{c} * 3) * sizeof(float)));
+      glVertexAttribDivisor(kNormalMatrixAttribute + c, 1);
+    }
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    instances = static_cast<GLsizei>(transforms.size() / PreviewInstances::kFloatsPerInstance);
+  }
+  void draw(GLenum mode) const {
+    glBindVertexArray(vao);
+    if (instance_vbo) {
+      glDrawArraysInstanced(mode, 0, vertices, instances);
+      return;
+    }
+    // Attributes without arrays take these constants: the identity.
+    for (GLuint c = 0; c < 4; ++c) glVertexAttrib4f(kModelAttribute + c, c == 0, c == 1, c == 2, c == 3);
+    for (GLuint c = 0; c < 3; ++c) glVertexAttrib3f(kNormalMatrixAttribute + c, c == 0, c == 1, c == 2);
+    glDrawArrays(mode, 0, vertices);
+  }
+};
+
+struct PreviewView::Gl {
+  GLuint mesh_program = 0, line_program = 0;
+  GLuint edge_vao = 0, edge_vbo = 0, grid_vao = 0, grid_vbo = 0;
+  GLsizei edge_vertices = 0, grid_vertices = 0;
+  ShadedBuffer mesh, marker_triangles, marker_lines;
+  std::vector<std::unique_ptr<ShadedBuffer>> placed;  // one per distinct placed mesh
+  OffscreenImage image{true};
+
+  Gl() {
+    mesh_program = program(kMeshVs, kMeshFs);
+    line_program = program(kLineVs, kLineFs);
     for (auto [vao, vbo] : {std::pair{&edge_vao, &edge_vbo}, std::pair{&grid_vao, &grid_vbo}}) {
       glGenVertexArrays(1, vao);
       glGenBuffers(1, vbo);
@@ -111,8 +176,8 @@ struct PreviewView::Gl {
   ~Gl() {
     glDeleteProgram(mesh_program);
     glDeleteProgram(line_program);
-    for (GLuint* v : {&mesh_vao, &edge_vao, &grid_vao}) glDeleteVertexArrays(1, v);
-    for (GLuint* b : {&mesh_vbo, &edge_vbo, &grid_vbo}) glDeleteBuffers(1, b);
+    for (GLuint* v : {&edge_vao, &grid_vao}) glDeleteVertexArrays(1, v);
+    for (GLuint* b : {&edge_vbo, &grid_vbo}) glDeleteBuffers(1, b);
   }
   void upload(GLuint vbo, const std::vector<float>& data) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
@@ -137,9 +202,17 @@ void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   mesh_ = std::move(mesh);
   stale_ = true;
   static const std::vector<float> kNone;
-  gl_->upload(gl_->mesh_vbo, mesh_ ? mesh_->vertices : kNone);
+  gl_->mesh.upload(mesh_ ? mesh_->vertices : kNone);
+  gl_->marker_triangles.upload(mesh_ ? mesh_->marker_triangles : kNone);
+  gl_->marker_lines.upload(mesh_ ? mesh_->marker_lines : kNone);
+  gl_->placed.clear();
+  if (mesh_)
+    for (const PreviewInstances& group : mesh_->placed) {
+      auto& buffer = gl_->placed.emplace_back(std::make_unique<ShadedBuffer>());
+      buffer->upload(group.vertices);
+      buffer->upload_instances(group.transforms);
+    }
   gl_->upload(gl_->edge_vbo, mesh_ ? mesh_->edge_points : kNone);
-  gl_->mesh_vertices = mesh_ ? static_cast<GLsizei>(mesh_->vertex_count()) : 0;
   gl_->edge_vertices = mesh_ ? static_cast<GLsizei>(mesh_->edge_points.size() / 3) : 0;
   if (mesh_ && !mesh_->empty()) {
     // A ground grid around the mesh, at its lowest height, in 1-2-5 steps.
@@ -169,10 +242,11 @@ void PreviewView::frame_all() {
 }
 
 void PreviewView::render(int width, int height) {
-  if (!stale_ && wireframe == drawn_wireframe_ && width == gl_->image.width() && height == gl_->image.height()) return;
+  if (!stale_ && wireframe == drawn_wireframe_ && anchors == drawn_anchors_ && width == gl_->image.width() && height == gl_->image.height()) return;
   stale_ = false;
   ++renders_;
   drawn_wireframe_ = wireframe;
+  drawn_anchors_ = anchors;
   GLint previous_fbo = 0, previous_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
@@ -193,9 +267,15 @@ void PreviewView::render(int width, int height) {
   glUniformMatrix4fv(glGetUniformLocation(gl_->mesh_program, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe in front of its own faces
-  glBindVertexArray(gl_->mesh_vao);
-  glDrawArrays(GL_TRIANGLES, 0, gl_->mesh_vertices);
+  gl_->mesh.draw(GL_TRIANGLES);
+  for (const auto& group : gl_->placed) group->draw(GL_TRIANGLES);
   glDisable(GL_POLYGON_OFFSET_FILL);
+  if (anchors) {  // over everything: a placed window would hide the anchor it sits on
+    glDisable(GL_DEPTH_TEST);
+    gl_->marker_triangles.draw(GL_TRIANGLES);
+    gl_->marker_lines.draw(GL_LINES);
+    glEnable(GL_DEPTH_TEST);
+  }
   if (wireframe) {
     glUseProgram(gl_->line_program);
     glUniform4f(glGetUniformLocation(gl_->line_program, "color"), 0.05f, 0.05f, 0.05f, 1.0f);
@@ -212,10 +292,24 @@ void PreviewView::render(int width, int height) {
 void PreviewView::draw() {
   ImGui::Checkbox("Wireframe", &wireframe);
   ImGui::SameLine();
+  ImGui::SameLine();
+  ImGui::Checkbox("Anchors", &anchors);
+  ImGui::SameLine();
   if (ImGui::Button("Frame")) frame_all();
   if (mesh_) {
     ImGui::SameLine();
     ImGui::TextDisabled("%zu meshes, %zu faces", mesh_->meshes, mesh_->faces);
+    if (mesh_->instances) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%zu placed", mesh_->instances);
+    }
+    if (!mesh_->anchors.empty()) {
+      ImGui::SameLine();
+      const std::size_t absent = mesh_->absent_anchors();
+      if (absent) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%zu anchors, %zu absent", mesh_->anchors.size(), absent);
+      else ImGui::TextDisabled("%zu anchors", mesh_->anchors.size());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("The Anchors tab below lists them, with why the absent ones are absent.");
+    }
     // Legend, above the image so its swatches never mix with the rendered pixels.
     for (const TagSummary& t : mesh_->tags) {
       ImGui::SameLine();

@@ -1,5 +1,6 @@
 // preview_view.h -- the 3D preview panel: renders the evaluated meshes into an
-// offscreen framebuffer (shaded by face tag, optional wireframe, ground grid)
+// offscreen framebuffer (shaded by face tag, the meshes placed on them drawn
+// instanced, anchor markers and wireframe on request, ground grid)
 // and shows it as an ImGui image; mouse drags orbit (left), pan (middle or
 // shift+left), the wheel zooms.
 #pragma once
@@ -33,6 +34,7 @@ class PreviewView {
   std::uint64_t renders() const { return renders_; }
 
   bool wireframe = false;
+  bool anchors = true;  // markers at the resolved anchors
   // Screen rectangle of the last rendered image (for screenshot checks).
   float image_x = 0, image_y = 0, image_w = 0, image_h = 0;
 
@@ -46,7 +48,7 @@ class PreviewView {
   // The offscreen image is redrawn only when something it shows changed
   // (software GL under Xvfb makes every redraw count).
   bool stale_ = true;
-  bool drawn_wireframe_ = false;
+  bool drawn_wireframe_ = false, drawn_anchors_ = true;
   std::uint64_t renders_ = 0;
 };
 

@@ -246,6 +246,7 @@ class App {
     }
     if (ImGui::BeginMenu("View")) {
       ImGui::MenuItem("Wireframe", nullptr, &preview_->wireframe);
+      ImGui::MenuItem("Anchors", nullptr, &preview_->anchors);
       if (ImGui::MenuItem("Frame preview")) preview_->frame_all();
       if (ImGui::MenuItem("Frame nodes", "F")) canvas_.request_frame();
       ImGui::EndMenu();
@@ -298,6 +299,10 @@ class App {
         }
       ImGui::EndTabItem();
     }
+    if (ImGui::BeginTabItem("Anchors")) {
+      anchor_list();
+      ImGui::EndTabItem();
+    }
     if (ImGui::BeginTabItem("Statistics")) {
       if (shown_ && ImGui::BeginTable("stats", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
         ImGui::TableSetupColumn("node");
@@ -321,6 +326,35 @@ class App {
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+  }
+
+  // Every resolved anchor of the shown meshes; an absent one says why.
+  void anchor_list() {
+    const PreviewMesh* p = shown_ && shown_->preview ? shown_->preview.get() : nullptr;
+    if (!p || p->anchors.empty()) {
+      ImGui::TextDisabled("No anchors: Anchor nodes wired into an Extrude's `anchors` input resolve on its mesh.");
+      return;
+    }
+    if (!ImGui::BeginTable("anchors", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) return;
+    ImGui::TableSetupColumn("anchor");
+    ImGui::TableSetupColumn("building");
+    ImGui::TableSetupColumn("edge");
+    ImGui::TableSetupColumn("where");
+    ImGui::TableHeadersRow();
+    for (const PreviewAnchor& a : p->anchors) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(a.anchor.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(a.building.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("e%d", a.anchor.edge_id);
+      ImGui::TableNextColumn();
+      const glm::dvec3& o = a.anchor.frame.origin;
+      if (a.anchor.present) ImGui::Text("(%.2f, %.2f, %.2f)", o.x, o.y, o.z);
+      else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "absent: %s", a.anchor.reason.c_str());
+    }
+    ImGui::EndTable();
   }
 
   void status_bar() {
@@ -537,6 +571,10 @@ void write_screenshot_info(const fs::path& file, App& app, int width, int height
         j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
   }
   j["errors"] = errors;
+  const glm::vec3 marker = PreviewMesh::kAnchorColor;
+  j["anchor_color"] = {marker.r, marker.g, marker.b};
+  j["anchors_present"] = app.shown() && app.shown()->preview ? app.shown()->preview->anchors.size() - app.shown()->preview->absent_anchors() : 0;
+  j["instances"] = app.shown() && app.shown()->preview ? app.shown()->preview->instances : 0;
   write_file_atomically(file, j.dump(2) + "\n");
 }
 

@@ -1,9 +1,10 @@
-// studio_png_check IMAGE.png INFO.json [--require-tag NAME]... -- checks a procex-studio screenshot:
+// studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-anchors] -- checks a procex-studio screenshot:
 // the image is not blank, and the 3D preview shows the geometry: enough
 // pixels differ from the preview's background, most of them carry a tag's
 // (lit) colour, and the tags seen cover most of the mesh's coloured area
 // (some faces may hide behind others), and each required tag is clearly
-// visible (a soffit seen from below the eaves). INFO.json is
+// visible (a soffit seen from below the eaves), and with --require-anchors
+// that the anchors have markers (pixels of the marker colour). INFO.json is
 // what `procex-studio --screenshot-info` wrote beside the image.
 #include <stb_image.h>
 
@@ -41,16 +42,21 @@ void check(bool ok, const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* usage = "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-anchors]\n";
   std::vector<std::string> required;
-  for (int i = 3; i < argc; i += 2) {
-    if (std::string(argv[i]) != "--require-tag" || i + 1 >= argc) {
-      std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]...\n");
+  bool require_anchors = false;
+  for (int i = 3; i < argc; ++i) {
+    if (std::string(argv[i]) == "--require-anchors") {
+      require_anchors = true;
+    } else if (std::string(argv[i]) == "--require-tag" && i + 1 < argc) {
+      required.push_back(argv[++i]);
+    } else {
+      std::fprintf(stderr, "%s", usage);
       return 2;
     }
-    required.push_back(argv[i + 1]);
   }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]...\n");
+    std::fprintf(stderr, "%s", usage);
     return 2;
   }
   int w = 0, h = 0, n = 0;
@@ -97,7 +103,9 @@ int main(int argc, char** argv) {
     tag_areas.push_back(t["area"].get<double>());
   }
   std::vector<long> tag_pixels(tag_colours.size(), 0);
-  long geometry = 0, area = 0;
+  const auto& ac = info["anchor_color"];
+  const Rgb anchor_colour{ac[0].get<float>(), ac[1].get<float>(), ac[2].get<float>()};
+  long geometry = 0, area = 0, anchor_pixels = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       ++area;
@@ -106,6 +114,7 @@ int main(int argc, char** argv) {
       const bool is_background = std::fabs(p.r - background.r) + std::fabs(p.g - background.g) + std::fabs(p.b - background.b) < 0.03f;
       if (is_background || (grey && p.r < 0.35f)) continue;  // background or grid line
       ++geometry;
+      anchor_pixels += same_chroma(p, anchor_colour);
       for (std::size_t i = 0; i < tag_colours.size(); ++i)
         if (chromatic(tag_colours[i]) && same_chroma(p, tag_colours[i])) ++tag_pixels[i];
     }
@@ -125,6 +134,11 @@ int main(int argc, char** argv) {
     const auto it = std::find(tag_names.begin(), tag_names.end(), name);
     const long pixels = it == tag_names.end() ? 0 : tag_pixels[static_cast<std::size_t>(it - tag_names.begin())];
     check(pixels >= 200, "required tag '" + name + "' " + (it == tag_names.end() ? "is not in the mesh" : "covers " + std::to_string(pixels) + " pixels (at least 200)"));
+  }
+  if (require_anchors) {
+    const long present = info["anchors_present"].get<long>();
+    check(present > 0 && anchor_pixels >= 40 * present,
+          std::to_string(anchor_pixels) + " pixels of anchor markers for " + std::to_string(present) + " present anchors (at least 40 each)");
   }
   check(tagged > geometry / 2, std::to_string(tagged) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
   stbi_image_free(data);
