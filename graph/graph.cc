@@ -1,6 +1,7 @@
 #include "graph/graph.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace procex {
@@ -91,27 +92,43 @@ Status Graph::set_param(NodeId id, std::size_t param, Value v) {
     std::vector<Value> params = n.params;
     params[param] = v;
     std::shared_ptr<const NodeType> variant = with_port_counts(n.type, params);
-    if (Status s = ports_kept(id, variant->decl, decl.name, port_count_of(v)); !s) return s;
+    std::map<PortRef, PortRef> relinked;
+    if (Status s = ports_kept(id, variant->decl, decl.name, port_count_of(v), relinked); !s) return s;
+    links_ = std::move(relinked);
     n.type = std::move(variant);
   }
   n.params[param] = std::move(v);
   return Status::ok();
 }
 
-Status Graph::ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count) const {
+Status Graph::ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count,
+                         std::map<PortRef, PortRef>& relinked) const {
   const NodeDecl& now = node(id)->decl();
   auto refuse = [&](const char* what, const std::string& port) {
     return Status::error("node " + std::to_string(id) + " (" + now.type_name() + "): " + q(param) + " = " +
                          std::to_string(count) + " would remove " + what + " " + q(port) +
                          ", which is connected; disconnect it first");
   };
-  auto same = [](const std::vector<PortDecl>& a, const std::vector<PortDecl>& b, std::uint32_t i) {
-    return i < b.size() && a[i].name == b[i].name && a[i].type == b[i].type;
+  // Where port i of `now` is in `next`, if it is still there.
+  auto moved = [](const std::vector<PortDecl>& a, const std::vector<PortDecl>& b, std::uint32_t i) {
+    const auto it = std::find_if(b.begin(), b.end(),
+                                 [&](const PortDecl& p) { return p.name == a[i].name && p.type == a[i].type; });
+    return it == b.end() ? std::optional<std::uint32_t>() : static_cast<std::uint32_t>(it - b.begin());
   };
-  for (const auto& [to, from] : links_) {
-    if (to.node == id && !same(now.inputs(), next.inputs(), to.port)) return refuse("input", now.inputs()[to.port].name);
-    if (from.node == id && !same(now.outputs(), next.outputs(), from.port))
-      return refuse("output", now.outputs()[from.port].name);
+  relinked.clear();
+  for (const auto& link : links_) {
+    PortRef to = link.first, from = link.second;
+    if (to.node == id) {
+      const auto at = moved(now.inputs(), next.inputs(), to.port);
+      if (!at) return refuse("input", now.inputs()[to.port].name);
+      to.port = *at;
+    }
+    if (from.node == id) {
+      const auto at = moved(now.outputs(), next.outputs(), from.port);
+      if (!at) return refuse("output", now.outputs()[from.port].name);
+      from.port = *at;
+    }
+    relinked.emplace(to, from);
   }
   return Status::ok();
 }

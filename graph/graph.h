@@ -170,9 +170,13 @@ class Graph {
 
  private:
   bool reaches(NodeId from, NodeId to) const;  // is `to` downstream of (or equal to) `from`?
-  // Ok if every connected port of node `id` is still there, same name and
-  // type, in `next` (its declaration once `param` asks for `count` ports).
-  Status ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count) const;
+  // The links of node `id` with its ports renumbered for `next` (its
+  // declaration once `param` asks for `count` ports): a port keeps its links
+  // where `next` has one of the same name and type (a node with two variadic
+  // groups shifts the second when the first grows); an error if a connected
+  // port would go.
+  Status ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count,
+                    std::map<PortRef, PortRef>& relinked) const;
 
   std::map<NodeId, Node> nodes_;
   std::map<PortRef, PortRef> links_;

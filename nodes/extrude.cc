@@ -14,7 +14,8 @@ void declare(NodeDecl& d) {
         "else wall (vertical) or roof; the footprint face is tagged base, flat tops cap. Repairs of the footprint "
         "(merged vertices, fixed orientation) become warnings. Anchors (Anchor nodes on `anchor_k`) are resolved "
         "on the way up and carried on the mesh for Mesh Placement; where one is absent (its edge gone at its "
-        "height) or selects no edge of this footprint, a warning says so.")
+        "height) or selects no edge of this footprint, a warning says so. Plan edits (Plan Edit nodes on `edit_k`) "
+        "are inserted into the cross-section at their heights; one that does not fit is skipped with a warning.")
       .category("Geometry");
   d.input<Footprint>("footprint");
   d.param<double>("max_height").default_value(0.0).range(0, 10000).unit("m")
@@ -27,6 +28,10 @@ void declare(NodeDecl& d) {
       .sets_port_count().doc("how many anchor inputs the node has");
   for (std::size_t i = 1; i <= d.count_of("anchors"); ++i)
     d.input<AnchorSpec>("anchor_" + std::to_string(i)).optional();
+  d.param<std::int64_t>("plan_edits").default_value<std::int64_t>(0).range(0, static_cast<double>(kMaxPortCount))
+      .sets_port_count().doc("how many plan edit inputs the node has");
+  for (std::size_t i = 1; i <= d.count_of("plan_edits"); ++i)
+    d.input<PlanEditSpec>("edit_" + std::to_string(i)).optional();
   d.output<MeshSet>("mesh");
 }
 
@@ -35,11 +40,17 @@ void evaluate(EvalContext& ctx) {
   if (const double h = ctx.param<double>(0); h > 0) options.max_height = h;
   options.ambiguity = ctx.choice(1) == "minimize_volume" ? Ambiguity::MinimizeVolume : Ambiguity::MaximizeVolume;
   std::vector<AnchorSpec> anchors;
-  for (std::size_t i = 1; i < ctx.decl().inputs().size(); ++i)
-    if (ctx.has_input(i)) anchors.push_back(ctx.input<AnchorSpec>(i));
+  std::vector<PlanEditSpec> edits;
+  for (std::size_t i = 1; i < ctx.decl().inputs().size(); ++i) {
+    if (!ctx.has_input(i)) continue;
+    if (ctx.decl().inputs()[i].name.starts_with("edit_"))
+      edits.push_back(ctx.input<PlanEditSpec>(i));
+    else
+      anchors.push_back(ctx.input<AnchorSpec>(i));
+  }
   Extrusion result;
   try {
-    result = extrude(ctx.input<Footprint>(0), options, anchors);
+    result = extrude(ctx.input<Footprint>(0), options, anchors, edits);
   } catch (const std::exception& e) {
     return ctx.error(describe(e));
   }

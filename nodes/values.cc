@@ -59,6 +59,30 @@ void hash_anchor_spec(const AnchorSpec& s, Hasher& h) {
   hash_str(s.profile, h);
 }
 
+void hash_plan_edit_spec(const PlanEditSpec& s, Hasher& h) {
+  hash_anchor_spec(s.at, h);
+  h.u64(s.edits.size());
+  for (const PlanEdit& e : s.edits) {
+    hash_str(e.name, h);
+    h.u64(static_cast<std::uint64_t>(e.kind)).u64(e.shape.size());
+    for (const glm::dvec2& p : e.shape) h.f64(p.x).f64(p.y);
+    h.f64(e.width).f64(e.depth).f64(e.spread).f64(e.offset).u64(e.edges.size());
+    for (const EdgeSpec& spec : e.edges) h.f64(spec.angle_deg).i64(spec.id).i64(spec.profile);
+    hash_str(e.tag, h);
+  }
+  h.u64(s.profiles.size());
+  for (const Profile& p : s.profiles) hash_profile(p, h);
+}
+
+std::size_t plan_edit_spec_size(const PlanEditSpec& s) {
+  std::size_t n = sizeof(PlanEditSpec) + s.at.profile.capacity() + s.at.anchor.name.capacity();
+  for (const PlanEdit& e : s.edits)
+    n += sizeof(PlanEdit) + e.name.capacity() + e.tag.capacity() + e.shape.capacity() * sizeof(glm::dvec2) +
+         e.edges.capacity() * sizeof(EdgeSpec);
+  for (const Profile& p : s.profiles) n += profile_size(p);
+  return n;
+}
+
 std::size_t anchor_spec_size(const AnchorSpec& s) {
   return sizeof(AnchorSpec) + s.anchor.name.capacity() + s.anchor.edges.capacity() * sizeof(std::int32_t) +
          s.profile.capacity();
@@ -146,6 +170,10 @@ const bool kRegistered = [] {
                       "A named point on the footprint's edges (a position along each selected edge and a height) "
                       "that Extrude resolves on the building",
                       hash_anchor_spec, anchor_spec_size});
+  r.add<PlanEditSpec>({"plan edit",
+                        "Steps inserted into the building's cross-section at an anchor (bay windows, dormers, "
+                        "buttresses, recesses), each new edge following its own profile",
+                        hash_plan_edit_spec, plan_edit_spec_size});
   r.add<MeshSet>({"mesh",
                   "Closed meshes with a tag per face and a building id per mesh, their resolved anchors and the "
                   "meshes placed on them",

@@ -1,7 +1,7 @@
 // The value types the building nodes pass along links, registered with the
 // graph's value registry in values.cc: "footprint" (core Footprint, profiles
-// included), "profile", "list<profile>", "anchor" (an AnchorSpec for Extrude)
-// and "mesh" (a MeshSet: building meshes with their resolved anchors and the
+// included), "profile", "list<profile>", "anchor" (an AnchorSpec for Extrude),
+// "plan edit" (a PlanEditSpec for Extrude) and "mesh" (a MeshSet: building meshes with their resolved anchors and the
 // meshes placed on them).
 #pragma once
 
@@ -12,6 +12,7 @@
 
 #include "core/geom/anchor.h"
 #include "core/geom/footprint.h"
+#include "core/geom/plan_edit.h"
 #include "core/geom/profile.h"
 #include "core/mesh/mesh.h"
 #include "core/placement/placement.h"
@@ -47,6 +48,16 @@ struct MeshSet {
 struct AnchorSpec {
   Anchor anchor;
   std::string profile;
+};
+
+// Plan edits as the Plan Edit node makes them: where (`at`, placed like an
+// anchor) and the steps there (copies side by side differ in offset). Their
+// inserted edges' profiles index `profiles`, which Extrude adds to its
+// footprint's; Extrude sets each edit's anchor from `at`.
+struct PlanEditSpec {
+  AnchorSpec at;
+  std::vector<PlanEdit> edits;
+  std::vector<Profile> profiles;
 };
 
 // The tag of face f of a part.

@@ -41,6 +41,9 @@ struct PlanEdit {
   double width = 0.0;
   double depth = 0.0;
   double spread = 0.0;
+  // Moves the step along the edge from the anchor (metres): copies of one
+  // edit side by side (a row of dormers) share their anchor.
+  double offset = 0.0;
   // The inserted edges in order along the step (forced: one per shape
   // segment; natural: first side, front, second side). Their profiles (indices
   // into Footprint::profiles) start at the edit's height; their ids name their

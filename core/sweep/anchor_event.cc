@@ -45,7 +45,7 @@ void check_anchor(const Anchor& a, const std::string& what) {
     throw InputError(what + ": fraction " + std::to_string(a.plan.value) + " is outside [0, 1]");
 }
 
-std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason) {
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason, double shift) {
   const double z = st.height;
   const Source& src = st.sources[source];
   const Edge& edge = st.edges[src.edge];
@@ -59,7 +59,7 @@ std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, s
     lo = std::min(lo, glm::dot(st.position(s, z), edge.dir));
     hi = std::max(hi, glm::dot(st.position(st.corners[s].next, z), edge.dir));
   }
-  const double u = along(plan, src, edge.dir, lo, hi);
+  const double u = along(plan, src, edge.dir, lo, hi) + shift;
   const glm::dvec2 on_line = edge.plane.n * edge.plane.offset_at(z);
   const double margin = st.tol().span_margin();
   for (int s : spans) {

@@ -44,6 +44,7 @@ void check_edit(const PlanEdit& e, const std::string& what, const std::vector<Pr
     if (!(std::isfinite(e.depth) && e.depth != 0.0)) throw InputError(what + ": depth must be a non-zero number");
     if (!std::isfinite(e.spread)) throw InputError(what + ": spread must be a finite number");
   }
+  if (!std::isfinite(e.offset)) throw InputError(what + ": offset must be a finite number");
   if (e.edges.size() != want)
     throw InputError(what + ": it inserts " + std::to_string(want) + " edges but gives " +
                      std::to_string(e.edges.size()) + " edge specs");
@@ -164,7 +165,7 @@ void PlanEditEvents::apply(State& st, EventQueue& queue, ProfileEvents& profile_
                            ResolvedAnchor& r) {
   const PlanEdit& edit = st.options().plan_edits[q.edit];
   const double z = st.height;
-  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, r.reason);
+  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, r.reason, edit.offset);
   if (!hit) return;
   const int e = st.sources[q.source].edge;
   const Edge edge = st.edges[e];

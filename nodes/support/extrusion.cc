@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/geom/error.h"
@@ -15,15 +16,19 @@ namespace {
 const char* tag_of_angle(double angle_deg) { return angle_deg == 0.0 ? "wall" : "roof"; }
 
 // Profiles end at their last point; the building ends there too, with a flat
-// cap if its roof has not closed below.
+// cap if its roof has not closed below. The profiles of edges a plan edit
+// inserts start at its height.
 void cap_at_profile_tops(const Footprint& fp, SweepOptions& options) {
   std::optional<double> top;
+  auto reach = [&](const EdgeSpec& e, double base) {
+    if (e.profile < 0) return;
+    const double y = base + fp.profiles[static_cast<std::size_t>(e.profile)].points.back().y;
+    top = std::max(top.value_or(y), y);
+  };
   for (const Loop& loop : fp.loops)
-    for (const EdgeSpec& e : loop.edges)
-      if (e.profile >= 0) {
-        const double y = fp.profiles[static_cast<std::size_t>(e.profile)].points.back().y;
-        top = std::max(top.value_or(y), y);
-      }
+    for (const EdgeSpec& e : loop.edges) reach(e, 0.0);
+  for (const PlanEdit& edit : options.plan_edits)
+    for (const EdgeSpec& e : edit.edges) reach(e, edit.at.height);
   if (top) options.max_height = std::min(options.max_height.value_or(*top), *top);
 }
 
@@ -45,53 +50,85 @@ std::string id_ranges(const std::set<std::int32_t>& ids) {
   return out;
 }
 
-// The anchors as the sweep takes them: profile names become indices into the
-// footprint's profiles. An anchor that selects no edge of this footprint (no
-// edge uses its profile: a batch draws profiles per building) is dropped with
-// a note; naming a profile or an edge the footprint lacks is an error.
-std::vector<Anchor> engine_anchors(const Footprint& fp, const std::vector<AnchorSpec>& specs,
-                                   std::vector<std::string>& notes) {
+// An anchor as the sweep takes it: its profile name becomes an index into the
+// footprint's profiles. Nothing (with a note) if it selects no edge of this
+// footprint (no edge uses its profile: a batch draws profiles per building);
+// naming a profile or an edge the footprint lacks is an error.
+std::optional<Anchor> engine_anchor(const Footprint& fp, const AnchorSpec& spec, const std::string& named,
+                                    std::vector<std::string>& notes) {
   std::set<std::int32_t> ids;
   std::vector<const EdgeSpec*> edges;
   for (const Loop& loop : fp.loops)
     for (const EdgeSpec& e : loop.edges) ids.insert(e.id), edges.push_back(&e);
+  Anchor a = spec.anchor;
+  if (!spec.profile.empty()) {
+    const auto it = std::find_if(fp.profiles.begin(), fp.profiles.end(),
+                                 [&](const Profile& p) { return p.name == spec.profile; });
+    if (it == fp.profiles.end()) {
+      std::vector<std::string> names;
+      for (const Profile& p : fp.profiles) names.push_back(p.name);
+      throw InputError(named + ": the footprint has no profile named '" + spec.profile + "' (" +
+                       (names.empty() ? std::string("it has no profiles") : "its profiles: " + quoted_list(names)) +
+                       ")");
+    }
+    a.profile = static_cast<int>(it - fp.profiles.begin());
+  }
+  for (const std::int32_t id : a.edges)
+    if (!ids.contains(id))
+      throw InputError(named + ": edge id " + std::to_string(id) + " is not an edge of the footprint (its ids: " +
+                       id_ranges(ids) + ")");
+  const bool selects_any = std::any_of(edges.begin(), edges.end(), [&](const EdgeSpec* e) {
+    return (a.profile < 0 || e->profile == a.profile) &&
+           (a.edges.empty() || std::find(a.edges.begin(), a.edges.end(), e->id) != a.edges.end());
+  });
+  if (!selects_any) {
+    notes.push_back(named + " is not placed: no " + (a.edges.empty() ? "edge" : "edge it lists") +
+                    " uses profile '" + spec.profile + "' on this footprint");
+    return std::nullopt;
+  }
+  return a;
+}
+
+std::vector<Anchor> engine_anchors(const Footprint& fp, const std::vector<AnchorSpec>& specs,
+                                   std::vector<std::string>& notes) {
   std::vector<Anchor> out;
-  for (const AnchorSpec& spec : specs) {
-    Anchor a = spec.anchor;
-    const std::string named = "anchor '" + a.name + "'";
-    if (!spec.profile.empty()) {
-      const auto it = std::find_if(fp.profiles.begin(), fp.profiles.end(),
-                                   [&](const Profile& p) { return p.name == spec.profile; });
-      if (it == fp.profiles.end()) {
-        std::vector<std::string> names;
-        for (const Profile& p : fp.profiles) names.push_back(p.name);
-        throw InputError(named + ": the footprint has no profile named '" + spec.profile + "' (" +
-                         (names.empty() ? std::string("it has no profiles") : "its profiles: " + quoted_list(names)) +
-                         ")");
+  for (const AnchorSpec& spec : specs)
+    if (auto a = engine_anchor(fp, spec, "anchor '" + spec.anchor.name + "'", notes)) out.push_back(std::move(*a));
+  return out;
+}
+
+// The plan edits as the sweep takes them: placed by their anchors, their
+// profiles added to the footprint's, their inserted edges numbered after the
+// footprint's edges (collected in `inserted`, for tagging).
+std::vector<PlanEdit> engine_plan_edits(Footprint& fp, const std::vector<PlanEditSpec>& specs,
+                                        std::vector<EdgeSpec>& inserted, std::vector<std::string>& notes) {
+  std::int32_t next_id = 0;
+  for (const Loop& loop : fp.loops)
+    for (const EdgeSpec& e : loop.edges) next_id = std::max(next_id, e.id + 1);
+  std::vector<PlanEdit> out;
+  for (const PlanEditSpec& spec : specs) {
+    const std::string named = "plan edit '" + spec.at.anchor.name + "'";
+    const std::optional<Anchor> at = engine_anchor(fp, spec.at, named, notes);
+    if (!at) continue;
+    const int first_profile = static_cast<int>(fp.profiles.size());
+    fp.profiles.insert(fp.profiles.end(), spec.profiles.begin(), spec.profiles.end());
+    for (PlanEdit edit : spec.edits) {
+      edit.at = *at;
+      for (EdgeSpec& e : edit.edges) {
+        if (e.profile >= 0) e.profile += first_profile;
+        e.id = next_id++;
+        inserted.push_back(e);
       }
-      a.profile = static_cast<int>(it - fp.profiles.begin());
+      out.push_back(std::move(edit));
     }
-    for (const std::int32_t id : a.edges)
-      if (!ids.contains(id))
-        throw InputError(named + ": edge id " + std::to_string(id) + " is not an edge of the footprint (its ids: " +
-                         id_ranges(ids) + ")");
-    const bool selects_any = std::any_of(edges.begin(), edges.end(), [&](const EdgeSpec* e) {
-      return (a.profile < 0 || e->profile == a.profile) &&
-             (a.edges.empty() || std::find(a.edges.begin(), a.edges.end(), e->id) != a.edges.end());
-    });
-    if (!selects_any) {
-      notes.push_back(named + " is not placed: no " + (a.edges.empty() ? "edge" : "edge it lists") +
-                      " uses profile '" + spec.profile + "' on this footprint");
-      continue;
-    }
-    out.push_back(std::move(a));
   }
   return out;
 }
 
 }  // namespace
 
-Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const std::vector<AnchorSpec>& anchors) {
+Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const std::vector<AnchorSpec>& anchors,
+                  const std::vector<PlanEditSpec>& plan_edits) {
   for (const Profile& p : footprint.profiles) check_profile(p);
   for (const Loop& loop : footprint.loops)
     for (const EdgeSpec& e : loop.edges)
@@ -103,12 +140,15 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const
   out.notes = std::move(prepared.notes);
   Footprint fp = std::move(prepared.footprint);
   SweepOptions engine_options = options;
-  cap_at_profile_tops(fp, engine_options);
   engine_options.anchors = engine_anchors(fp, anchors, out.notes);
+  std::vector<EdgeSpec> inserted;
+  engine_options.plan_edits = engine_plan_edits(fp, plan_edits, inserted, out.notes);
+  cap_at_profile_tops(fp, engine_options);
 
   std::map<std::int32_t, const EdgeSpec*> by_id;
   for (const Loop& loop : fp.loops)
     for (const EdgeSpec& e : loop.edges) by_id[e.id] = &e;
+  for (const EdgeSpec& e : inserted) by_id[e.id] = &e;
 
   Surface surface = sweep(fp, engine_options);
   auto mesh = std::make_shared<Mesh>(build_mesh(surface));
@@ -116,6 +156,8 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const
   for (const ResolvedAnchor& a : surface.anchors)
     if (!a.present) out.notes.push_back("anchor '" + a.name + "' is absent on edge " + std::to_string(a.edge_id) + ": " + a.reason);
   t.anchors = std::move(surface.anchors);
+  for (const ResolvedAnchor& e : surface.plan_edits)
+    if (!e.present) out.notes.push_back("plan edit '" + e.name + "' is not applied on edge " + std::to_string(e.edge_id) + ": " + e.reason);
   std::map<std::string, std::uint32_t> tag_index;
   auto index_of = [&](const std::string& tag) {
     auto [it, inserted] = tag_index.try_emplace(tag, static_cast<std::uint32_t>(t.tags.size()));

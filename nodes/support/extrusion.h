@@ -25,6 +25,9 @@ struct Extrusion {
 // options.anchors. Throws what prepare_footprint, sweep and build_mesh throw
 // (InputError, SweepError, MeshError), and InputError for an anchor naming a
 // profile or an edge id the footprint does not have.
-Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const std::vector<AnchorSpec>& anchors = {});
+// `plan_edits` are inserted where their anchors lie (absent ones become notes);
+// they replace options.plan_edits.
+Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const std::vector<AnchorSpec>& anchors = {},
+                  const std::vector<PlanEditSpec>& plan_edits = {});
 
 }  // namespace procex

@@ -170,9 +170,13 @@ TEST(PlanEdits, DormerOnAHipRoof) {
 
 TEST(PlanEdits, RowOfDormersAndAnInverseDormer) {
   const Profile dormer{"dormer", {{0, 0}, {0, 1.5}, {-3, 4.5}}, {"dormer wall", "dormer roof"}};
+  // One anchor mid-front, three copies 5 m apart: the later copies find their
+  // place on the spans the earlier ones left.
   std::vector<PlanEdit> edits;
-  for (double f : {0.25, 0.5, 0.75})
-    edits.push_back(natural("dormer", f, 3.0, 2.0, 0.3, {following(1, 10), following(1, 11), following(1, 12)}));
+  for (double offset : {-5.0, 0.0, 5.0}) {
+    edits.push_back(natural("dormer", 0.5, 3.0, 2.0, 0.3, {following(1, 10), following(1, 11), following(1, 12)}));
+    edits.back().offset = offset;
+  }
   // The inverse dormer: a recess into the back roof at the eaves, walls vertical for 1.2 m.
   const Profile inverse{"inverse", {{0, 0}, {0, 1.2}, {-3, 4.2}}, {"recess wall", "recess roof"}};
   edits.push_back(forced("inverse dormer", 0.5, 3.0, {{-1.5, 0}, {-1.5, -1.0}, {1.5, -1.0}, {1.5, 0}},
@@ -181,6 +185,8 @@ TEST(PlanEdits, RowOfDormersAndAnInverseDormer) {
   expect_valid(s);
   ASSERT_EQ(s.plan_edits.size(), 4u);
   for (const ResolvedAnchor& r : s.plan_edits) EXPECT_TRUE(r.present) << r.reason;
+  EXPECT_NEAR(s.plan_edits[0].frame.origin.x, 5.0, 1e-9);
+  EXPECT_NEAR(s.plan_edits[2].frame.origin.x, 15.0, 1e-9);
   EXPECT_EQ(faces_per_tag(s).at("dormer wall"), 9);
   EXPECT_EQ(faces_per_tag(s).at("recess wall"), 3);
 }
