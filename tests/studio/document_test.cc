@@ -29,6 +29,21 @@ struct Small {
   }
 };
 
+TEST(Document, AnAbortedGestureLeavesNoTrace) {
+  Small s;
+  const std::string before = to_pxg(s.doc.graph());
+  const std::string last = s.doc.undo_label();
+  const std::uint64_t rev = s.doc.revision();
+  s.doc.begin_gesture("two edits");
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(4.0)));
+  ASSERT_TRUE(s.doc.add_node("test.Const", 0, 200));
+  s.doc.abort_gesture();
+  EXPECT_FALSE(s.doc.in_gesture());
+  EXPECT_EQ(to_pxg(s.doc.graph()), before);
+  EXPECT_EQ(s.doc.undo_label(), last);
+  EXPECT_GT(s.doc.revision(), rev) << "the graph changed twice since: evaluate again";
+}
+
 TEST(Document, EditsAreUndoneAndRedoneOneByOne) {
   Small s;
   const std::string full = to_pxg(s.doc.graph());

@@ -168,6 +168,13 @@ void Document::end_gesture() {
   gesture_open_ = false;
 }
 
+void Document::abort_gesture() {
+  if (!gesture_open_) return;
+  stack_.abort_macro();
+  gesture_open_ = false;
+  (void)changed(Status::ok());
+}
+
 std::string Document::copy_selection() const {
   Graph clip;
   for (NodeId id : selection_) {

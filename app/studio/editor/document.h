@@ -68,6 +68,8 @@ class Document {
   // Edits between begin and end become one undo step (a slider drag).
   void begin_gesture(std::string label);
   void end_gesture();
+  // Rolls back every edit since begin_gesture (a multi-step edit refused half way).
+  void abort_gesture();
   bool in_gesture() const { return gesture_open_; }
 
   // ---- clipboard: selected nodes and the links among them, as .pxg text ----

@@ -10,6 +10,7 @@
 #include <typeindex>
 #include <vector>
 
+#include "app/studio/editor/anchor_edit.h"
 #include "app/studio/editor/polyline_edit.h"
 #include "app/studio/editor/preview_mesh.h"
 #include "core/geom/footprint.h"
@@ -81,6 +82,8 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     issue_.reset();
     check_revision_ = 0;
     selected_segment_.reset();
+    dragging_anchor_.reset();
+    anchor_tool_ = false;
   }
   const Node* n = id ? doc.graph().node(id) : nullptr;
   if (!n) {
@@ -123,7 +126,21 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     buttons_["hole"] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
     ImGui::SameLine();
   }
-  ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone, snapped level or plumb; Alt: free), double-click a segment to add, right-click to delete."
+  // Anchors feeding the Extrude this plan reaches: drawn on the plan, dragged along their edges.
+  const std::optional<NodeId> extrude = plan_out ? extrude_downstream(doc.graph(), id) : std::nullopt;
+  const std::vector<AnchorNode> anchor_nodes = extrude ? anchors_into(doc.graph(), *extrude) : std::vector<AnchorNode>{};
+  if (extrude && fp) {
+    if (anchor_tool_) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.85f, 0.35f, 0.75f, 1.0f));
+    const bool toggled = ImGui::SmallButton("Place anchor");
+    if (anchor_tool_) ImGui::PopStyleColor();
+    if (toggled) anchor_tool_ = !anchor_tool_;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Then click an edge: an Anchor node there, wired into Extrude #%u.", static_cast<unsigned>(*extrude));
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons_["anchor_tool"] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    ImGui::SameLine();
+  }
+  if (anchor_tool_) ImGui::TextDisabled("Click an edge to place an anchor there; drag anchors along their edges.");
+  else ImGui::TextDisabled(is_profile ? "Profile: drag points (kept monotone, snapped level or plumb; Alt: free), double-click a segment to add, right-click to delete."
                       : points_param ? "Plan: drag corners, double-click an edge to add one, right-click a corner to delete, click edges to select."
                                      : "Plan: click edges to select them.");
   const std::size_t tags_param = is_profile ? param_of_type(*n, "tags", typeid(std::vector<std::string>)).value_or(SIZE_MAX) : SIZE_MAX;
@@ -168,6 +185,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
 
   // Evaluated plan edges, labelled; hovered and selected ones highlighted.
   std::optional<std::int32_t> hover_edge;
+  std::optional<std::pair<Vec2, Vec2>> hover_segment;  // the hovered edge's ends
   if (fp) {
     for (const Loop& l : fp->loops) {
       const std::size_t m = l.points.size();
@@ -190,8 +208,47 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
           std::snprintf(label, sizeof label, "e%d %.0f deg", spec.id, spec.angle_deg);
         const ImVec2 mid = f.to_screen((a.x + b.x) / 2, (a.y + b.y) / 2);
         dl->AddText(ImVec2(mid.x + 4, mid.y - 14), IM_COL32(200, 200, 210, 255), label);
+        buttons_["edge_" + std::to_string(spec.id)] = {mid.x, mid.y, 0.0f, 0.0f};  // where tests click an edge
+        if (near == e) hover_segment = {{a.x, a.y}, {b.x, b.y}};
       }
     }
+  }
+  // Anchor nodes' points on the edges they select (the fraction at the footprint; the sweep keeps it up the face).
+  struct AnchorMark {
+    std::size_t anchor;  // index into anchor_nodes
+    Vec2 a, b;           // the edge
+    ImVec2 at;
+  };
+  std::vector<AnchorMark> marks;
+  if (fp)
+    for (std::size_t k = 0; k < anchor_nodes.size(); ++k) {
+      const AnchorNode& an = anchor_nodes[k];
+      for (const Loop& l : fp->loops)
+        for (std::size_t e = 0; e < l.points.size(); ++e) {
+          const EdgeSpec& spec = l.edges[e];
+          if (!an.edges.empty() && std::find(an.edges.begin(), an.edges.end(), spec.id) == an.edges.end()) continue;
+          if (!an.profile.empty() && (spec.profile < 0 || static_cast<std::size_t>(spec.profile) >= fp->profiles.size() ||
+                                      fp->profiles[static_cast<std::size_t>(spec.profile)].name != an.profile))
+            continue;
+          const Vec2 a{l.points[e].x, l.points[e].y};
+          const Vec2 b{l.points[(e + 1) % l.points.size()].x, l.points[(e + 1) % l.points.size()].y};
+          const double t = edge_fraction(an.mode, an.position, std::hypot(b.x - a.x, b.y - a.y));
+          const ImVec2 at = f.to_screen(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+          marks.push_back({k, a, b, at});
+          buttons_["anchor_" + std::to_string(an.node) + "_e" + std::to_string(spec.id)] = {at.x, at.y, 0.0f, 0.0f};
+        }
+    }
+  std::optional<std::size_t> near_mark;  // index into marks
+  if (hovered && !dragging_)
+    for (std::size_t i = 0; i < marks.size() && !near_mark; ++i)
+      if (std::hypot(marks[i].at.x - mouse.x, marks[i].at.y - mouse.y) < 8.0) near_mark = i;
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    const AnchorMark& m = marks[i];
+    const bool hot = near_mark == i || (dragging_anchor_ && dragging_anchor_->node == anchor_nodes[m.anchor].node);
+    const float r = hot ? 7.0f : 5.5f;
+    dl->AddQuadFilled(ImVec2(m.at.x, m.at.y - r), ImVec2(m.at.x + r, m.at.y), ImVec2(m.at.x, m.at.y + r), ImVec2(m.at.x - r, m.at.y),
+                      IM_COL32(242, 64, 217, 255));
+    dl->AddText(ImVec2(m.at.x + 8, m.at.y + 2), IM_COL32(242, 150, 230, 255), anchor_nodes[m.anchor].name.c_str());
   }
   // The editable polylines: the points, and a Footprint Polygon's hole.
   struct Editable {
@@ -243,7 +300,38 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     if (Status s = doc.set_param(id, tags_param, Value::make(std::move(t))); !s) status = s.message();
     doc.end_gesture();
   };
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point) {
+  // Along an edge from a to b, the fraction nearest the mouse.
+  auto fraction_at = [&](Vec2 a, Vec2 b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+    return len2 > 0 ? std::clamp(((mw.x - a.x) * dx + (mw.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  };
+  bool click_taken = false;  // by an anchor: no vertex drag, edge selection or segment under it
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_mark) {
+    const AnchorMark& m = marks[*near_mark];
+    dragging_anchor_ = AnchorDrag{anchor_nodes[m.anchor].node, m.a, m.b};
+    doc.begin_gesture("move anchor");
+    click_taken = true;
+  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && anchor_tool_ && hover_edge && hover_segment) {
+    const auto [a, b] = *hover_segment;
+    if (Result<NodeId> r = place_anchor(doc, id, *hover_edge, fraction_at(a, b)); !r) status = r.message();
+    else status = "placed an anchor on edge " + std::to_string(*hover_edge) + " (Anchor #" + std::to_string(*r) + ")";
+    click_taken = true;
+  }
+  if (dragging_anchor_) {
+    const Node* an = doc.graph().node(dragging_anchor_->node);
+    const auto position = an ? an->decl().param_index("position") : std::nullopt;
+    const auto it = std::find_if(anchor_nodes.begin(), anchor_nodes.end(), [&](const AnchorNode& x) { return x.node == dragging_anchor_->node; });
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && position && it != anchor_nodes.end()) {
+      const Vec2 a = dragging_anchor_->a, b = dragging_anchor_->b;
+      const double p = anchor_position(it->mode, fraction_at(a, b), std::hypot(b.x - a.x, b.y - a.y));
+      if (Status st = doc.set_param(dragging_anchor_->node, *position, Value::make(p)); !st) status = st.message();
+    } else {
+      dragging_anchor_.reset();
+      doc.end_gesture();
+    }
+    click_taken = true;
+  }
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point && !click_taken) {
     dragging_ = near_point;
     doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
   }
@@ -258,7 +346,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
       doc.end_gesture();
     }
   }
-  if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point)
+  if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point && !click_taken && !anchor_tool_)
     for (std::size_t k = 0; k < loops.size(); ++k)
       if (auto e = nearest_edge(loops[k].pts, mw, tol, rules.closed)) {
         apply_with_tags(k, insert_point(loops[k].pts, *e, mw, rules), tags_after_insert(tags, profile_segments, *e), "insert point");
@@ -273,7 +361,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point)
     selected_segment_ = nearest_edge(pts, mw, tol, false);  // the field appears next frame
   // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge) {
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge && !click_taken) {
     if (!ImGui::GetIO().KeyCtrl && !ImGui::GetIO().KeyShift) selected_edges_.clear();
     if (!selected_edges_.erase(*hover_edge)) selected_edges_.insert(*hover_edge);
   }

@@ -7,7 +7,9 @@
 // `points` parameter (Footprint Polygon), drag vertices, double-click an
 // edge to add one, right-click a vertex to delete it; the same for its hole,
 // which Add hole / Delete hole make and remove. A plan core would refuse is
-// flagged at the loop and vertex at fault.
+// flagged at the loop and vertex at fault. The anchors of Anchor nodes wired
+// into the Extrude downstream are drawn on their edges and dragged along them
+// (their `position`); with Place anchor on, a click on an edge adds one.
 // Profile: a Profile node's `points` polyline in (offset, height), segments
 // labelled with their tags (click a segment to edit its tag; adding and
 // deleting points keeps one tag per segment); dragging keeps it monotone and (0, 0) fixed,
@@ -32,9 +34,12 @@ namespace procex::studio {
 class ShapeEditor {
  public:
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
-  // Buttons and profile segment midpoints (segment_K) drawn in the last frame
-  // (window pixels), for the --ui-map.
+  // Buttons, profile segment midpoints (segment_K), plan edge midpoints
+  // (edge_ID) and anchors (anchor_NODE_eID) drawn in the last frame (window
+  // pixels), for the --ui-map.
   const std::map<std::string, std::array<float, 4>>& buttons() const { return buttons_; }
+  // Place anchor is on: a click on an edge places one.
+  bool anchor_tool() const { return anchor_tool_; }
 
  private:
   struct Grab {
@@ -50,6 +55,12 @@ class ShapeEditor {
   std::size_t segment_tag_edit_ = SIZE_MAX;
   std::string segment_tag_;
   std::set<std::int32_t> selected_edges_;  // edge ids of the footprint
+  struct AnchorDrag {
+    NodeId node = 0;
+    Vec2 a, b;  // the edge it slides along
+  };
+  std::optional<AnchorDrag> dragging_anchor_;
+  bool anchor_tool_ = false;  // a click on an edge places an anchor
 };
 
 }  // namespace procex::studio

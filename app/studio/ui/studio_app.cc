@@ -495,11 +495,15 @@ class App {
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
     j["buttons"] = buttons_;
     for (const auto& [name, r] : shape_editor_.buttons()) j["buttons"][name] = r;
+    j["anchor_tool"] = shape_editor_.anchor_tool();
     j["links"] = nlohmann::json::array();
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
     for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
     j["preview_faces"] = shown_ && shown_->preview ? shown_->preview->faces : 0;
+    const PreviewMesh* shown_mesh = shown_ && shown_->preview ? shown_->preview.get() : nullptr;
+    j["preview_anchors"] = shown_mesh ? shown_mesh->anchors.size() - shown_mesh->absent_anchors() : 0;  // present ones, with markers
+    j["preview_instances"] = shown_mesh ? shown_mesh->instances : 0;
     std::size_t errors = 0;
     if (shown_)
       for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;

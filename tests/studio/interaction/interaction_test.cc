@@ -383,5 +383,50 @@ TEST(StudioInteraction, EditsAProfileSegmentsTagAndKeepsTagsPerSegment) {
   fs::remove_all(dir);
 }
 
+// The plan editor's Place anchor: a click on an edge adds an Anchor node wired
+// into the Extrude (the preview shows its marker), then the anchor is
+// dragged along the edge.
+TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
+  const fs::path dir = fresh_dir("anchor");
+  const fs::path recipe = dir / "house.pxg";
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
+  json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("anchor_tool") && j["buttons"].contains("edge_0"); });
+  EXPECT_EQ(map["preview_anchors"], 0);
+  click(button_centre(map, "anchor_tool"));
+  map = studio.wait("the tool on", [](const json& j) { return j["anchor_tool"].get<bool>(); });
+  std::uint64_t rev = revision(map);
+  const auto anchor_key = [](const json& j) -> std::string {
+    for (const auto& [name, r] : j["buttons"].items())
+      if (name.starts_with("anchor_") && name.ends_with("_e0")) return name;
+    return "";
+  };
+  click(button_centre(map, "edge_0"));
+  map = studio.wait("the anchor placed and resolved",
+                    [&](const json& j) { return revision(j) > rev && j["settled"] && !anchor_key(j).empty() && j["preview_anchors"] == 1; });
+  EXPECT_EQ(map["errors"], 0);
+  rev = revision(map);
+  const auto at = button_centre(map, anchor_key(map));
+  drag(at, {at.first - 40, at.second - 40});
+  map = studio.wait("the anchor moved", [&](const json& j) { return revision(j) > rev && j["settled"]; });
+  EXPECT_EQ(map["preview_anchors"], 1);
+  save_and_quit(studio);
+
+  const Graph g = load_pxg(recipe);
+  const Node* anchor = nullptr;
+  for (const auto& [id, n] : g.nodes())
+    if (n.type->name() == "Anchor") anchor = &n;
+  ASSERT_TRUE(anchor);
+  EXPECT_EQ(anchor->params[*anchor->decl().param_index("edges")].get<std::string>(), "0");
+  EXPECT_EQ(anchor->params[*anchor->decl().param_index("mode")].get<EnumValue>().choice, "fraction");
+  const double position = anchor->params[*anchor->decl().param_index("position")].get<double>();
+  EXPECT_GT(position, 0.05);
+  EXPECT_LT(position, 0.45) << "dragged towards the edge's start from about its middle";
+  const Node* extrude = g.node(2);
+  EXPECT_EQ(extrude->params[*extrude->decl().param_index("anchors")].get<std::int64_t>(), 1);
+  EXPECT_EQ(g.source({2, static_cast<std::uint32_t>(*extrude->decl().input_index("anchor_1"))}), (PortRef{anchor->id, 0}));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
