@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/geom/error.h"
+#include "core/geom/tolerances.h"
 
 namespace procex {
 namespace {
@@ -23,9 +24,14 @@ struct EdgeStep {
 
 std::string tag_of(const Profile& p, std::size_t segment) { return p.tags.empty() ? std::string() : p.tags[segment]; }
 
+// How far a plane leaning in by `inward` per unit of height must rise to have
+// surely closed over a footprint of size `extent` (1 m if it never closes).
+double closing_rise(double inward, double extent) { return inward > 0.0 ? extent / inward : 1.0; }
+
 // The profile an edge without one follows: its constant angle, untagged like
-// the faces the sweep makes for it.
-Profile constant_profile(double angle_deg, double height) {
+// the faces the sweep makes for it, up to where its roof has surely closed.
+Profile constant_profile(double angle_deg, double height, double extent) {
+  height += closing_rise(std::tan(angle_deg * M_PI / 180.0), extent);
   Profile p = Profile::straight(angle_deg, height, std::string());
   p.name = "angle " + std::to_string(angle_deg);
   return p;
@@ -45,7 +51,10 @@ Profile reaching_above(Profile p, double height) {
   return p;
 }
 
-Profile rewrite(const Profile& original, double height, const EdgeStep& step, const std::string& step_tag) {
+// `extent`: the footprint's size, how far a roof at an override's slope must
+// reach in to have surely closed.
+Profile rewrite(const Profile& original, double height, const EdgeStep& step, const std::string& step_tag,
+                double extent) {
   const Profile p = reaching_above(original, height);
   Profile out;
   out.name = original.name;
@@ -68,7 +77,11 @@ Profile rewrite(const Profile& original, double height, const EdgeStep& step, co
   const glm::dvec2 shift{step.distance, 0.0};
   if (step.distance != 0.0) add(at + shift, step_tag);
   if (step.slope_deg) {
-    add(at + shift + glm::dvec2{-std::tan(*step.slope_deg * M_PI / 180.0), 1.0}, tag_of(p, rest - 1));
+    // Up to the profile's top (where Extrude caps the building), or until a
+    // roof leaning in at this slope has surely closed.
+    const double inward = std::tan(*step.slope_deg * M_PI / 180.0);
+    const double rise = std::max(original.points.back().y - height, closing_rise(inward, extent));
+    add(at + shift + glm::dvec2{-inward * rise, rise}, tag_of(p, rest - 1));
     return out;
   }
   for (std::size_t k = rest; k < p.points.size(); ++k) add(p.points[k] + shift, tag_of(p, k - 1));
@@ -153,10 +166,10 @@ Footprint apply_one(const Footprint& fp, const ProfileOffset& o) {
       auto [it, fresh] = made.try_emplace({original, s}, static_cast<int>(out.profiles.size()));
       if (fresh) {
         const Profile base = e.profile >= 0 ? fp.profiles[static_cast<std::size_t>(e.profile)]
-                                            : constant_profile(e.angle_deg, o.height + 1.0);
+                                            : constant_profile(e.angle_deg, o.height, length_scale(fp));
         check_profile(base);
         const std::string tag = !o.tag.empty() ? o.tag : s.distance > 0.0 ? "soffit" : "ledge";
-        out.profiles.push_back(rewrite(base, o.height, s, tag));
+        out.profiles.push_back(rewrite(base, o.height, s, tag, length_scale(fp)));
         check_profile(out.profiles.back());
       }
       e.profile = it->second;

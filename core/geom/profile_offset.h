@@ -40,7 +40,10 @@ struct ProfileOffset {
 // height the profile is unchanged (a segment crossing it is split there),
 // then a horizontal segment of the edge's distance, then the profile's part
 // above, moved to start at the end of the step (or one segment at the edge's
-// own slope). An edge without a profile follows its constant angle. Offsets
+// own slope, rising to the profile's top or until a roof at that slope has
+// surely closed over the footprint, whichever is higher: Extrude caps a
+// building at its profiles' tops). An edge without a profile follows its
+// constant angle, up to where it has surely closed. Offsets
 // apply from the lowest up, so several at different heights compose. Edges
 // with equal rewritten profiles share one; a rewritten profile keeps its
 // original's name, so later offsets select it by that name.

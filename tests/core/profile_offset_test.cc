@@ -88,7 +88,7 @@ TEST(ProfileOffsetRewrite, EdgesWithoutAProfileFollowTheirAngle) {
   const Profile& p = fp.profiles[0];
   ASSERT_EQ(p.points.size(), 4u);
   EXPECT_NEAR(p.points[1].x, -1.0, 1e-12);
-  EXPECT_EQ(p.points[1].y, 1.0);
+  EXPECT_NEAR(p.points[1].y, 1.0, 1e-12);
   EXPECT_NEAR(p.points[2].x, -0.5, 1e-12);
   EXPECT_NEAR(p.points[3].x - p.points[2].x, -(p.points[3].y - p.points[2].y), 1e-12);  // still 45 degrees
   EXPECT_EQ(p.tags, (std::vector<std::string>{"", "soffit", ""}));
