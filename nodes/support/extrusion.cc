@@ -51,11 +51,11 @@ std::string id_ranges(const std::set<std::int32_t>& ids) {
 }
 
 // An anchor as the sweep takes it: its profile name becomes an index into the
-// footprint's profiles. Nothing (with a note) if it selects no edge of this
-// footprint (no edge uses its profile: a batch draws profiles per building);
-// naming a profile or an edge the footprint lacks is an error.
+// footprint's profiles. Nothing (and why in `unselected`) if it selects no
+// edge of this footprint (no edge uses its profile: a batch draws profiles per
+// building); naming a profile or an edge the footprint lacks is an error.
 std::optional<Anchor> engine_anchor(const Footprint& fp, const AnchorSpec& spec, const std::string& named,
-                                    std::vector<std::string>& notes) {
+                                    std::string& unselected) {
   std::set<std::int32_t> ids;
   std::vector<const EdgeSpec*> edges;
   for (const Loop& loop : fp.loops)
@@ -82,18 +82,36 @@ std::optional<Anchor> engine_anchor(const Footprint& fp, const AnchorSpec& spec,
            (a.edges.empty() || std::find(a.edges.begin(), a.edges.end(), e->id) != a.edges.end());
   });
   if (!selects_any) {
-    notes.push_back(named + " is not placed: no " + (a.edges.empty() ? "edge" : "edge it lists") +
-                    " uses profile '" + spec.profile + "' on this footprint");
+    unselected = std::string("no ") + (a.edges.empty() ? "edge" : "edge it lists") + " uses profile '" + spec.profile +
+                 "' on this footprint";
     return std::nullopt;
   }
   return a;
 }
 
-std::vector<Anchor> engine_anchors(const Footprint& fp, const std::vector<AnchorSpec>& specs,
-                                   std::vector<std::string>& notes) {
-  std::vector<Anchor> out;
-  for (const AnchorSpec& spec : specs)
-    if (auto a = engine_anchor(fp, spec, "anchor '" + spec.anchor.name + "'", notes)) out.push_back(std::move(*a));
+// The anchors as the sweep takes them. One that selects no edge of this
+// footprint resolves absent once, with edge id -1 (in `unselected`), so that
+// Mesh Placement reports it like any absent anchor.
+struct EngineAnchors {
+  std::vector<Anchor> anchors;
+  std::vector<std::size_t> spec;           // per engine anchor, its index in the specs
+  std::vector<ResolvedAnchor> unselected;  // ResolvedAnchor::anchor: the spec's index
+};
+
+EngineAnchors engine_anchors(const Footprint& fp, const std::vector<AnchorSpec>& specs) {
+  EngineAnchors out;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    std::string why;
+    if (auto a = engine_anchor(fp, specs[i], "anchor '" + specs[i].anchor.name + "'", why)) {
+      out.anchors.push_back(std::move(*a));
+      out.spec.push_back(i);
+      continue;
+    }
+    ResolvedAnchor& r = out.unselected.emplace_back();
+    r.name = specs[i].anchor.name;
+    r.anchor = i;
+    r.reason = std::move(why);
+  }
   return out;
 }
 
@@ -108,8 +126,12 @@ std::vector<PlanEdit> engine_plan_edits(Footprint& fp, const std::vector<PlanEdi
   std::vector<PlanEdit> out;
   for (const PlanEditSpec& spec : specs) {
     const std::string named = "plan edit '" + spec.at.anchor.name + "'";
-    const std::optional<Anchor> at = engine_anchor(fp, spec.at, named, notes);
-    if (!at) continue;
+    std::string why;
+    const std::optional<Anchor> at = engine_anchor(fp, spec.at, named, why);
+    if (!at) {
+      notes.push_back(named + " is not placed: " + why);
+      continue;
+    }
     const int first_profile = static_cast<int>(fp.profiles.size());
     fp.profiles.insert(fp.profiles.end(), spec.profiles.begin(), spec.profiles.end());
     for (PlanEdit edit : spec.edits) {
@@ -140,7 +162,8 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const
   out.notes = std::move(prepared.notes);
   Footprint fp = std::move(prepared.footprint);
   SweepOptions engine_options = options;
-  engine_options.anchors = engine_anchors(fp, anchors, out.notes);
+  EngineAnchors engine = engine_anchors(fp, anchors);
+  engine_options.anchors = std::move(engine.anchors);
   std::vector<EdgeSpec> inserted;
   engine_options.plan_edits = engine_plan_edits(fp, plan_edits, inserted, out.notes);
   cap_at_profile_tops(fp, engine_options);
@@ -153,9 +176,13 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const
   Surface surface = sweep(fp, engine_options);
   auto mesh = std::make_shared<Mesh>(build_mesh(surface));
   TaggedMesh& t = out.mesh;
-  for (const ResolvedAnchor& a : surface.anchors)
-    if (!a.present) out.notes.push_back("anchor '" + a.name + "' is absent on edge " + std::to_string(a.edge_id) + ": " + a.reason);
   t.anchors = std::move(surface.anchors);
+  for (ResolvedAnchor& a : t.anchors) a.anchor = engine.spec[a.anchor];
+  for (ResolvedAnchor& a : engine.unselected) t.anchors.push_back(std::move(a));
+  for (const ResolvedAnchor& a : t.anchors)
+    if (!a.present)
+      out.notes.push_back("anchor '" + a.name + "' is absent" +
+                          (a.edge_id >= 0 ? " on edge " + std::to_string(a.edge_id) : std::string()) + ": " + a.reason);
   for (const ResolvedAnchor& e : surface.plan_edits)
     if (!e.present) out.notes.push_back("plan edit '" + e.name + "' is not applied on edge " + std::to_string(e.edge_id) + ": " + e.reason);
   std::map<std::string, std::uint32_t> tag_index;

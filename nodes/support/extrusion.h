@@ -16,13 +16,15 @@ namespace procex {
 
 struct Extrusion {
   TaggedMesh mesh;
-  // For warnings: repairs made by prepare_footprint, anchors that select no
-  // edge of this footprint (dropped) and anchors resolved absent (with why).
+  // For warnings: repairs made by prepare_footprint, anchors resolved absent
+  // (with why) and plan edits not applied.
   std::vector<std::string> notes;
 };
 
-// `anchors` are resolved on the mesh (Extrusion::mesh.anchors); they replace
-// options.anchors. Throws what prepare_footprint, sweep and build_mesh throw
+// `anchors` are resolved on the mesh (Extrusion::mesh.anchors, each
+// ResolvedAnchor::anchor an index into `anchors`); they replace
+// options.anchors. One that selects no edge of this footprint resolves absent
+// once, with edge id -1. Throws what prepare_footprint, sweep and build_mesh throw
 // (InputError, SweepError, MeshError), and InputError for an anchor naming a
 // profile or an edge id the footprint does not have.
 // `plan_edits` are inserted where their anchors lie (absent ones become notes);

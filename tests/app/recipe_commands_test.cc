@@ -110,12 +110,13 @@ TEST_F(RecipeCommands, StatsShowsNodesAndCacheHits) {
 
 TEST_F(RecipeCommands, NodesListsEveryTypeAndDocuments) {
   EXPECT_EQ(run_nodes({false}, out_), 0);
-  for (const char* type : {"Footprint Shape", "Assign Profiles", "Extrude", "Switch", "Export"})
+  for (const char* type : {"Footprint Shape", "Assign Profiles", "Extrude", "Anchor", "Mesh Placement", "Switch", "Export"})
     EXPECT_NE(out_.str().find(type), std::string::npos) << type;
   std::ostringstream md;
   EXPECT_EQ(run_nodes({true}, md), 0);
   EXPECT_NE(md.str().find("#"), std::string::npos);
   EXPECT_NE(md.str().find("street_direction"), std::string::npos);
+  EXPECT_NE(md.str().find("from_start"), std::string::npos);  // Anchor's modes, from its declaration
 }
 
 TEST_F(RecipeCommands, ExecutableExitCodes) {

@@ -137,14 +137,20 @@ TEST(ExtrudeAnchors, UnknownEdgeIdListsTheFootprintsIds) {
       << messages(r);
 }
 
-TEST(ExtrudeAnchors, AProfileNoEdgeUsesDropsTheAnchorWithAWarning) {
+// A batch draws profiles per building: an anchor for a profile no edge of
+// this footprint uses is absent there, not an error.
+TEST(ExtrudeAnchors, AProfileNoEdgeUsesIsAbsentWithAWarning) {
   AnchoredExtrude t;
   t.set("profile", Value::make(std::string("end")));
   t.set("edges", Value::make(std::string("0")));  // a "wall" edge
   const EvalResult r = t.run();
   ASSERT_TRUE(r.ok()) << messages(r);
-  EXPECT_TRUE(r.output("mesh")->get<MeshSet>().parts.at(0).anchors.empty());
-  EXPECT_NE(messages(r).find("anchor 'window' is not placed: no edge it lists uses profile 'end'"), std::string::npos)
+  const auto& anchors = r.output("mesh")->get<MeshSet>().parts.at(0).anchors;
+  ASSERT_EQ(anchors.size(), 1u);
+  EXPECT_FALSE(anchors[0].present);
+  EXPECT_EQ(anchors[0].edge_id, -1);
+  EXPECT_NE(messages(r).find("anchor 'window' is absent: no edge it lists uses profile 'end' on this footprint"),
+            std::string::npos)
       << messages(r);
 }
 

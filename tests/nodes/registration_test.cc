@@ -51,6 +51,7 @@ TEST(NodeRegistration, EveryTypeConforms) {
       {&value_type<Profile>(), Value::make(wall)},
       {&value_type<std::vector<Profile>>(), Value::make(std::vector<Profile>{wall, Profile::straight(40, 20)})},
       {&value_type<MeshSet>(), Value::make(mesh)},
+      {&value_type<AnchorSpec>(), Value::make(AnchorSpec{{"window", {}, 1.0, -1, {}}, ""})},
   };
   for (const auto& t : NodeRegistry::global().all()) {
     if (!from_nodes_dir(*t)) continue;

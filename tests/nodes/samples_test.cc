@@ -29,13 +29,16 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
+// Placed meshes (instances per mesh name) only where a recipe places some.
 json summary_json(const MeshSummary& s) {
-  return {{"meshes", s.meshes},
-          {"faces", s.faces},
-          {"faces_per_tag", s.faces_per_tag},
-          {"bounds", {{"min", {s.min.x, s.min.y, s.min.z}}, {"max", {s.max.x, s.max.y, s.max.z}}}},
-          {"volume", s.volume},
-          {"tolerance", {{"length", 1e-6}, {"volume_relative", 1e-6}}}};
+  json j = {{"meshes", s.meshes},
+            {"faces", s.faces},
+            {"faces_per_tag", s.faces_per_tag},
+            {"bounds", {{"min", {s.min.x, s.min.y, s.min.z}}, {"max", {s.max.x, s.max.y, s.max.z}}}},
+            {"volume", s.volume}};
+  if (!s.placed.empty()) j["placed"] = s.placed;
+  j["tolerance"] = {{"length", 1e-6}, {"volume_relative", 1e-6}};
+  return j;
 }
 
 void expect_close(const json& want, const json& got, const std::string& what) {
@@ -43,6 +46,7 @@ void expect_close(const json& want, const json& got, const std::string& what) {
   EXPECT_EQ(want["meshes"], got["meshes"]) << what;
   EXPECT_EQ(want["faces"], got["faces"]) << what;
   EXPECT_EQ(want["faces_per_tag"], got["faces_per_tag"]) << what;
+  EXPECT_EQ(want.value("placed", json::object()), got.value("placed", json::object())) << what;
   for (const char* end : {"min", "max"})
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(want["bounds"][end][k].get<double>(), got["bounds"][end][k].get<double>(), length) << what << " " << end;
