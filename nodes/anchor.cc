@@ -17,8 +17,9 @@ void declare(NodeDecl& d) {
   d.doc("A named anchor for Extrude's `anchor_k` inputs: a point on every selected footprint edge (`position` "
         "along it) at a height. Extrude resolves it on each selected edge to a position and a frame (along the "
         "edge, up the face, out of it) where that edge's face still exists at the height, or to absent (a "
-        "warning) where the roof has closed over it; Mesh Placement places meshes there by `name`. One anchor "
-        "thus puts a window on every facade, and it follows the footprint and the profiles when they change.")
+        "warning) where the roof has closed over it or where no edge uses `profile`; Mesh Placement places "
+        "meshes there by `name`. One anchor thus puts a window on every facade, and it follows the footprint and "
+        "the profiles when they change.")
       .category("Geometry");
   d.param<std::string>("name").default_value(std::string("window")).doc("what Mesh Placement calls it");
   d.param_enum("mode", {"fraction", "from_start", "from_end"})
