@@ -123,12 +123,8 @@ TEST_P(SweepMixedSteps, OutOrNone) { sweep_corpus(GetParam(), Mix::OutOrNone); }
 TEST_P(SweepMixedSteps, InOrNone) { sweep_corpus(GetParam(), Mix::InOrNone); }
 TEST_P(SweepMixedSteps, DISABLED_OutInOrNone) { sweep_corpus(GetParam(), Mix::All); }
 
-INSTANTIATE_TEST_SUITE_P(Osm, SweepMixedSteps, ::testing::ValuesIn(footprint_corpus_files()), [](const auto& info) {
-  std::string name = info.param.stem().string();
-  for (char& ch : name)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Osm, SweepMixedSteps, ::testing::ValuesIn(footprint_corpus_files()),
+                         [](const auto& info) { return corpus_test_name(info.param); });
 
 }  // namespace
 }  // namespace procex

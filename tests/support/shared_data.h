@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ inline std::vector<std::filesystem::path> footprint_corpus_files() {
     if (entry.path().extension() == ".geojson") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// A corpus file's stem as a test name (GoogleTest takes letters, digits and '_').
+inline std::string corpus_test_name(const std::filesystem::path& file) {
+  std::string name = file.stem().string();
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
 }
 
 }  // namespace procex
