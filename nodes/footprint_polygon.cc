@@ -1,23 +1,47 @@
 // Footprint Polygon: a plan typed in as points.
+#include <nlohmann/json.hpp>
+
 #include "graph/registry.h"
 #include "nodes/values.h"
 
 namespace procex {
 namespace {
 
+using Loops = std::vector<std::vector<Vec2>>;
+
+// "list<list<vec2>>": the holes, each a list of corners.
+const bool kLoopsRegistered = [] {
+  ValueTypeRegistry& r = ValueTypeRegistry::global();
+  if (!r.find(std::type_index(typeid(Loops)))) r.add_list<std::vector<Vec2>>();
+  return true;
+}();
+
+// Version 1 had one hole, `hole` (empty: none).
+void upgrade(int saved_version, nlohmann::json& params) {
+  if (saved_version >= 2) return;
+  auto hole = params.find("hole");
+  if (hole == params.end()) return;
+  nlohmann::json holes = nlohmann::json::array();
+  if (!hole->is_array() || !hole->empty()) holes.push_back(*hole);  // a malformed hole is reported by name when read
+  params.erase(hole);
+  params["holes"] = std::move(holes);
+}
+
 void declare(NodeDecl& d) {
-  d.doc("A plan given as its corners: the outer loop counter-clockwise, optionally one hole (clockwise). "
-        "Orientation mistakes are repaired by Extrude. Edge ids run 0, 1, 2... along the outer loop, then the hole.")
+  d.doc("A plan given as its corners: the outer loop counter-clockwise, and any number of holes (clockwise). "
+        "Orientation mistakes are repaired by Extrude. Edge ids run 0, 1, 2... along the outer loop, then round "
+        "each hole in turn.")
       .category("Footprint");
   d.param<std::vector<Vec2>>("points")
       .default_value(std::vector<Vec2>{{0, 0}, {10, 0}, {10, 8}, {0, 8}})
       .unit("m")
       .doc("corners of the outer loop, x and y in metres");
-  d.param<std::vector<Vec2>>("hole").default_value(std::vector<Vec2>{}).unit("m")
-      .doc("corners of a hole (empty: none)");
+  d.param<Loops>("holes").default_value(Loops{}).unit("m")
+      .doc("the holes (courtyards), each a list of corners, e.g. [[[2, 2], [2, 4], [4, 4], [4, 2]]] (empty: none)");
   d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
       .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)");
   d.output<Footprint>("footprint");
+  d.upgrade(upgrade);
 }
 
 std::vector<glm::dvec2> to_points(const std::vector<Vec2>& v) {
@@ -29,14 +53,17 @@ std::vector<glm::dvec2> to_points(const std::vector<Vec2>& v) {
 
 void evaluate(EvalContext& ctx) {
   const auto& outer = ctx.param<std::vector<Vec2>>(0);
-  const auto& hole = ctx.param<std::vector<Vec2>>(1);
+  const auto& holes = ctx.param<Loops>(1);
   if (outer.size() < 3) return ctx.error("points: a plan needs at least 3 corners, got " + std::to_string(outer.size()));
-  if (!hole.empty() && hole.size() < 3) return ctx.error("hole: needs at least 3 corners (or none), got " + std::to_string(hole.size()));
   std::vector<std::vector<glm::dvec2>> loops = {to_points(outer)};
-  if (!hole.empty()) loops.push_back(to_points(hole));
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    if (holes[i].size() < 3)
+      return ctx.error("holes: hole " + std::to_string(i + 1) + " needs at least 3 corners, got " + std::to_string(holes[i].size()));
+    loops.push_back(to_points(holes[i]));
+  }
   ctx.set_output(0, make_footprint(loops, ctx.param<double>(2)));
 }
 
 }  // namespace
-PROCEX_REGISTER_NODE("Footprint Polygon", 1, declare, evaluate);
+PROCEX_REGISTER_NODE("Footprint Polygon", 2, declare, evaluate);
 }  // namespace procex

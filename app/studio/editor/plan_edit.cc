@@ -22,7 +22,7 @@ std::vector<glm::dvec2> to_dvec(const std::vector<Vec2>& pts) {
   return out;
 }
 
-const char* loop_name(int loop) { return loop == 1 ? "hole" : "outer loop"; }
+std::string loop_name(int loop) { return loop >= 1 ? "hole " + std::to_string(loop) : "outer loop"; }
 
 double distance_to_edges(glm::dvec2 p, const std::vector<glm::dvec2>& loop) {
   double best = std::numeric_limits<double>::infinity();
@@ -37,28 +37,37 @@ double distance_to_edges(glm::dvec2 p, const std::vector<glm::dvec2>& loop) {
 
 }  // namespace
 
-std::optional<PlanIssue> check_plan(const std::vector<Vec2>& outer, const std::vector<Vec2>& hole) {
+std::optional<PlanIssue> check_plan(const std::vector<Vec2>& outer, const PlanLoops& holes) {
   std::vector<std::vector<glm::dvec2>> loops = {to_dvec(outer)};
-  if (!hole.empty()) loops.push_back(to_dvec(hole));
+  for (const auto& h : holes) loops.push_back(to_dvec(h));
   try {
     (void)prepare_footprint(make_footprint(loops, 45.0));
   } catch (const InputError& e) {
-    std::string where = e.loop() >= 0 ? std::string(loop_name(e.loop())) : "plan";
+    std::string where = e.loop() >= 0 ? loop_name(e.loop()) : "plan";
     if (e.vertex() >= 0) where += ", vertex " + std::to_string(e.vertex());
     return PlanIssue{where + ": " + e.what(), e.loop(), e.vertex()};
   }
-  // Loops that neither cross nor touch: the hole is inside when any of its corners is.
-  if (loops.size() == 2 && !point_in_loop(loops[1][0], loops[0]))
-    return PlanIssue{"hole: lies outside the outer loop (it would be a second building, not a courtyard)", 1, 0};
+  // Loops that neither cross nor touch: a hole is inside a loop when any of its corners is.
+  for (int k = 1; k < static_cast<int>(loops.size()); ++k) {
+    const auto& corner = loops[static_cast<std::size_t>(k)][0];
+    if (!point_in_loop(corner, loops[0]))
+      return PlanIssue{loop_name(k) + ": lies outside the outer loop (it would be a second building, not a courtyard)", k, 0};
+    for (int j = 1; j < static_cast<int>(loops.size()); ++j)
+      if (j != k && point_in_loop(corner, loops[static_cast<std::size_t>(j)]))
+        return PlanIssue{loop_name(k) + ": lies inside " + loop_name(j) + " (a building inside a courtyard needs its own footprint)", k, 0};
+  }
   return std::nullopt;
 }
 
-std::vector<Vec2> hole_inside(const std::vector<Vec2>& outer) {
+std::vector<Vec2> hole_inside(const std::vector<Vec2>& outer, const PlanLoops& holes) {
   const std::vector<glm::dvec2> loop = to_dvec(outer);
   if (loop.size() < 3) return {};
+  std::vector<std::vector<glm::dvec2>> others;
+  for (const auto& h : holes)
+    if (h.size() >= 3) others.push_back(to_dvec(h));
   glm::dvec2 lo = loop[0], hi = loop[0];
   for (const glm::dvec2& p : loop) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  // The grid point deepest inside: a square there stays clear of every edge.
+  // The grid point deepest inside, away from the holes too: a square there stays clear of every edge.
   constexpr int kSteps = 24;
   glm::dvec2 best{0.0};
   double best_d = 0;
@@ -66,7 +75,9 @@ std::vector<Vec2> hole_inside(const std::vector<Vec2>& outer) {
     for (int j = 1; j < kSteps; ++j) {
       const glm::dvec2 p = lo + (hi - lo) * glm::dvec2(i, j) / static_cast<double>(kSteps);
       if (!point_in_loop(p, loop)) continue;
-      if (const double d = distance_to_edges(p, loop); d > best_d) best_d = d, best = p;
+      double d = distance_to_edges(p, loop);
+      for (const auto& h : others) d = point_in_loop(p, h) ? 0.0 : std::min(d, distance_to_edges(p, h));
+      if (d > best_d) best_d = d, best = p;
     }
   if (best_d <= 0) return {};
   const double h = best_d * 0.5;  // half the side: the square's corners stay 0.29 d from the edges

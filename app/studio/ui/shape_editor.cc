@@ -100,9 +100,10 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   const auto points_param = param_of_type(*n, "points", typeid(std::vector<Vec2>));
   std::vector<Vec2> pts = points_param ? n->params[*points_param].get<std::vector<Vec2>>() : std::vector<Vec2>{};
   // A plain index, not an optional: g++ 12 wrongly warns an optional's value may be uninitialised here.
-  const std::size_t hole_param = plan_out ? param_of_type(*n, "hole", typeid(std::vector<Vec2>)).value_or(SIZE_MAX) : SIZE_MAX;
-  const bool has_hole_param = hole_param != SIZE_MAX;
-  const std::vector<Vec2> hole = has_hole_param ? n->params[hole_param].get<std::vector<Vec2>>() : std::vector<Vec2>{};
+  const std::size_t holes_param = plan_out ? param_of_type(*n, "holes", typeid(PlanLoops)).value_or(SIZE_MAX) : SIZE_MAX;
+  const bool has_holes_param = holes_param != SIZE_MAX;
+  const PlanLoops holes = has_holes_param ? n->params[holes_param].get<PlanLoops>() : PlanLoops{};
+  if (active_hole_ >= holes.size()) active_hole_ = holes.empty() ? 0 : holes.size() - 1;
 
   // The evaluated plan (all loops, with edge ids, angles and profiles).
   const Footprint* fp = nullptr;
@@ -116,15 +117,31 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     ImGui::TextDisabled("Nothing evaluated yet.");
     return;
   }
-  if (has_hole_param && points_param) {
-    if (hole.empty() ? ImGui::SmallButton("Add hole") : ImGui::SmallButton("Delete hole")) {
-      std::vector<Vec2> next = hole.empty() ? hole_inside(pts) : std::vector<Vec2>{};
-      if (hole.empty() && next.empty()) status = "the outer loop has no inside to put a hole in";
-      else if (Status s = doc.set_param(id, hole_param, Value::make(std::move(next))); !s) status = s.message();
+  if (has_holes_param && points_param) {
+    auto record = [&](const char* name) {
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      buttons_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    };
+    if (ImGui::SmallButton("Add hole")) {
+      PlanLoops next = holes;
+      next.push_back(hole_inside(pts, holes));
+      if (next.back().empty()) status = "no room for another hole inside the outer loop";
+      else if (Status s = doc.set_param(id, holes_param, Value::make(std::move(next))); !s) status = s.message();
+      else active_hole_ = holes.size();
     }
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    buttons_["hole"] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    record("add_hole");
     ImGui::SameLine();
+    if (!holes.empty()) {
+      // The hole whose corner was grabbed last (else the newest).
+      const std::string label = "Delete hole " + std::to_string(active_hole_ + 1);
+      if (ImGui::SmallButton(label.c_str())) {
+        PlanLoops next = holes;
+        next.erase(next.begin() + static_cast<std::ptrdiff_t>(active_hole_));
+        if (Status s = doc.set_param(id, holes_param, Value::make(std::move(next))); !s) status = s.message();
+      }
+      record("delete_hole");
+      ImGui::SameLine();
+    }
   }
   // Anchors feeding the Extrude this plan reaches: drawn on the plan, dragged along their edges.
   const std::optional<NodeId> extrude = plan_out ? extrude_downstream(doc.graph(), id) : std::nullopt;
@@ -250,22 +267,33 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
                       IM_COL32(242, 64, 217, 255));
     dl->AddText(ImVec2(m.at.x + 8, m.at.y + 2), IM_COL32(242, 150, 230, 255), anchor_nodes[m.anchor].name.c_str());
   }
-  // The editable polylines: the points, and a Footprint Polygon's hole.
-  struct Editable {
-    std::size_t param;
-    std::vector<Vec2> pts;
-    bool is_hole;
-  };
-  std::vector<Editable> loops;
-  if (points_param) loops.push_back({*points_param, pts, false});
-  if (!hole.empty()) loops.push_back({hole_param, hole, true});
+  // The editable polylines: the points, and a Footprint Polygon's holes (loop k: hole k, from 1, as check_plan counts).
+  std::vector<std::vector<Vec2>> loops;
+  if (points_param) {
+    loops.push_back(pts);
+    loops.insert(loops.end(), holes.begin(), holes.end());
+  }
   if (plan_out && points_param && check_revision_ != doc.revision()) {
     check_revision_ = doc.revision();
-    issue_ = check_plan(pts, hole);
+    issue_ = check_plan(pts, holes);
+  }
+  for (std::size_t k = 1; k < loops.size(); ++k) {  // each hole named at its centre (hole_K in the ui map), the one Delete hole removes highlighted
+    Vec2 c{0, 0};
+    for (const Vec2& p : loops[k]) c.x += p.x / static_cast<double>(loops[k].size()), c.y += p.y / static_cast<double>(loops[k].size());
+    const ImVec2 at = f.to_screen(c.x, c.y);
+    const std::string name = "hole " + std::to_string(k);
+    const ImVec2 size_text = ImGui::CalcTextSize(name.c_str());
+    const ImVec2 lo(at.x - size_text.x / 2, at.y - size_text.y / 2);
+    // Clicking the name picks the hole for Delete hole, as grabbing one of its corners does.
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && mouse.x >= lo.x && mouse.x <= lo.x + size_text.x && mouse.y >= lo.y &&
+        mouse.y <= lo.y + size_text.y)
+      active_hole_ = k - 1;
+    dl->AddText(lo, k - 1 == active_hole_ ? IM_COL32(255, 170, 40, 255) : IM_COL32(150, 150, 160, 255), name.c_str());
+    buttons_["hole_" + std::to_string(k)] = {lo.x, lo.y, size_text.x, size_text.y};
   }
   std::optional<Grab> near_point;
   for (std::size_t k = 0; k < loops.size(); ++k) {
-    const std::vector<Vec2>& lp = loops[k].pts;
+    const std::vector<Vec2>& lp = loops[k];
     const std::size_t segs = rules.closed ? lp.size() : (lp.empty() ? 0 : lp.size() - 1);
     for (std::size_t e = 0; e < segs && !fp; ++e) {
       const Vec2 a = lp[e], b = lp[(e + 1) % lp.size()];
@@ -281,16 +309,24 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
       if (auto i = nearest_point(lp, mw, tol)) near_point = Grab{k, *i};
   }
   for (std::size_t k = 0; k < loops.size(); ++k)
-    for (std::size_t i = 0; i < loops[k].pts.size(); ++i) {
+    for (std::size_t i = 0; i < loops[k].size(); ++i) {
       const Grab here{k, i};
       const bool hot = dragging_ == here || near_point == here;
       const bool bad = issue_ && issue_->loop == static_cast<int>(k) && issue_->vertex == static_cast<int>(i);
-      const ImVec2 at = f.to_screen(loops[k].pts[i].x, loops[k].pts[i].y);
+      const ImVec2 at = f.to_screen(loops[k][i].x, loops[k][i].y);
       if (bad) dl->AddCircle(at, 10.0f, IM_COL32(235, 70, 60, 255), 0, 2.5f);
       dl->AddCircleFilled(at, hot ? 6.0f : 4.5f, hot ? IM_COL32(255, 170, 40, 255) : bad ? IM_COL32(235, 70, 60, 255) : IM_COL32(240, 240, 240, 255));
     }
   auto apply = [&](std::size_t k, std::vector<Vec2> v) {
-    if (Status s = doc.set_param(id, loops[k].param, Value::make(std::move(v))); !s) status = s.message();
+    Status s = Status::ok();
+    if (k == 0) {
+      s = doc.set_param(id, *points_param, Value::make(std::move(v)));
+    } else {
+      PlanLoops next = holes;
+      next[k - 1] = std::move(v);
+      s = doc.set_param(id, holes_param, Value::make(std::move(next)));
+    }
+    if (!s) status = s.message();
   };
   // A profile's points and its tags (one per segment) change together, as one undo step.
   auto apply_with_tags = [&](std::size_t k, std::vector<Vec2> v, std::vector<std::string> t, const char* label) {
@@ -333,11 +369,12 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   }
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_point && !click_taken) {
     dragging_ = near_point;
+    if (near_point->loop > 0) active_hole_ = near_point->loop - 1;
     doc.begin_gesture(is_profile ? "edit profile" : "edit plan");
   }
   if (dragging_ && dragging_->loop < loops.size()) {
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      const std::vector<Vec2>& lp = loops[dragging_->loop].pts;
+      const std::vector<Vec2>& lp = loops[dragging_->loop];
       // Alt drags freely; otherwise a point snaps level with (or plumb above) its neighbours.
       const Vec2 to = ImGui::GetIO().KeyAlt ? mw : snap_to_neighbours(lp, dragging_->point, mw, tol, rules.closed);
       apply(dragging_->loop, move_point(lp, dragging_->point, to, rules));
@@ -348,14 +385,17 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   }
   if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !near_point && !click_taken && !anchor_tool_)
     for (std::size_t k = 0; k < loops.size(); ++k)
-      if (auto e = nearest_edge(loops[k].pts, mw, tol, rules.closed)) {
-        apply_with_tags(k, insert_point(loops[k].pts, *e, mw, rules), tags_after_insert(tags, profile_segments, *e), "insert point");
+      if (auto e = nearest_edge(loops[k], mw, tol, rules.closed)) {
+        apply_with_tags(k, insert_point(loops[k], *e, mw, rules), tags_after_insert(tags, profile_segments, *e), "insert point");
         break;
       }
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near_point) {
-    auto r = remove_point(loops[near_point->loop].pts, near_point->point, rules);
+    auto r = remove_point(loops[near_point->loop], near_point->point, rules);
     if (r) apply_with_tags(near_point->loop, r.value(), tags_after_remove(tags, profile_segments, near_point->point), "delete point");
-    else status = loops[near_point->loop].is_hole ? "hole: " + r.message() + " (Delete hole removes it)" : r.message();
+    else if (near_point->loop > 0) {
+      active_hole_ = near_point->loop - 1;
+      status = "hole " + std::to_string(near_point->loop) + ": " + r.message() + " (Delete hole " + std::to_string(near_point->loop) + " removes it)";
+    } else status = r.message();
   }
   // A profile segment clicked: its tag is edited in the row above the view.
   if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point)

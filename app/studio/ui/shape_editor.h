@@ -5,8 +5,9 @@
 // their id and angle or profile; click edges to select them (Assign
 // Profiles' `selection` can take them). When the node's plan comes from a
 // `points` parameter (Footprint Polygon), drag vertices, double-click an
-// edge to add one, right-click a vertex to delete it; the same for its hole,
-// which Add hole / Delete hole make and remove. A plan core would refuse is
+// edge to add one, right-click a vertex to delete it; the same for its holes,
+// which Add hole / Delete hole make and remove (any number; Delete removes
+// the hole whose corner was grabbed or whose name was clicked last). A plan core would refuse is
 // flagged at the loop and vertex at fault. The anchors of Anchor nodes wired
 // into the Extrude downstream are drawn on their edges and dragged along them
 // (their `position`); with Place anchor on, a click on an edge adds one.
@@ -43,7 +44,7 @@ class ShapeEditor {
 
  private:
   struct Grab {
-    std::size_t loop = 0, point = 0;  // loop 0: the points, 1: the hole
+    std::size_t loop = 0, point = 0;  // loop 0: the points, k: hole k (from 1)
     bool operator==(const Grab&) const = default;
   };
   NodeId node_ = 0;
@@ -61,6 +62,7 @@ class ShapeEditor {
   };
   std::optional<AnchorDrag> dragging_anchor_;
   bool anchor_tool_ = false;  // a click on an edge places an anchor
+  std::size_t active_hole_ = 0;  // the hole Delete hole removes (index into the holes)
 };
 
 }  // namespace procex::studio

@@ -310,39 +310,52 @@ TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
   fs::remove_all(dir);
 }
 
-// The plan editor's Add hole / Delete hole on a Footprint Polygon, undone.
-TEST(StudioInteraction, AddsAndDeletesAHole) {
+// The plan editor's Add hole / Delete hole on a Footprint Polygon: two
+// holes, the first deleted after its corner was grabbed, undone.
+TEST(StudioInteraction, AddsAndDeletesHoles) {
   const fs::path dir = fresh_dir("hole");
   const fs::path recipe = dir / "polygon.pxg";
   std::ofstream(recipe) << R"({
   "format": "procex-graph", "version": 2, "metadata": {"name": "polygon"}, "inputs": [],
   "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
   "nodes": [
-    {"id": 1, "type": "Footprint Polygon", "version": 1, "params": {"points": [[0, 0], [12, 0], [12, 9], [0, 9]]}},
+    {"id": 1, "type": "Footprint Polygon", "version": 2, "params": {"points": [[0, 0], [24, 0], [24, 9], [0, 9]]}},
     {"id": 2, "type": "Extrude", "version": 1, "params": {}}
   ],
   "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "@mesh"}],
   "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}}}
 })";
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
-  json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("hole"); });
+  json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("add_hole"); });
   const std::size_t faces = map["preview_faces"];
+  EXPECT_FALSE(map["buttons"].contains("delete_hole"));
   std::uint64_t rev = revision(map);
-  click(button_centre(map, "hole"));  // Add hole
-  map = studio.wait("the courtyard evaluated", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > faces; });
+  click(button_centre(map, "add_hole"));
+  map = studio.wait("a courtyard", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > faces; });
+  const std::size_t one_hole = map["preview_faces"];
+  rev = revision(map);
+  click(button_centre(map, "add_hole"));
+  map = studio.wait("two courtyards", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > one_hole; });
   EXPECT_EQ(map["errors"], 0);
   press("ctrl+s");
   studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
-  const auto hole_of = [&] { return load_pxg(recipe).node(1)->params[1].get<std::vector<Vec2>>(); };
-  EXPECT_EQ(hole_of().size(), 4u);
+  const auto holes_of = [&] { return load_pxg(recipe).node(1)->params[1].get<std::vector<std::vector<Vec2>>>(); };
+  const auto two = holes_of();
+  ASSERT_EQ(two.size(), 2u);
   rev = revision(map);
-  click(button_centre(map, "hole"));  // Delete hole
-  map = studio.wait("the hole deleted", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] == faces; });
+  click(button_centre(map, "delete_hole"));  // the newest: hole 2
+  map = studio.wait("hole 2 deleted", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] == one_hole; });
   rev = revision(map);
   press("ctrl+z");
-  studio.wait("the deletion undone", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > faces; });
-  press("ctrl+q");
-  EXPECT_EQ(studio.wait_exit(20s), 0);
+  map = studio.wait("the deletion undone", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] > one_hole; });
+  // Pick hole 1 by its name, then delete it: hole 2 stays.
+  map = studio.wait("both holes named", [](const json& j) { return j["buttons"].contains("hole_1") && j["buttons"].contains("hole_2"); });
+  click(button_centre(map, "hole_1"));
+  rev = revision(map);
+  click(button_centre(map, "delete_hole"));
+  map = studio.wait("hole 1 deleted", [&](const json& j) { return revision(j) > rev && j["settled"] && j["preview_faces"] == one_hole; });
+  save_and_quit(studio);
+  EXPECT_EQ(holes_of(), std::vector<std::vector<Vec2>>{two[1]});
   fs::remove_all(dir);
 }
 
