@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <deque>
 #include <set>
+
+#include "app/studio/editor/downstream.h"
 
 namespace procex::studio {
 
@@ -37,18 +38,8 @@ std::vector<std::int32_t> edge_ids(const std::string& text) {
 }  // namespace
 
 std::optional<NodeId> extrude_downstream(const Graph& g, NodeId from) {
-  std::deque<NodeId> queue = {from};
-  std::set<NodeId> seen = {from};
-  while (!queue.empty()) {
-    const NodeId id = queue.front();
-    queue.pop_front();
-    const Node* n = g.node(id);
-    if (!n) continue;
-    if (n->type->name() == kExtrudeType) return id;
-    for (const Link& l : g.links_from(id))
-      if (l.to.node != kGraphOutputs && seen.insert(l.to.node).second) queue.push_back(l.to.node);
-  }
-  return std::nullopt;
+  const std::vector<NodeId> found = downstream_of_type(g, from, kExtrudeType);
+  return found.empty() ? std::nullopt : std::optional<NodeId>(found.front());
 }
 
 std::vector<AnchorNode> anchors_into(const Graph& g, NodeId extrude) {

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "app/studio/editor/anchor_edit.h"
+#include "app/studio/editor/downstream.h"
+#include "app/studio/editor/offset_edit.h"
 #include "app/studio/editor/polyline_edit.h"
 #include "app/studio/editor/preview_mesh.h"
 #include "core/geom/footprint.h"
@@ -83,6 +85,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     check_revision_ = 0;
     selected_segment_.reset();
     dragging_anchor_.reset();
+    dragging_offset_.reset();
     anchor_tool_ = false;
   }
   const Node* n = id ? doc.graph().node(id) : nullptr;
@@ -110,6 +113,22 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   if (plan_out && eval)
     if (auto it = eval->values.find(PortRef{id, *plan_out}); it != eval->values.end()) fp = &it->second.get<Footprint>();
   std::vector<Vec2> extent = pts;
+  // The Profile Offsets this profile feeds: a handle at each one's step.
+  struct OffsetHandle {
+    NodeId node;
+    std::size_t distance_param, height_param;
+    Vec2 at;
+  };
+  std::vector<OffsetHandle> offsets;
+  if (is_profile)
+    for (NodeId o : downstream_of_type(doc.graph(), id, "Profile Offset")) {
+      const Node& on = *doc.graph().node(o);
+      const auto d = param_of_type(on, "distance", typeid(double));
+      const auto h = param_of_type(on, "height", typeid(double));
+      if (!d || !h) continue;
+      offsets.push_back({o, *d, *h, offset_handle(pts, on.params[*d].get<double>(), on.params[*h].get<double>())});
+      extent.push_back(offsets.back().at);
+    }
   if (fp)
     for (const Loop& l : fp->loops)
       for (const auto& p : l.points) extent.push_back({p.x, p.y});
@@ -341,13 +360,44 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
     return len2 > 0 ? std::clamp(((mw.x - a.x) * dx + (mw.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
   };
-  bool click_taken = false;  // by an anchor: no vertex drag, edge selection or segment under it
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_mark) {
+  bool click_taken = false;  // by an anchor or an offset handle: no vertex drag, edge selection or segment under it
+  // Profile Offset handles: the step drawn from the profile out to the handle.
+  std::optional<std::size_t> near_offset;
+  for (std::size_t i = 0; i < offsets.size(); ++i) {
+    const OffsetHandle& o = offsets[i];
+    const ImVec2 at = f.to_screen(o.at.x, o.at.y);
+    const ImVec2 from = f.to_screen(profile_offset_at(pts, o.at.y), o.at.y);
+    if (hovered && !dragging_ && !near_offset && std::hypot(at.x - mouse.x, at.y - mouse.y) < 8.0) near_offset = i;
+    const bool hot = near_offset == i || dragging_offset_ == o.node;
+    dl->AddLine(from, at, IM_COL32(120, 220, 160, 255), 2.0f);
+    dl->AddRectFilled(ImVec2(at.x - 5, at.y - 5), ImVec2(at.x + 5, at.y + 5), hot ? IM_COL32(255, 170, 40, 255) : IM_COL32(120, 220, 160, 255));
+    const std::string label = "offset #" + std::to_string(o.node);
+    dl->AddText(ImVec2(at.x + 8, at.y - 16), IM_COL32(170, 230, 190, 255), label.c_str());
+    buttons_["offset_" + std::to_string(o.node)] = {at.x, at.y, 0.0f, 0.0f};
+  }
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_offset) {
+    dragging_offset_ = offsets[*near_offset].node;
+    doc.begin_gesture("move profile offset");
+    click_taken = true;
+  }
+  if (dragging_offset_) {
+    const auto it = std::find_if(offsets.begin(), offsets.end(), [&](const OffsetHandle& o) { return o.node == *dragging_offset_; });
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && it != offsets.end()) {
+      const OffsetParams p = offset_params(pts, mw, *doc.graph().node(it->node));
+      for (const auto& [param, v] : {std::pair{it->distance_param, p.distance}, std::pair{it->height_param, p.height}})
+        if (Status st = doc.set_param(it->node, param, Value::make(v)); !st) status = st.message();
+    } else {
+      dragging_offset_.reset();
+      doc.end_gesture();
+    }
+    click_taken = true;
+  }
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && near_mark && !click_taken) {
     const AnchorMark& m = marks[*near_mark];
     dragging_anchor_ = AnchorDrag{anchor_nodes[m.anchor].node, m.a, m.b};
     doc.begin_gesture("move anchor");
     click_taken = true;
-  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && anchor_tool_ && hover_edge && hover_segment) {
+  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && anchor_tool_ && hover_edge && hover_segment && !click_taken) {
     const auto [a, b] = *hover_segment;
     if (Result<NodeId> r = place_anchor(doc, id, *hover_edge, fraction_at(a, b)); !r) status = r.message();
     else status = "placed an anchor on edge " + std::to_string(*hover_edge) + " (Anchor #" + std::to_string(*r) + ")";
@@ -398,7 +448,7 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
     } else status = r.message();
   }
   // A profile segment clicked: its tag is edited in the row above the view.
-  if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point)
+  if (profile_segments > 0 && tags.size() == profile_segments && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !near_point && !click_taken)
     selected_segment_ = nearest_edge(pts, mw, tol, false);  // the field appears next frame
   // Edge selection (plan only), e.g. for Assign Profiles' `selection`.
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !dragging_ && hover_edge && !click_taken) {

@@ -14,7 +14,9 @@
 // Profile: a Profile node's `points` polyline in (offset, height), segments
 // labelled with their tags (click a segment to edit its tag; adding and
 // deleting points keeps one tag per segment); dragging keeps it monotone and (0, 0) fixed,
-// and snaps a point level with a neighbour (a soffit or ledge) or plumb.
+// and snaps a point level with a neighbour (a soffit or ledge) or plumb. The
+// Profile Offsets the profile feeds show their step as a handle at
+// (the profile's offset at `height` + `distance`, `height`); dragging it edits both.
 // Every change is a set_param on the document, one undo step per drag.
 #pragma once
 
@@ -62,6 +64,7 @@ class ShapeEditor {
   };
   std::optional<AnchorDrag> dragging_anchor_;
   bool anchor_tool_ = false;  // a click on an edge places an anchor
+  std::optional<NodeId> dragging_offset_;  // a Profile Offset whose handle is dragged
   std::size_t active_hole_ = 0;  // the hole Delete hole removes (index into the holes)
 };
 

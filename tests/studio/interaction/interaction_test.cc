@@ -441,5 +441,36 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
   fs::remove_all(dir);
 }
 
+// The profile editor shows a Profile Offset's step as a handle: dragged up
+// and out, it sets the offset's height and distance; undone in one step.
+TEST(StudioInteraction, DragsAProfileOffsetHandle) {
+  const fs::path dir = fresh_dir("offset");
+  const fs::path recipe = dir / "profile_offset.pxg";
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "profile_offset.pxg", recipe);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
+  json map = studio.wait("the offset handle", [](const json& j) { return j["settled"] && j["buttons"].contains("offset_5"); });
+  std::uint64_t rev = revision(map);
+  const auto at = button_centre(map, "offset_5");
+  drag(at, {at.first + 25, at.second - 30});
+  map = studio.wait("the offset moved", [&](const json& j) { return revision(j) > rev && j["settled"]; });
+  EXPECT_EQ(map["errors"], 0);
+  press("ctrl+s");
+  map = studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  const auto offset = [&](const char* name) {
+    const Graph g = load_pxg(recipe);
+    const Node* n = g.node(5);
+    return n->params[*n->decl().param_index(name)].get<double>();
+  };
+  EXPECT_GT(offset("height"), 4.2);
+  EXPECT_GT(offset("distance"), 0.9);
+  rev = revision(map);
+  press("ctrl+z");
+  studio.wait("the drag undone", [&](const json& j) { return revision(j) > rev && j["settled"]; });
+  save_and_quit(studio);
+  EXPECT_DOUBLE_EQ(offset("height"), 4.0);
+  EXPECT_DOUBLE_EQ(offset("distance"), 0.8);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
