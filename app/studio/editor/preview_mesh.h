@@ -60,7 +60,7 @@ struct PreviewMesh {
   // meshes: a small square on the face (triangles) and the frame's axes
   // along, up and out (lines, red, green, blue).
   std::vector<float> marker_triangles, marker_lines;
-  static constexpr glm::vec3 kAnchorColor{0.95f, 0.25f, 0.85f};
+  static constexpr glm::vec3 kAnchorColor{1.0f, 0.85f, 0.1f};  // no tag colour is this saturated a yellow
 
   static constexpr std::size_t kFloatsPerVertex = 9;
   std::size_t vertex_count() const { return vertices.size() / kFloatsPerVertex; }

@@ -278,13 +278,15 @@ void ShapeEditor::draw(Document& doc, const EvalSnapshot* eval, std::string& sta
   if (hovered && !dragging_)
     for (std::size_t i = 0; i < marks.size() && !near_mark; ++i)
       if (std::hypot(marks[i].at.x - mouse.x, marks[i].at.y - mouse.y) < 8.0) near_mark = i;
+  const glm::vec3 anchor_rgb = PreviewMesh::kAnchorColor;  // as the preview's markers
+  const ImU32 anchor_u32 = ImGui::ColorConvertFloat4ToU32(ImVec4(anchor_rgb.r, anchor_rgb.g, anchor_rgb.b, 1.0f));
   for (std::size_t i = 0; i < marks.size(); ++i) {
     const AnchorMark& m = marks[i];
     const bool hot = near_mark == i || (dragging_anchor_ && dragging_anchor_->node == anchor_nodes[m.anchor].node);
     const float r = hot ? 7.0f : 5.5f;
     dl->AddQuadFilled(ImVec2(m.at.x, m.at.y - r), ImVec2(m.at.x + r, m.at.y), ImVec2(m.at.x, m.at.y + r), ImVec2(m.at.x - r, m.at.y),
-                      IM_COL32(242, 64, 217, 255));
-    dl->AddText(ImVec2(m.at.x + 8, m.at.y + 2), IM_COL32(242, 150, 230, 255), anchor_nodes[m.anchor].name.c_str());
+                      anchor_u32);
+    dl->AddText(ImVec2(m.at.x + 8, m.at.y + 2), IM_COL32(255, 230, 140, 255), anchor_nodes[m.anchor].name.c_str());
   }
   // The editable polylines: the points, and a Footprint Polygon's holes (loop k: hole k, from 1, as check_plan counts).
   std::vector<std::vector<Vec2>> loops;
