@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/geom/predicates.h"
+#include "core/geom/segment_intersections.h"
 #include "core/sweep/anchor_event.h"
 #include "core/sweep/driver.h"
 #include "core/sweep/horizontal_event.h"
@@ -119,6 +121,37 @@ std::vector<int> emit_lobes(State& st, int e, const std::vector<StepPoint>& pts,
   return lobes;
 }
 
+// Where the step's polyline (in world coordinates) would meet the live loops
+// outside the part of span c it replaces, or itself: a loop that is not
+// simple. Empty if it meets nothing.
+template <class World>
+std::string crossing(State& st, int c, const std::vector<glm::dvec2>& shape, const World& world) {
+  const double z = st.height;
+  std::vector<glm::dvec2> w;
+  for (glm::dvec2 p : shape) w.push_back(world(p));
+  const std::size_t m = w.size() - 1;
+  const int d = st.corners[c].next;
+  // The host span's parts on either side of the step, then every other span.
+  std::vector<std::pair<Segment2, std::int32_t>> others{{{st.position(c, z), w.front()}, -1},
+                                                        {{w.back(), st.position(d, z)}, -1}};
+  for (int k = 0; k < static_cast<int>(st.corners.size()); ++k)
+    if (st.corners[k].alive && k != c)
+      others.push_back({{st.position(k, z), st.position(st.corners[k].next, z)},
+                        st.edges[st.corners[k].next_edge].source_id});
+  for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t o = 0; o < others.size(); ++o) {
+      if ((o == 0 && j == 0) || (o == 1 && j + 1 == m)) continue;  // they meet where the step starts or ends
+      const Segment2& s = others[o].first;
+      if (segments_intersect(w[j], w[j + 1], s.a, s.b))
+        return o < 2 ? "runs back across the edge it stands on"
+                     : "crosses the building's outline (edge " + std::to_string(others[o].second) + ")";
+    }
+    for (std::size_t k = j + 2; k < m; ++k)
+      if (segments_intersect(w[j], w[j + 1], w[k], w[k + 1])) return "crosses itself";
+  }
+  return {};
+}
+
 }  // namespace
 
 PlanEditEvents::PlanEditEvents(const State& st, const std::vector<Profile>& profiles) : profiles_(&profiles) {
@@ -201,6 +234,12 @@ void PlanEditEvents::apply(State& st, EventQueue& queue, ProfileEvents& profile_
       r.reason = "its segment " + std::to_string(j) + " is shorter than the sweep's resolution";
       return;
     }
+
+  if (const std::string where = crossing(st, c, shape, world); !where.empty()) {
+    r.reason = "its shape " + where + " at height " + std::to_string(z) +
+               (natural ? "" : "; a natural step grows round what it meets");
+    return;
+  }
 
   // The step's points (with a vertex where it crosses the old line) and its new edges.
   std::vector<StepPoint> pts;

@@ -49,6 +49,22 @@ bool inside(const std::vector<glm::dvec2>& poly, glm::dvec2 q) {
   throw SweepError(msg.str(), p.z, {f.source_edge});
 }
 
+// A chained loop that passes a vertex twice (two parts of a face touching
+// there, the sharpest turn leading into the other part) is two loops.
+void split_at_repeats(std::vector<std::uint32_t> loop, std::vector<std::vector<std::uint32_t>>& out) {
+  std::map<std::uint32_t, std::size_t> seen;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const auto [it, fresh] = seen.try_emplace(loop[i], i);
+    if (fresh) continue;
+    const auto first = loop.begin() + static_cast<std::ptrdiff_t>(it->second);
+    const auto again = loop.begin() + static_cast<std::ptrdiff_t>(i);
+    split_at_repeats({first, again}, out);
+    loop.erase(first, again);
+    return split_at_repeats(std::move(loop), out);
+  }
+  out.push_back(std::move(loop));
+}
+
 // Chains a face's half-edges into closed loops. Where the face touches itself
 // at a vertex, the loop takes the sharpest turn, so each loop stays simple.
 std::vector<std::vector<std::uint32_t>> chain_loops(const State& st, const FaceGroup& f) {
@@ -98,7 +114,7 @@ std::vector<std::vector<std::uint32_t>> chain_loops(const State& st, const FaceG
       if (best == start) break;
       h = best;
     }
-    loops.push_back(std::move(loop));
+    split_at_repeats(std::move(loop), loops);
   }
   return loops;
 }
@@ -107,7 +123,6 @@ std::vector<std::vector<std::uint32_t>> chain_loops(const State& st, const FaceG
 
 Surface build_surface(const State& st) {
   Surface s;
-  s.vertices = st.vertices;
   for (const FaceGroup& f : st.faces) {
     const FaceFrame fr = frame_of(f);
     std::vector<std::vector<std::uint32_t>> outers, holes;
@@ -142,6 +157,22 @@ Surface build_surface(const State& st) {
     }
     for (auto& m : made) s.faces.push_back(std::move(m));
   }
+  // Vertices no face uses (a plan edit's sliver absorbed by the face it grew
+  // into, loops of no area) are left out, the rest keep their order.
+  constexpr std::uint32_t kUnused = UINT32_MAX;
+  std::vector<std::uint32_t> index(st.vertices.size(), kUnused);
+  for (const SurfaceFace& f : s.faces)
+    for (const auto& loop : f.loops)
+      for (std::uint32_t v : loop) index[v] = 0;
+  s.vertices.clear();
+  for (std::size_t v = 0; v < index.size(); ++v)
+    if (index[v] != kUnused) {
+      index[v] = static_cast<std::uint32_t>(s.vertices.size());
+      s.vertices.push_back(st.vertices[v]);
+    }
+  for (SurfaceFace& f : s.faces)
+    for (auto& loop : f.loops)
+      for (std::uint32_t& v : loop) v = index[v];
   return s;
 }
 

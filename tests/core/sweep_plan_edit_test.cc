@@ -203,6 +203,24 @@ TEST(PlanEdits, AStepThatDoesNotFitIsAbsent) {
   EXPECT_FALSE(s.plan_edits[1].present);
 }
 
+TEST(PlanEdits, AForcedStepThatWouldCrossTheBuildingIsAbsent) {
+  // A U with a 4 m courtyard: a bay 6 m out of the inner wall of one arm
+  // would run through the other arm's wall (edge 5, x = 4).
+  const Footprint u = make_footprint({{{0, 0}, {12, 0}, {12, 10}, {8, 10}, {8, 4}, {4, 4}, {4, 10}, {0, 10}}}, 0.0);
+  const Surface s = sweep_edits(u, {forced("through", 0.5, 2.0, {{-1, 0}, {-1, 6}, {1, 6}, {1, 0}},
+                                           {vertical(10), vertical(11), vertical(12)}, {3}),
+                                    forced("zigzag", 0.5, 2.0, {{-1, 0}, {1, 1}, {1, -1}, {-1, 1}, {1.5, 0}},
+                                           {vertical(10), vertical(11), vertical(12), vertical(13)}, {0})},
+                                5.0);
+  expect_valid(s);
+  ASSERT_EQ(s.plan_edits.size(), 2u);
+  EXPECT_FALSE(s.plan_edits[0].present);
+  EXPECT_NE(s.plan_edits[0].reason.find("crosses the building's outline (edge 5)"), std::string::npos)
+      << s.plan_edits[0].reason;
+  EXPECT_FALSE(s.plan_edits[1].present);
+  EXPECT_NE(s.plan_edits[1].reason.find("crosses itself"), std::string::npos) << s.plan_edits[1].reason;
+}
+
 TEST(PlanEdits, AboveTheRoofIsAbsent) {
   const Surface s = sweep_edits(house(), {forced("sky", 0.5, 20.0, kBay, {vertical(10), vertical(11), vertical(12)})});
   ASSERT_EQ(s.plan_edits.size(), 1u);

@@ -11,6 +11,16 @@
 namespace procex {
 namespace {
 
+// A 2 x 1 bay at 1 m in the middle of every edge.
+PlanEditSpec bay_edit() {
+  PlanEdit bay;
+  bay.kind = PlanEdit::Kind::Natural;
+  bay.width = 2.0;
+  bay.depth = 1.0;
+  bay.edges.assign(3, EdgeSpec{0.0, -1, -1});
+  return {{{"bay", {}, 1.0, -1, {}}, ""}, {bay}, {}};
+}
+
 const std::filesystem::path kNodesDir = std::filesystem::path(PROCEX_SAMPLES) / ".." / "nodes";
 
 bool from_nodes_dir(const NodeType& t) { return registered_in(t, kNodesDir); }
@@ -52,6 +62,7 @@ TEST(NodeRegistration, EveryTypeConforms) {
       {&value_type<std::vector<Profile>>(), Value::make(std::vector<Profile>{wall, Profile::straight(40, 20)})},
       {&value_type<MeshSet>(), Value::make(mesh)},
       {&value_type<AnchorSpec>(), Value::make(AnchorSpec{{"window", {}, 1.0, -1, {}}, ""})},
+      {&value_type<PlanEditSpec>(), Value::make(bay_edit())},
   };
   for (const auto& t : NodeRegistry::global().all()) {
     if (!from_nodes_dir(*t)) continue;
