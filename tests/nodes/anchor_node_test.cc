@@ -128,6 +128,21 @@ TEST(ExtrudeAnchors, UnknownProfileNameListsTheFootprintsProfiles) {
       << messages(r);
 }
 
+TEST(ExtrudeAnchors, ResolvesOnTheListedEdgesOnly) {
+  AnchoredExtrude t;
+  t.set("edges", Value::make(std::string("3, 1")));
+  t.set("mode", Value::make(EnumValue{"from_start"}));
+  t.set("position", Value::make(1.0));
+  const EvalResult r = t.run();
+  ASSERT_TRUE(r.ok()) << messages(r);
+  const auto& anchors = r.output("mesh")->get<MeshSet>().parts.at(0).anchors;
+  ASSERT_EQ(anchors.size(), 2u);
+  EXPECT_EQ(anchors[0].edge_id, 1);  // in the footprint's order
+  EXPECT_EQ(anchors[1].edge_id, 3);
+  EXPECT_NEAR(glm::distance(anchors[0].frame.origin, glm::dvec3(10, 1, 1)), 0, 1e-9);  // 1 m from (10, 0)
+  EXPECT_NEAR(glm::distance(anchors[1].frame.origin, glm::dvec3(0, 5, 1)), 0, 1e-9);   // 1 m from (0, 6)
+}
+
 TEST(ExtrudeAnchors, UnknownEdgeIdListsTheFootprintsIds) {
   AnchoredExtrude t;
   t.set("edges", Value::make(std::string("1, 7")));
