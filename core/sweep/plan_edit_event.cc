@@ -190,12 +190,18 @@ std::vector<ResolvedAnchor> PlanEditEvents::finish() {
 }
 
 void PlanEditEvents::apply_next(State& st, EventQueue& queue, ProfileEvents& profile_events) {
-  const std::size_t i = order_[next_++];
-  apply(st, queue, profile_events, requests_[i], out_[i]);
+  // Every request at this height is spliced in before any step grows, so the
+  // footprint (or the cross-section) takes them all as they were placed.
+  const double z = next_height();
+  Batch batch;
+  while (!empty() && next_height() <= z + st.tol().height()) {
+    const std::size_t i = order_[next_++];
+    splice(st, requests_[i], out_[i], batch);
+  }
+  finish_batch(st, queue, profile_events, batch);
 }
 
-void PlanEditEvents::apply(State& st, EventQueue& queue, ProfileEvents& profile_events, const Request& q,
-                           ResolvedAnchor& r) {
+void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batch& batch) {
   const PlanEdit& edit = st.options().plan_edits[q.edit];
   const double z = st.height;
   const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, r.reason, edit.offset);
@@ -312,50 +318,64 @@ void PlanEditEvents::apply(State& st, EventQueue& queue, ProfileEvents& profile_
   r.span_from = {st.position(c, z), z};
   r.span_to = {st.position(d, z), z};
 
-  if (natural) {
-    // Grow the sliver to the step's depth: the front moves out (or in), the
-    // sides spread; the run's nested sweep keeps the loops simple.
-    std::map<int, SourceStep> steps;
-    const double out = edit.depth - sliver;
-    const double side = edit.depth > 0.0 ? edit.spread : -edit.spread;
-    for (std::size_t j = 0; j < new_sources.size(); ++j) {
-      const int s = new_sources[j];
-      const Edge& ne = st.edges[st.sources[s].edge];
-      steps[s] = {j == 1 ? -out : -side, edit.tag, ne.plane.k, st.faces[ne.face].tag};
-    }
+  batch.new_sources.insert(batch.new_sources.end(), new_sources.begin(), new_sources.end());
+  batch.new_edges.insert(batch.new_edges.end(), new_edges.begin(), new_edges.end());
+  if (!natural) {
+    batch.made.insert(batch.made.end(), made.begin(), made.end());
+    return;
+  }
+  // The sliver grows to the step's depth in the batch's horizontal run: the
+  // front moves out (or in), the sides spread.
+  const double out = edit.depth - sliver;
+  const double side = edit.depth > 0.0 ? edit.spread : -edit.spread;
+  for (std::size_t j = 0; j < new_sources.size(); ++j) {
+    const int s = new_sources[j];
+    const Edge& ne = st.edges[st.sources[s].edge];
+    batch.steps[s] = {j == 1 ? -out : -side, edit.tag, ne.plane.k, st.faces[ne.face].tag};
+  }
+  if (!lobes.empty()) batch.slivers.push_back({lobes.front(), {pts[1].v, pts[2].v}});
+}
+
+void PlanEditEvents::finish_batch(State& st, EventQueue& queue, ProfileEvents& profile_events, Batch& batch) {
+  const double z = st.height;
+  if (!batch.steps.empty()) {
+    // One nested sweep grows every natural step at this height; it remakes
+    // and schedules every corner, the forced steps' too.
     const std::size_t before = st.faces.size();
-    apply_horizontal_run(st, queue, steps);
-    // At the footprint the grown floor (or the recess's ceiling) is part of
-    // the base; above it the sliver joins the floor grown from its front.
+    apply_horizontal_run(st, queue, batch.steps);
+    // At the footprint the grown floors (or the recesses' ceilings) are part
+    // of the base; above it each sliver joins the floor grown from its front.
     for (std::size_t f = before; f < st.faces.size(); ++f) {
-      FaceGroup& grown = st.faces[f];
-      if (grown.outward.z == 0.0) continue;
-      auto& hs = grown.half_edges;
+      auto& hs = st.faces[f].half_edges;
+      if (st.faces[f].outward.z == 0.0) continue;
       if (z <= st.tol().height()) {
         auto& base = st.faces[st.base_face].half_edges;
         base.insert(base.end(), hs.begin(), hs.end());
         hs.clear();
         continue;
       }
-      const bool from_front = std::any_of(hs.begin(), hs.end(),
-                                          [&](const HalfEdge& h) { return h.from == pts[1].v && h.to == pts[2].v; });
-      if (!from_front || lobes.empty()) continue;
-      auto& sliver_face = st.faces[lobes.front()].half_edges;
-      hs.insert(hs.end(), sliver_face.begin(), sliver_face.end());
-      sliver_face.clear();
+      for (const Sliver& sl : batch.slivers) {
+        const bool from_front = std::any_of(hs.begin(), hs.end(), [&](const HalfEdge& h) {
+          return h.from == sl.front.from && h.to == sl.front.to;
+        });
+        if (!from_front) continue;
+        auto& sliver_face = st.faces[sl.face].half_edges;
+        hs.insert(hs.end(), sliver_face.begin(), sliver_face.end());
+        sliver_face.clear();
+      }
     }
   } else {
     std::vector<char> fresh(st.corners.size(), 0);
-    for (int k : settle(st, made)) {
+    for (int k : settle(st, batch.made)) {
       queue.schedule(st, k);
       queue.schedule_edge_event(st, st.corners[k].prev);
       fresh[k] = 1;
     }
     // Corners elsewhere may cut into the new edges.
     for (int k = 0; k < static_cast<int>(fresh.size()); ++k)
-      if (st.corners[k].alive && !fresh[k]) queue.schedule_splits(st, k, new_edges);
+      if (st.corners[k].alive && !fresh[k]) queue.schedule_splits(st, k, batch.new_edges);
   }
-  for (int s : new_sources) profile_events.schedule(st, s);
+  for (int s : batch.new_sources) profile_events.schedule(st, s);
 }
 
 }  // namespace procex::engine

@@ -7,10 +7,12 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <vector>
 
 #include "core/geom/plan_edit.h"
 #include "core/sweep/event_queue.h"
+#include "core/sweep/horizontal_event.h"
 #include "core/sweep/profile_event.h"
 
 namespace procex::engine {
@@ -24,7 +26,7 @@ class PlanEditEvents {
 
   bool empty() const { return next_ == order_.size(); }
   double next_height() const;
-  // Inserts the lowest pending request (st.height is at its height).
+  // Inserts the requests at the lowest pending height (st.height is there).
   void apply_next(State& st, EventQueue& queue, ProfileEvents& profile_events);
   // Where each request was applied, or why not (requests above the roof are absent).
   std::vector<ResolvedAnchor> finish();
@@ -35,7 +37,20 @@ class PlanEditEvents {
     int source;
     double height;
   };
-  void apply(State& st, EventQueue& queue, ProfileEvents& profile_events, const Request& q, ResolvedAnchor& r);
+  // A natural step's sliver: its horizontal face and its front's bottom.
+  struct Sliver {
+    int face;
+    HalfEdge front;
+  };
+  // What the splices at one height leave to do.
+  struct Batch {
+    std::map<int, SourceStep> steps;  // natural steps' growth
+    std::vector<Sliver> slivers;
+    std::vector<int> made;            // forced steps' corners
+    std::vector<int> new_edges, new_sources;
+  };
+  void splice(State& st, const Request& q, ResolvedAnchor& r, Batch& batch);
+  void finish_batch(State& st, EventQueue& queue, ProfileEvents& profile_events, Batch& batch);
 
   const std::vector<Profile>* profiles_;
   std::vector<Request> requests_;

@@ -143,6 +143,26 @@ TEST(PlanEdits, NaturalStepOnTheFootprintIsPartOfTheBase) {
   EXPECT_EQ(faces_per_tag(s).count("step"), 0u);
 }
 
+TEST(PlanEdits, StepsAtOneHeightAreSplicedBeforeAnyGrows) {
+  // At the footprint: two natural bays side by side on the front and a forced
+  // recess at the back; at 2 m a third bay between the first two.
+  std::vector<PlanEdit> edits;
+  for (double offset : {-5.0, 5.0}) {
+    edits.push_back(natural("bay", 0.5, 0.0, 3.0, 1.0, {vertical(10), vertical(11), vertical(12)}));
+    edits.back().offset = offset;
+  }
+  edits.push_back(forced("recess", 0.5, 0.0, {{-0.75, 0}, {-0.75, -0.8}, {0.75, -0.8}, {0.75, 0}},
+                         {vertical(20), vertical(21), vertical(22)}, {2}));
+  edits.push_back(natural("oriel", 0.5, 2.0, 2.0, 1.0, {vertical(30), vertical(31), vertical(32)}));
+  const Surface s = sweep_edits(box(), edits, 6.0);
+  const auto c = expect_valid(s);
+  for (const ResolvedAnchor& r : s.plan_edits) EXPECT_TRUE(r.present) << r.name << ": " << r.reason;
+  EXPECT_NEAR(c.volume, 20 * 10 * 6 + 2 * 3 * 1 * 6 - 1.5 * 0.8 * 6 + 2 * 1 * 4, 1e-6);
+  int bases = 0;
+  for (const SurfaceFace& f : s.faces) bases += f.kind == FaceKind::Base;
+  EXPECT_EQ(bases, 1);
+}
+
 TEST(PlanEdits, NaturalStepStaysSimpleWhereItRunsIntoTheBuilding) {
   // A U-shaped footprint with a 4 m wide courtyard: a bay 6 m deep out of
   // the inner wall of the right arm (edge 3, x = 8) would cut through the
