@@ -211,6 +211,39 @@ TEST(PlanEdits, RowOfDormersAndAnInverseDormer) {
   EXPECT_EQ(faces_per_tag(s).at("recess wall"), 3);
 }
 
+TEST(PlanEdits, EditsFollowTheFootprint) {
+  // One bay in the middle of every wall at 1 m, on a rectangle and an L; then
+  // the rectangle's corner (20, 10) moves to (26, 12): the bays of its two
+  // edges move to their new middles, the others stay.
+  auto bays = [](const Footprint& fp) {
+    PlanEdit e = natural("bay", 0.5, 1.0, 1.0, 0.5, {vertical(10), vertical(11), vertical(12)}, {});
+    const Surface s = sweep_edits(fp, {e}, 4.0);
+    expect_valid(s);
+    std::vector<glm::dvec3> at;
+    for (const ResolvedAnchor& r : s.plan_edits) {
+      EXPECT_TRUE(r.present) << r.reason;
+      at.push_back(r.frame.origin);
+    }
+    return at;
+  };
+  const Footprint rect = make_footprint({{{0, 0}, {20, 0}, {20, 10}, {0, 10}}}, 0.0);
+  const Footprint moved = make_footprint({{{0, 0}, {20, 0}, {26, 12}, {0, 10}}}, 0.0);
+  const Footprint l = make_footprint({{{0, 0}, {12, 0}, {12, 4}, {4, 4}, {4, 12}, {0, 12}}}, 0.0);
+  const auto a = bays(rect), b = bays(moved), c = bays(l);
+  ASSERT_EQ(a.size(), 4u);
+  ASSERT_EQ(b.size(), 4u);
+  ASSERT_EQ(c.size(), 6u);
+  EXPECT_EQ(a[0], glm::dvec3(10, 0, 1));
+  EXPECT_EQ(b[0], a[0]);
+  EXPECT_NEAR(b[1].x, 23.0, 1e-9);
+  EXPECT_NEAR(b[1].y, 6.0, 1e-9);
+  EXPECT_NEAR(b[2].x, 13.0, 1e-9);
+  EXPECT_NEAR(b[2].y, 11.0, 1e-9);
+  EXPECT_EQ(b[3], a[3]);
+  EXPECT_NEAR(c[2].x, 8.0, 1e-9);  // the L's inner wall (12, 4) -> (4, 4)
+  EXPECT_NEAR(c[2].y, 4.0, 1e-9);
+}
+
 TEST(PlanEdits, AStepThatDoesNotFitIsAbsent) {
   // 30 m wide on a 20 m wall; and on the roof at 7 m where the front edge is 10 m long.
   const Surface s = sweep_edits(house(), {natural("too wide", 0.5, 1.0, 30.0, 1.0, {vertical(10), vertical(11), vertical(12)}),
