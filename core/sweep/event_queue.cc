@@ -6,13 +6,22 @@
 #include <glm/geometric.hpp>
 
 namespace procex::engine {
+namespace {
 
-void EventQueue::push(State& st, const Candidate& c) {
-  // A meeting point below the sweep plane means the planes diverge from here.
-  if (c.z < st.height - st.tol().height()) return;
-  Candidate k = c;
-  if (k.z < st.height) k.z = st.height;
-  heap_.push(k);
+// Only a reflex corner cuts into its own loop; where planes lean out, any
+// corner can also meet another polygon growing towards it.
+bool may_split(const State& st, int c) {
+  const Corner& k = st.corners[c];
+  return st.any_outward || k.motion != Motion::Regular || st.reflex(c);
+}
+
+}  // namespace
+
+bool EventQueue::EntryLater::operator()(const Entry& a, const Entry& b) const {
+  const Candidate &x = a.candidate, &y = b.candidate;
+  if (x.z != y.z) return x.z > y.z;
+  if (x.corner != y.corner) return x.corner > y.corner;
+  return x.edge > y.edge;
 }
 
 void EventQueue::schedule_edge_event(State& st, int c) {
@@ -27,45 +36,144 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   const double rate = glm::dot(st.corners[n].velocity - k.velocity, d);
   if (!(rate < 0.0)) return;
   const double at = z - length / rate;
+  // A meeting point below the sweep plane means the planes diverge from here.
+  if (at < z - st.tol().height()) return;
   // Two corners made at one collision meet there because of it.
   if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
-  push(st, {at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
+  heap_.push({{std::max(at, z), 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone}, kNone});
+}
+
+void EventQueue::Targets::clear() {
+  edge.clear();
+  nx.clear();
+  ny.clear();
+  k.clear();
+  c.clear();
+}
+
+void EventQueue::Targets::add(int e, const Plane& pl) {
+  edge.push_back(e);
+  nx.push_back(pl.n.x);
+  ny.push_back(pl.n.y);
+  k.push_back(pl.k);
+  c.push_back(pl.c);
+}
+
+void EventQueue::refresh_live(State& st) {
+  const std::size_t corners = st.corners.size();
+  if (corners == live_corners_) return;
+  // Listing only the edges of new corners is O(1) per corner; the edges that
+  // lost their spans are dropped by a full pass once half as many corners
+  // came.
+  if (corners - rebuilt_at_ > std::max<std::size_t>(64, live_.edge.size() / 2)) {
+    live_.clear();
+    listed_.assign(st.edges.size(), 0);
+    for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
+      if (!st.spans(e).empty()) list_live(st, e);
+    rebuilt_at_ = live_corners_ = corners;
+    return;
+  }
+  listed_.resize(st.edges.size(), 0);
+  for (std::size_t c = live_corners_; c < corners; ++c)
+    if (st.corners[c].alive) list_live(st, st.corners[c].next_edge);
+  live_corners_ = corners;
+}
+
+void EventQueue::list_live(const State& st, int e) {
+  if (listed_[e]) return;
+  listed_[e] = 1;
+  live_.add(e, st.edges[e].plane);
 }
 
 void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
   schedule_edge_event(st, c);
-  std::vector<int> all;
-  for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
-    if (!st.spans(e).empty()) all.push_back(e);
-  schedule_splits(st, c, all, resolved);
+  if (!may_split(st, c)) return;
+  refresh_live(st);
+  add_splits(st, c, live_, resolved);
 }
 
 void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
+  if (!may_split(st, c)) return;
+  some_.clear();
+  for (int e : edges) some_.add(e, st.edges[e].plane);
+  add_splits(st, c, some_, resolved);
+}
+
+void EventQueue::add_splits(const State& st, int c, const Targets& t, const std::vector<int>& resolved) {
   const Corner& k = st.corners[c];
-  if (!st.any_outward && k.motion == Motion::Regular && !st.reflex(c)) return;
   const double z = st.height;
   const glm::dvec2 p = st.position(c, z);
-  for (int e : edges) {
-    if (e == k.prev_edge || e == k.next_edge) continue;
+  const double vx = k.velocity.x, vy = k.velocity.y;
+  const double earliest = z - st.tol().height();
+  // Nothing above the cap is ever resolved.
+  const double cap = st.options().max_height.value_or(HUGE_VAL);
+  const bool outward = st.any_outward;
+  const std::size_t n = t.edge.size();
+  at_.resize(n);
+  // Without branches (the loop vectorizes): the height where c meets each
+  // edge's plane, or HUGE_VAL where it is not worth queueing.
+  const double *nx = t.nx.data(), *ny = t.ny.data(), *kk = t.k.data(), *cc = t.c.data();
+  double* meet = at_.data();
+  for (std::size_t j = 0; j < n; ++j) {
     // Signed distance from the edge's line changes at `rate`: a corner inside
     // meets it when the distance falls to zero, a corner of another polygon
     // growing towards it (from outside) when it rises to zero.
-    const Plane& pl = st.edges[e].plane;
-    const double rate = glm::dot(pl.n, k.velocity) - pl.k;
-    if (rate == 0.0 || (rate > 0.0 && !st.any_outward)) continue;
-    const double at = z - pl.signed_distance(p, z) / rate;
+    const double rate = nx[j] * vx + ny[j] * vy - kk[j];
+    const double distance = nx[j] * p.x + ny[j] * p.y - (cc[j] + kk[j] * z);
+    const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
+    // A meeting point below the sweep plane means the planes diverge from here.
+    const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
+    meet[j] = meets & !(at < earliest) & !(at > cap) ? at : HUGE_VAL;
+  }
+  scratch_.clear();
+  for (std::size_t j = 0; j < n; ++j) {
+    if (meet[j] == HUGE_VAL) continue;
+    const int e = t.edge[j];
+    const double at = meet[j];
+    if (e == k.prev_edge || e == k.next_edge) continue;
     // A corner made by a collision with this edge meets it there because of it.
     if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
-    push(st, {at, st.position(c, at), c, kNone, e});
+    scratch_.push_back({std::max(at, z), st.position(c, at), e});
   }
+  if (scratch_.empty()) return;
+  int i;
+  if (free_lists_.empty()) {
+    i = static_cast<int>(lists_.size());
+    lists_.emplace_back();
+  } else {
+    i = free_lists_.back();
+    free_lists_.pop_back();
+  }
+  lists_[i].assign(scratch_.begin(), scratch_.end());
+  std::make_heap(lists_[i].begin(), lists_[i].end(), SplitLater{});
+  advance(i, c);
 }
 
-std::vector<Candidate> EventQueue::pop_cluster(double height_tolerance) {
+void EventQueue::advance(int i, int c) {
+  std::vector<Split>& list = lists_[i];
+  if (list.empty()) {
+    free_lists_.push_back(i);
+    return;
+  }
+  std::pop_heap(list.begin(), list.end(), SplitLater{});
+  const Split s = list.back();
+  list.pop_back();
+  heap_.push({{s.z, s.p, c, kNone, s.edge}, i});
+}
+
+std::vector<Candidate> EventQueue::pop_cluster(const State& st) {
   std::vector<Candidate> out;
-  const double top = heap_.top().z;
-  while (!heap_.empty() && heap_.top().z <= top + height_tolerance) {
-    out.push_back(heap_.top());
+  const double top = heap_.top().candidate.z;
+  while (!heap_.empty() && heap_.top().candidate.z <= top + st.tol().height()) {
+    const Entry e = heap_.top();
     heap_.pop();
+    // A dead corner's events are void, and so is the rest of its list.
+    if (!st.corners[e.candidate.corner].alive) {
+      if (e.list != kNone) free_lists_.push_back(e.list);
+      continue;
+    }
+    if (e.list != kNone) advance(e.list, e.candidate.corner);
+    out.push_back(e.candidate);
   }
   return out;
 }

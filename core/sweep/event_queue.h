@@ -1,6 +1,13 @@
 // The lazy event queue (paper 4.1): potential events wherever three planes
 // meet, ordered by height. Nothing is checked against the live loops until the
 // sweep plane reaches the event.
+//
+// A reflex corner may run into any live edge: O(n) potential split events per
+// corner, most of which never happen (the corner dies first, or the edge's
+// spans are elsewhere by then). Each scheduling keeps its split candidates in
+// a list of its own, and only the lowest of each list sits in the height
+// queue; popping it brings up the list's next one. The queue stays O(n), and
+// a list whose corner has died is dropped unread.
 #pragma once
 
 #include <queue>
@@ -18,14 +25,6 @@ struct Candidate {
   int edge = kNone;    // split event: the edge the corner runs into
 };
 
-struct CandidateLater {
-  bool operator()(const Candidate& a, const Candidate& b) const {
-    if (a.z != b.z) return a.z > b.z;
-    if (a.corner != b.corner) return a.corner > b.corner;
-    return a.edge > b.edge;
-  }
-};
-
 class EventQueue {
  public:
   // Queues every potential event of corner c: meeting its next corner (the
@@ -40,14 +39,55 @@ class EventQueue {
   void schedule_edge_event(State& st, int c);
 
   bool empty() const { return heap_.empty(); }
-  double next_height() const { return heap_.top().z; }
-  // Removes and returns every candidate within the height tolerance of the lowest.
-  std::vector<Candidate> pop_cluster(double height_tolerance);
-  std::size_t size() const { return heap_.size(); }
+  double next_height() const { return heap_.top().candidate.z; }
+  // Removes every candidate within the height tolerance of the lowest and
+  // returns those of live corners, lowest first.
+  std::vector<Candidate> pop_cluster(const State& st);
 
  private:
-  void push(State& st, const Candidate& c);
-  std::priority_queue<Candidate, std::vector<Candidate>, CandidateLater> heap_;
+  // A split candidate waiting in its corner's list.
+  struct Split {
+    double z;
+    glm::dvec2 p;
+    int edge;
+  };
+  struct Entry {
+    Candidate candidate;
+    int list;  // the split list it heads, or kNone (an edge event)
+  };
+  struct EntryLater {
+    bool operator()(const Entry& a, const Entry& b) const;
+  };
+  // Min-heap order of one corner's splits, as the queue orders them.
+  struct SplitLater {
+    bool operator()(const Split& a, const Split& b) const { return a.z != b.z ? a.z > b.z : a.edge > b.edge; }
+  };
+  // Edges a corner may run into, their planes' coefficients side by side
+  // (the test of every corner against every edge is the sweep's inner loop).
+  struct Targets {
+    std::vector<int> edge;
+    std::vector<double> nx, ny, k, c;
+    void clear();
+    void add(int e, const Plane& pl);
+  };
+  // The edges with live spans. Edges gain spans only with new corners, which
+  // add their edges; an edge that lost its spans since only costs candidates
+  // that fail validation, until a full pass drops it.
+  void refresh_live(State& st);
+  void list_live(const State& st, int e);
+  // Lists the splits of corner c against `targets`.
+  void add_splits(const State& st, int c, const Targets& targets, const std::vector<int>& resolved);
+  // Puts the lowest split of list i (of corner c) in the queue, or frees the list.
+  void advance(int i, int c);
+
+  std::priority_queue<Entry, std::vector<Entry>, EntryLater> heap_;
+  std::vector<std::vector<Split>> lists_;  // each a heap, lowest (z, edge) on top
+  std::vector<int> free_lists_;
+  Targets live_, some_;
+  std::vector<char> listed_;                        // edge -> in live_
+  std::size_t live_corners_ = 0, rebuilt_at_ = 0;    // corners seen by live_, at its last full pass
+  std::vector<double> at_;                          // scratch of add_splits
+  std::vector<Split> scratch_;
 };
 
 }  // namespace procex::engine
