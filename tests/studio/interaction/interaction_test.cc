@@ -165,10 +165,16 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
+// A copy of one of tests/studio/data's recipes in `dir`, to edit and save.
+fs::path copy_test_recipe(const std::string& name, const fs::path& dir) {
+  const fs::path recipe = dir / name;
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / name, recipe);
+  return recipe;
+}
+
 TEST(StudioInteraction, AddConnectEditUndoSave) {
   const fs::path dir = fresh_dir("interaction");
-  const fs::path recipe = dir / "house.pxg";
-  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
   Studio studio(recipe, dir);
   json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["preview_faces"] > 0; });
   const auto canvas = map["canvas"];
@@ -224,8 +230,7 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
 // An edit autosaved, then the studio killed: the next start offers the edit back.
 TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
   const fs::path dir = fresh_dir("recovery");
-  const fs::path recipe = dir / "house.pxg";
-  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
   fs::last_write_time(recipe, fs::file_time_type::clock::now() - std::chrono::minutes(1));
   {
     Studio studio(recipe, dir, {"--autosave", "1", "--select", "1"});
@@ -363,8 +368,7 @@ TEST(StudioInteraction, AddsAndDeletesHoles) {
 // double-clicked onto the soffit keeps one tag per segment.
 TEST(StudioInteraction, EditsAProfileSegmentsTagAndKeepsTagsPerSegment) {
   const fs::path dir = fresh_dir("profile");
-  const fs::path recipe = dir / "overhang.pxg";
-  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "overhang.pxg", recipe);
+  const fs::path recipe = copy_test_recipe("overhang.pxg", dir);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
   json map = studio.wait("the profile editor", [](const json& j) { return j["settled"] && j["buttons"].contains("segment_3"); });
   click(button_centre(map, "segment_3"));  // the soffit
@@ -401,8 +405,7 @@ TEST(StudioInteraction, EditsAProfileSegmentsTagAndKeepsTagsPerSegment) {
 // dragged along the edge.
 TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
   const fs::path dir = fresh_dir("anchor");
-  const fs::path recipe = dir / "house.pxg";
-  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "house.pxg", recipe);
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
   json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("anchor_tool") && j["buttons"].contains("edge_0"); });
   EXPECT_EQ(map["preview_anchors"], 0);
@@ -445,8 +448,7 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
 // and out, it sets the offset's height and distance; undone in one step.
 TEST(StudioInteraction, DragsAProfileOffsetHandle) {
   const fs::path dir = fresh_dir("offset");
-  const fs::path recipe = dir / "profile_offset.pxg";
-  fs::copy_file(fs::path(PROCEX_TEST_DATA) / "profile_offset.pxg", recipe);
+  const fs::path recipe = copy_test_recipe("profile_offset.pxg", dir);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
   json map = studio.wait("the offset handle", [](const json& j) { return j["settled"] && j["buttons"].contains("offset_5"); });
   std::uint64_t rev = revision(map);
