@@ -504,6 +504,7 @@ class App {
     const PreviewMesh* shown_mesh = shown_ && shown_->preview ? shown_->preview.get() : nullptr;
     j["preview_anchors"] = shown_mesh ? shown_mesh->anchors.size() - shown_mesh->absent_anchors() : 0;  // present ones, with markers
     j["preview_instances"] = shown_mesh ? shown_mesh->instances : 0;
+    j["preview"] = {preview_->image_x, preview_->image_y, preview_->image_w, preview_->image_h};
     std::size_t errors = 0;
     if (shown_)
       for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;

@@ -12,7 +12,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -148,6 +150,48 @@ std::pair<int, int> button_centre(const json& map, const std::string& name) {
 void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) + " sleep 0.3 click 1 sleep 0.2"); }
 
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
+
+// Pixels of the preview's anchor-marker yellow on screen now (the screen
+// captured with xwd), so a test sees what a person would.
+long anchor_marker_pixels(const json& map) {
+  FILE* pipe = popen("xwd -root -silent | xwdtopnm 2>/dev/null", "r");
+  if (!pipe) {
+    ADD_FAILURE() << "cannot run xwd";
+    return 0;
+  }
+  std::string ppm;
+  char buf[65536];
+  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) ppm.append(buf, n);
+  pclose(pipe);
+  // P6 <width> <height> <maxval>, whitespace-separated, then RGB bytes.
+  std::size_t at = 0;
+  std::vector<long> header;
+  while (header.size() < 4 && at < ppm.size()) {
+    while (at < ppm.size() && std::isspace(static_cast<unsigned char>(ppm[at]))) ++at;
+    const std::size_t start = at;
+    while (at < ppm.size() && !std::isspace(static_cast<unsigned char>(ppm[at]))) ++at;
+    const std::string token = ppm.substr(start, at - start);
+    header.push_back(header.empty() ? (token == "P6" ? 6 : -1) : std::atol(token.c_str()));
+  }
+  ++at;
+  if (header.size() < 4 || header[0] != 6 || header[3] != 255) {
+    ADD_FAILURE() << "xwd | xwdtopnm gave no 8-bit P6 image";
+    return 0;
+  }
+  const long w = header[1], h = header[2];
+  const json& r = map["preview"];
+  const long x0 = map["window"][0].get<long>() + r[0].get<long>(), y0 = map["window"][1].get<long>() + r[1].get<long>();
+  long count = 0;
+  for (long y = std::max(0L, y0); y < std::min(h, y0 + r[3].get<long>()); ++y)
+    for (long x = std::max(0L, x0); x < std::min(w, x0 + r[2].get<long>()); ++x) {
+      const std::size_t i = at + static_cast<std::size_t>((y * w + x) * 3);
+      if (i + 2 >= ppm.size()) break;
+      const double red = static_cast<unsigned char>(ppm[i]), green = static_cast<unsigned char>(ppm[i + 1]), blue = static_cast<unsigned char>(ppm[i + 2]);
+      // The marker's (1, 0.85, 0.1), lit: no tag colour is yellow with so little blue.
+      count += red > 80 && green > 0.65 * red && green < 1.05 * red && blue < 0.25 * red;
+    }
+  return count;
+}
 
 // Ctrl+S, then Ctrl+Q: saved, and a clean exit.
 void save_and_quit(Studio& studio) {
@@ -409,6 +453,7 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
   json map = studio.wait("the plan editor", [](const json& j) { return j["settled"] && j["buttons"].contains("anchor_tool") && j["buttons"].contains("edge_0"); });
   EXPECT_EQ(map["preview_anchors"], 0);
+  EXPECT_LT(anchor_marker_pixels(map), 5);
   click(button_centre(map, "anchor_tool"));
   map = studio.wait("the tool on", [](const json& j) { return j["anchor_tool"].get<bool>(); });
   std::uint64_t rev = revision(map);
@@ -421,6 +466,13 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
   map = studio.wait("the anchor placed and resolved",
                     [&](const json& j) { return revision(j) > rev && j["settled"] && !anchor_key(j).empty() && j["preview_anchors"] == 1; });
   EXPECT_EQ(map["errors"], 0);
+  // The preview shows its marker (a frame or two after the result arrives).
+  long marker = 0;
+  for (int attempt = 0; attempt < 20 && marker < 30; ++attempt) {
+    std::this_thread::sleep_for(100ms);
+    marker = anchor_marker_pixels(map);
+  }
+  EXPECT_GE(marker, 30) << "pixels of the anchor marker in the preview";
   rev = revision(map);
   const auto at = button_centre(map, anchor_key(map));
   drag(at, {at.first - 40, at.second - 40});
