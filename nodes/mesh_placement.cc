@@ -10,6 +10,7 @@
 
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
+#include "core/placement/frame_transform.h"
 #include "core/placement/place_mesh.h"
 #include "core/placement/placement_error.h"
 #include "graph/registry.h"
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 enum Param : std::size_t {
   kFile, kName, kAnchor, kTopAnchor, kMode, kPivot, kScale, kOffset,
   kColumns, kColumnSpacing, kRounding, kFill, kLayout, kMarginStart, kMarginEnd,
-  kRows, kRowSpacing, kZFrom, kZTo, kFit, kMargin, kTag,
+  kRows, kRowSpacing, kZFrom, kZTo, kFit, kMargin, kTag, kUpright,
 };
 
 // An edited mesh file is read again.
@@ -70,6 +71,8 @@ void declare(NodeDecl& d) {
   d.param<bool>("fit").default_value(false).doc("row and grid: scale each mesh to fill its cell (less margin)");
   d.param<double>("margin").default_value(0.0).range(0, 1000).unit("m").doc("fit: the gap kept around each mesh in its cell");
   d.param<std::string>("tag").default_value(std::string()).doc("tags every face of the placed meshes (empty: their own tags)");
+  d.param<bool>("upright").default_value(false)
+      .doc("stand the mesh upright: its up is the world's, not the face's (a chimney on a roof slope)");
   d.output<MeshSet>("mesh");
   d.hash_extra(hash_file);
 }
@@ -137,6 +140,14 @@ MeshPlacementSpec spec_of(const EvalContext& ctx) {
   return s;
 }
 
+// The frames turned about their along axis until up is the world's up; along
+// (the edge's direction, level) stays.
+std::vector<ResolvedAnchor> stood_upright(std::vector<ResolvedAnchor> anchors) {
+  for (ResolvedAnchor& a : anchors)
+    if (a.present) a.frame = orthonormal_frame(a.frame.origin, a.frame.along, {0.0, 0.0, 1.0});
+  return anchors;
+}
+
 bool carries(const TaggedMesh& part, const std::string& anchor) {
   return std::any_of(part.anchors.begin(), part.anchors.end(), [&](const ResolvedAnchor& a) { return a.name == anchor; });
 }
@@ -158,13 +169,14 @@ void evaluate(EvalContext& ctx) {
 
   MeshSet out = ctx.input<MeshSet>(0);
   std::set<std::string> names;  // of all anchors there are, for the error below
+  const bool upright = ctx.param<bool>(kUpright);
   bool placed_any = false;
   for (TaggedMesh& part : out.parts) {
     for (const ResolvedAnchor& a : part.anchors) names.insert(a.name);
     if (!carries(part, spec.anchor)) continue;  // another building type's mesh
     placed_any = true;
     try {
-      const PlaceMeshReport report = place_mesh(part.placed, mesh, part.anchors, spec);
+      const PlaceMeshReport report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors, spec);
       for (const std::string& absent : report.absent)
         ctx.warning((part.building.empty() ? "" : "building " + part.building + ": ") + absent);
     } catch (const PlacementError& e) {
