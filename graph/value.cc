@@ -114,6 +114,7 @@ ValueTypeRegistry& ValueTypeRegistry::global() {
     reg->add_list<std::string>();
     reg->add_list<Vec2>();
     reg->add_list<Vec3>();
+    reg->add_list<std::vector<Vec2>>();  // polylines: a polygon's holes, a step's outline
     return reg;
   }();
   return *r;

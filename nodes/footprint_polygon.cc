@@ -9,13 +9,6 @@ namespace {
 
 using Loops = std::vector<std::vector<Vec2>>;
 
-// "list<list<vec2>>": the holes, each a list of corners.
-const bool kLoopsRegistered = [] {
-  ValueTypeRegistry& r = ValueTypeRegistry::global();
-  if (!r.find(std::type_index(typeid(Loops)))) r.add_list<std::vector<Vec2>>();
-  return true;
-}();
-
 // Version 1 had one hole, `hole` (empty: none).
 void upgrade(int saved_version, nlohmann::json& params) {
   if (saved_version >= 2) return;
