@@ -17,7 +17,7 @@ double linear_determinant(const glm::dmat4& transform) { return glm::determinant
 std::size_t PlacementResult::add_mesh(const PlaceableMesh& mesh) {
   if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
   for (std::size_t i = 0; i < meshes.size(); ++i)
-    if (meshes[i].mesh == mesh.mesh) return i;
+    if (meshes[i].mesh == mesh.mesh && meshes[i].name == mesh.name) return i;
   meshes.push_back(mesh);
   return meshes.size() - 1;
 }

@@ -37,8 +37,9 @@ struct PlacementResult {
   std::vector<PlaceableMesh> meshes;     // distinct meshes
   std::vector<Instance> instances;
 
-  // The index of `mesh` in `meshes`, added if its Mesh is not there yet (the
-  // same shared Mesh is stored once). Throws PlacementError if it is null.
+  // The index of `mesh` in `meshes`, added unless the same shared Mesh is
+  // there under the same name (one file placed under two names keeps both
+  // names). Throws PlacementError if it is null.
   std::size_t add_mesh(const PlaceableMesh& mesh);
   // Adds an instance after check_instance. Returns its index.
   std::size_t add_instance(Instance instance);

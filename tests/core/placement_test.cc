@@ -25,13 +25,17 @@ std::shared_ptr<const Mesh> read(const std::string& name) {
 
 glm::dmat4 translation(double x, double y, double z) { return glm::translate(glm::dmat4(1.0), {x, y, z}); }
 
-TEST(Placement, AddMeshStoresEachMeshOnce) {
+TEST(Placement, AddMeshStoresEachMeshOncePerName) {
   PlacementResult r;
   const auto pillar = read("mesh_pillar.obj");
   EXPECT_EQ(r.add_mesh({"pillar", pillar}), 0u);
   EXPECT_EQ(r.add_mesh({"window", read("mesh_window_frame.obj")}), 1u);
-  EXPECT_EQ(r.add_mesh({"pillar again", pillar}), 0u);
-  EXPECT_EQ(r.meshes.size(), 2u);
+  EXPECT_EQ(r.add_mesh({"pillar", pillar}), 0u);
+  // The same file placed under another name keeps that name (its faces are tagged by it).
+  EXPECT_EQ(r.add_mesh({"column", pillar}), 2u);
+  EXPECT_EQ(r.meshes[2].name, "column");
+  EXPECT_EQ(r.meshes[2].mesh, pillar);
+  EXPECT_EQ(r.meshes.size(), 3u);
   EXPECT_THROW(r.add_mesh({"nothing", nullptr}), PlacementError);
 }
 
