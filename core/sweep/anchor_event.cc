@@ -45,8 +45,8 @@ void check_anchor(const Anchor& a, const std::string& what) {
     throw InputError(what + ": fraction " + std::to_string(a.plan.value) + " is outside [0, 1]");
 }
 
-std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason, double shift) {
-  const double z = st.height;
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, std::string& reason,
+                                double shift) {
   const Source& src = st.sources[source];
   const Edge& edge = st.edges[src.edge];
   const auto& spans = st.spans(src.edge);
@@ -96,15 +96,11 @@ AnchorEvents::AnchorEvents(const State& st, const std::vector<Anchor>& anchors) 
 }
 
 void AnchorEvents::resolve_up_to(State& st, double height) {
-  const double z = st.height;
   while (!empty() && next_height() <= height) {
     const std::size_t i = order_[next_++];
     const Request& q = requests_[i];
     ResolvedAnchor& r = out_[i];
-    // Resolved on the loops as they are at the anchor's height.
-    st.height = q.height;
-    const std::optional<EdgePoint> hit = locate(st, q.source, q.plan, r.reason);
-    st.height = z;
+    const std::optional<EdgePoint> hit = locate(st, q.source, q.plan, q.height, r.reason);
     if (!hit) continue;
     const Edge& edge = st.edges[st.sources[q.source].edge];
     const FaceGroup& face = st.faces[edge.face];

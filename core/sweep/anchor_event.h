@@ -19,7 +19,7 @@ bool selects(const Anchor& a, const Source& s);
 // Throws InputError, starting with `what`, for an anchor whose numbers are unusable.
 void check_anchor(const Anchor& a, const std::string& what);
 
-// Where a plan anchor lies on a source's edge at the current height.
+// Where a plan anchor lies on a source's edge at height z (the live loops as they are).
 struct EdgePoint {
   int span = kNone;       // the corner starting the live span that holds it
   glm::dvec2 point{0.0};  // on the edge's line
@@ -27,7 +27,7 @@ struct EdgePoint {
 };
 // The point, moved `shift` along the edge, or nothing (with `reason` saying
 // why) when the edge is gone or the point lies beyond its ends.
-std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, std::string& reason,
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, std::string& reason,
                                 double shift = 0.0);
 
 class AnchorEvents {

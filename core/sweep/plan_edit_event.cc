@@ -124,11 +124,8 @@ std::vector<int> emit_lobes(State& st, int e, const std::vector<StepPoint>& pts,
 // Where the step's polyline (in world coordinates) would meet the live loops
 // outside the part of span c it replaces, or itself: a loop that is not
 // simple. Empty if it meets nothing.
-template <class World>
-std::string crossing(State& st, int c, const std::vector<glm::dvec2>& shape, const World& world) {
+std::string crossing(State& st, int c, const std::vector<glm::dvec2>& w) {
   const double z = st.height;
-  std::vector<glm::dvec2> w;
-  for (glm::dvec2 p : shape) w.push_back(world(p));
   const std::size_t m = w.size() - 1;
   const int d = st.corners[c].next;
   // The host span's parts on either side of the step, then every other span.
@@ -204,7 +201,7 @@ void PlanEditEvents::apply_next(State& st, EventQueue& queue, ProfileEvents& pro
 void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batch& batch) {
   const PlanEdit& edit = st.options().plan_edits[q.edit];
   const double z = st.height;
-  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, r.reason, edit.offset);
+  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, z, r.reason, edit.offset);
   if (!hit) return;
   const int e = st.sources[q.source].edge;
   const Edge edge = st.edges[e];
@@ -235,13 +232,15 @@ void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batc
 
   const double near = st.tol().position();
   auto world = [&](glm::dvec2 local) { return hit->point + local.x * edge.dir + local.y * out_dir; };
-  for (std::size_t j = 0; j + 1 < shape.size(); ++j)
-    if (glm::length(world(shape[j + 1]) - world(shape[j])) <= near) {
+  std::vector<glm::dvec2> corners;  // the shape's points where they will stand
+  for (glm::dvec2 p : shape) corners.push_back(world(p));
+  for (std::size_t j = 0; j + 1 < corners.size(); ++j)
+    if (glm::length(corners[j + 1] - corners[j]) <= near) {
       r.reason = "its segment " + std::to_string(j) + " is shorter than the sweep's resolution";
       return;
     }
 
-  if (const std::string where = crossing(st, c, shape, world); !where.empty()) {
+  if (const std::string where = crossing(st, c, corners); !where.empty()) {
     r.reason = "its shape " + where + " at height " + std::to_string(z) +
                (natural ? "" : "; a natural step grows round what it meets");
     return;
@@ -266,7 +265,7 @@ void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batc
 
   std::vector<int> new_edges, new_sources;
   for (std::size_t j = 0; j + 1 < shape.size(); ++j) {
-    const glm::dvec2 a = world(shape[j]), b = world(shape[j + 1]);
+    const glm::dvec2 a = corners[j], b = corners[j + 1];
     const int s = static_cast<int>(st.sources.size());
     const FirstPlane first = add_source(st, *profiles_, edit.edges[j], z);
     st.sources[s].start = a;

@@ -28,6 +28,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/sanitizers.h"
+#include "tests/support/validation_text.h"
 #include "tests/support/shared_data.h"
 
 namespace procex {
@@ -110,14 +111,7 @@ Outcome run_one(const GeoJsonFeature& f, Angles angles, bool check_self_intersec
     vo.check_self_intersections = check_self_intersections;
     const ValidationReport v = validate(mesh, vo);
     if (v.ok()) return {};
-    std::string d = "does not validate:";
-    if (!v.closed) d += " not closed;";
-    if (!v.manifold) d += " not manifold;";
-    if (!v.oriented) d += " not oriented (volume " + std::to_string(v.volume) + ");";
-    if (!v.planar) d += " not planar (max error " + std::to_string(v.max_planarity_error) + ");";
-    if (!v.self_intersection_free) d += " self-intersecting;";
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, v.problems.size()); ++i) d += " [" + v.problems[i] + "]";
-    return {Outcome::Failed, d};
+    return {Outcome::Failed, describe(v)};
   } catch (const SweepError& e) {
     std::string ids;
     for (int id : e.edge_ids()) ids += " " + std::to_string(id);

@@ -29,6 +29,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/sanitizers.h"
+#include "tests/support/validation_text.h"
 #include "tests/support/shared_data.h"
 
 namespace procex {
@@ -47,17 +48,6 @@ std::vector<Profile> step_profiles() {
       {"in", {{0, 0}, {0, 3}, {-0.5, 3}, {-5.5, 8}}, {"wall", "ledge", "roof"}},
       {"none", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}},
   };
-}
-
-std::string describe(const ValidationReport& v) {
-  std::string d = "does not validate:";
-  if (!v.closed) d += " not closed;";
-  if (!v.manifold) d += " not manifold;";
-  if (!v.oriented) d += " not oriented (volume " + std::to_string(v.volume) + ");";
-  if (!v.planar) d += " not planar (max error " + std::to_string(v.max_planarity_error) + ");";
-  if (!v.self_intersection_free) d += " self-intersecting;";
-  for (std::size_t i = 0; i < std::min<std::size_t>(3, v.problems.size()); ++i) d += " [" + v.problems[i] + "]";
-  return d;
 }
 
 // Empty when the footprint sweeps to a valid mesh (or OSM flags it invalid

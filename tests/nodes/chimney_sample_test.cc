@@ -6,6 +6,7 @@
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
 #include "nodes/values.h"
+#include "tests/nodes/node_runner.h"
 
 namespace procex {
 namespace {
@@ -13,11 +14,7 @@ namespace {
 const std::filesystem::path kSamples = PROCEX_SAMPLES;
 
 Instance chimney(Graph& g) {
-  ResultCache cache(16 << 20);
-  Evaluator ev(cache, "chimney test");
-  EvalOptions options;
-  options.folder = kSamples;
-  const EvalResult r = ev.evaluate(g, {}, {"mesh"}, options);
+  const EvalResult r = test::evaluate_mesh(g, kSamples);
   EXPECT_TRUE(r.ok());
   const auto& placed = r.output("mesh")->get<MeshSet>().parts.at(0).placed;
   EXPECT_EQ(placed.instances.size(), 1u);

@@ -51,4 +51,12 @@ NodeRun run_node(const std::string& type, const std::map<std::string, Value>& pa
   return run;
 }
 
+EvalResult evaluate_mesh(const Graph& g, const std::filesystem::path& folder) {
+  ResultCache cache(64 << 20);
+  Evaluator ev(cache, "nodes test");
+  EvalOptions options;
+  options.folder = folder;
+  return ev.evaluate(g, {}, {"mesh"}, options);
+}
+
 }  // namespace procex::test

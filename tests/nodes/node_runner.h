@@ -23,4 +23,8 @@ struct NodeRun {
 NodeRun run_node(const std::string& type, const std::map<std::string, Value>& params,
                  const std::map<std::string, Value>& inputs = {}, const std::filesystem::path& folder = {});
 
+// A recipe's output "mesh", evaluated with a fresh cache; relative file paths
+// in parameters resolve against folder.
+EvalResult evaluate_mesh(const Graph& g, const std::filesystem::path& folder);
+
 }  // namespace procex::test

@@ -124,11 +124,7 @@ TEST(PlanEditNode, MoreAnchorInputsKeepThePlanEditLinks) {
   ASSERT_TRUE(g.set_param(5, "anchors", Value::make<std::int64_t>(2)));
   EXPECT_EQ(source_of("edit_2"), before);
   EXPECT_FALSE(source_of("anchor_1").has_value());
-  ResultCache cache(64 << 20);
-  Evaluator ev(cache, "plan edit test");
-  EvalOptions options;
-  options.folder = PROCEX_SAMPLES;
-  const EvalResult r = ev.evaluate(g, {}, {"mesh"}, options);
+  const EvalResult r = test::evaluate_mesh(g, PROCEX_SAMPLES);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(summarize(r.output("mesh")->get<MeshSet>()).faces_per_tag.at("recess wall"), 3);
 }

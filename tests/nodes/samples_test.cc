@@ -13,6 +13,7 @@
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
 #include "nodes/support/mesh_summary.h"
+#include "tests/nodes/node_runner.h"
 
 namespace procex {
 namespace {
@@ -59,11 +60,7 @@ class Sample : public ::testing::TestWithParam<std::string> {};
 TEST_P(Sample, EvaluatesToItsStoredSummary) {
   const fs::path file = kSamples / (GetParam() + ".pxg");
   const Graph g = load_pxg(file);
-  ResultCache cache(64 << 20);
-  Evaluator ev(cache, "samples test");
-  EvalOptions options;
-  options.folder = kSamples;
-  const EvalResult r = ev.evaluate(g, {}, {"mesh"}, options);
+  const EvalResult r = test::evaluate_mesh(g, kSamples);
   for (const Diagnostic& d : r.diagnostics) EXPECT_NE(d.severity, Severity::kError) << d.to_string();
   ASSERT_TRUE(r.ok());
   const json got = summary_json(summarize(r.output("mesh")->get<MeshSet>()));
