@@ -36,15 +36,15 @@ struct Chain {
   int in_edge, in_corner, out_edge, out_corner;
 };
 
-// The span of edge e (corner s to s.next) that contains p at the current height.
-int span_through(State& st, int e, glm::dvec2 p, double reach) {
+// The span of edge e (corner s to s.next) that contains p at height z.
+int span_through(State& st, int e, glm::dvec2 p, double z, double reach) {
   const Edge& edge = st.edges[e];
   for (int s : st.spans(e)) {
     const int t = st.corners[s].next;
     if (t == kNone) continue;
-    if (std::abs(edge.plane.signed_distance(p, st.height)) > reach) continue;
-    const double ts = glm::dot(st.position(s, st.height) - p, edge.dir);
-    const double tt = glm::dot(st.position(t, st.height) - p, edge.dir);
+    if (std::abs(edge.plane.signed_distance(p, z)) > reach) continue;
+    const double ts = glm::dot(st.position(s, z) - p, edge.dir);
+    const double tt = glm::dot(st.position(t, z) - p, edge.dir);
     if (ts <= st.tol().span_margin() && tt >= -st.tol().span_margin()) return s;
   }
   return kNone;
@@ -58,7 +58,9 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
     return Collision{c.p, c.z, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
   }
   if (c.edge == k.prev_edge || c.edge == k.next_edge) return std::nullopt;
-  if (span_through(st, c.edge, c.p, st.tol().position()) == kNone) return std::nullopt;
+  // At the candidate's own height: a batch spans delta2, over which a plane
+  // leaning at k moves k delta2, more than delta3 wherever k > 1.
+  if (span_through(st, c.edge, c.p, c.z, st.tol().position()) == kNone) return std::nullopt;
   return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
 }
 
@@ -225,7 +227,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     bool touches = false;
     for (int s : st.spans(e)) touches = touches || at[s] || at[st.corners[s].next];
     if (touches) continue;
-    const int s = span_through(st, e, p, near);
+    const int s = span_through(st, e, p, z, near);
     if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
   }
 
