@@ -110,12 +110,12 @@ void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, Anc
   double last = -1.0;
   auto edits_pending = [&] { return plan_edits && !plan_edits->empty(); };
   while (!queue.empty() || !profile_events.empty() || edits_pending()) {
-    // Collisions at a profile vertex's height are resolved before the planes change.
+    // Collisions at a profile vertex's or a plan edit's height are resolved before the planes change.
     const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
     const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();
     const double z_edit = edits_pending() ? plan_edits->next_height() : HUGE_VAL;
     anchors_up_to(std::min({z_collide, z_profile, z_edit}));
-    if (z_edit <= std::min(z_collide, z_profile) + st.tol().height()) {
+    if (z_edit < z_collide - st.tol().height() && z_edit <= z_profile + st.tol().height()) {
       if ((max_height && z_edit > *max_height) || z_edit == HUGE_VAL) break;
       st.height = std::max(st.height, z_edit);
       plan_edits->apply_next(st, queue, profile_events);

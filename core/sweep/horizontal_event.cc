@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <unordered_map>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/chain_overlay.h"
 #include "core/geom/error.h"
+#include "core/geom/point_grid.h"
 #include "core/sweep/driver.h"
 #include "core/sweep/settle.h"
 
@@ -82,93 +84,129 @@ void sweep_nested(Nested& n, State& st, const std::vector<std::vector<int>>& loo
   }
 }
 
-// Nested vertices flattened onto the sweep plane at height z. Vertices that
-// land on one point (within the clustering distance) are one vertex: a corner
-// between edges that do not step stays where it is.
+// Nested vertices flattened onto the sweep plane at height z. A vertex on the
+// face of an edge that does not step (a strip of no width) is put back on
+// that edge's line, where it belongs: the nested sweep computes it to its own
+// precision, and the faces at z must find it on that line, not beside it.
+// Vertices that land on one point (within the clustering distance) are one
+// vertex: a corner between edges that do not step stays where it is.
 std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z) {
-  const double near = st.tol().position();
-  std::map<std::pair<long long, long long>, std::vector<std::uint32_t>> grid;
-  auto cell = [&](glm::dvec2 p) {
-    return std::pair{static_cast<long long>(std::floor(p.x / near)), static_cast<long long>(std::floor(p.y / near))};
-  };
-  auto find = [&](glm::dvec2 p) -> std::optional<std::uint32_t> {
-    const auto [cx, cy] = cell(p);
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy) {
-        auto it = grid.find({cx + dx, cy + dy});
-        if (it == grid.end()) continue;
-        for (std::uint32_t v : it->second)
-          if (glm::length(glm::dvec2(st.vertices[v]) - p) <= near) return v;
-      }
-    return std::nullopt;
-  };
+  constexpr int kMany = -2;
+  std::vector<int> line(n.st.vertices.size(), kNone);  // nested vertex -> the outer edge whose line it is on
+  for (const FaceGroup& f : n.st.faces) {
+    if (f.kind != FaceKind::Side || n.st.edges[n.st.sources[f.source_edge].edge].plane.k != 0.0) continue;
+    const int e = n.span_edge[f.source_edge];
+    for (const HalfEdge& h : f.half_edges)
+      for (std::uint32_t v : {h.from, h.to}) line[v] = line[v] == kNone || line[v] == e ? e : kMany;
+  }
+  PointGrid grid(st.tol().position());
   std::vector<std::uint32_t> out(n.st.vertices.size());
   for (std::size_t i = 0; i < n.base_vertex.size(); ++i) {
     out[i] = n.base_vertex[i];
-    grid[cell(glm::dvec2(n.st.vertices[i]))].push_back(out[i]);
+    grid.add(glm::dvec2(n.st.vertices[i]), out[i]);
   }
   for (std::size_t i = n.base_vertex.size(); i < out.size(); ++i) {
-    const glm::dvec2 p(n.st.vertices[i]);
-    if (auto v = find(p)) {
+    glm::dvec2 p(n.st.vertices[i]);
+    if (line[i] >= 0) {
+      const Plane& pl = st.edges[line[i]].plane;
+      p -= pl.n * pl.signed_distance(p, z);
+    }
+    if (auto v = grid.first_near(p)) {
       out[i] = *v;
       continue;
     }
     out[i] = st.add_vertex({p, z});
-    grid[cell(p)].push_back(out[i]);
+    grid.add(p, out[i]);
   }
   return out;
 }
 
-// Where an edge does not step, its nested face is a strip of no width on its
-// own line, and everything meeting that line at z meets it at some vertex of
-// that strip: the top of its face below, the bottom of its plane above and
-// the horizontal faces of its neighbours. Each half-edge written at z along
-// such a line is split at every vertex of the strip it passes, so faces meet
-// vertex to vertex there (the strip itself is no face).
-void split_along_lines(State& st, std::map<int, std::vector<std::uint32_t>> on_line,
-                       const std::vector<std::size_t>& written_before) {
-  std::map<std::uint32_t, std::vector<int>> lines_of;  // vertex -> the edges whose line it is on
-  for (auto& [e, vs] : on_line) {
-    std::sort(vs.begin(), vs.end());
-    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
-    for (std::uint32_t v : vs) lines_of[v].push_back(e);
-  }
-  auto common_line = [&](std::uint32_t a, std::uint32_t b) -> int {
-    const auto ia = lines_of.find(a), ib = lines_of.find(b);
-    if (ia == lines_of.end() || ib == lines_of.end()) return kNone;
-    for (int e : ia->second)
-      if (std::find(ib->second.begin(), ib->second.end(), e) != ib->second.end()) return e;
-    return kNone;
+// The horizontal faces at z. The flattened nested faces of the edges that
+// step cover the old cross-section less the new one (ledges, winding +1) and
+// the new less the old (soffits, winding -1); where neighbours step different
+// ways they fold over each other, so they are overlaid and only the cells of
+// non-zero winding are kept, each in the face of an edge covering it. Every
+// segment at z in any face (the ends of the faces below, the starts of those
+// above, what plan edits wrote) is cut where another crosses or touches it,
+// so all faces meet vertex to vertex.
+void horizontal_faces(State& st, const Nested& n, const std::vector<std::uint32_t>& vertex,
+                      const std::map<int, SourceStep>& steps, double z) {
+  std::vector<std::uint32_t> global;
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
+  std::vector<glm::dvec2> points;
+  auto local = [&](std::uint32_t v) {
+    auto [it, fresh] = local_of.try_emplace(v, static_cast<std::uint32_t>(global.size()));
+    if (fresh) {
+      global.push_back(v);
+      points.emplace_back(st.vertices[v]);
+    }
+    return it->second;
   };
+  std::vector<OverlaySegment> segments;
+  std::vector<std::pair<std::size_t, std::size_t>> written;  // segment i < size: (face, half-edge)
+  auto at_z = [&](std::uint32_t v) { return std::abs(st.vertices[v].z - z) <= st.tol().height(); };
   for (std::size_t f = 0; f < st.faces.size(); ++f) {
-    std::vector<HalfEdge>& hs = st.faces[f].half_edges;
-    const std::size_t from = f < written_before.size() ? written_before[f] : 0;
-    std::vector<HalfEdge> split;
-    for (std::size_t i = from; i < hs.size(); ++i) {
-      const HalfEdge h = hs[i];
-      const int e = common_line(h.from, h.to);
-      if (e == kNone) {
-        split.push_back(h);
+    const std::vector<HalfEdge>& hs = st.faces[f].half_edges;
+    for (std::size_t i = 0; i < hs.size(); ++i)
+      if (hs[i].from != hs[i].to && at_z(hs[i].from) && at_z(hs[i].to)) {
+        segments.push_back({local(hs[i].from), local(hs[i].to), -1});
+        written.push_back({f, i});
+      }
+  }
+  // An edge that does not step flattens to a strip of no area, which covers nothing.
+  std::vector<int> stepping;  // group -> outer edge
+  std::map<int, int> group_of;
+  for (const FaceGroup& f : n.st.faces) {
+    if (f.kind != FaceKind::Side || n.st.edges[n.st.sources[f.source_edge].edge].plane.k == 0.0) continue;
+    const int e = n.span_edge[f.source_edge];
+    auto [it, fresh] = group_of.try_emplace(e, static_cast<int>(stepping.size()));
+    if (fresh) stepping.push_back(e);
+    for (const HalfEdge& h : f.half_edges) {
+      const std::uint32_t a = vertex[h.from], b = vertex[h.to];
+      if (a != b) segments.push_back({local(a), local(b), it->second});
+    }
+  }
+
+  const ChainOverlay o = overlay_chains(std::move(points), segments, st.tol().position());
+  for (std::size_t i = global.size(); i < o.points.size(); ++i) global.push_back(st.add_vertex({o.points[i], z}));
+
+  for (std::size_t next = 0; next < written.size();) {
+    const std::size_t f = written[next].first;
+    std::vector<HalfEdge> cut;
+    const std::vector<HalfEdge>& hs = st.faces[f].half_edges;
+    for (std::size_t i = 0; i < hs.size(); ++i) {
+      if (next == written.size() || written[next] != std::pair{f, i}) {
+        cut.push_back(hs[i]);
         continue;
       }
-      const glm::dvec2 d = st.edges[e].dir;
-      auto along = [&](std::uint32_t v) { return glm::dot(glm::dvec2(st.vertices[v]), d); };
-      const double ta = along(h.from), tb = along(h.to);
-      std::vector<std::pair<double, std::uint32_t>> between;
-      for (std::uint32_t v : on_line.at(e)) {
-        const double t = (along(v) - ta) / (tb - ta);
-        if (v != h.from && v != h.to && t > 0.0 && t < 1.0) between.push_back({t, v});
-      }
-      std::sort(between.begin(), between.end());
-      std::uint32_t a = h.from;
-      for (const auto& [t, v] : between) {
-        split.push_back({a, v});
-        a = v;
-      }
-      split.push_back({a, h.to});
+      const std::vector<std::uint32_t>& chain = o.pieces[next++];
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) cut.push_back({global[chain[k]], global[chain[k + 1]]});
     }
-    hs.resize(from);
-    hs.insert(hs.end(), split.begin(), split.end());
+    st.faces[f].half_edges = std::move(cut);
+  }
+
+  std::map<int, int> face_of;  // group -> its horizontal face
+  for (const OverlayCell& cell : o.cells) {
+    auto [it, fresh] = face_of.try_emplace(cell.owner, 0);
+    if (fresh) {
+      const int e = stepping[cell.owner];
+      const auto step = steps.find(st.edges[e].source);
+      FaceGroup h;
+      h.kind = FaceKind::Side;
+      h.source_edge = st.edges[e].source_id;
+      h.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
+      h.outward = {0.0, 0.0, cell.winding > 0 ? 1.0 : -1.0};
+      h.origin = {0.0, 0.0, z};
+      it->second = static_cast<int>(st.faces.size());
+      st.faces.push_back(std::move(h));
+    }
+    // A soffit is seen from below: its cycles run the other way.
+    std::vector<HalfEdge>& hs = st.faces[it->second].half_edges;
+    const std::size_t m = cell.loop.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::uint32_t a = global[cell.loop[k]], b = global[cell.loop[(k + 1) % m]];
+      hs.push_back(cell.winding > 0 ? HalfEdge{a, b} : HalfEdge{b, a});
+    }
   }
 }
 
@@ -176,8 +214,6 @@ void split_along_lines(State& st, std::map<int, std::vector<std::uint32_t>> on_l
 
 void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps) {
   const double z = st.height;
-  std::vector<std::size_t> written_before;
-  for (const FaceGroup& f : st.faces) written_before.push_back(f.half_edges.size());
   const std::vector<std::vector<int>> loops = live_loops(st);
   std::vector<std::uint32_t> at(st.corners.size(), 0);
   for (const auto& loop : loops)
@@ -194,39 +230,6 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
   for (const auto& loop : loops)
     for (int c : loop) st.emit_top(st.corners[c].next_edge, at[c], at[st.corners[c].next]);
 
-  // Flattened nested faces: an edge that steps makes a horizontal face; one
-  // that does not only marks the vertices on its line (split_along_lines).
-  std::map<int, int> ledge;  // outer edge -> its horizontal face
-  std::map<int, std::vector<std::uint32_t>> on_line;  // outer edge that does not step -> vertices on its line
-  auto slope_in_nested = [&](int j) { return n.st.edges[n.st.sources[j].edge].plane.k; };
-  for (const FaceGroup& f : n.st.faces) {
-    if (f.kind != FaceKind::Side) continue;
-    const int j = f.source_edge;
-    const int e = n.span_edge[j];
-    const double k = slope_in_nested(j);
-    if (k == 0.0) {
-      std::vector<std::uint32_t>& vs = on_line[e];
-      for (const HalfEdge& h : f.half_edges) vs.insert(vs.end(), {vertex[h.from], vertex[h.to]});
-      continue;
-    }
-    auto [it, fresh] = ledge.try_emplace(e, 0);
-    if (fresh) {
-      const auto step = steps.find(st.edges[e].source);
-      FaceGroup h;
-      h.kind = FaceKind::Side;
-      h.source_edge = st.edges[e].source_id;
-      h.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
-      h.outward = {0.0, 0.0, k > 0.0 ? 1.0 : -1.0};
-      h.origin = {0.0, 0.0, z};
-      it->second = static_cast<int>(st.faces.size());
-      st.faces.push_back(std::move(h));
-    }
-    for (const HalfEdge& h : f.half_edges) {
-      const std::uint32_t a = vertex[h.from], b = vertex[h.to];
-      if (a != b) st.faces[it->second].half_edges.push_back({a, b});
-    }
-  }
-
   // The planes above: each edge's line moved by its step, with the slope its
   // profile continues with. An edge that neither steps nor turns goes on.
   std::map<int, int> above;  // outer edge -> its plane above the run
@@ -239,7 +242,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     const auto step = steps.find(old.source);
     const double k = step == steps.end() ? old.plane.k : step->second.slope;
     const std::string tag = step == steps.end() ? old_tag : step->second.tag;
-    const double moved = slope_in_nested(j) * n.reach;
+    const double moved = n.st.edges[n.st.sources[j].edge].plane.k * n.reach;
     if (moved != 0.0 || k != old.plane.k || tag != old_tag) {
       const glm::dvec2 on_line = old.plane.n * (old.plane.offset_at(z) + moved);
       it->second = st.add_edge(on_line, z, old.dir, k, old.source, tag);
@@ -267,7 +270,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     const std::uint32_t a = vertex[n.top[c]], b = vertex[n.top[k.next]];
     if (a != b) st.faces[st.edges[st.corners[fresh[c]].next_edge].face].half_edges.push_back({a, b});
   }
-  split_along_lines(st, std::move(on_line), written_before);
+  horizontal_faces(st, n, vertex, steps, z);
   for (int c : settle(st, made)) {
     queue.schedule(st, c);
     queue.schedule_edge_event(st, st.corners[c].prev);

@@ -4,7 +4,11 @@
 // edge, flattened onto the sweep plane: the faces of edges stepping in face up
 // (ledges), those stepping out face down (soffits), and the nested sweep's top
 // is the new cross-section. Its loops stay simple where edges meet or vanish
-// on the way, because the nested sweep resolves those as events.
+// on the way, because the nested sweep resolves those as events. Where
+// neighbours step different ways their flattened faces fold over each other;
+// overlaid (core/geom/chain_overlay.h), the folds cancel and the horizontal
+// faces are what covers the old cross-section but not the new, or the new
+// but not the old.
 #pragma once
 
 #include <map>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -177,21 +178,44 @@ Surface build_surface(const State& st) {
 }
 
 void check_closed(const Surface& surface) {
-  std::unordered_map<std::uint64_t, int> directed;
   auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
+  auto at = [&](std::uint32_t v) {
+    const glm::dvec3 p = surface.vertices[v];
+    std::ostringstream out;
+    out << "vertex " << v << " (" << p.x << ", " << p.y << ", " << p.z << ")";
+    return out.str();
+  };
+  auto fail = [&](std::uint32_t v, const std::string& what) {
+    throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
+  };
+  // Each half-edge v -> a, with the vertex before v in its loop.
+  std::unordered_map<std::uint64_t, std::uint32_t> before;
+  std::unordered_map<std::uint32_t, int> leaving;  // vertex -> half-edges leaving it
   for (const SurfaceFace& f : surface.faces)
     for (const auto& loop : f.loops)
-      for (std::size_t i = 0; i < loop.size(); ++i) ++directed[key(loop[i], loop[(i + 1) % loop.size()])];
-  for (const auto& [k, n] : directed) {
-    const auto from = static_cast<std::uint32_t>(k >> 32), to = static_cast<std::uint32_t>(k);
-    auto back = directed.find(key(to, from));
-    if (n != 1 || back == directed.end() || back->second != 1) {
-      const glm::dvec3 p = surface.vertices[from];
-      std::ostringstream msg;
-      msg << "sweep: the surface is not closed at the edge from vertex " << from << " (" << p.x << ", " << p.y
-          << ", " << p.z << ") to vertex " << to;
-      throw SweepError(msg.str(), p.z, {});
-    }
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const std::uint32_t v = loop[i], a = loop[(i + 1) % loop.size()];
+        if (!before.try_emplace(key(v, a), loop[(i + loop.size() - 1) % loop.size()]).second)
+          fail(v, "two faces run the same way along its edge to " + at(a));
+        ++leaving[v];
+      }
+  for (const auto& [k, b] : before)
+    if (!before.count(key(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k >> 32))))
+      fail(static_cast<std::uint32_t>(k >> 32),
+           "no face runs back along its edge to " + at(static_cast<std::uint32_t>(k)));
+  // Round a vertex, the faces must form one fan: from v -> a, the face on
+  // its right holds v -> b, where b comes before v in the loop of v -> a.
+  std::unordered_map<std::uint32_t, char> walked;
+  for (const auto& [k, b0] : before) {
+    const auto v = static_cast<std::uint32_t>(k >> 32);
+    if (!walked.try_emplace(v, 1).second) continue;
+    int fan = 0;
+    std::uint32_t a = static_cast<std::uint32_t>(k);
+    do {
+      ++fan;
+      a = before.at(key(v, a));
+    } while (a != static_cast<std::uint32_t>(k) && fan <= leaving[v]);
+    if (fan != leaving[v]) fail(v, "the faces round it form more than one fan");
   }
 }
 

@@ -1,0 +1,286 @@
+#include "core/geom/chain_overlay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/point_grid.h"
+#include "core/geom/predicates.h"
+#include "core/geom/segment_intersections.h"
+
+namespace procex {
+namespace {
+
+// A winding number per group, sorted by group, zeros left out.
+using Cover = std::vector<std::pair<int, int>>;
+
+void add_cover(Cover& to, const Cover& from, int sign) {
+  Cover sum;
+  sum.reserve(to.size() + from.size());
+  std::size_t i = 0, j = 0;
+  while (i < to.size() || j < from.size()) {
+    if (j == from.size() || (i < to.size() && to[i].first < from[j].first)) {
+      sum.push_back(to[i++]);
+    } else if (i == to.size() || from[j].first < to[i].first) {
+      sum.push_back({from[j].first, sign * from[j].second});
+      ++j;
+    } else {
+      if (const int w = to[i].second + sign * from[j].second; w != 0) sum.push_back({to[i].first, w});
+      ++i;
+      ++j;
+    }
+  }
+  to = std::move(sum);
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 d = b - a;
+  const double len2 = glm::dot(d, d);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(a + t * d - p);
+}
+
+// Where the segments cut each other: for each segment the points lying on
+// its inside, in no order.
+std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
+                                                  const std::vector<OverlaySegment>& segments, double near) {
+  const std::size_t n = segments.size(), inputs = pts.size();
+  // Candidates: the segments, and for each point the diagonals of the square
+  // of half-width `near` around it. A segment passing within `near` of the
+  // point passes through that square, so it meets one of its diagonals.
+  std::vector<Segment2> probes;
+  probes.reserve(n + 2 * inputs);
+  for (const OverlaySegment& s : segments) probes.push_back({pts[s.from], pts[s.to]});
+  for (std::size_t i = 0; i < inputs; ++i) {
+    const glm::dvec2 p = pts[i];
+    probes.push_back({p - glm::dvec2(near, near), p + glm::dvec2(near, near)});
+    probes.push_back({p + glm::dvec2(-near, near), p + glm::dvec2(near, -near)});
+  }
+  const auto pairs = intersecting_segment_pairs(probes, {}, SIZE_MAX);
+
+  std::vector<std::vector<std::uint32_t>> cuts(n);
+  auto cut = [&](std::size_t s, std::uint32_t q) {
+    const OverlaySegment& seg = segments[s];
+    if (q == seg.from || q == seg.to) return;
+    const glm::dvec2 a = pts[seg.from], d = pts[seg.to] - a, p = pts[q];
+    const double len2 = glm::dot(d, d);
+    const double t = len2 > 0.0 ? glm::dot(p - a, d) / len2 : 0.0;
+    if (!(t > 0.0 && t < 1.0) || glm::length(a + t * d - p) > near || glm::length(p - a) <= near ||
+        glm::length(p - pts[seg.to]) <= near)
+      return;
+    cuts[s].push_back(q);
+  };
+  PointGrid grid(near);
+  for (std::size_t i = 0; i < inputs; ++i) grid.add(pts[i], static_cast<std::uint32_t>(i));
+  for (const auto& [i, j] : pairs) {
+    if (i >= n) continue;  // two points' squares
+    if (j >= n) {
+      cut(i, static_cast<std::uint32_t>((j - n) / 2));
+      continue;
+    }
+    const OverlaySegment &si = segments[i], &sj = segments[j];
+    if (si.from == sj.from || si.from == sj.to || si.to == sj.from || si.to == sj.to) continue;
+    const glm::dvec2 a = pts[si.from], b = pts[si.to], c = pts[sj.from], d = pts[sj.to];
+    // Only crossings make points; where an end touches the other segment, or
+    // passes within `near` of it (where nearly parallel segments cross is ill
+    // conditioned), that end cuts it instead.
+    if (orient2d(a, b, c) * orient2d(a, b, d) >= 0 || orient2d(c, d, a) * orient2d(c, d, b) >= 0) continue;
+    if (distance_to_segment(c, a, b) <= near || distance_to_segment(d, a, b) <= near ||
+        distance_to_segment(a, c, d) <= near || distance_to_segment(b, c, d) <= near)
+      continue;
+    const glm::dvec2 p = a + (b - a) * (cross(c - a, d - c) / cross(b - a, d - c));
+    std::uint32_t q;
+    if (const auto same = grid.first_near(p)) {
+      q = *same;
+    } else {
+      q = static_cast<std::uint32_t>(pts.size());
+      pts.push_back(p);
+      grid.add(p, q);
+    }
+    cut(i, q);
+    cut(j, q);
+  }
+  return cuts;
+}
+
+struct Arrangement {
+  // Directed pieces: 2k runs from the lower to the higher point of undirected piece k, 2k + 1 back.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> piece;  // undirected, lower point first
+  std::vector<Cover> net;                                       // per undirected piece, lower to higher
+  std::vector<int> next;                                        // directed piece -> next in its cycle
+  std::vector<int> cycle_of;                                    // directed piece -> its cycle
+  std::vector<std::vector<int>> cycles;                         // directed pieces, the cell on their left
+
+  std::uint32_t from(int d) const { return d % 2 == 0 ? piece[d / 2].first : piece[d / 2].second; }
+  std::uint32_t to(int d) const { return from(d ^ 1); }
+};
+
+// The pieces across which some group's winding changes, and the cycles they
+// bound: leaving a piece, turn to the next piece clockwise round its end, so
+// the cell stays on the left.
+Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& segments) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Cover> net;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (segments[s].group < 0) continue;
+    const Cover one{{segments[s].group, 1}};
+    const auto& chain = o.pieces[s];
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      const std::uint32_t u = chain[i], v = chain[i + 1];
+      if (u != v) add_cover(net[std::minmax(u, v)], one, u < v ? 1 : -1);
+    }
+  }
+  Arrangement a;
+  for (auto& [key, cover] : net)
+    if (!cover.empty()) {
+      a.piece.push_back(key);
+      a.net.push_back(std::move(cover));
+    }
+  const int directed = static_cast<int>(2 * a.piece.size());
+  std::vector<double> angle(directed);
+  std::vector<int> order(directed);
+  for (int d = 0; d < directed; ++d) {
+    const glm::dvec2 v = o.points[a.to(d)] - o.points[a.from(d)];
+    angle[d] = std::atan2(v.y, v.x);
+  }
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int x, int y) {
+    return a.from(x) != a.from(y) ? a.from(x) < a.from(y) : angle[x] != angle[y] ? angle[x] < angle[y] : x < y;
+  });
+  std::vector<int> rank(directed), first(directed);  // position in order; where its point's run starts
+  for (int i = 0; i < directed; ++i) {
+    rank[order[i]] = i;
+    first[order[i]] = i > 0 && a.from(order[i - 1]) == a.from(order[i]) ? first[order[i - 1]] : i;
+  }
+  a.next.assign(directed, -1);
+  for (int d = 0; d < directed; ++d) {
+    const int back = d ^ 1;  // leaves the end of d
+    int i = rank[back];
+    if (i == first[back]) {
+      while (i + 1 < directed && a.from(order[i + 1]) == a.from(back)) ++i;  // wrap to the run's last
+    } else {
+      --i;
+    }
+    a.next[d] = order[i];
+  }
+  a.cycle_of.assign(directed, -1);
+  for (int d = 0; d < directed; ++d) {
+    if (a.cycle_of[d] >= 0) continue;
+    std::vector<int> cycle;
+    for (int x = d; a.cycle_of[x] < 0; x = a.next[x]) {
+      a.cycle_of[x] = static_cast<int>(a.cycles.size());
+      cycle.push_back(x);
+    }
+    a.cycles.push_back(std::move(cycle));
+  }
+  return a;
+}
+
+// The windings just left of directed piece d, counted along a ray from its
+// middle going left: each piece the ray crosses adds its windings, signed by
+// the way it passes round the ray's start.
+Cover cover_left_of(const ChainOverlay& o, const Arrangement& a, int d) {
+  const glm::dvec2 p = o.points[a.from(d)], q = o.points[a.to(d)];
+  const glm::dvec2 m = 0.5 * (p + q), ray{p.y - q.y, q.x - p.x};
+  Cover w;
+  for (std::size_t k = 0; k < a.piece.size(); ++k) {
+    if (static_cast<int>(k) == d / 2) continue;
+    const glm::dvec2 u = o.points[a.piece[k].first], v = o.points[a.piece[k].second];
+    const double su = cross(ray, u - m), sv = cross(ray, v - m);
+    // Half-open: a point on the ray's line counts as left of it.
+    const int sign = su < 0.0 && sv >= 0.0 ? 1 : su >= 0.0 && sv < 0.0 ? -1 : 0;
+    if (sign == 0) continue;
+    const glm::dvec2 x = u + (v - u) * (su / (su - sv));
+    if (glm::dot(x - m, ray) > 0.0) add_cover(w, a.net[k], sign);
+  }
+  return w;
+}
+
+}  // namespace
+
+ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<OverlaySegment>& segments,
+                            double near) {
+  ChainOverlay o;
+  o.points = std::move(points);
+  std::vector<std::vector<std::uint32_t>> cuts = find_cuts(o.points, segments, near);
+  o.pieces.resize(segments.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const glm::dvec2 a = o.points[segments[s].from], d = o.points[segments[s].to] - a;
+    auto& c = cuts[s];
+    std::sort(c.begin(), c.end(), [&](std::uint32_t x, std::uint32_t y) {
+      const double tx = glm::dot(o.points[x] - a, d), ty = glm::dot(o.points[y] - a, d);
+      return tx != ty ? tx < ty : x < y;
+    });
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    auto& chain = o.pieces[s];
+    chain.push_back(segments[s].from);
+    chain.insert(chain.end(), c.begin(), c.end());
+    chain.push_back(segments[s].to);
+  }
+
+  const Arrangement a = arrange(o, segments);
+  const std::size_t cycles = a.cycles.size();
+  // Each connected part of the arrangement has one cycle round its outside
+  // (clockwise: the least signed area). The windings there come from a ray;
+  // every other cycle of the part is reached across pieces, whose net
+  // windings say how much they change.
+  std::vector<double> area(cycles, 0.0);
+  for (std::size_t c = 0; c < cycles; ++c)
+    for (int d : a.cycles[c]) area[c] += cross(o.points[a.from(d)], o.points[a.to(d)]);
+  std::vector<std::uint32_t> parent(o.points.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto root = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& [u, v] : a.piece) parent[root(u)] = root(v);
+  std::map<std::uint32_t, std::size_t> outside;  // part -> its outside cycle
+  for (std::size_t c = 0; c < cycles; ++c) {
+    auto [it, fresh] = outside.try_emplace(root(a.from(a.cycles[c].front())), c);
+    if (!fresh && area[c] < area[it->second]) it->second = c;
+  }
+  std::vector<Cover> cover(cycles);
+  std::vector<char> known(cycles, 0);
+  std::vector<std::size_t> queue;
+  for (const auto& [part, c] : outside) {
+    cover[c] = cover_left_of(o, a, a.cycles[c].front());
+    known[c] = 1;
+    queue.push_back(c);
+  }
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const std::size_t c = queue[i];
+    for (int d : a.cycles[c]) {
+      const std::size_t other = static_cast<std::size_t>(a.cycle_of[d ^ 1]);
+      if (known[other]) continue;
+      cover[other] = cover[c];
+      add_cover(cover[other], a.net[d / 2], d % 2 == 0 ? -1 : 1);
+      known[other] = 1;
+      queue.push_back(other);
+    }
+  }
+
+  for (std::size_t c = 0; c < cycles; ++c) {
+    int winding = 0;
+    for (const auto& [g, w] : cover[c]) winding += w;
+    if (winding == 0) continue;
+    OverlayCell cell;
+    cell.winding = winding;
+    for (const auto& [g, w] : cover[c])
+      if ((w > 0) == (winding > 0)) {
+        cell.owner = g;
+        break;
+      }
+    for (int d : a.cycles[c]) cell.loop.push_back(a.from(d));
+    o.cells.push_back(std::move(cell));
+  }
+  return o;
+}
+
+}  // namespace procex
