@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -49,53 +50,49 @@ double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 }
 
 // Where the segments cut each other: for each segment the points lying on
-// its inside, in no order.
+// its inside, in no order. The segments are distinct point pairs.
 std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
-                                                  const std::vector<OverlaySegment>& segments, double near) {
+                                                  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& segments,
+                                                  double near) {
   const std::size_t n = segments.size(), inputs = pts.size();
-  // Candidates: the segments, and for each point the diagonals of the square
-  // of half-width `near` around it. A segment passing within `near` of the
-  // point passes through that square, so it meets one of its diagonals.
-  std::vector<Segment2> probes;
-  probes.reserve(n + 2 * inputs);
-  for (const OverlaySegment& s : segments) probes.push_back({pts[s.from], pts[s.to]});
-  for (std::size_t i = 0; i < inputs; ++i) {
-    const glm::dvec2 p = pts[i];
-    probes.push_back({p - glm::dvec2(near, near), p + glm::dvec2(near, near)});
-    probes.push_back({p + glm::dvec2(-near, near), p + glm::dvec2(near, -near)});
-  }
-  const auto pairs = intersecting_segment_pairs(probes, {}, SIZE_MAX);
+  // Candidates: segments and points whose boxes, grown by `near`, overlap.
+  const glm::dvec2 grow(near);
+  std::vector<Box2> boxes;
+  boxes.reserve(n + inputs);
+  for (const auto& [u, v] : segments) boxes.push_back({glm::min(pts[u], pts[v]) - grow, glm::max(pts[u], pts[v]) + grow});
+  for (std::size_t i = 0; i < inputs; ++i) boxes.push_back({pts[i] - grow, pts[i] + grow});
 
   std::vector<std::vector<std::uint32_t>> cuts(n);
   auto cut = [&](std::size_t s, std::uint32_t q) {
-    const OverlaySegment& seg = segments[s];
-    if (q == seg.from || q == seg.to) return;
-    const glm::dvec2 a = pts[seg.from], d = pts[seg.to] - a, p = pts[q];
+    const auto [u, v] = segments[s];
+    if (q == u || q == v) return;
+    const glm::dvec2 a = pts[u], d = pts[v] - a, p = pts[q];
     const double len2 = glm::dot(d, d);
     const double t = len2 > 0.0 ? glm::dot(p - a, d) / len2 : 0.0;
     if (!(t > 0.0 && t < 1.0) || glm::length(a + t * d - p) > near || glm::length(p - a) <= near ||
-        glm::length(p - pts[seg.to]) <= near)
+        glm::length(p - pts[v]) <= near)
       return;
     cuts[s].push_back(q);
   };
   PointGrid grid(near);
   for (std::size_t i = 0; i < inputs; ++i) grid.add(pts[i], static_cast<std::uint32_t>(i));
-  for (const auto& [i, j] : pairs) {
-    if (i >= n) continue;  // two points' squares
+  for_each_box_pair(boxes, [&](std::size_t i, std::size_t j) {
+    if (i >= n) return true;  // two points
     if (j >= n) {
-      cut(i, static_cast<std::uint32_t>((j - n) / 2));
-      continue;
+      cut(i, static_cast<std::uint32_t>(j - n));
+      return true;
     }
-    const OverlaySegment &si = segments[i], &sj = segments[j];
-    if (si.from == sj.from || si.from == sj.to || si.to == sj.from || si.to == sj.to) continue;
-    const glm::dvec2 a = pts[si.from], b = pts[si.to], c = pts[sj.from], d = pts[sj.to];
+    const auto [iu, iv] = segments[i];
+    const auto [ju, jv] = segments[j];
+    if (iu == ju || iu == jv || iv == ju || iv == jv) return true;
+    const glm::dvec2 a = pts[iu], b = pts[iv], c = pts[ju], d = pts[jv];
     // Only crossings make points; where an end touches the other segment, or
     // passes within `near` of it (where nearly parallel segments cross is ill
     // conditioned), that end cuts it instead.
-    if (orient2d(a, b, c) * orient2d(a, b, d) >= 0 || orient2d(c, d, a) * orient2d(c, d, b) >= 0) continue;
+    if (orient2d(a, b, c) * orient2d(a, b, d) >= 0 || orient2d(c, d, a) * orient2d(c, d, b) >= 0) return true;
     if (distance_to_segment(c, a, b) <= near || distance_to_segment(d, a, b) <= near ||
         distance_to_segment(a, c, d) <= near || distance_to_segment(b, c, d) <= near)
-      continue;
+      return true;
     const glm::dvec2 p = a + (b - a) * (cross(c - a, d - c) / cross(b - a, d - c));
     std::uint32_t q;
     if (const auto same = grid.first_near(p)) {
@@ -107,7 +104,8 @@ std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
     }
     cut(i, q);
     cut(j, q);
-  }
+    return true;
+  });
   return cuts;
 }
 
@@ -127,22 +125,36 @@ struct Arrangement {
 // bound: leaving a piece, turn to the next piece clockwise round its end, so
 // the cell stays on the left.
 Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& segments) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, Cover> net;
+  struct Crossing {  // one input piece: its points, lower first, its group and way
+    std::uint32_t lo, hi;
+    int group, way;
+    bool operator<(const Crossing& x) const { return std::tie(lo, hi, group) < std::tie(x.lo, x.hi, x.group); }
+  };
+  std::vector<Crossing> all;
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (segments[s].group < 0) continue;
-    const Cover one{{segments[s].group, 1}};
     const auto& chain = o.pieces[s];
     for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
       const std::uint32_t u = chain[i], v = chain[i + 1];
-      if (u != v) add_cover(net[std::minmax(u, v)], one, u < v ? 1 : -1);
+      if (u != v) all.push_back({std::min(u, v), std::max(u, v), segments[s].group, u < v ? 1 : -1});
     }
   }
+  std::sort(all.begin(), all.end());
   Arrangement a;
-  for (auto& [key, cover] : net)
+  for (std::size_t i = 0; i < all.size();) {
+    Cover cover;
+    std::size_t j = i;
+    for (; j < all.size() && all[j].lo == all[i].lo && all[j].hi == all[i].hi; ++j) {
+      if (cover.empty() || cover.back().first != all[j].group) cover.push_back({all[j].group, 0});
+      cover.back().second += all[j].way;
+    }
+    std::erase_if(cover, [](const std::pair<int, int>& g) { return g.second == 0; });
     if (!cover.empty()) {
-      a.piece.push_back(key);
+      a.piece.push_back({all[i].lo, all[i].hi});
       a.net.push_back(std::move(cover));
     }
+    i = j;
+  }
   const int directed = static_cast<int>(2 * a.piece.size());
   std::vector<double> angle(directed);
   std::vector<int> order(directed);
@@ -209,19 +221,39 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
                             double near) {
   ChainOverlay o;
   o.points = std::move(points);
-  std::vector<std::vector<std::uint32_t>> cuts = find_cuts(o.points, segments, near);
-  o.pieces.resize(segments.size());
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    const glm::dvec2 a = o.points[segments[s].from], d = o.points[segments[s].to] - a;
-    auto& c = cuts[s];
+  // Cut each distinct pair of points once, whichever way and however often it is given.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> distinct;
+  std::vector<std::size_t> which(segments.size());
+  {
+    std::vector<std::size_t> order(segments.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    auto key = [&](std::size_t s) { return std::minmax(segments[s].from, segments[s].to); };
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key(x) < key(y); });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (i == 0 || key(order[i]) != key(order[i - 1])) distinct.push_back(key(order[i]));
+      which[order[i]] = distinct.size() - 1;
+    }
+  }
+  std::vector<std::vector<std::uint32_t>> cuts = find_cuts(o.points, distinct, near);
+  for (std::size_t k = 0; k < distinct.size(); ++k) {
+    const glm::dvec2 a = o.points[distinct[k].first], d = o.points[distinct[k].second] - a;
+    auto& c = cuts[k];
     std::sort(c.begin(), c.end(), [&](std::uint32_t x, std::uint32_t y) {
       const double tx = glm::dot(o.points[x] - a, d), ty = glm::dot(o.points[y] - a, d);
       return tx != ty ? tx < ty : x < y;
     });
     c.erase(std::unique(c.begin(), c.end()), c.end());
+  }
+  o.pieces.resize(segments.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const auto& c = cuts[which[s]];
     auto& chain = o.pieces[s];
     chain.push_back(segments[s].from);
-    chain.insert(chain.end(), c.begin(), c.end());
+    if (segments[s].from == distinct[which[s]].first) {
+      chain.insert(chain.end(), c.begin(), c.end());
+    } else {
+      chain.insert(chain.end(), c.rbegin(), c.rend());
+    }
     chain.push_back(segments[s].to);
   }
 

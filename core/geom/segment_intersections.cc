@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/geom/predicates.h"
@@ -21,20 +23,17 @@ bool consecutive_overlap(const Segment2& i, const Segment2& j) {
 
 }  // namespace
 
-std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
-                                                                            const std::vector<std::size_t>& next,
-                                                                            std::size_t max_pairs) {
-  std::vector<std::pair<std::size_t, std::size_t>> out;
-  const std::size_t n = segments.size();
-  if (n < 2) return out;
+void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit) {
+  const std::size_t n = boxes.size();
+  if (n < 2) return;
   double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
-  for (const Segment2& s : segments) {
-    lo_x = std::min({lo_x, s.a.x, s.b.x});
-    lo_y = std::min({lo_y, s.a.y, s.b.y});
-    hi_x = std::max({hi_x, s.a.x, s.b.x});
-    hi_y = std::max({hi_y, s.a.y, s.b.y});
+  for (const Box2& b : boxes) {
+    lo_x = std::min(lo_x, b.lo.x);
+    lo_y = std::min(lo_y, b.lo.y);
+    hi_x = std::max(hi_x, b.hi.x);
+    hi_y = std::max(hi_y, b.hi.y);
   }
-  // About one segment per cell on a square-ish grid.
+  // About one box per cell on a square-ish grid.
   const double span = std::max({hi_x - lo_x, hi_y - lo_y, std::numeric_limits<double>::min()});
   const std::int64_t cells = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::sqrt(static_cast<double>(n))));
   const double cell = span / static_cast<double>(cells) * (1.0 + 1e-9);
@@ -45,12 +44,11 @@ std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(cons
     std::int64_t x0, x1, y0, y1;
   };
   std::vector<Range> ranges(n);
-  std::vector<std::pair<std::int64_t, std::size_t>> entries;  // (cell key, segment)
+  std::vector<std::pair<std::int64_t, std::size_t>> entries;  // (cell key, box)
   entries.reserve(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Segment2& s = segments[i];
-    Range r{cell_of(std::min(s.a.x, s.b.x), lo_x), cell_of(std::max(s.a.x, s.b.x), lo_x),
-            cell_of(std::min(s.a.y, s.b.y), lo_y), cell_of(std::max(s.a.y, s.b.y), lo_y)};
+    const Box2& b = boxes[i];
+    Range r{cell_of(b.lo.x, lo_x), cell_of(b.hi.x, lo_x), cell_of(b.lo.y, lo_y), cell_of(b.hi.y, lo_y)};
     ranges[i] = r;
     for (std::int64_t x = r.x0; x <= r.x1; ++x)
       for (std::int64_t y = r.y0; y <= r.y1; ++y) entries.push_back({x * cells + y, i});
@@ -65,28 +63,41 @@ std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(cons
         std::size_t i = entries[p].second, j = entries[q].second;
         if (i > j) std::swap(i, j);
         const Range &ri = ranges[i], &rj = ranges[j];
-        // Test each pair once: in the lowest cell both segments' boxes cover.
+        // Visit each pair once: in the lowest cell both boxes cover.
         if (std::max(ri.x0, rj.x0) != cx || std::max(ri.y0, rj.y0) != cy) continue;
-        const Segment2 &si = segments[i], &sj = segments[j];
-        const bool i_then_j = !next.empty() && next[i] == j;
-        const bool j_then_i = !next.empty() && next[j] == i;
-        bool hit;
-        if (i_then_j && j_then_i) {
-          hit = consecutive_overlap(si, sj) || consecutive_overlap(sj, si);  // a two-edge loop
-        } else if (i_then_j) {
-          hit = consecutive_overlap(si, sj);
-        } else if (j_then_i) {
-          hit = consecutive_overlap(sj, si);
-        } else {
-          hit = segments_intersect(si.a, si.b, sj.a, sj.b);
-        }
-        if (!hit) continue;
-        out.push_back({i, j});
-        if (out.size() >= max_pairs) return out;
+        const Box2 &bi = boxes[i], &bj = boxes[j];
+        if (bi.hi.x < bj.lo.x || bj.hi.x < bi.lo.x || bi.hi.y < bj.lo.y || bj.hi.y < bi.lo.y) continue;
+        if (!visit(i, j)) return;
       }
     }
     begin = end;
   }
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
+                                                                            const std::vector<std::size_t>& next,
+                                                                            std::size_t max_pairs) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  std::vector<Box2> boxes;
+  boxes.reserve(segments.size());
+  for (const Segment2& s : segments) boxes.push_back({glm::min(s.a, s.b), glm::max(s.a, s.b)});
+  for_each_box_pair(boxes, [&](std::size_t i, std::size_t j) {
+    const Segment2 &si = segments[i], &sj = segments[j];
+    const bool i_then_j = !next.empty() && next[i] == j;
+    const bool j_then_i = !next.empty() && next[j] == i;
+    bool hit;
+    if (i_then_j && j_then_i) {
+      hit = consecutive_overlap(si, sj) || consecutive_overlap(sj, si);  // a two-edge loop
+    } else if (i_then_j) {
+      hit = consecutive_overlap(si, sj);
+    } else if (j_then_i) {
+      hit = consecutive_overlap(sj, si);
+    } else {
+      hit = segments_intersect(si.a, si.b, sj.a, sj.b);
+    }
+    if (hit) out.push_back({i, j});
+    return out.size() < max_pairs;
+  });
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -1,11 +1,12 @@
 // Finding which of many 2D segments touch or cross, in about O(n log n) for
-// the inputs procex sees (footprint loops, face outlines): segments are
-// bucketed in a uniform grid and only segments sharing a cell are compared,
-// with the exact predicates of predicates.h.
+// the inputs procex sees (footprint loops, face outlines): their bounding
+// boxes are bucketed in a uniform grid and only segments whose boxes overlap
+// are compared, with the exact predicates of predicates.h.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -16,6 +17,14 @@ namespace procex {
 struct Segment2 {
   glm::dvec2 a, b;
 };
+
+struct Box2 {
+  glm::dvec2 lo, hi;
+};
+
+// Calls visit(i, j), i < j, once for every pair of boxes that overlap
+// (touching counts), until it returns false.
+void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit);
 
 // Pairs (i, j), i < j, of segments that share at least one point. Segments
 // that follow each other (next[i] == j: segment i ends where j starts, as in
