@@ -121,23 +121,33 @@ std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z
   return out;
 }
 
-// The horizontal faces at z. The flattened nested faces of the edges that
-// step cover the old cross-section less the new one (ledges, winding +1) and
-// the new less the old (soffits, winding -1); where neighbours step different
-// ways they fold over each other, so they are overlaid and only the cells of
-// non-zero winding are kept, each in the face of an edge covering it. Every
-// segment at z in any face (the ends of the faces below, the starts of those
-// above, what plan edits wrote) is cut where another crosses or touches it,
-// so all faces meet vertex to vertex.
-void horizontal_faces(State& st, const Nested& n, const std::vector<std::uint32_t>& vertex,
-                      const std::map<int, SourceStep>& steps, double z) {
-  std::vector<std::uint32_t> global;
+// An edge of the new cross-section as the nested sweep left it: from the top
+// of a nested corner to the top of the next, on nested source `source`.
+struct TopEdge {
+  std::uint32_t from, to;
+  int source;
+};
+
+// Everything at z overlaid: the flattened nested faces of the edges that
+// step, the new cross-section's edges, and every segment at z in any face
+// (the ends of the faces below, what plan edits wrote). Each of those is cut
+// where another crosses or touches it, so all faces meet vertex to vertex.
+struct AtHeight {
+  ChainOverlay overlay;
+  std::vector<std::uint32_t> global;  // overlay point -> vertex
+  std::vector<int> stepping;          // group -> the outer edge whose flattened face it is
+  std::size_t first_top = 0;          // overlay segment of the first TopEdge
+};
+
+AtHeight overlay_at_height(State& st, const Nested& n, const std::vector<std::uint32_t>& vertex,
+                           const std::vector<TopEdge>& tops, double z) {
+  AtHeight h;
   std::unordered_map<std::uint32_t, std::uint32_t> local_of;
   std::vector<glm::dvec2> points;
   auto local = [&](std::uint32_t v) {
-    auto [it, fresh] = local_of.try_emplace(v, static_cast<std::uint32_t>(global.size()));
+    auto [it, fresh] = local_of.try_emplace(v, static_cast<std::uint32_t>(h.global.size()));
     if (fresh) {
-      global.push_back(v);
+      h.global.push_back(v);
       points.emplace_back(st.vertices[v]);
     }
     return it->second;
@@ -153,22 +163,24 @@ void horizontal_faces(State& st, const Nested& n, const std::vector<std::uint32_
         written.push_back({f, i});
       }
   }
+  h.first_top = segments.size();
+  for (const TopEdge& t : tops) segments.push_back({local(t.from), local(t.to), -1});
   // An edge that does not step flattens to a strip of no area, which covers nothing.
-  std::vector<int> stepping;  // group -> outer edge
   std::map<int, int> group_of;
   for (const FaceGroup& f : n.st.faces) {
     if (f.kind != FaceKind::Side || n.st.edges[n.st.sources[f.source_edge].edge].plane.k == 0.0) continue;
     const int e = n.span_edge[f.source_edge];
-    auto [it, fresh] = group_of.try_emplace(e, static_cast<int>(stepping.size()));
-    if (fresh) stepping.push_back(e);
-    for (const HalfEdge& h : f.half_edges) {
-      const std::uint32_t a = vertex[h.from], b = vertex[h.to];
+    auto [it, fresh] = group_of.try_emplace(e, static_cast<int>(h.stepping.size()));
+    if (fresh) h.stepping.push_back(e);
+    for (const HalfEdge& he : f.half_edges) {
+      const std::uint32_t a = vertex[he.from], b = vertex[he.to];
       if (a != b) segments.push_back({local(a), local(b), it->second});
     }
   }
 
-  const ChainOverlay o = overlay_chains(std::move(points), segments, st.tol().position());
-  for (std::size_t i = global.size(); i < o.points.size(); ++i) global.push_back(st.add_vertex({o.points[i], z}));
+  h.overlay = overlay_chains(std::move(points), segments, st.tol().position());
+  for (std::size_t i = h.global.size(); i < h.overlay.points.size(); ++i)
+    h.global.push_back(st.add_vertex({h.overlay.points[i], z}));
 
   for (std::size_t next = 0; next < written.size();) {
     const std::size_t f = written[next].first;
@@ -179,35 +191,119 @@ void horizontal_faces(State& st, const Nested& n, const std::vector<std::uint32_
         cut.push_back(hs[i]);
         continue;
       }
-      const std::vector<std::uint32_t>& chain = o.pieces[next++];
-      for (std::size_t k = 0; k + 1 < chain.size(); ++k) cut.push_back({global[chain[k]], global[chain[k + 1]]});
+      const std::vector<std::uint32_t>& chain = h.overlay.pieces[next++];
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) cut.push_back({h.global[chain[k]], h.global[chain[k + 1]]});
     }
     st.faces[f].half_edges = std::move(cut);
   }
+  return h;
+}
 
+// The horizontal faces at z. The flattened nested faces of the edges that
+// step cover the old cross-section less the new one (ledges, winding +1) and
+// the new less the old (soffits, winding -1); where neighbours step different
+// ways they fold over each other and cancel, and where grown steps overlap
+// they count once: every cell of non-zero winding is one face, of an edge
+// covering it.
+void horizontal_faces(State& st, const AtHeight& h, const std::map<int, SourceStep>& steps, double z) {
   std::map<int, int> face_of;  // group -> its horizontal face
-  for (const OverlayCell& cell : o.cells) {
+  for (const OverlayCell& cell : h.overlay.cells) {
     auto [it, fresh] = face_of.try_emplace(cell.owner, 0);
     if (fresh) {
-      const int e = stepping[cell.owner];
+      const int e = h.stepping[cell.owner];
       const auto step = steps.find(st.edges[e].source);
-      FaceGroup h;
-      h.kind = FaceKind::Side;
-      h.source_edge = st.edges[e].source_id;
-      h.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
-      h.outward = {0.0, 0.0, cell.winding > 0 ? 1.0 : -1.0};
-      h.origin = {0.0, 0.0, z};
+      FaceGroup f;
+      f.kind = FaceKind::Side;
+      f.source_edge = st.edges[e].source_id;
+      f.tag = step == steps.end() ? st.faces[st.edges[e].face].tag : step->second.step_tag;
+      f.outward = {0.0, 0.0, cell.winding > 0 ? 1.0 : -1.0};
+      f.origin = {0.0, 0.0, z};
       it->second = static_cast<int>(st.faces.size());
-      st.faces.push_back(std::move(h));
+      st.faces.push_back(std::move(f));
     }
     // A soffit is seen from below: its cycles run the other way.
     std::vector<HalfEdge>& hs = st.faces[it->second].half_edges;
     const std::size_t m = cell.loop.size();
     for (std::size_t k = 0; k < m; ++k) {
-      const std::uint32_t a = global[cell.loop[k]], b = global[cell.loop[(k + 1) % m]];
+      const std::uint32_t a = h.global[cell.loop[k]], b = h.global[cell.loop[(k + 1) % m]];
       hs.push_back(cell.winding > 0 ? HalfEdge{a, b} : HalfEdge{b, a});
     }
   }
+}
+
+// A loop of the new cross-section: each vertex with the nested source of the edge leaving it.
+using SectionLoop = std::vector<std::pair<std::uint32_t, int>>;
+
+// The new cross-section: the outline of where the nested sweep's top winds
+// round at least once. Where grown steps ran into each other at the top (a
+// dormer's front meeting its neighbour's at a concave corner), the top
+// overlaps itself; its outline does not.
+std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<TopEdge>& tops, double near) {
+  const ChainOverlay& o = h.overlay;
+  std::vector<OverlaySegment> pieces;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> source_of;  // piece either way -> nested source
+  for (std::size_t t = 0; t < tops.size(); ++t) {
+    const auto& chain = o.pieces[h.first_top + t];
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+      pieces.push_back({chain[k], chain[k + 1], 0});
+      source_of.try_emplace({chain[k], chain[k + 1]}, tops[t].source);
+      source_of.try_emplace({chain[k + 1], chain[k]}, tops[t].source);
+    }
+  }
+  // Already cut against each other, the pieces make no new points.
+  const ChainOverlay inside = overlay_chains(o.points, pieces, near);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> outline;
+  for (const OverlayCell& cell : inside.cells) {
+    if (cell.winding < 1) continue;
+    for (std::size_t k = 0; k < cell.loop.size(); ++k) {
+      const std::uint32_t a = cell.loop[k], b = cell.loop[(k + 1) % cell.loop.size()];
+      if (auto back = outline.find({b, a}); back != outline.end()) {
+        if (--back->second == 0) outline.erase(back);
+      } else {
+        ++outline[{a, b}];
+      }
+    }
+  }
+  // Chain the outline; where it touches itself, leave each point by the
+  // first way clockwise from the way in, so every loop stays simple.
+  std::multimap<std::uint32_t, std::uint32_t> out;
+  for (const auto& [edge, count] : outline)
+    for (int i = 0; i < count; ++i) out.emplace(edge.first, edge.second);
+  std::vector<SectionLoop> loops;
+  while (!out.empty()) {
+    SectionLoop loop;
+    auto it = out.begin();
+    const std::uint32_t start = it->first;
+    std::uint32_t from = start, to = it->second;
+    out.erase(it);
+    while (true) {
+      const auto source = source_of.find({from, to});
+      if (source == source_of.end() || o.points.size() != inside.points.size())
+        throw SweepError("sweep: the cross-section after a horizontal step is not closed", 0.0, {});
+      loop.push_back({from, source->second});
+      if (to == start) break;
+      auto [lo, hi] = out.equal_range(to);
+      if (lo == hi) throw SweepError("sweep: the cross-section after a horizontal step is not closed", 0.0, {});
+      const glm::dvec2 back = o.points[from] - o.points[to];
+      const double back_angle = std::atan2(back.y, back.x);
+      auto best = lo;
+      double best_turn = 1e300;
+      for (auto x = lo; x != hi; ++x) {
+        const glm::dvec2 d = o.points[x->second] - o.points[to];
+        double turn = back_angle - std::atan2(d.y, d.x);
+        while (turn <= 0.0) turn += 2.0 * M_PI;
+        if (turn < best_turn) {
+          best_turn = turn;
+          best = x;
+        }
+      }
+      from = to;
+      to = best->second;
+      out.erase(best);
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
 }
 
 }  // namespace
@@ -250,27 +346,32 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     return it->second;
   };
 
-  // The nested sweep's top is the new cross-section.
+  // The nested sweep's top, outlined, is the new cross-section.
+  std::vector<TopEdge> tops;
+  for (const Corner& k : n.st.corners) {
+    if (!k.alive) continue;
+    const std::uint32_t a = vertex[n.top[&k - n.st.corners.data()]], b = vertex[n.top[k.next]];
+    if (a != b) tops.push_back({a, b, n.st.edges[k.next_edge].source});
+  }
   for (const auto& loop : loops)
     for (int c : loop) st.corners[c].alive = false;
-  std::vector<int> fresh(n.st.corners.size(), kNone);
+  const AtHeight h = overlay_at_height(st, n, vertex, tops, z);
+  horizontal_faces(st, h, steps, z);
   std::vector<int> made;
-  for (int c = 0; c < static_cast<int>(n.st.corners.size()); ++c) {
-    const Corner& k = n.st.corners[c];
-    if (!k.alive) continue;
-    const int prev = plane_above(n.st.edges[k.prev_edge].source);
-    const int next = plane_above(n.st.edges[k.next_edge].source);
-    fresh[c] = st.add_corner(prev, next, vertex[n.top[c]]);
-    made.push_back(fresh[c]);
+  for (const SectionLoop& loop : new_cross_section(h, tops, st.tol().position())) {
+    const std::size_t m = loop.size();
+    std::vector<int> corners;
+    for (std::size_t i = 0; i < m; ++i) {
+      const auto [v, source] = loop[i];
+      const int prev = plane_above(loop[(i + m - 1) % m].second), next = plane_above(source);
+      const std::uint32_t to = h.global[loop[(i + 1) % m].first];
+      st.faces[st.edges[next].face].half_edges.push_back({h.global[v], to});
+      if (prev != next) corners.push_back(st.add_corner(prev, next, h.global[v]));
+    }
+    if (corners.size() < 2) throw SweepError("sweep: a loop of the cross-section after a horizontal step has no corners", z, {});
+    for (std::size_t i = 0; i < corners.size(); ++i) st.link(corners[i], corners[(i + 1) % corners.size()]);
+    made.insert(made.end(), corners.begin(), corners.end());
   }
-  for (int c = 0; c < static_cast<int>(n.st.corners.size()); ++c) {
-    const Corner& k = n.st.corners[c];
-    if (!k.alive) continue;
-    st.link(fresh[c], fresh[k.next]);
-    const std::uint32_t a = vertex[n.top[c]], b = vertex[n.top[k.next]];
-    if (a != b) st.faces[st.edges[st.corners[fresh[c]].next_edge].face].half_edges.push_back({a, b});
-  }
-  horizontal_faces(st, n, vertex, steps, z);
   for (int c : settle(st, made)) {
     queue.schedule(st, c);
     queue.schedule_edge_event(st, st.corners[c].prev);
