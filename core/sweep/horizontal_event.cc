@@ -238,7 +238,7 @@ using SectionLoop = std::vector<std::pair<std::uint32_t, int>>;
 // round at least once. Where grown steps ran into each other at the top (a
 // dormer's front meeting its neighbour's at a concave corner), the top
 // overlaps itself; its outline does not.
-std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<TopEdge>& tops, double near) {
+std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<TopEdge>& tops, double near, double z) {
   const ChainOverlay& o = h.overlay;
   std::vector<OverlaySegment> pieces;
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> source_of;  // piece either way -> nested source
@@ -252,6 +252,7 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
   }
   // Already cut against each other, the pieces make no new points.
   const ChainOverlay inside = overlay_chains(o.points, pieces, near);
+  auto open = [&] { return SweepError("sweep: the cross-section after a horizontal step is not closed", z, {}); };
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> outline;
   for (const OverlayCell& cell : inside.cells) {
     if (cell.winding < 1) continue;
@@ -278,12 +279,11 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
     out.erase(it);
     while (true) {
       const auto source = source_of.find({from, to});
-      if (source == source_of.end() || o.points.size() != inside.points.size())
-        throw SweepError("sweep: the cross-section after a horizontal step is not closed", 0.0, {});
+      if (source == source_of.end() || o.points.size() != inside.points.size()) throw open();
       loop.push_back({from, source->second});
       if (to == start) break;
       auto [lo, hi] = out.equal_range(to);
-      if (lo == hi) throw SweepError("sweep: the cross-section after a horizontal step is not closed", 0.0, {});
+      if (lo == hi) throw open();
       const glm::dvec2 back = o.points[from] - o.points[to];
       const double back_angle = std::atan2(back.y, back.x);
       auto best = lo;
@@ -348,9 +348,10 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
 
   // The nested sweep's top, outlined, is the new cross-section.
   std::vector<TopEdge> tops;
-  for (const Corner& k : n.st.corners) {
+  for (std::size_t c = 0; c < n.st.corners.size(); ++c) {
+    const Corner& k = n.st.corners[c];
     if (!k.alive) continue;
-    const std::uint32_t a = vertex[n.top[&k - n.st.corners.data()]], b = vertex[n.top[k.next]];
+    const std::uint32_t a = vertex[n.top[c]], b = vertex[n.top[k.next]];
     if (a != b) tops.push_back({a, b, n.st.edges[k.next_edge].source});
   }
   for (const auto& loop : loops)
@@ -358,7 +359,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
   const AtHeight h = overlay_at_height(st, n, vertex, tops, z);
   horizontal_faces(st, h, steps, z);
   std::vector<int> made;
-  for (const SectionLoop& loop : new_cross_section(h, tops, st.tol().position())) {
+  for (const SectionLoop& loop : new_cross_section(h, tops, st.tol().position(), z)) {
     const std::size_t m = loop.size();
     std::vector<int> corners;
     for (std::size_t i = 0; i < m; ++i) {
