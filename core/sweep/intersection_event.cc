@@ -58,6 +58,11 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
     return Collision{c.p, c.z, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
   }
   if (c.edge == k.prev_edge || c.edge == k.next_edge) return std::nullopt;
+  // A meeting just below the sweep plane (within delta2, queued at the plane)
+  // counts only if the corner is still there: a fast corner (between nearly
+  // antiparallel planes) covers real distance within delta2, and one made at
+  // this height has already passed a plane it met below.
+  if (glm::length(st.position(c.corner, c.z) - c.p) > st.tol().position()) return std::nullopt;
   // At the candidate's own height: a batch spans delta2, over which a plane
   // leaning at k moves k delta2, more than delta3 wherever k > 1.
   if (span_through(st, c.edge, c.p, c.z, st.tol().position()) == kNone) return std::nullopt;
@@ -144,7 +149,12 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const s
 
 // Whether the wedge outside the solid between an incoming ray (edge a, at
 // angle in_angle) and the next outgoing ray counter-clockwise (edge b) closes
-// as the sweep rises: the lines of a and b then cross inside that wedge.
+// as the sweep rises: the lines of a and b then cross inside that wedge, or on
+// its boundary. Where one plane is vertical its line stands still, so the
+// crossing runs exactly along that edge's ray: the other plane leaning into
+// the gap eats into the edge's span (a wall leaning out across a notch meets
+// the opposite wall), and the angle of the computed velocity, equal to the
+// ray's only up to rounding, cannot say on which side of the ray it runs.
 bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle) {
   if (a == b) return false;
   const Plane& pa = st.edges[a].plane;
@@ -153,16 +163,29 @@ bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle
     // Lines facing each other across a sliver close it when they lean out more than in.
     return glm::dot(pa.n, pb.n) < 0.0 && pa.k + pb.k < 0.0;
   }
-  const glm::dvec2 v = crossing_velocity(pa, pb);
-  if (v == glm::dvec2(0.0)) return false;
   auto ccw_from_in = [&](double angle) {
     double d = angle - in_angle;
     while (d < 0.0) d += 2.0 * M_PI;
     while (d >= 2.0 * M_PI) d -= 2.0 * M_PI;
     return d;
   };
-  const double at = ccw_from_in(std::atan2(v.y, v.x));
-  return at > 0.0 && at < ccw_from_in(out_angle);
+  const double out = ccw_from_in(out_angle);
+  double at;
+  if (pa.k == 0.0 && pb.k == 0.0) {
+    return false;  // neither line moves
+  } else if (pa.k == 0.0) {
+    // Along a's line; b moves k_b / (n_b . dir_a) per unit height along dir_a,
+    // and the in-ray points along -dir_a.
+    at = pb.k / glm::dot(pb.n, st.edges[a].dir) < 0.0 ? 0.0 : M_PI;
+  } else if (pb.k == 0.0) {
+    at = pa.k / glm::dot(pa.n, st.edges[b].dir) > 0.0 ? out : ccw_from_in(out_angle + M_PI);
+  } else {
+    const glm::dvec2 v = crossing_velocity(pa, pb);
+    if (v == glm::dvec2(0.0)) return false;
+    at = ccw_from_in(std::atan2(v.y, v.x));
+    return at > 0.0 && at < out;
+  }
+  return at <= out;
 }
 
 void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {

@@ -52,10 +52,9 @@ std::vector<Profile> step_profiles() {
 enum class Mix { OutOrNone, InOrNone, All };
 
 // Footprints whose mixes do not yet sweep to a valid mesh (self-intersecting
-// near a soffit's corner; a soffit that closes a narrow notch between
-// antiparallel edges, which the nested sweep meets as a point, not along the
-// overlap): open engine bugs, listed so they stay visible in the output.
-const char* const kKnownFailures[] = {"w37054313", "w250270018", "w298738815", "w298740948", "w257071659"};
+// near a soffit's corner): open engine bugs, listed so they stay visible in
+// the output.
+const char* const kKnownFailures[] = {"w37054313", "w250270018"};
 
 std::string sweep_mixed(const GeoJsonFeature& f, Mix mix) {
   PreparedFootprint prepared;
