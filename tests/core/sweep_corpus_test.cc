@@ -6,7 +6,10 @@
 // OSM itself flags invalid (properties.valid == false: two self-intersecting
 // Baltimore rings) may be refused. A third pass gives each footprint a profile
 // drawn (seeded by its index) from a set with soffits, ledges, mansard breaks,
-// fascias and outward leans.
+// fascias and outward leans; a fourth gives every footprint the outward lean
+// (walls leaning out over each other, so the regions grow into each other,
+// then a roof): nearly antiparallel walls of notches and tabs meet along an
+// overlap there, not at a point.
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -40,7 +43,7 @@ namespace {
 // vertices), in Release on all of them.
 constexpr std::size_t kSanitizedStride = 8;
 
-enum class Angles { All45, Random, Profiles };
+enum class Angles { All45, Random, Profiles, Lean };
 
 struct CorpusCase {
   std::filesystem::path file;
@@ -48,7 +51,8 @@ struct CorpusCase {
 };
 
 void PrintTo(const CorpusCase& c, std::ostream* os) {
-  static const char* const kHow[] = {" at 45 degrees", " at random angles", " with seeded profiles"};
+  static const char* const kHow[] = {" at 45 degrees", " at random angles", " with seeded profiles",
+                                     " with the lean profile"};
   *os << c.file.filename().string() << kHow[static_cast<int>(c.angles)];
 }
 
@@ -83,10 +87,12 @@ Outcome run_one(const GeoJsonFeature& f, Angles angles, bool check_self_intersec
     return {Outcome::Refused, std::string(e.what()) + " (loop " + std::to_string(e.loop()) + ", vertex " +
                                   std::to_string(e.vertex()) + ")"};
   }
-  if (angles == Angles::Profiles) {
+  if (angles == Angles::Profiles || angles == Angles::Lean) {
     prepared.footprint.profiles = house_profiles();
     const int pick =
-        static_cast<int>(std::mt19937(static_cast<std::uint32_t>(f.index) + 1u)() % unsigned{kHouseProfileCount});
+        angles == Angles::Lean
+            ? kLean
+            : static_cast<int>(std::mt19937(static_cast<std::uint32_t>(f.index) + 1u)() % unsigned{kHouseProfileCount});
     for (Loop& loop : prepared.footprint.loops)
       for (EdgeSpec& e : loop.edges) e.profile = pick;
   }
@@ -150,12 +156,12 @@ TEST_P(SweepCorpus, EveryFootprintValidatesOrIsRefused) {
 std::vector<CorpusCase> corpus_cases() {
   std::vector<CorpusCase> cases;
   for (const auto& file : footprint_corpus_files())
-    for (Angles a : {Angles::All45, Angles::Random, Angles::Profiles}) cases.push_back({file, a});
+    for (Angles a : {Angles::All45, Angles::Random, Angles::Profiles, Angles::Lean}) cases.push_back({file, a});
   return cases;
 }
 
 std::string suffix(Angles a) {
-  static const char* const kSuffix[] = {"_45", "_random", "_profiles"};
+  static const char* const kSuffix[] = {"_45", "_random", "_profiles", "_lean"};
   return kSuffix[static_cast<int>(a)];
 }
 
