@@ -3,12 +3,10 @@
 // out of every eave at 3 m and a forced recess is cut into every wall at the
 // footprint. Edits that do not fit an edge are absent (with a reason); every
 // mesh must validate (closed, 2-manifold, oriented, planar, no
-// self-intersection), but for the footprints listed in
-// tests/data/plan_edit_known_failures.txt (open engine bugs, kept visible).
+// self-intersection): natural steps are grown by a nested sweep and stay
+// simple where they run into each other or into the walls round them.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -56,27 +54,13 @@ std::vector<PlanEdit> edits() {
   return {natural("bay", 1.0, 1.5, 0.6, 1), natural("dormer", 3.0, 1.2, 0.3, 2), recess};
 }
 
-std::set<std::string> known_failures() {
-  std::ifstream in(std::filesystem::path(PROCEX_TEST_DATA) / "plan_edit_known_failures.txt");
-  std::set<std::string> ids;
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#') ids.insert(line);
-  return ids;
-}
-
 class PlanEditCorpus : public ::testing::TestWithParam<std::filesystem::path> {};
 
 TEST_P(PlanEditCorpus, EveryFootprintValidates) {
   const GeoJsonCollection corpus = read_geojson_file(GetParam());
   ASSERT_TRUE(corpus.errors.empty());
-  const std::set<std::string> known = known_failures();
-  ASSERT_FALSE(known.empty()) << "tests/data/plan_edit_known_failures.txt is missing";
-  std::size_t ok = 0, applied = 0, absent = 0, refused = 0, known_failed = 0;
+  std::size_t ok = 0, applied = 0, absent = 0, refused = 0;
   auto failed = [&](const GeoJsonFeature& f, const std::string& why) {
-    if (known.contains(f.id)) {
-      ++known_failed;
-      return;
-    }
     ADD_FAILURE() << f.id << " (feature " << f.index << "): " << why;
   };
   for (const GeoJsonFeature& f : corpus.features) {
@@ -100,7 +84,6 @@ TEST_P(PlanEditCorpus, EveryFootprintValidates) {
       const ValidationReport v = validate(build_mesh(s));
       if (v.ok()) {
         ++ok;
-        if (known.contains(f.id)) std::cout << "listed as a known failure but validates: " << f.id << "\n";
         continue;
       }
       failed(f, "does not validate: " + (v.problems.empty() ? std::string() : v.problems.front()));
@@ -108,8 +91,7 @@ TEST_P(PlanEditCorpus, EveryFootprintValidates) {
       failed(f, e.what());
     }
   }
-  std::cout << GetParam().filename().string() << ": " << ok << " ok, " << known_failed << " known failures, "
-            << refused << " refused; edits applied "
+  std::cout << GetParam().filename().string() << ": " << ok << " ok, " << refused << " refused; edits applied "
             << applied << ", absent " << absent << "\n";
   // Most footprints have edges long enough for several of the edits.
   EXPECT_GT(applied, 2 * ok);
