@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <span>
 #include <tuple>
 #include <utility>
 
@@ -20,9 +21,11 @@ namespace {
 
 // A winding number per group, sorted by group, zeros left out.
 using Cover = std::vector<std::pair<int, int>>;
+using CoverView = std::span<const std::pair<int, int>>;
 
-void add_cover(Cover& to, const Cover& from, int sign) {
-  Cover sum;
+// sum = to + sign * from.
+void add_cover(const Cover& to, CoverView from, int sign, Cover& sum) {
+  sum.clear();
   sum.reserve(to.size() + from.size());
   std::size_t i = 0, j = 0;
   while (i < to.size() || j < from.size()) {
@@ -37,7 +40,6 @@ void add_cover(Cover& to, const Cover& from, int sign) {
       ++j;
     }
   }
-  to = std::move(sum);
 }
 
 double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
@@ -112,13 +114,22 @@ std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
 struct Arrangement {
   // Directed pieces: 2k runs from the lower to the higher point of undirected piece k, 2k + 1 back.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> piece;  // undirected, lower point first
-  std::vector<Cover> net;                                       // per undirected piece, lower to higher
+  std::vector<std::pair<int, int>> nets;                        // every piece's net cover, one after another
+  std::vector<std::size_t> net_from;                            // piece k's in nets: [net_from[k], net_from[k + 1])
   std::vector<int> next;                                        // directed piece -> next in its cycle
   std::vector<int> cycle_of;                                    // directed piece -> its cycle
-  std::vector<std::vector<int>> cycles;                         // directed pieces, the cell on their left
+  std::vector<int> cycled;                                      // the directed pieces, cycle by cycle
+  std::vector<std::size_t> cycle_from;                          // cycle c's in cycled, like net_from
 
   std::uint32_t from(int d) const { return d % 2 == 0 ? piece[d / 2].first : piece[d / 2].second; }
   std::uint32_t to(int d) const { return from(d ^ 1); }
+  // Per undirected piece, the windings that change across it, lower to higher.
+  CoverView net(std::size_t k) const { return CoverView(nets).subspan(net_from[k], net_from[k + 1] - net_from[k]); }
+  std::size_t cycles() const { return cycle_from.size() - 1; }
+  // A cycle's directed pieces, the cell on their left.
+  std::span<const int> cycle(std::size_t c) const {
+    return std::span<const int>(cycled).subspan(cycle_from[c], cycle_from[c + 1] - cycle_from[c]);
+  }
 };
 
 // The pieces across which some group's winding changes, and the cycles they
@@ -141,8 +152,10 @@ Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& se
   }
   std::sort(all.begin(), all.end());
   Arrangement a;
+  a.net_from.push_back(0);
+  Cover cover;
   for (std::size_t i = 0; i < all.size();) {
-    Cover cover;
+    cover.clear();
     std::size_t j = i;
     for (; j < all.size() && all[j].lo == all[i].lo && all[j].hi == all[i].hi; ++j) {
       if (cover.empty() || cover.back().first != all[j].group) cover.push_back({all[j].group, 0});
@@ -151,7 +164,8 @@ Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& se
     std::erase_if(cover, [](const std::pair<int, int>& g) { return g.second == 0; });
     if (!cover.empty()) {
       a.piece.push_back({all[i].lo, all[i].hi});
-      a.net.push_back(std::move(cover));
+      a.nets.insert(a.nets.end(), cover.begin(), cover.end());
+      a.net_from.push_back(a.nets.size());
     }
     i = j;
   }
@@ -183,14 +197,15 @@ Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& se
     a.next[d] = order[i];
   }
   a.cycle_of.assign(directed, -1);
+  a.cycled.reserve(directed);
+  a.cycle_from.push_back(0);
   for (int d = 0; d < directed; ++d) {
     if (a.cycle_of[d] >= 0) continue;
-    std::vector<int> cycle;
     for (int x = d; a.cycle_of[x] < 0; x = a.next[x]) {
-      a.cycle_of[x] = static_cast<int>(a.cycles.size());
-      cycle.push_back(x);
+      a.cycle_of[x] = static_cast<int>(a.cycle_from.size() - 1);
+      a.cycled.push_back(x);
     }
-    a.cycles.push_back(std::move(cycle));
+    a.cycle_from.push_back(a.cycled.size());
   }
   return a;
 }
@@ -201,7 +216,7 @@ Arrangement arrange(const ChainOverlay& o, const std::vector<OverlaySegment>& se
 Cover cover_left_of(const ChainOverlay& o, const Arrangement& a, int d) {
   const glm::dvec2 p = o.points[a.from(d)], q = o.points[a.to(d)];
   const glm::dvec2 m = 0.5 * (p + q), ray{p.y - q.y, q.x - p.x};
-  Cover w;
+  Cover w, sum;
   for (std::size_t k = 0; k < a.piece.size(); ++k) {
     if (static_cast<int>(k) == d / 2) continue;
     const glm::dvec2 u = o.points[a.piece[k].first], v = o.points[a.piece[k].second];
@@ -210,7 +225,10 @@ Cover cover_left_of(const ChainOverlay& o, const Arrangement& a, int d) {
     const int sign = su < 0.0 && sv >= 0.0 ? 1 : su >= 0.0 && sv < 0.0 ? -1 : 0;
     if (sign == 0) continue;
     const glm::dvec2 x = u + (v - u) * (su / (su - sv));
-    if (glm::dot(x - m, ray) > 0.0) add_cover(w, a.net[k], sign);
+    if (glm::dot(x - m, ray) > 0.0) {
+      add_cover(w, a.net(k), sign, sum);
+      std::swap(w, sum);
+    }
   }
   return w;
 }
@@ -225,13 +243,17 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
   std::vector<std::pair<std::uint32_t, std::uint32_t>> distinct;
   std::vector<std::size_t> which(segments.size());
   {
-    std::vector<std::size_t> order(segments.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    auto key = [&](std::size_t s) { return std::minmax(segments[s].from, segments[s].to); };
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key(x) < key(y); });
+    // (lower point, higher point, segment), sorted.
+    std::vector<std::pair<std::uint64_t, std::size_t>> order(segments.size());
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+      const auto [lo, hi] = std::minmax(segments[s].from, segments[s].to);
+      order[s] = {std::uint64_t{lo} << 32 | hi, s};
+    }
+    std::sort(order.begin(), order.end());
     for (std::size_t i = 0; i < order.size(); ++i) {
-      if (i == 0 || key(order[i]) != key(order[i - 1])) distinct.push_back(key(order[i]));
-      which[order[i]] = distinct.size() - 1;
+      if (i == 0 || order[i].first != order[i - 1].first)
+        distinct.push_back({static_cast<std::uint32_t>(order[i].first >> 32), static_cast<std::uint32_t>(order[i].first)});
+      which[order[i].second] = distinct.size() - 1;
     }
   }
   std::vector<std::vector<std::uint32_t>> cuts = find_cuts(o.points, distinct, near);
@@ -248,6 +270,7 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
   for (std::size_t s = 0; s < segments.size(); ++s) {
     const auto& c = cuts[which[s]];
     auto& chain = o.pieces[s];
+    chain.reserve(c.size() + 2);
     chain.push_back(segments[s].from);
     if (segments[s].from == distinct[which[s]].first) {
       chain.insert(chain.end(), c.begin(), c.end());
@@ -258,14 +281,14 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
   }
 
   const Arrangement a = arrange(o, segments);
-  const std::size_t cycles = a.cycles.size();
+  const std::size_t cycles = a.cycles();
   // Each connected part of the arrangement has one cycle round its outside
   // (clockwise: the least signed area). The windings there come from a ray;
   // every other cycle of the part is reached across pieces, whose net
   // windings say how much they change.
   std::vector<double> area(cycles, 0.0);
   for (std::size_t c = 0; c < cycles; ++c)
-    for (int d : a.cycles[c]) area[c] += cross(o.points[a.from(d)], o.points[a.to(d)]);
+    for (int d : a.cycle(c)) area[c] += cross(o.points[a.from(d)], o.points[a.to(d)]);
   std::vector<std::uint32_t> parent(o.points.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto root = [&](std::uint32_t x) {
@@ -275,24 +298,23 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
   for (const auto& [u, v] : a.piece) parent[root(u)] = root(v);
   std::map<std::uint32_t, std::size_t> outside;  // part -> its outside cycle
   for (std::size_t c = 0; c < cycles; ++c) {
-    auto [it, fresh] = outside.try_emplace(root(a.from(a.cycles[c].front())), c);
+    auto [it, fresh] = outside.try_emplace(root(a.from(a.cycle(c).front())), c);
     if (!fresh && area[c] < area[it->second]) it->second = c;
   }
   std::vector<Cover> cover(cycles);
   std::vector<char> known(cycles, 0);
   std::vector<std::size_t> queue;
   for (const auto& [part, c] : outside) {
-    cover[c] = cover_left_of(o, a, a.cycles[c].front());
+    cover[c] = cover_left_of(o, a, a.cycle(c).front());
     known[c] = 1;
     queue.push_back(c);
   }
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const std::size_t c = queue[i];
-    for (int d : a.cycles[c]) {
+    for (int d : a.cycle(c)) {
       const std::size_t other = static_cast<std::size_t>(a.cycle_of[d ^ 1]);
       if (known[other]) continue;
-      cover[other] = cover[c];
-      add_cover(cover[other], a.net[d / 2], d % 2 == 0 ? -1 : 1);
+      add_cover(cover[c], a.net(static_cast<std::size_t>(d / 2)), d % 2 == 0 ? -1 : 1, cover[other]);
       known[other] = 1;
       queue.push_back(other);
     }
@@ -309,7 +331,7 @@ ChainOverlay overlay_chains(std::vector<glm::dvec2> points, const std::vector<Ov
         cell.owner = g;
         break;
       }
-    for (int d : a.cycles[c]) cell.loop.push_back(a.from(d));
+    for (int d : a.cycle(c)) cell.loop.push_back(a.from(d));
     o.cells.push_back(std::move(cell));
   }
   return o;

@@ -44,16 +44,30 @@ void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(
     std::int64_t x0, x1, y0, y1;
   };
   std::vector<Range> ranges(n);
-  std::vector<std::pair<std::int64_t, std::size_t>> entries;  // (cell key, box)
-  entries.reserve(2 * n);
+  // Each box listed in every cell it covers, cell by cell, in box order (a
+  // counting sort: two passes over the boxes).
+  const auto cell_count = static_cast<std::size_t>(cells * cells);
+  std::vector<std::size_t> start(cell_count + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const Box2& b = boxes[i];
-    Range r{cell_of(b.lo.x, lo_x), cell_of(b.hi.x, lo_x), cell_of(b.lo.y, lo_y), cell_of(b.hi.y, lo_y)};
+    const Range r{cell_of(b.lo.x, lo_x), cell_of(b.hi.x, lo_x), cell_of(b.lo.y, lo_y), cell_of(b.hi.y, lo_y)};
     ranges[i] = r;
     for (std::int64_t x = r.x0; x <= r.x1; ++x)
-      for (std::int64_t y = r.y0; y <= r.y1; ++y) entries.push_back({x * cells + y, i});
+      for (std::int64_t y = r.y0; y <= r.y1; ++y) ++start[static_cast<std::size_t>(x * cells + y) + 1];
   }
-  std::sort(entries.begin(), entries.end());
+  for (std::size_t k = 0; k < cell_count; ++k) start[k + 1] += start[k];
+  std::vector<std::pair<std::int64_t, std::size_t>> entries(start[cell_count]);  // (cell key, box)
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Range& r = ranges[i];
+      for (std::int64_t x = r.x0; x <= r.x1; ++x)
+        for (std::int64_t y = r.y0; y <= r.y1; ++y) {
+          const std::int64_t key = x * cells + y;
+          entries[fill[static_cast<std::size_t>(key)]++] = {key, i};
+        }
+    }
+  }
   for (std::size_t begin = 0; begin < entries.size();) {
     std::size_t end = begin;
     while (end < entries.size() && entries[end].first == entries[begin].first) ++end;

@@ -18,10 +18,9 @@ bool may_split(const State& st, int c) {
 }  // namespace
 
 bool EventQueue::EntryLater::operator()(const Entry& a, const Entry& b) const {
-  const Candidate &x = a.candidate, &y = b.candidate;
-  if (x.z != y.z) return x.z > y.z;
-  if (x.corner != y.corner) return x.corner > y.corner;
-  return x.edge > y.edge;
+  if (a.z != b.z) return a.z > b.z;
+  if (a.corner != b.corner) return a.corner > b.corner;
+  return a.edge > b.edge;
 }
 
 void EventQueue::schedule_edge_event(State& st, int c) {
@@ -40,7 +39,7 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   if (at < z - st.tol().height()) return;
   // Two corners made at one collision meet there because of it.
   if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
-  heap_.push({{std::max(at, z), 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone}, kNone});
+  heap_.push({std::max(at, z), at, c, n, kNone, kNone});
 }
 
 void EventQueue::Targets::clear() {
@@ -125,17 +124,14 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
     meet[j] = meets & !(at < earliest) & !(at > cap) ? at : HUGE_VAL;
   }
-  scratch_.clear();
+  // The few that meet, gathered without a branch per edge.
+  hits_.resize(n);
+  std::size_t m = 0;
   for (std::size_t j = 0; j < n; ++j) {
-    if (meet[j] == HUGE_VAL) continue;
-    const int e = t.edge[j];
-    const double at = meet[j];
-    if (e == k.prev_edge || e == k.next_edge) continue;
-    // A corner made by a collision with this edge meets it there because of it.
-    if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
-    scratch_.push_back({std::max(at, z), st.position(c, at), e});
+    hits_[m] = static_cast<std::uint32_t>(j);
+    m += meet[j] != HUGE_VAL;
   }
-  if (scratch_.empty()) return;
+  if (m == 0) return;
   int i;
   if (free_lists_.empty()) {
     i = static_cast<int>(lists_.size());
@@ -144,36 +140,52 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     i = free_lists_.back();
     free_lists_.pop_back();
   }
-  lists_[i].assign(scratch_.begin(), scratch_.end());
-  std::make_heap(lists_[i].begin(), lists_[i].end(), SplitLater{});
+  SplitList& list = lists_[i];
+  list.heap.clear();
+  list.heap.reserve(m);
+  list.z = z;
+  for (std::size_t h = 0; h < m; ++h) {
+    const std::size_t j = hits_[h];
+    const int e = t.edge[j];
+    const double at = meet[j];
+    if (e == k.prev_edge || e == k.next_edge) continue;
+    // A corner made by a collision with this edge meets it there because of it.
+    if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
+    list.heap.push_back({at, e});
+  }
+  std::make_heap(list.heap.begin(), list.heap.end(), SplitLater{z});
   advance(i, c);
 }
 
 void EventQueue::advance(int i, int c) {
-  std::vector<Split>& list = lists_[i];
-  if (list.empty()) {
+  SplitList& list = lists_[i];
+  if (list.heap.empty()) {
     free_lists_.push_back(i);
     return;
   }
-  std::pop_heap(list.begin(), list.end(), SplitLater{});
-  const Split s = list.back();
-  list.pop_back();
-  heap_.push({{s.z, s.p, c, kNone, s.edge}, i});
+  std::pop_heap(list.heap.begin(), list.heap.end(), SplitLater{list.z});
+  const Split s = list.heap.back();
+  list.heap.pop_back();
+  heap_.push({std::max(s.at, list.z), s.at, c, kNone, s.edge, i});
 }
 
-std::vector<Candidate> EventQueue::pop_cluster(const State& st) {
-  std::vector<Candidate> out;
-  const double top = heap_.top().candidate.z;
-  while (!heap_.empty() && heap_.top().candidate.z <= top + st.tol().height()) {
+const std::vector<Candidate>& EventQueue::pop_cluster(const State& st) {
+  std::vector<Candidate>& out = cluster_;
+  out.clear();
+  const double top = heap_.top().z;
+  while (!heap_.empty() && heap_.top().z <= top + st.tol().height()) {
     const Entry e = heap_.top();
     heap_.pop();
     // A dead corner's events are void, and so is the rest of its list.
-    if (!st.corners[e.candidate.corner].alive) {
+    if (!st.corners[e.corner].alive) {
       if (e.list != kNone) free_lists_.push_back(e.list);
       continue;
     }
-    if (e.list != kNone) advance(e.list, e.candidate.corner);
-    out.push_back(e.candidate);
+    if (e.list != kNone) advance(e.list, e.corner);
+    // An edge event happens between the two corners, a split where the corner is.
+    const glm::dvec2 p = e.next != kNone ? 0.5 * (st.position(e.corner, e.at) + st.position(e.next, e.at))
+                                         : st.position(e.corner, e.at);
+    out.push_back({e.z, p, e.corner, e.next, e.edge});
   }
   return out;
 }

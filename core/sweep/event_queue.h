@@ -10,6 +10,8 @@
 // a list whose corner has died is dropped unread.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <queue>
 #include <vector>
 
@@ -39,28 +41,39 @@ class EventQueue {
   void schedule_edge_event(State& st, int c);
 
   bool empty() const { return heap_.empty(); }
-  double next_height() const { return heap_.top().candidate.z; }
+  double next_height() const { return heap_.top().z; }
   // Removes every candidate within the height tolerance of the lowest and
-  // returns those of live corners, lowest first.
-  std::vector<Candidate> pop_cluster(const State& st);
+  // returns those of live corners, lowest first (valid until the next call).
+  const std::vector<Candidate>& pop_cluster(const State& st);
 
  private:
-  // A split candidate waiting in its corner's list.
+  // A split candidate waiting in its corner's list: where the corner meets
+  // the edge's plane (queued no lower than the list's height).
   struct Split {
-    double z;
-    glm::dvec2 p;
+    double at;
     int edge;
   };
+  // One scheduling's split candidates, a heap with the lowest (height, edge) on top.
+  struct SplitList {
+    std::vector<Split> heap;
+    double z = 0.0;  // the sweep plane's height when listed
+  };
+  // A candidate in the height queue; its point is worked out when it is popped.
   struct Entry {
-    Candidate candidate;
+    double z, at;  // queued at height z; the planes meet at height `at`
+    int corner, next, edge;
     int list;  // the split list it heads, or kNone (an edge event)
   };
   struct EntryLater {
     bool operator()(const Entry& a, const Entry& b) const;
   };
-  // Min-heap order of one corner's splits, as the queue orders them.
+  // Min-heap order of one list's splits, as the queue orders them.
   struct SplitLater {
-    bool operator()(const Split& a, const Split& b) const { return a.z != b.z ? a.z > b.z : a.edge > b.edge; }
+    double z;
+    bool operator()(const Split& a, const Split& b) const {
+      const double za = std::max(a.at, z), zb = std::max(b.at, z);
+      return za != zb ? za > zb : a.edge > b.edge;
+    }
   };
   // Edges a corner may run into, their planes' coefficients side by side
   // (the test of every corner against every edge is the sweep's inner loop).
@@ -81,13 +94,14 @@ class EventQueue {
   void advance(int i, int c);
 
   std::priority_queue<Entry, std::vector<Entry>, EntryLater> heap_;
-  std::vector<std::vector<Split>> lists_;  // each a heap, lowest (z, edge) on top
+  std::vector<SplitList> lists_;
   std::vector<int> free_lists_;
   Targets live_, some_;
   std::vector<char> listed_;                        // edge -> in live_
   std::size_t live_corners_ = 0, rebuilt_at_ = 0;    // corners seen by live_, at its last full pass
   std::vector<double> at_;                          // scratch of add_splits
-  std::vector<Split> scratch_;
+  std::vector<std::uint32_t> hits_;
+  std::vector<Candidate> cluster_;  // what pop_cluster returned last
 };
 
 }  // namespace procex::engine

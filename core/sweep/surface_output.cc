@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <span>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -26,13 +27,13 @@ FaceFrame frame_of(const FaceGroup& f) {
   return {u, glm::cross(n, u)};
 }
 
-double signed_area(const std::vector<glm::dvec2>& pts) {
+double signed_area(std::span<const glm::dvec2> pts) {
   double a = 0.0;
   for (std::size_t i = 0; i < pts.size(); ++i) a += cross(pts[i], pts[(i + 1) % pts.size()]);
   return 0.5 * a;
 }
 
-bool inside(const std::vector<glm::dvec2>& poly, glm::dvec2 q) {
+bool inside(std::span<const glm::dvec2> poly, glm::dvec2 q) {
   bool in = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
     if ((poly[i].y > q.y) != (poly[j].y > q.y) &&
@@ -66,97 +67,152 @@ void split_at_repeats(std::vector<std::uint32_t> loop, std::vector<std::vector<s
   out.push_back(std::move(loop));
 }
 
-// Chains a face's half-edges into closed loops. Where the face touches itself
-// at a vertex, the loop takes the sharpest turn, so each loop stays simple.
-std::vector<std::vector<std::uint32_t>> chain_loops(const State& st, const FaceGroup& f) {
+bool half_edge_less(const HalfEdge& a, const HalfEdge& b) { return a.from != b.from ? a.from < b.from : a.to < b.to; }
+bool half_edge_equal(const HalfEdge& a, const HalfEdge& b) { return a.from == b.from && a.to == b.to; }
+
+// Buffers reused from face to face (most faces have a handful of half-edges).
+struct ChainScratch {
+  std::vector<HalfEdge> given, hs;
+  std::vector<char> used;
+  std::vector<std::uint32_t> seen;  // vertex -> the last loop that passed it
+  std::uint32_t loop_id = 0;
+  std::vector<std::uint32_t> loop;
+  std::vector<std::vector<std::uint32_t>> loops;  // what chain_loops made
+  std::vector<glm::dvec2> pts;                    // the outer loops' points in the face's frame
+  std::vector<std::size_t> outer_from;            // outer loop i: its points from here in pts
+  std::vector<double> outer_area;
+  std::vector<std::size_t> holes;                 // into loops
+};
+
+// Chains a face's half-edges into closed loops (into x.loops). Where the face
+// touches itself at a vertex, the loop takes the sharpest turn, so each loop
+// stays simple.
+void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
   // Opposite half-edges inside one face are a zero-width seam: drop both.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+  // Sorted by (from, to), the half-edges leaving a vertex are one run.
+  x.given.clear();
   for (const HalfEdge& h : f.half_edges)
-    if (h.from != h.to) ++count[{h.from, h.to}];
-  std::vector<HalfEdge> hs;
-  for (auto& [key, n] : count) {
-    auto back = count.find({key.second, key.first});
-    const int cancel = back == count.end() ? 0 : std::min(n, back->second);
-    for (int i = cancel; i < n; ++i) hs.push_back({key.first, key.second});
+    if (h.from != h.to) x.given.push_back(h);
+  std::sort(x.given.begin(), x.given.end(), half_edge_less);
+  x.hs.clear();
+  for (std::size_t i = 0; i < x.given.size();) {
+    std::size_t j = i + 1;
+    while (j < x.given.size() && half_edge_equal(x.given[j], x.given[i])) ++j;
+    const HalfEdge back{x.given[i].to, x.given[i].from};
+    const auto [lo, hi] = std::equal_range(x.given.begin(), x.given.end(), back, half_edge_less);
+    const std::size_t n = j - i, cancel = std::min<std::size_t>(n, static_cast<std::size_t>(hi - lo));
+    for (std::size_t k = cancel; k < n; ++k) x.hs.push_back(x.given[i]);
+    i = j;
   }
-  if (hs.empty()) return {};
+  x.loops.clear();
+  const std::vector<HalfEdge>& hs = x.hs;
+  if (hs.empty()) return;
   const FaceFrame fr = frame_of(f);
   auto pos = [&](std::uint32_t v) { return fr.to2d(st.vertices[v]); };
-  std::multimap<std::uint32_t, int> out;
-  for (int i = 0; i < static_cast<int>(hs.size()); ++i) out.emplace(hs[i].from, i);
-  std::vector<char> used(hs.size(), 0);
-  std::vector<std::vector<std::uint32_t>> loops;
+  x.used.assign(hs.size(), 0);
+  if (x.seen.size() < st.vertices.size()) x.seen.resize(st.vertices.size(), 0);
+  std::vector<std::uint32_t>& loop = x.loop;
   for (int start = 0; start < static_cast<int>(hs.size()); ++start) {
-    if (used[start]) continue;
-    std::vector<std::uint32_t> loop;
+    if (x.used[start]) continue;
+    loop.clear();
     int h = start;
     while (true) {
-      used[h] = 1;
+      x.used[h] = 1;
       loop.push_back(hs[h].from);
       const std::uint32_t v = hs[h].to;
+      const auto lo = std::lower_bound(hs.begin(), hs.end(), HalfEdge{v, 0}, half_edge_less);
+      auto open = [&](auto it) { return !x.used[it - hs.begin()] || it - hs.begin() == start; };
+      int best = -1, choices = 0;
+      for (auto it = lo; it != hs.end() && it->from == v; ++it) {
+        if (!open(it)) continue;
+        best = static_cast<int>(it - hs.begin());
+        ++choices;
+      }
+      // With one way on, the turn is only needed to refuse NaN positions.
       const glm::dvec2 back = pos(hs[h].from) - pos(v);
-      const double back_angle = std::atan2(back.y, back.x);
-      int best = -1;
-      double best_turn = 1e300;
-      auto [lo, hi] = out.equal_range(v);
-      for (auto it = lo; it != hi; ++it) {
-        if (used[it->second] && it->second != start) continue;
-        const glm::dvec2 d = pos(hs[it->second].to) - pos(v);
-        // Clockwise angle from the way we came back to the candidate.
-        double turn = back_angle - std::atan2(d.y, d.x);
-        while (turn <= 0.0) turn += 2.0 * M_PI;
-        while (turn > 2.0 * M_PI) turn -= 2.0 * M_PI;
-        if (turn < best_turn) {
-          best_turn = turn;
-          best = it->second;
+      const glm::dvec2 only = choices == 1 ? pos(hs[best].to) - pos(v) : glm::dvec2(0.0);
+      if (choices > 1 || std::isnan(back.x + back.y + only.x + only.y)) {
+        const double back_angle = std::atan2(back.y, back.x);
+        double best_turn = 1e300;
+        best = -1;
+        for (auto it = lo; it != hs.end() && it->from == v; ++it) {
+          if (!open(it)) continue;
+          const glm::dvec2 d = pos(it->to) - pos(v);
+          // Clockwise angle from the way we came back to the candidate.
+          double turn = back_angle - std::atan2(d.y, d.x);
+          while (turn <= 0.0) turn += 2.0 * M_PI;
+          while (turn > 2.0 * M_PI) turn -= 2.0 * M_PI;
+          if (turn < best_turn) {
+            best_turn = turn;
+            best = static_cast<int>(it - hs.begin());
+          }
         }
       }
       if (best < 0) open_face(f, v, st.vertices[v]);
       if (best == start) break;
       h = best;
     }
-    split_at_repeats(std::move(loop), loops);
+    // Most loops pass each vertex once; only those that do not are split.
+    bool repeats = false;
+    ++x.loop_id;
+    for (std::uint32_t v : loop) {
+      repeats = repeats || x.seen[v] == x.loop_id;
+      x.seen[v] = x.loop_id;
+    }
+    if (repeats) {
+      split_at_repeats(loop, x.loops);
+    } else {
+      x.loops.emplace_back(loop.begin(), loop.end());
+    }
   }
-  return loops;
 }
 
 }  // namespace
 
 Surface build_surface(const State& st) {
   Surface s;
+  ChainScratch x;
   for (const FaceGroup& f : st.faces) {
     const FaceFrame fr = frame_of(f);
-    std::vector<std::vector<std::uint32_t>> outers, holes;
-    std::vector<std::vector<glm::dvec2>> outer_pts;
-    std::vector<double> outer_area;
-    for (auto& loop : chain_loops(st, f)) {
+    chain_loops(st, f, x);
+    // Each outer loop (counter-clockwise) is a face of its own, in order.
+    const std::size_t first_face = s.faces.size();
+    x.pts.clear();
+    x.outer_from.clear();
+    x.outer_area.clear();
+    x.holes.clear();
+    for (std::size_t i = 0; i < x.loops.size(); ++i) {
+      std::vector<std::uint32_t>& loop = x.loops[i];
       if (loop.size() < 3) continue;
-      std::vector<glm::dvec2> pts;
-      for (auto v : loop) pts.push_back(fr.to2d(st.vertices[v]));
-      const double a = signed_area(pts);
+      const std::size_t from = x.pts.size();
+      for (auto v : loop) x.pts.push_back(fr.to2d(st.vertices[v]));
+      const double a = signed_area(std::span(x.pts).subspan(from));
       if (a > 0.0) {
-        outers.push_back(std::move(loop));
-        outer_pts.push_back(std::move(pts));
-        outer_area.push_back(a);
+        x.outer_from.push_back(from);
+        x.outer_area.push_back(a);
+        s.faces.push_back({f.kind, f.source_edge, {}, f.tag});
+        s.faces.back().loops.push_back(std::move(loop));
       } else {
-        holes.push_back(std::move(loop));
+        x.pts.resize(from);
+        x.holes.push_back(i);
       }
     }
-    std::vector<SurfaceFace> made(outers.size());
-    for (std::size_t i = 0; i < outers.size(); ++i) made[i] = {f.kind, f.source_edge, {outers[i]}, f.tag};
-    for (auto& hole : holes) {
+    x.outer_from.push_back(x.pts.size());
+    const std::size_t outers = x.outer_area.size();
+    for (std::size_t hole : x.holes) {
       // A hole belongs to the smallest outer loop around it.
       int best = -1;
-      const glm::dvec2 q = fr.to2d(st.vertices[hole[0]]);
-      for (std::size_t i = 0; i < outers.size(); ++i)
-        if (inside(outer_pts[i], q) && (best < 0 || outer_area[i] < outer_area[best])) best = static_cast<int>(i);
+      const glm::dvec2 q = fr.to2d(st.vertices[x.loops[hole][0]]);
+      for (std::size_t i = 0; i < outers; ++i) {
+        const auto outer = std::span(x.pts).subspan(x.outer_from[i], x.outer_from[i + 1] - x.outer_from[i]);
+        if (inside(outer, q) && (best < 0 || x.outer_area[i] < x.outer_area[best])) best = static_cast<int>(i);
+      }
       if (best < 0) {
         // A clockwise loop with nothing around it: a sliver of no area.
         continue;
       }
-      made[best].loops.push_back(std::move(hole));
+      s.faces[first_face + static_cast<std::size_t>(best)].loops.push_back(std::move(x.loops[hole]));
     }
-    for (auto& m : made) s.faces.push_back(std::move(m));
   }
   // Vertices no face uses (a plan edit's sliver absorbed by the face it grew
   // into, loops of no area) are left out, the rest keep their order.
@@ -178,7 +234,6 @@ Surface build_surface(const State& st) {
 }
 
 void check_closed(const Surface& surface) {
-  auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
   auto at = [&](std::uint32_t v) {
     const glm::dvec3 p = surface.vertices[v];
     std::ostringstream out;
@@ -188,34 +243,56 @@ void check_closed(const Surface& surface) {
   auto fail = [&](std::uint32_t v, const std::string& what) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };
-  // Each half-edge v -> a, with the vertex before v in its loop.
-  std::unordered_map<std::uint64_t, std::uint32_t> before;
-  std::unordered_map<std::uint32_t, int> leaving;  // vertex -> half-edges leaving it
+  // Each half-edge v -> to, with the vertex before v in its loop, grouped by
+  // v and sorted by `to` (then by when it was given).
+  struct Leaving {
+    std::uint32_t to, before, given;
+    bool operator<(const Leaving& o) const { return to != o.to ? to < o.to : given < o.given; }
+  };
+  const std::size_t n = surface.vertices.size();
+  std::vector<std::uint32_t> first(n + 1, 0);
   for (const SurfaceFace& f : surface.faces)
     for (const auto& loop : f.loops)
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        const std::uint32_t v = loop[i], a = loop[(i + 1) % loop.size()];
-        if (!before.try_emplace(key(v, a), loop[(i + loop.size() - 1) % loop.size()]).second)
-          fail(v, "two faces run the same way along its edge to " + at(a));
-        ++leaving[v];
-      }
-  for (const auto& [k, b] : before)
-    if (!before.count(key(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k >> 32))))
-      fail(static_cast<std::uint32_t>(k >> 32),
-           "no face runs back along its edge to " + at(static_cast<std::uint32_t>(k)));
+      for (std::uint32_t v : loop) ++first[v + 1];
+  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<Leaving> leaving(first[n]);
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    std::uint32_t given = 0;
+    for (const SurfaceFace& f : surface.faces)
+      for (const auto& loop : f.loops)
+        for (std::size_t i = 0; i < loop.size(); ++i)
+          leaving[fill[loop[i]]++] = {loop[(i + 1) % loop.size()], loop[(i + loop.size() - 1) % loop.size()], given++};
+  }
+  auto from = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v]); };
+  auto to = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v + 1]); };
+  for (std::uint32_t v = 0; v < n; ++v) std::sort(from(v), to(v));
+  // The first half-edge (in the order given) that repeats another.
+  std::optional<std::pair<std::uint32_t, Leaving>> twice;
+  for (std::uint32_t v = 0; v < n; ++v)
+    for (auto it = from(v); it != to(v); ++it)
+      if (it != from(v) && it->to == (it - 1)->to && (!twice || it->given < twice->second.given)) twice = {v, *it};
+  if (twice) fail(twice->first, "two faces run the same way along its edge to " + at(twice->second.to));
+  auto find = [&](std::uint32_t v, std::uint32_t a) {
+    const auto it = std::lower_bound(from(v), to(v), Leaving{a, 0, 0});
+    return it != to(v) && it->to == a ? it : to(v);
+  };
+  for (std::uint32_t v = 0; v < n; ++v)
+    for (auto it = from(v); it != to(v); ++it)
+      if (find(it->to, v) == to(it->to)) fail(v, "no face runs back along its edge to " + at(it->to));
   // Round a vertex, the faces must form one fan: from v -> a, the face on
   // its right holds v -> b, where b comes before v in the loop of v -> a.
-  std::unordered_map<std::uint32_t, char> walked;
-  for (const auto& [k, b0] : before) {
-    const auto v = static_cast<std::uint32_t>(k >> 32);
-    if (!walked.try_emplace(v, 1).second) continue;
-    int fan = 0;
-    std::uint32_t a = static_cast<std::uint32_t>(k);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const std::uint32_t count = first[v + 1] - first[v];
+    if (count == 0) continue;
+    std::uint32_t fan = 0;
+    const std::uint32_t start = from(v)->to;
+    std::uint32_t a = start;
     do {
       ++fan;
-      a = before.at(key(v, a));
-    } while (a != static_cast<std::uint32_t>(k) && fan <= leaving[v]);
-    if (fan != leaving[v]) fail(v, "the faces round it form more than one fan");
+      a = find(v, a)->before;
+    } while (a != start && fan <= count);
+    if (fan != count) fail(v, "the faces round it form more than one fan");
   }
 }
 

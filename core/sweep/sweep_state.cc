@@ -23,6 +23,8 @@ int State::add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, int s
     // The face's gradient (n, -k) points inward and down; outward is its opposite.
     f.outward = glm::normalize(glm::dvec3{-e.plane.n.x, -e.plane.n.y, k});
     f.origin = glm::dvec3{point, z0};
+    // Room for a quad with a trajectory or two more: one allocation per face, not three or four.
+    f.half_edges.reserve(6);
     faces.push_back(std::move(f));
   }
   e.face = face;
