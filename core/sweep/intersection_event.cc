@@ -315,14 +315,16 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   };
   // Where faces lean out, the gap outside two chains can close: the regions
   // grow into each other and merge across it, with a corner that spans it.
+  // The gap outside one chain is its own corner's outside, which moves with
+  // the corner: that corner meets the other chains, it merges with nothing.
   if (st.any_outward && alternates()) {
     std::vector<Ray> rest;
     std::vector<char> taken(rays.size(), 0);
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const std::size_t j = (i + 1) % rays.size();
-      if (!taken[i] && !taken[j] && rays[i].in && !rays[j].in && gap_closes(st, chains[rays[i].chain].in_edge,
-                                                                         chains[rays[j].chain].out_edge, rays[i].angle,
-                                                                         rays[j].angle)) {
+      if (!taken[i] && !taken[j] && rays[i].in && !rays[j].in && rays[i].chain != rays[j].chain &&
+          gap_closes(st, chains[rays[i].chain].in_edge, chains[rays[j].chain].out_edge, rays[i].angle,
+                     rays[j].angle)) {
         join(rays[i], rays[j]);
         taken[i] = taken[j] = 1;
       }
