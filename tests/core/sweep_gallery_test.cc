@@ -136,6 +136,31 @@ TEST(Gallery, LedgeSetsTheUpperStoreyBack) {
   }
 }
 
+// Neighbours stepping different ways at one height: the bottom edge steps
+// out 1 m (a soffit), the right one in 1 m (a ledge), the others go straight
+// on. Their flattened nested faces fold over each other at the corner
+// between them; overlaid, the soffit is exactly the new section less the old
+// ([0, 9] x [-1, 0]) and the ledge the old less the new ([9, 10] x [0, 10]).
+TEST(Gallery, NeighboursSteppingOutAndInMeetAtACorner) {
+  const Profile out{"out", {{0, 0}, {0, 3}, {1, 3}, {1, 5}}, {"wall", "soffit", "wall"}};
+  const Profile in{"in", {{0, 0}, {0, 3}, {-1, 3}, {-1, 5}}, {"wall", "ledge", "wall"}};
+  const Profile none{"none", {{0, 0}, {0, 5}}, {"wall"}};
+  SweepOptions options;
+  options.max_height = 5.0;
+  const Surface s = sweep(with_profiles(rectangle(10, 10), {out, in, none}, {0, 1, 2, 2}), options);
+  const auto c = expect_valid(s);
+  EXPECT_NEAR(c.volume, 10.0 * 10.0 * 3.0 + 9.0 * 11.0 * 2.0, 1e-9);
+  std::map<std::string, double> up;  // area seen from above, per tag
+  for (const SurfaceFace& f : s.faces)
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        up[f.tag] += 0.5 * glm::cross(s.vertices[loop[i]], s.vertices[loop[(i + 1) % loop.size()]]).z;
+  EXPECT_NEAR(up["soffit"], -9.0, 1e-9);  // faces down
+  EXPECT_NEAR(up["ledge"], 10.0, 1e-9);   // faces up
+  EXPECT_EQ(faces_per_tag(s).at("soffit"), 1);
+  EXPECT_EQ(faces_per_tag(s).at("ledge"), 1);
+}
+
 TEST(Gallery, CurvedRoofOfSixteenSegments) {
   Profile curved{"curved", {{0, 0}, {0, 3}}, {"wall"}};
   const double r = 4.0;
