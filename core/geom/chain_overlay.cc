@@ -77,6 +77,7 @@ std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
     cuts[s].push_back(q);
   };
   PointGrid grid(near);
+  grid.reserve(inputs + inputs / 4);
   for (std::size_t i = 0; i < inputs; ++i) grid.add(pts[i], static_cast<std::uint32_t>(i));
   for_each_box_pair(boxes, [&](std::size_t i, std::size_t j) {
     if (i >= n) return true;  // two points

@@ -19,6 +19,14 @@ class PointGrid {
  public:
   explicit PointGrid(double radius) : radius_(radius) {}
 
+  // Room for about n points (each in a cell of its own) without rehashing.
+  void reserve(std::size_t n) {
+    points_.reserve(n);
+    std::size_t size = 16;
+    while (size < 2 * n) size *= 2;
+    if (size > cells_.size()) rehash(size);
+  }
+
   void add(glm::dvec2 p, std::uint32_t id) {
     if (2 * (used_ + 1) > cells_.size()) grow();
     Cell& c = find_or_add(cell(p.x), cell(p.y));
@@ -69,8 +77,9 @@ class PointGrid {
   long long cell(double v) const { return static_cast<long long>(std::floor(v / radius_)); }
   // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
   static std::uint64_t hash(long long x, long long y) {
-    const std::uint64_t h = static_cast<std::uint64_t>(x) * 73856093ULL ^ static_cast<std::uint64_t>(y) * 19349663ULL;
-    return h ^ (h >> 29);
+    const std::uint64_t h =
+        static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4FULL;
+    return h ^ (h >> 32);
   }
   const Cell* find(long long x, long long y) const {
     const std::size_t mask = cells_.size() - 1;
@@ -93,9 +102,10 @@ class PointGrid {
       if (c.x == x && c.y == y) return c;
     }
   }
-  void grow() {
+  void grow() { rehash(cells_.empty() ? 16 : 2 * cells_.size()); }
+  void rehash(std::size_t size) {
     std::vector<Cell> old = std::move(cells_);
-    cells_.assign(old.empty() ? 16 : 2 * old.size(), Cell{});
+    cells_.assign(size, Cell{});
     used_ = 0;
     for (const Cell& c : old)
       if (c.head != kEnd) {

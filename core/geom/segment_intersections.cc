@@ -41,40 +41,39 @@ void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(
     return std::clamp<std::int64_t>(static_cast<std::int64_t>((v - lo) / cell), 0, cells - 1);
   };
   struct Range {
-    std::int64_t x0, x1, y0, y1;
+    std::int32_t x0, x1, y0, y1;
   };
   std::vector<Range> ranges(n);
   // Each box listed in every cell it covers, cell by cell, in box order (a
-  // counting sort: two passes over the boxes).
+  // counting sort: two passes over the boxes). Cell k = x * cells + y holds
+  // the boxes at [start[k], start[k + 1]) of `in`.
   const auto cell_count = static_cast<std::size_t>(cells * cells);
   std::vector<std::size_t> start(cell_count + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const Box2& b = boxes[i];
-    const Range r{cell_of(b.lo.x, lo_x), cell_of(b.hi.x, lo_x), cell_of(b.lo.y, lo_y), cell_of(b.hi.y, lo_y)};
+    const Range r{static_cast<std::int32_t>(cell_of(b.lo.x, lo_x)), static_cast<std::int32_t>(cell_of(b.hi.x, lo_x)),
+                  static_cast<std::int32_t>(cell_of(b.lo.y, lo_y)), static_cast<std::int32_t>(cell_of(b.hi.y, lo_y))};
     ranges[i] = r;
     for (std::int64_t x = r.x0; x <= r.x1; ++x)
       for (std::int64_t y = r.y0; y <= r.y1; ++y) ++start[static_cast<std::size_t>(x * cells + y) + 1];
   }
   for (std::size_t k = 0; k < cell_count; ++k) start[k + 1] += start[k];
-  std::vector<std::pair<std::int64_t, std::size_t>> entries(start[cell_count]);  // (cell key, box)
+  std::vector<std::uint32_t> in(start[cell_count]);
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) {
       const Range& r = ranges[i];
       for (std::int64_t x = r.x0; x <= r.x1; ++x)
-        for (std::int64_t y = r.y0; y <= r.y1; ++y) {
-          const std::int64_t key = x * cells + y;
-          entries[fill[static_cast<std::size_t>(key)]++] = {key, i};
-        }
+        for (std::int64_t y = r.y0; y <= r.y1; ++y)
+          in[fill[static_cast<std::size_t>(x * cells + y)]++] = static_cast<std::uint32_t>(i);
     }
   }
-  for (std::size_t begin = 0; begin < entries.size();) {
-    std::size_t end = begin;
-    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
-    const std::int64_t cx = entries[begin].first / cells, cy = entries[begin].first % cells;
-    for (std::size_t p = begin; p < end; ++p) {
-      for (std::size_t q = p + 1; q < end; ++q) {
-        std::size_t i = entries[p].second, j = entries[q].second;
+  for (std::size_t k = 0; k < cell_count; ++k) {
+    const auto cx = static_cast<std::int32_t>(static_cast<std::int64_t>(k) / cells);
+    const auto cy = static_cast<std::int32_t>(static_cast<std::int64_t>(k) % cells);
+    for (std::size_t p = start[k]; p < start[k + 1]; ++p) {
+      for (std::size_t q = p + 1; q < start[k + 1]; ++q) {
+        std::size_t i = in[p], j = in[q];
         if (i > j) std::swap(i, j);
         const Range &ri = ranges[i], &rj = ranges[j];
         // Visit each pair once: in the lowest cell both boxes cover.
@@ -84,7 +83,6 @@ void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(
         if (!visit(i, j)) return;
       }
     }
-    begin = end;
   }
 }
 

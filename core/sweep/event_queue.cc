@@ -15,6 +15,28 @@ bool may_split(const State& st, int c) {
   return st.any_outward || k.motion != Motion::Regular || st.reflex(c);
 }
 
+// The height where a corner at p (at height z, moving by v per unit of
+// height) meets each plane, or HUGE_VAL where it is not worth queueing.
+// Without branches, so the loop vectorizes (wider where the CPU allows:
+// add, multiply, divide and compare round the same at any width, and no
+// fused multiply-add is enabled, so every width gives the same bits).
+[[gnu::target_clones("avx2", "default")]] void meeting_heights(const double* nx, const double* ny, const double* kk,
+                                                               const double* cc, std::size_t n, glm::dvec2 p,
+                                                               glm::dvec2 v, double z, double earliest, double cap,
+                                                               bool outward, double* meet) {
+  for (std::size_t j = 0; j < n; ++j) {
+    // Signed distance from the edge's line changes at `rate`: a corner inside
+    // meets it when the distance falls to zero, a corner of another polygon
+    // growing towards it (from outside) when it rises to zero.
+    const double rate = nx[j] * v.x + ny[j] * v.y - kk[j];
+    const double distance = nx[j] * p.x + ny[j] * p.y - (cc[j] + kk[j] * z);
+    const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
+    // A meeting point below the sweep plane means the planes diverge from here.
+    const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
+    meet[j] = meets & !(at < earliest) & !(at > cap) ? at : HUGE_VAL;
+  }
+}
+
 }  // namespace
 
 bool EventQueue::EntryLater::operator()(const Entry& a, const Entry& b) const {
@@ -102,34 +124,29 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
   const Corner& k = st.corners[c];
   const double z = st.height;
   const glm::dvec2 p = st.position(c, z);
-  const double vx = k.velocity.x, vy = k.velocity.y;
   const double earliest = z - st.tol().height();
   // Nothing above the cap is ever resolved.
   const double cap = st.options().max_height.value_or(HUGE_VAL);
   const bool outward = st.any_outward;
   const std::size_t n = t.edge.size();
   at_.resize(n);
-  // Without branches (the loop vectorizes): the height where c meets each
-  // edge's plane, or HUGE_VAL where it is not worth queueing.
-  const double *nx = t.nx.data(), *ny = t.ny.data(), *kk = t.k.data(), *cc = t.c.data();
-  double* meet = at_.data();
-  for (std::size_t j = 0; j < n; ++j) {
-    // Signed distance from the edge's line changes at `rate`: a corner inside
-    // meets it when the distance falls to zero, a corner of another polygon
-    // growing towards it (from outside) when it rises to zero.
-    const double rate = nx[j] * vx + ny[j] * vy - kk[j];
-    const double distance = nx[j] * p.x + ny[j] * p.y - (cc[j] + kk[j] * z);
-    const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
-    // A meeting point below the sweep plane means the planes diverge from here.
-    const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    meet[j] = meets & !(at < earliest) & !(at > cap) ? at : HUGE_VAL;
-  }
-  // The few that meet, gathered without a branch per edge.
+  meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, p, k.velocity, z, earliest, cap, outward,
+                  at_.data());
+  const double* meet = at_.data();
+  // The few that meet, gathered without a branch per edge; in a capped
+  // (nested) sweep whole runs of edges are out of reach.
   hits_.resize(n);
   std::size_t m = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    hits_[m] = static_cast<std::uint32_t>(j);
-    m += meet[j] != HUGE_VAL;
+  constexpr std::size_t kRun = 8;
+  for (std::size_t j0 = 0; j0 < n; j0 += kRun) {
+    const std::size_t end = std::min(n, j0 + kRun);
+    bool any = false;
+    for (std::size_t j = j0; j < end; ++j) any |= meet[j] != HUGE_VAL;
+    if (!any) continue;
+    for (std::size_t j = j0; j < end; ++j) {
+      hits_[m] = static_cast<std::uint32_t>(j);
+      m += meet[j] != HUGE_VAL;
+    }
   }
   if (m == 0) return;
   int i;
@@ -141,8 +158,9 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     free_lists_.pop_back();
   }
   SplitList& list = lists_[i];
-  list.heap.clear();
-  list.heap.reserve(m);
+  list.splits.clear();
+  list.splits.reserve(m);
+  list.picked = 0;
   list.z = z;
   for (std::size_t h = 0; h < m; ++h) {
     const std::size_t j = hits_[h];
@@ -151,21 +169,26 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     if (e == k.prev_edge || e == k.next_edge) continue;
     // A corner made by a collision with this edge meets it there because of it.
     if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
-    list.heap.push_back({at, e});
+    list.splits.push_back({at, e});
   }
-  std::make_heap(list.heap.begin(), list.heap.end(), SplitLater{z});
   advance(i, c);
 }
 
 void EventQueue::advance(int i, int c) {
   SplitList& list = lists_[i];
-  if (list.heap.empty()) {
+  if (list.splits.empty()) {
     free_lists_.push_back(i);
     return;
   }
-  std::pop_heap(list.heap.begin(), list.heap.end(), SplitLater{list.z});
-  const Split s = list.heap.back();
-  list.heap.pop_back();
+  if (list.picked == 0) {
+    // The lowest few to the back, the lowest last.
+    list.picked = std::min<std::size_t>(4, list.splits.size());
+    std::partial_sort(list.splits.rbegin(), list.splits.rbegin() + static_cast<std::ptrdiff_t>(list.picked),
+                      list.splits.rend(), SplitEarlier{list.z});
+  }
+  const Split s = list.splits.back();
+  list.splits.pop_back();
+  --list.picked;
   heap_.push({std::max(s.at, list.z), s.at, c, kNone, s.edge, i});
 }
 

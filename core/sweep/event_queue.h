@@ -53,10 +53,13 @@ class EventQueue {
     double at;
     int edge;
   };
-  // One scheduling's split candidates, a heap with the lowest (height, edge) on top.
+  // One scheduling's split candidates. A corner lives to see only a few of
+  // them popped, so they are not kept sorted: the lowest few are picked out
+  // (one pass) into the back, lowest last, and picked again when used up.
   struct SplitList {
-    std::vector<Split> heap;
-    double z = 0.0;  // the sweep plane's height when listed
+    std::vector<Split> splits;
+    std::size_t picked = 0;  // the last `picked` splits are the lowest, in order
+    double z = 0.0;          // the sweep plane's height when listed
   };
   // A candidate in the height queue; its point is worked out when it is popped.
   struct Entry {
@@ -67,12 +70,12 @@ class EventQueue {
   struct EntryLater {
     bool operator()(const Entry& a, const Entry& b) const;
   };
-  // Min-heap order of one list's splits, as the queue orders them.
-  struct SplitLater {
+  // The order of one list's splits, as the queue orders them.
+  struct SplitEarlier {
     double z;
     bool operator()(const Split& a, const Split& b) const {
       const double za = std::max(a.at, z), zb = std::max(b.at, z);
-      return za != zb ? za > zb : a.edge > b.edge;
+      return za != zb ? za < zb : a.edge < b.edge;
     }
   };
   // Edges a corner may run into, their planes' coefficients side by side

@@ -171,6 +171,7 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
 
 Surface build_surface(const State& st) {
   Surface s;
+  s.faces.reserve(st.faces.size() + st.faces.size() / 4);
   ChainScratch x;
   for (const FaceGroup& f : st.faces) {
     const FaceFrame fr = frame_of(f);
@@ -222,6 +223,7 @@ Surface build_surface(const State& st) {
     for (const auto& loop : f.loops)
       for (std::uint32_t v : loop) index[v] = 0;
   s.vertices.clear();
+  s.vertices.reserve(static_cast<std::size_t>(std::count(index.begin(), index.end(), 0u)));
   for (std::size_t v = 0; v < index.size(); ++v)
     if (index[v] != kUnused) {
       index[v] = static_cast<std::uint32_t>(s.vertices.size());
