@@ -47,9 +47,14 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << e.what() << "\n";
     return kExitUnusableInput;
   }
-  std::size_t faces = 0;
-  for (const TaggedMesh& p : meshes.parts) faces += p.mesh->n_faces();
-  out << "procex eval: " << meshes.parts.size() << " meshes, " << faces << " faces -> " << options.output.string() << "\n";
+  std::size_t faces = 0, placed = 0;
+  for (const TaggedMesh& p : meshes.parts) {
+    faces += p.mesh->n_faces();
+    placed += p.placed.instances.size();
+  }
+  out << "procex eval: " << meshes.parts.size() << " meshes, " << faces << " faces";
+  if (placed > 0) out << ", " << placed << " placed meshes";
+  out << " -> " << options.output.string() << "\n";
   return 0;
 }
 
