@@ -10,6 +10,7 @@
 #include "core/geom/chain_overlay.h"
 #include "core/geom/error.h"
 #include "core/geom/point_grid.h"
+#include "core/geom/turn.h"
 #include "core/sweep/driver.h"
 #include "core/sweep/settle.h"
 
@@ -284,14 +285,10 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
       if (to == start) break;
       auto [lo, hi] = out.equal_range(to);
       if (lo == hi) throw open();
-      const glm::dvec2 back = o.points[from] - o.points[to];
-      const double back_angle = std::atan2(back.y, back.x);
       auto best = lo;
       double best_turn = 1e300;
       for (auto x = lo; x != hi; ++x) {
-        const glm::dvec2 d = o.points[x->second] - o.points[to];
-        double turn = back_angle - std::atan2(d.y, d.x);
-        while (turn <= 0.0) turn += 2.0 * M_PI;
+        const double turn = clockwise_turn(o.points[from] - o.points[to], o.points[x->second] - o.points[to]);
         if (turn < best_turn) {
           best_turn = turn;
           best = x;

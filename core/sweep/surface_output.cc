@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/geom/turn.h"
 
 namespace procex::engine {
 namespace {
@@ -132,16 +133,11 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
       const glm::dvec2 back = pos(hs[h].from) - pos(v);
       const glm::dvec2 only = choices == 1 ? pos(hs[best].to) - pos(v) : glm::dvec2(0.0);
       if (choices > 1 || std::isnan(back.x + back.y + only.x + only.y)) {
-        const double back_angle = std::atan2(back.y, back.x);
         double best_turn = 1e300;
         best = -1;
         for (auto it = lo; it != hs.end() && it->from == v; ++it) {
           if (!open(it)) continue;
-          const glm::dvec2 d = pos(it->to) - pos(v);
-          // Clockwise angle from the way we came back to the candidate.
-          double turn = back_angle - std::atan2(d.y, d.x);
-          while (turn <= 0.0) turn += 2.0 * M_PI;
-          while (turn > 2.0 * M_PI) turn -= 2.0 * M_PI;
+          const double turn = clockwise_turn(back, pos(it->to) - pos(v));
           if (turn < best_turn) {
             best_turn = turn;
             best = static_cast<int>(it - hs.begin());
