@@ -107,6 +107,10 @@ void EventQueue::list_live(const State& st, int e) {
 }
 
 void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
+  if (st.any_outward) {
+    outward_.resize(std::max(outward_.size(), static_cast<std::size_t>(c) + 1), 0);
+    outward_[c] = 1;
+  }
   schedule_edge_event(st, c);
   if (!may_split(st, c)) return;
   refresh_live(st);

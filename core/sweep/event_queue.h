@@ -39,6 +39,12 @@ class EventQueue {
   void schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved = {});
   // Queues only the event of corner c with its next corner.
   void schedule_edge_event(State& st, int c);
+  // Whether corner c's splits were listed by the rule in force now: once a
+  // plane leans out, convex corners split too, and corners meet planes from
+  // outside.
+  bool knows_outward(const State& st, int c) const {
+    return !st.any_outward || (static_cast<std::size_t>(c) < outward_.size() && outward_[c]);
+  }
 
   bool empty() const { return heap_.empty(); }
   double next_height() const { return heap_.top().z; }
@@ -101,6 +107,7 @@ class EventQueue {
   std::vector<int> free_lists_;
   Targets live_, some_;
   std::vector<char> listed_;                        // edge -> in live_
+  std::vector<char> outward_;                       // corner -> scheduled once a plane leaned out
   std::size_t live_corners_ = 0, rebuilt_at_ = 0;    // corners seen by live_, at its last full pass
   std::vector<double> at_;                          // scratch of add_splits
   std::vector<std::uint32_t> hits_;

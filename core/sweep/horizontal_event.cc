@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -351,11 +352,26 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     const std::uint32_t a = vertex[n.top[c]], b = vertex[n.top[k.next]];
     if (a != b) tops.push_back({a, b, n.st.edges[k.next_edge].source});
   }
+  // A corner whose vertex and planes the new cross-section has too goes on:
+  // its events below are still its events. One made at this height (a plan
+  // edit's) has none yet, and one scheduled before any plane leaned out never
+  // listed the splits that leaning out allows.
+  std::map<std::tuple<std::uint32_t, int, int>, int> kept_at;  // (vertex, prev plane, next plane) -> old corner
   for (const auto& loop : loops)
-    for (int c : loop) st.corners[c].alive = false;
+    for (int c : loop) {
+      const Corner& k = st.corners[c];
+      if (st.vertices[k.origin].z < z - st.tol().height() && queue.knows_outward(st, c))
+        kept_at.emplace(std::tuple{at[c], k.prev_edge, k.next_edge}, c);
+    }
+  std::vector<int> old_next(st.corners.size(), kNone);
+  for (const auto& loop : loops)
+    for (int c : loop) {
+      old_next[c] = st.corners[c].next;
+      st.corners[c].alive = false;
+    }
   const AtHeight h = overlay_at_height(st, n, vertex, tops, z);
   horizontal_faces(st, h, steps, z);
-  std::vector<int> made;
+  std::vector<int> made, kept;
   for (const SectionLoop& loop : new_cross_section(h, tops, st.tol().position(), z)) {
     const std::size_t m = loop.size();
     std::vector<int> corners;
@@ -364,15 +380,49 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
       const int prev = plane_above(loop[(i + m - 1) % m].second), next = plane_above(source);
       const std::uint32_t to = h.global[loop[(i + 1) % m].first];
       st.faces[st.edges[next].face].half_edges.push_back({h.global[v], to});
-      if (prev != next) corners.push_back(st.add_corner(prev, next, h.global[v]));
+      if (prev == next) continue;
+      const auto same = kept_at.find({h.global[v], prev, next});
+      if (same == kept_at.end()) {
+        const int c = st.add_corner(prev, next, h.global[v]);
+        made.push_back(c);
+        corners.push_back(c);
+        continue;
+      }
+      // It starts again here, on the line it moved along.
+      Corner& k = st.corners[same->second];
+      k.origin = h.global[v];
+      k.base = glm::dvec2(st.vertices[k.origin]);
+      k.base_z = st.vertices[k.origin].z;
+      k.alive = true;
+      kept.push_back(same->second);
+      corners.push_back(same->second);
+      kept_at.erase(same);
     }
     if (corners.size() < 2) throw SweepError("sweep: a loop of the cross-section after a horizontal step has no corners", z, {});
     for (std::size_t i = 0; i < corners.size(); ++i) st.link(corners[i], corners[(i + 1) % corners.size()]);
-    made.insert(made.end(), corners.begin(), corners.end());
   }
-  for (int c : settle(st, made)) {
+  const std::vector<int> live = settle(st, made);
+  std::vector<char> fresh(st.corners.size(), 0);
+  for (int c : live) {
     queue.schedule(st, c);
     queue.schedule_edge_event(st, st.corners[c].prev);
+    fresh[c] = 1;
+  }
+  // A kept corner already waits for every plane made below this height. The
+  // planes made here are new to it: those above the run, and a plan edit's
+  // inserted edges, which the edit leaves to this run to schedule (only the
+  // planes above would miss its splits with those). Edges are made in order
+  // of height, so the ones made here are the last.
+  std::vector<int> planes_here;
+  for (int e = static_cast<int>(st.edges.size()) - 1;
+       e >= 0 && st.faces[st.edges[e].face].origin.z >= z - st.tol().height(); --e)
+    planes_here.push_back(e);
+  for (int c : kept) {
+    if (!st.corners[c].alive) continue;
+    const int next = st.corners[c].next;
+    // A new neighbour schedules the event with its previous corner itself.
+    if (next != old_next[c] && !fresh[next]) queue.schedule_edge_event(st, c);
+    queue.schedule_splits(st, c, planes_here);
   }
 }
 

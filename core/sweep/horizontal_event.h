@@ -26,8 +26,10 @@ struct SourceStep {
   std::string tag;        // that plane's tag
 };
 
-// Steps every live loop at the current height; every corner is replaced and
-// scheduled again.
+// Steps every live loop at the current height. Corners the new cross-section
+// has unchanged (made below this height) keep their events and are scheduled
+// only against the planes made at this height; the others are replaced and
+// scheduled in full.
 void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps);
 
 }  // namespace procex::engine
