@@ -41,6 +41,9 @@ struct Nested {
   std::vector<std::uint32_t> base_vertex;    // nested vertex i < size -> outer vertex
   std::vector<std::uint32_t> top;            // nested corner -> its vertex at the top
   double reach = 0.0;                        // the nested sweep's height: the largest step
+
+  // Nested source j's slope: its step over the reach (0: the edge does not step).
+  double slope(int j) const { return st.edges[st.sources[j].edge].plane.k; }
 };
 
 void sweep_nested(Nested& n, State& st, const std::vector<std::vector<int>>& loops,
@@ -96,7 +99,7 @@ std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z
   constexpr int kMany = -2;
   std::vector<int> line(n.st.vertices.size(), kNone);  // nested vertex -> the outer edge whose line it is on
   for (const FaceGroup& f : n.st.faces) {
-    if (f.kind != FaceKind::Side || n.st.edges[n.st.sources[f.source_edge].edge].plane.k != 0.0) continue;
+    if (f.kind != FaceKind::Side || n.slope(f.source_edge) != 0.0) continue;
     const int e = n.span_edge[f.source_edge];
     for (const HalfEdge& h : f.half_edges)
       for (std::uint32_t v : {h.from, h.to}) line[v] = line[v] == kNone || line[v] == e ? e : kMany;
@@ -170,7 +173,7 @@ AtHeight overlay_at_height(State& st, const Nested& n, const std::vector<std::ui
   // An edge that does not step flattens to a strip of no area, which covers nothing.
   std::map<int, int> group_of;
   for (const FaceGroup& f : n.st.faces) {
-    if (f.kind != FaceKind::Side || n.st.edges[n.st.sources[f.source_edge].edge].plane.k == 0.0) continue;
+    if (f.kind != FaceKind::Side || n.slope(f.source_edge) == 0.0) continue;
     const int e = n.span_edge[f.source_edge];
     auto [it, fresh] = group_of.try_emplace(e, static_cast<int>(h.stepping.size()));
     if (fresh) h.stepping.push_back(e);
@@ -255,6 +258,7 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
   // Already cut against each other, the pieces make no new points.
   const ChainOverlay inside = overlay_chains(o.points, pieces, near);
   auto open = [&] { return SweepError("sweep: the cross-section after a horizontal step is not closed", z, {}); };
+  if (inside.points.size() != o.points.size()) throw open();
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> outline;
   for (const OverlayCell& cell : inside.cells) {
     if (cell.winding < 1) continue;
@@ -281,7 +285,7 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
     out.erase(it);
     while (true) {
       const auto source = source_of.find({from, to});
-      if (source == source_of.end() || o.points.size() != inside.points.size()) throw open();
+      if (source == source_of.end()) throw open();
       loop.push_back({from, source->second});
       if (to == start) break;
       auto [lo, hi] = out.equal_range(to);
@@ -336,7 +340,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
     const auto step = steps.find(old.source);
     const double k = step == steps.end() ? old.plane.k : step->second.slope;
     const std::string tag = step == steps.end() ? old_tag : step->second.tag;
-    const double moved = n.st.edges[n.st.sources[j].edge].plane.k * n.reach;
+    const double moved = n.slope(j) * n.reach;
     if (moved != 0.0 || k != old.plane.k || tag != old_tag) {
       const glm::dvec2 on_line = old.plane.n * (old.plane.offset_at(z) + moved);
       it->second = st.add_edge(on_line, z, old.dir, k, old.source, tag);
