@@ -10,6 +10,7 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev libgl1-mesa-dev libgl1-mesa-dri mesa-utils
   xvfb xauth xdotool x11-apps netpbm
   libcgal-dev
+  slurm-wlm munge
   nodejs
 )
 
