@@ -1,0 +1,219 @@
+// How procex's time and memory grow with the input (BENCHMARKS "Scale",
+// issue 18), beside CGAL 5.5's create_interior_straight_skeleton_2 in the same
+// run: every file bench/scale_inputs.py wrote, every edge at 45 degrees.
+//
+// Each measurement runs in a child process of its own, so its peak resident
+// set (wait4's ru_maxrss) is that engine's alone on that input, and a runaway
+// is stopped by a CPU-time and address-space limit instead of taking the
+// machine. Times are CPU seconds of the child (the machine may be shared);
+// procex is timed as sweep() alone and as the `procex roof` pipeline
+// (sweep, mesh, validate). Once an engine fails or runs out of budget on a
+// family, its larger inputs are not tried. The log-log slope of time against
+// n is fitted per family and engine over n >= 4096.
+//
+//   procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] DIR
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/geom/prepare.h"
+#include "core/io/polyjson.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/validate.h"
+#include "core/sweep/sweep.h"
+#include "tests/support/cgal_skeleton.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class Engine { Sweep, Roof, Cgal };
+const char* engine_name(Engine e) {
+  switch (e) {
+    case Engine::Sweep: return "procex sweep()";
+    case Engine::Roof: return "procex roof (sweep+mesh+validate)";
+    case Engine::Cgal: return "CGAL 5.5";
+  }
+  return "?";
+}
+
+struct Input {
+  std::string family;
+  std::size_t n = 0;  // vertices in the file
+  fs::path path;
+};
+
+// What a child reports through its pipe: a status word and, for the roof
+// pipeline, whether the mesh validated.
+struct ChildResult {
+  char status[16] = "crashed";  // ok, invalid, refused, crashed, budget
+};
+
+struct Measurement {
+  std::string status;
+  double cpu_s = 0.0;
+  double peak_mb = 0.0;
+};
+
+double cpu_seconds() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+// Runs in the child: reads and prepares the input (not timed), then the engine.
+ChildResult run_engine(const Input& in, Engine engine, double& engine_cpu_s) {
+  ChildResult r;
+  const std::vector<PolyShape> shapes = read_polyjson_file(in.path);
+  const Footprint footprint = prepare_footprint(to_footprint(shapes.at(0), 45.0)).footprint;
+  const double start = cpu_seconds();
+  std::snprintf(r.status, sizeof r.status, "ok");
+  try {
+    if (engine == Engine::Cgal) {
+      const CgalSkeletonInput cgal(footprint);
+      const double cgal_start = cpu_seconds();
+      cgal.skeletonise();
+      engine_cpu_s = cpu_seconds() - cgal_start;
+      return r;
+    }
+    const Surface surface = sweep(footprint);
+    if (engine == Engine::Roof && !validate(build_mesh(surface)).ok()) std::snprintf(r.status, sizeof r.status, "invalid");
+  } catch (const std::exception&) {
+    std::snprintf(r.status, sizeof r.status, "refused");
+  }
+  engine_cpu_s = cpu_seconds() - start;
+  return r;
+}
+
+Measurement measure(const Input& in, Engine engine, double budget_s, double memory_gb) {
+  int fds[2];
+  if (::pipe(fds) != 0) std::abort();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(fds[0]);
+    const rlim_t cpu = static_cast<rlim_t>(std::ceil(budget_s));
+    const rlimit cpu_limit{cpu, cpu + 1};
+    ::setrlimit(RLIMIT_CPU, &cpu_limit);
+    const rlim_t bytes = static_cast<rlim_t>(memory_gb * 1024.0 * 1024.0 * 1024.0);
+    const rlimit memory_limit{bytes, bytes};
+    ::setrlimit(RLIMIT_AS, &memory_limit);
+    double engine_cpu_s = 0.0;
+    ChildResult r;
+    try {
+      r = run_engine(in, engine, engine_cpu_s);
+    } catch (const std::exception&) {  // out of memory under the limit, or an unreadable input
+      std::snprintf(r.status, sizeof r.status, "budget");
+    }
+    [[maybe_unused]] const ssize_t a = ::write(fds[1], &r, sizeof r);
+    [[maybe_unused]] const ssize_t b = ::write(fds[1], &engine_cpu_s, sizeof engine_cpu_s);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  ChildResult r;
+  double engine_cpu_s = 0.0;
+  const bool reported = ::read(fds[0], &r, sizeof r) == static_cast<ssize_t>(sizeof r) &&
+                        ::read(fds[0], &engine_cpu_s, sizeof engine_cpu_s) == static_cast<ssize_t>(sizeof engine_cpu_s);
+  ::close(fds[0]);
+  int wstatus = 0;
+  rusage usage{};
+  ::wait4(pid, &wstatus, 0, &usage);
+  Measurement m;
+  m.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  if (!reported) {
+    const bool out_of_cpu = WIFSIGNALED(wstatus) && (WTERMSIG(wstatus) == SIGXCPU || WTERMSIG(wstatus) == SIGKILL);
+    m.status = out_of_cpu ? "budget" : "crashed";
+    m.cpu_s = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+              static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
+    return m;
+  }
+  m.status = r.status;
+  m.cpu_s = engine_cpu_s;
+  return m;
+}
+
+std::vector<Input> list_inputs(const fs::path& dir) {
+  std::vector<Input> inputs;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string stem = entry.path().stem().string();
+    const auto underscore = stem.rfind('_');
+    if (entry.path().extension() != ".json" || underscore == std::string::npos) continue;
+    Input in{stem.substr(0, underscore), 0, entry.path()};
+    const std::vector<PolyShape> shapes = read_polyjson_file(entry.path());
+    for (const auto& loop : shapes.at(0).loops) in.n += loop.size();
+    inputs.push_back(in);
+  }
+  std::sort(inputs.begin(), inputs.end(), [](const Input& a, const Input& b) {
+    return a.family != b.family ? a.family < b.family : a.n < b.n;
+  });
+  return inputs;
+}
+
+// Least-squares slope of log(time) against log(n) over n >= 4096.
+std::string slope(const std::vector<std::pair<std::size_t, double>>& points) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int k = 0;
+  for (const auto& [n, t] : points) {
+    if (n < 4096 || t <= 0.0) continue;
+    const double x = std::log(static_cast<double>(n)), y = std::log(t);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++k;
+  }
+  if (k < 2) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", (k * sxy - sx * sy) / (k * sxx - sx * sx));
+  return buf;
+}
+
+int run(int argc, char** argv) {
+  double budget_s = 120.0, memory_gb = 8.0;
+  bool with_cgal = true;
+  fs::path dir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--budget" && i + 1 < argc) budget_s = std::atof(argv[++i]);
+    else if (a == "--memory-gb" && i + 1 < argc) memory_gb = std::atof(argv[++i]);
+    else if (a == "--no-cgal") with_cgal = false;
+    else dir = a;
+  }
+  if (dir.empty()) {
+    std::fprintf(stderr, "usage: procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] DIR\n"
+                         "  DIR: the files bench/scale_inputs.py wrote\n");
+    return 2;
+  }
+  std::vector<Engine> engines{Engine::Sweep, Engine::Roof};
+  if (with_cgal) engines.push_back(Engine::Cgal);
+
+  std::printf("| family | n | engine | status | CPU s | peak MB |\n|---|---:|---|---|---:|---:|\n");
+  std::map<std::pair<std::string, Engine>, std::vector<std::pair<std::size_t, double>>> times;
+  std::map<std::pair<std::string, Engine>, bool> stopped;
+  for (const Input& in : list_inputs(dir)) {
+    for (const Engine e : engines) {
+      if (stopped[{in.family, e}]) continue;
+      const Measurement m = measure(in, e, budget_s, memory_gb);
+      std::printf("| %s | %zu | %s | %s | %.3f | %.0f |\n", in.family.c_str(), in.n, engine_name(e), m.status.c_str(),
+                  m.cpu_s, m.peak_mb);
+      std::fflush(stdout);
+      if (m.status == "ok" || m.status == "invalid") times[{in.family, e}].push_back({in.n, m.cpu_s});
+      if (m.status != "ok") stopped[{in.family, e}] = true;
+    }
+  }
+  std::printf("\n| family | engine | log-log slope of CPU time, n >= 4096 |\n|---|---|---:|\n");
+  for (const auto& [key, points] : times)
+    std::printf("| %s | %s | %s |\n", key.first.c_str(), engine_name(key.second), slope(points).c_str());
+  return 0;
+}
+
+}  // namespace
+}  // namespace procex
+
+int main(int argc, char** argv) { return procex::run(argc, argv); }
