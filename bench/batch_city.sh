@@ -1,6 +1,6 @@
 #!/bin/sh
 # The Batch benchmark of BENCHMARKS.md: `procex batch samples/city.pxg` over the
-# whole OpenStreetMap corpus (../shared/data/footprints joined into one
+# whole OpenStreetMap corpus (data/footprints joined into one
 # FeatureCollection), RUNS times each with 1 and 2 jobs, alternating; one line
 # per run: wall and CPU seconds, peak RSS, the report's evaluate and write
 # phases, footprints per second and the load average when it ended. Also
@@ -9,10 +9,9 @@
 set -eu
 build=${1:-build}
 runs=${2:-3}
-shared=${PROCEX_SHARED_DIR:-../shared}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-python3 - "$shared/data/footprints" "$out/corpus.geojson" <<'PY'
+python3 - data/footprints "$out/corpus.geojson" <<'PY'
 import glob, json, sys
 features = [f for p in sorted(glob.glob(sys.argv[1] + "/*.geojson")) for f in json.load(open(p))["features"]]
 json.dump({"type": "FeatureCollection", "features": features}, open(sys.argv[2], "w"))

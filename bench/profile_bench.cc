@@ -1,7 +1,7 @@
 // Profiles in the sweep (issue 3's benchmark, figures in BENCHMARKS.md,
 // "Profiles"): the fig. 25 analogue (24 nested loops, 552 vertices, three
 // profiles with eaves stepping out) and every OpenStreetMap footprint of
-// ../shared/data/footprints under a four-segment house profile (wall, soffit,
+// data/footprints under a four-segment house profile (wall, soffit,
 // fascia, roof). Footprints are read and prepared before timing; one thread.
 // A natural step on one edge (a bay out of the wall at 1 m, under a hip roof)
 // changes a few corners of a big cross-section: the corpus with a bay on each
@@ -20,7 +20,7 @@
 #include "core/io/geojson.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/figure25.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {

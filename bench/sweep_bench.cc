@@ -31,7 +31,7 @@
 #include "core/io/polyjson.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/cgal_skeleton.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {

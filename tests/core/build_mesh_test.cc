@@ -8,6 +8,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "tests/core/mesh_fixtures.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {
@@ -66,7 +67,7 @@ TEST(BuildMesh, SquareRingSplitsFacesWithHolesIntoConvexPieces) {
 
 // The thresholded-image case: 24 loops nested 6 deep, 13 polygons with holes.
 TEST(BuildMesh, NestedContoursExtrudeToAValidSolid) {
-  const auto shapes = read_polyjson_file(std::string(PROCEX_SHARED) + "/data/synthetic/b_image_contours.json");
+  const auto shapes = read_polyjson_file(synthetic_file("b_image_contours"));
   const Surface s = test::extrude(shapes[0].loops, 0.0, 5.0);
   const Mesh mesh = build_mesh(s);
   const ValidationReport r = validate(mesh);
@@ -82,7 +83,7 @@ TEST(BuildMesh, NestedContoursExtrudeToAValidSolid) {
 // Every footprint of the synthetic city (828 courtyards, collinear runs)
 // extrudes to a closed, valid prism.
 TEST(BuildMesh, EveryCityFootprintExtrudesToAValidPrism) {
-  const auto shapes = read_polyjson_file(std::string(PROCEX_SHARED) + "/data/synthetic/d_city_6000.json");
+  const auto shapes = read_polyjson_file(synthetic_file("d_city_6000"));
   ASSERT_EQ(shapes.size(), 6000u);
   int holes = 0;
   for (std::size_t i = 0; i < shapes.size(); ++i) {

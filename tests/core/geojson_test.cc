@@ -10,7 +10,7 @@ namespace procex {
 namespace {
 
 const std::string kData = PROCEX_TEST_DATA;
-const std::string kFootprints = std::string(PROCEX_SHARED) + "/data/footprints/";
+const std::string kFootprints = std::string(PROCEX_DATA) + "/footprints/";
 
 class GeoJsonCorpus : public ::testing::TestWithParam<const char*> {};
 

@@ -15,7 +15,7 @@ namespace procex {
 namespace {
 
 const std::string kData = PROCEX_TEST_DATA;
-const std::string kSynthetic = std::string(PROCEX_SHARED) + "/data/synthetic/";
+const std::string kSynthetic = std::string(PROCEX_DATA) + "/synthetic/";
 
 // Every synthetic case reads, with the shape, loop and vertex counts of the manifest.
 TEST(PolyJson, ReadsEverySyntheticCase) {

@@ -167,7 +167,7 @@ TEST(PrepareFootprint, RefusesTheInvalidOsmRings) {
 TEST(PrepareFootprint, AcceptsTheValidRealCorpus) {
   std::size_t accepted = 0, refused = 0;
   for (const char* file : {"corpus_monaco.geojson", "corpus_manhattan_2015.geojson", "corpus_baltimore_2015.geojson"}) {
-    const GeoJsonCollection c = read_geojson_file(std::string(PROCEX_SHARED) + "/data/footprints/" + file);
+    const GeoJsonCollection c = read_geojson_file(std::string(PROCEX_DATA) + "/footprints/" + file);
     for (const GeoJsonFeature& f : c.features) {
       const bool valid = f.property_text("valid") == "true";
       try {
@@ -187,7 +187,7 @@ TEST(PrepareFootprint, AcceptsTheValidRealCorpus) {
 
 // Every synthetic case is valid input, including the nearly touching ones.
 TEST(PrepareFootprint, AcceptsEverySyntheticCase) {
-  const std::string dir = std::string(PROCEX_SHARED) + "/data/synthetic/";
+  const std::string dir = std::string(PROCEX_DATA) + "/synthetic/";
   for (const char* file : {"a_circle_4096.json", "b_image_contours.json", "c_ortho_0200.json", "d_city_6000.json",
                            "e_collinear_rect.json", "e_comb_equal_teeth.json", "e_grid_of_courtyards.json",
                            "e_near_touch_hole.json", "e_near_touch_reflex_pair.json", "e_near_touch_spike.json",

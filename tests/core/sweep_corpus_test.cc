@@ -1,4 +1,4 @@
-// The sweep on every real footprint of shared/data/footprints/ (about 9,500
+// The sweep on every real footprint of data/footprints/ (about 9,500
 // OpenStreetMap buildings): at 45 degrees, and again with seeded random angles
 // in [20, 70] and some vertical edges (gables), every mesh must validate
 // (closed, 2-manifold, oriented, planar, no self-intersection) or the input
@@ -36,7 +36,7 @@
 #include "tests/support/house_profiles.h"
 #include "tests/support/sanitizers.h"
 #include "tests/support/validation_text.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {
@@ -188,10 +188,6 @@ std::vector<CorpusCase> corpus_cases() {
 std::string suffix(Angles a) {
   static const char* const kSuffix[] = {"_45", "_random", "_profiles", "_lean", "_edge_profiles"};
   return kSuffix[static_cast<int>(a)];
-}
-
-TEST(SweepCorpusData, CorpusIsPresent) {
-  EXPECT_EQ(footprint_corpus_files().size(), 3u) << "is PROCEX_SHARED (" << PROCEX_SHARED << ") right?";
 }
 
 INSTANTIATE_TEST_SUITE_P(Osm, SweepCorpus, ::testing::ValuesIn(corpus_cases()), [](const auto& info) {

@@ -27,7 +27,7 @@
 #include "core/sweep/sweep.h"
 #include "tests/support/sanitizers.h"
 #include "tests/support/validation_text.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {

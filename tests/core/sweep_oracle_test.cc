@@ -27,7 +27,7 @@
 #include "core/sweep/sweep.h"
 #include "tests/support/cgal_skeleton.h"
 #include "tests/support/sanitizers.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {
@@ -190,15 +190,14 @@ TEST(CgalOracle, ComparisonNoticesAWrongSurface) {
     EXPECT_GT(wrong.nearest(n, kOracleRelative * length_scale(square)), kOracleRelative * length_scale(square));
 }
 
-// ---- synthetic cases (shared/data/synthetic, see its README) ----
+// ---- synthetic cases (data/synthetic/, see its README) ----
 
 std::vector<std::string> synthetic_cases() {
   // a_circle_4096 is left to the benchmark: CGAL alone needs 10 s on it.
   std::vector<std::string> names = {"a_circle_0016", "a_circle_0064", "a_circle_0256", "a_circle_1024",
                                     "b_image_contours"};
   std::vector<std::string> globbed;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(synthetic_file("x").parent_path(), ec)) {
+  for (const auto& e : std::filesystem::directory_iterator(synthetic_file("x").parent_path())) {
     const std::string stem = e.path().stem().string();
     if (e.path().extension() == ".json" && (stem.rfind("c_", 0) == 0 || stem.rfind("e_", 0) == 0))
       globbed.push_back(stem);
@@ -209,8 +208,8 @@ std::vector<std::string> synthetic_cases() {
 }
 
 TEST(SweepOracleData, SyntheticCasesArePresent) {
-  // 4 circles + b + 14 c_* + 12 e_* in the shared data of issue 2.
-  EXPECT_GE(synthetic_cases().size(), 31u) << "is PROCEX_SHARED (" << PROCEX_SHARED << ") right?";
+  // 4 circles + b + 14 c_* + 12 e_* in data/synthetic/ (manifest.json).
+  EXPECT_EQ(synthetic_cases().size(), 31u);
 }
 
 class SweepOracleSynthetic : public ::testing::TestWithParam<std::string> {};

@@ -1,4 +1,4 @@
-// Plan edits on every real footprint of shared/data/footprints/: under a hip
+// Plan edits on every real footprint of data/footprints/: under a hip
 // roof, a natural bay grows out of the middle of every edge at 1 m, a dormer
 // out of every eave at 3 m and a forced recess is cut into every wall at the
 // footprint. Edits that do not fit an edge are absent (with a reason); every
@@ -19,7 +19,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/sanitizers.h"
-#include "tests/support/shared_data.h"
+#include "tests/support/data_files.h"
 
 namespace procex {
 namespace {
