@@ -12,6 +12,7 @@
 // n is fitted per family and engine over n >= 4096.
 //
 //   procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] DIR
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -156,6 +157,9 @@ std::vector<Input> list_inputs(const fs::path& dir) {
   std::sort(inputs.begin(), inputs.end(), [](const Input& a, const Input& b) {
     return a.family != b.family ? a.family < b.family : a.n < b.n;
   });
+  // A child starts with this process's resident pages: hand back the heap the
+  // large inputs took, so each child's peak is its own.
+  ::malloc_trim(0);
   return inputs;
 }
 
