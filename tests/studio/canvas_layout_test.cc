@@ -38,7 +38,7 @@ TEST(CanvasView, FrameFitsAndCentresTheBounds) {
   CanvasView v;
   v.origin = {0, 0};
   const Rect r{{-500, 100}, {1500, 600}};
-  v.frame(r, {800, 400});
+  v.frame(r, {800, 400}, 0.2f);
   const glm::vec2 a = v.to_screen(r.min), b = v.to_screen(r.max);
   EXPECT_GE(a.x, 0);
   EXPECT_GE(a.y, 0);
@@ -46,6 +46,22 @@ TEST(CanvasView, FrameFitsAndCentresTheBounds) {
   EXPECT_LE(b.y, 400);
   EXPECT_NEAR((a.x + b.x) / 2, 400, 1e-2);
   EXPECT_NEAR((a.y + b.y) / 2, 200, 1e-2);
+}
+
+// A graph too big to fit at a legible zoom keeps the legible zoom and shows its top-left corner.
+TEST(CanvasView, FrameNeverShrinksTextBelowTheLegibleZoom) {
+  CanvasView v;
+  v.origin = {10, 20};
+  const Rect r{{-500, 100}, {1500, 600}};
+  v.frame(r, {800, 400}, 0.8f);
+  EXPECT_FLOAT_EQ(v.zoom, 0.8f);
+  const glm::vec2 a = v.to_screen(r.min);
+  EXPECT_NEAR(a.x, 10 + 40, 1e-2);
+  EXPECT_NEAR(a.y, 20 + 40, 1e-2);
+  // One that fits is centred as before.
+  v.frame(Rect{{0, 0}, {300, 100}}, {800, 400}, 0.8f);
+  EXPECT_FLOAT_EQ(v.zoom, 1.5f);
+  EXPECT_NEAR(v.to_screen({150, 50}).x, 10 + 400, 1e-2);
 }
 
 TEST(Layout, BoxesFollowDeclarationsAndEditorPositions) {

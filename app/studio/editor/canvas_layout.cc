@@ -12,13 +12,15 @@ void CanvasView::zoom_at(glm::vec2 screen, float factor) {
   pan = (screen - origin) / zoom - anchor;
 }
 
-void CanvasView::frame(const Rect& bounds, glm::vec2 size) {
+void CanvasView::frame(const Rect& bounds, glm::vec2 size, float min_zoom) {
   const glm::vec2 extent = glm::max(bounds.size(), glm::vec2(1.0f));
   const float margin = 40.0f;
   const glm::vec2 avail = glm::max(size - glm::vec2(2.0f * margin), glm::vec2(1.0f));
-  zoom = std::clamp(std::min(avail.x / extent.x, avail.y / extent.y), 0.2f, 1.5f);
-  // Centre the bounds in the widget.
+  zoom = std::clamp(std::min(avail.x / extent.x, avail.y / extent.y), std::min(min_zoom, 1.5f), 1.5f);
+  // Centred along each axis that fits; otherwise its start at the margin.
   pan = size * 0.5f / zoom - (bounds.min + bounds.max) * 0.5f;
+  for (int axis = 0; axis < 2; ++axis)
+    if (extent[axis] * zoom > avail[axis]) pan[axis] = margin / zoom - bounds.min[axis];
 }
 
 namespace {
@@ -26,16 +28,18 @@ namespace {
 NodeBox make_box(NodeId id, glm::vec2 pos, std::size_t inputs, std::size_t outputs) {
   NodeBox b;
   b.id = id;
-  const std::size_t rows = std::max<std::size_t>(std::max(inputs, outputs), 1);
-  b.rect = {pos, pos + glm::vec2(kNodeWidth, kHeaderHeight + kRowHeight * static_cast<float>(rows) + 6.0f)};
-  for (std::size_t i = 0; i < inputs; ++i)
-    b.inputs.push_back(pos + glm::vec2(0.0f, kHeaderHeight + kRowHeight * (static_cast<float>(i) + 0.5f)));
-  for (std::size_t i = 0; i < outputs; ++i)
-    b.outputs.push_back(pos + glm::vec2(kNodeWidth, kHeaderHeight + kRowHeight * (static_cast<float>(i) + 0.5f)));
+  b.rect = {pos, pos + node_size(inputs, outputs)};
+  for (std::size_t i = 0; i < inputs; ++i) b.inputs.push_back(pos + glm::vec2(0.0f, pin_offset(i)));
+  for (std::size_t i = 0; i < outputs; ++i) b.outputs.push_back(pos + glm::vec2(kNodeWidth, pin_offset(i)));
   return b;
 }
 
 }  // namespace
+
+glm::vec2 node_size(std::size_t inputs, std::size_t outputs) {
+  const std::size_t rows = std::max<std::size_t>(std::max(inputs, outputs), 1);
+  return {kNodeWidth, kHeaderHeight + kRowHeight * static_cast<float>(rows) + 6.0f};
+}
 
 std::vector<NodeBox> layout(const Graph& g) {
   std::vector<NodeBox> boxes;

@@ -32,14 +32,26 @@ struct CanvasView {
   glm::vec2 to_canvas(glm::vec2 s) const { return (s - origin) / zoom - pan; }
   // Zooms by `factor` keeping the canvas point under `screen` fixed; zoom stays in [0.2, 3].
   void zoom_at(glm::vec2 screen, float factor);
-  // Fits `bounds` (canvas units) into a widget of `size` pixels, with a margin.
-  void frame(const Rect& bounds, glm::vec2 size);
+  // Fits `bounds` (canvas units) into a widget of `size` pixels, with a
+  // margin, centred. Never below `min_zoom` (the zoom at which text is still
+  // legible): a graph too big for that shows its start (top left, where its
+  // inputs are) and the rest is a scroll away.
+  void frame(const Rect& bounds, glm::vec2 size, float min_zoom);
 };
 
 inline constexpr float kNodeWidth = 190.0f;
 inline constexpr float kHeaderHeight = 24.0f;
 inline constexpr float kRowHeight = 20.0f;
 inline constexpr float kPinRadius = 5.0f;
+// No text is drawn on the canvas below this height in pixels: farther out,
+// nodes show their titles only (held at this size), then only boxes.
+inline constexpr float kMinTextPx = 10.0f;
+// Below this zoom a node's box is too narrow for a legible title.
+inline constexpr float kTitleMinZoom = 0.4f;
+
+// A node box's size, and where its pins sit below its top edge (canvas units).
+glm::vec2 node_size(std::size_t inputs, std::size_t outputs);
+inline float pin_offset(std::size_t port) { return kHeaderHeight + kRowHeight * (static_cast<float>(port) + 0.5f); }
 
 struct NodeBox {
   NodeId id = 0;  // a node id, kGraphInputs or kGraphOutputs

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "app/studio/editor/auto_layout.h"
 #include "graph/pxg.h"
 
 namespace procex::studio {
@@ -22,7 +23,9 @@ Document::Document(Graph graph, std::filesystem::path path)
     : graph_(std::move(graph)), stack_(graph_), path_(std::move(path)), saved_text_(to_pxg(graph_)) {}
 
 std::unique_ptr<Document> Document::open(const std::filesystem::path& file) {
-  return std::unique_ptr<Document>(new Document(load_pxg(file), file));
+  Graph g = load_pxg(file);
+  place_stacked_nodes(g);
+  return std::unique_ptr<Document>(new Document(std::move(g), file));
 }
 
 std::unique_ptr<Document> Document::recovered(Graph graph, std::filesystem::path file) {
@@ -75,6 +78,25 @@ Result<NodeId> Document::add_node(std::string_view type_name, double x, double y
 Result<NodeId> Document::add_group_node(std::string_view group_name, double x, double y) {
   Result<NodeId> r = stack_.add_group_node(group_name, editor_at(x, y));
   if (r) selection_ = {*r};
+  return changed(std::move(r));
+}
+
+Result<NodeId> Document::add_node_wired(std::string_view name, bool group, double x, double y, NodeId from) {
+  end_gesture();
+  stack_.begin_macro("add " + std::string(name));
+  Result<NodeId> r = group ? stack_.add_group_node(name, editor_at(x, y)) : stack_.add_node(name, editor_at(x, y));
+  if (!r) {
+    stack_.abort_macro();
+    return changed(std::move(r));
+  }
+  const Node* source = graph_.node(from);
+  const Node& added = *graph_.node(*r);
+  bool wired = false;
+  for (std::uint32_t o = 0; source && !wired && o < source->decl().outputs().size(); ++o)
+    for (std::uint32_t i = 0; !wired && i < added.decl().inputs().size(); ++i)
+      if (graph_.can_connect({from, o}, {*r, i})) wired = static_cast<bool>(stack_.connect({from, o}, {*r, i}));
+  stack_.end_macro();
+  selection_ = {*r};
   return changed(std::move(r));
 }
 
@@ -144,6 +166,21 @@ Result<NodeId> Document::group_selection() {
   Result<NodeId> r = stack_.group(std::vector<NodeId>(selection_.begin(), selection_.end()), name);
   if (r) selection_ = {*r};
   return changed(std::move(r));
+}
+
+Status Document::tidy_layout() {
+  const std::map<NodeId, glm::vec2> corners = layered_layout(graph_);
+  end_gesture();
+  stack_.begin_macro("tidy layout");
+  for (const auto& [id, c] : corners) {
+    if (Status s = stack_.move(id, c.x, c.y); !s) {
+      stack_.abort_macro();
+      return s;
+    }
+  }
+  stack_.end_macro();
+  stack_.end_interaction();
+  return changed(Status::ok());
 }
 
 bool Document::undo() {

@@ -24,7 +24,8 @@ namespace procex::studio {
 class Document {
  public:
   Document();  // an untitled, empty recipe
-  // Loads a recipe; throws PxgError (file and location) on bad input.
+  // Loads a recipe; throws PxgError (file and location) on bad input. Nodes
+  // stacked on one spot (a recipe written without positions) are laid out.
   static std::unique_ptr<Document> open(const std::filesystem::path& file);
   // A document whose graph came from elsewhere (autosave recovery): dirty, named `file`.
   static std::unique_ptr<Document> recovered(Graph graph, std::filesystem::path file);
@@ -47,6 +48,10 @@ class Document {
   Result<NodeId> add_node(std::string_view type_name, double x, double y);
   // An instance of one of the recipe's groups.
   Result<NodeId> add_group_node(std::string_view group_name, double x, double y);
+  // Either of the above (`group`: a group's name), then wired from node
+  // `from`'s first output that fits one of the new node's inputs, if any:
+  // one undo step (the node search's Enter with a node selected).
+  Result<NodeId> add_node_wired(std::string_view name, bool group, double x, double y, NodeId from);
   Status connect(PortRef from, PortRef to);
   Status disconnect(PortRef to);
   Status set_param(NodeId id, std::size_t param, Value v);
@@ -58,6 +63,8 @@ class Document {
   Status move_selection(double dx, double dy);
   Status remove_selection();
   Result<NodeId> group_selection();
+  // Lays the whole graph out in layers from inputs to outputs (one undo step).
+  Status tidy_layout();
   bool undo();
   bool redo();
   bool can_undo() const { return stack_.can_undo(); }

@@ -12,6 +12,8 @@
 #include <map>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "app/studio/editor/preview_mesh.h"
 
 namespace procex::studio {
@@ -62,7 +64,73 @@ void bezier(ImDrawList* dl, glm::vec2 a, glm::vec2 b, ImU32 col, float zoom) {
   dl->AddBezierCubic(im(a), ImVec2(a.x + dx, a.y), ImVec2(b.x - dx, b.y), im(b), col, 2.5f * zoom);
 }
 
+// `s` cut to `width` pixels at `px`, with an ellipsis when cut.
+std::string fit_text(ImFont* font, float px, const std::string& s, float width) {
+  if (font->CalcTextSizeA(px, 1e9f, 0.0f, s.c_str()).x <= width) return s;
+  for (std::size_t n = s.size(); n > 0; --n) {
+    std::string cut = s.substr(0, n) + "..";
+    if (font->CalcTextSizeA(px, 1e9f, 0.0f, cut.c_str()).x <= width) return cut;
+  }
+  return "";
+}
+
+std::string title_of(const Graph& g, NodeId id) {
+  if (id == kGraphInputs) return "Graph inputs";
+  if (id == kGraphOutputs) return "Graph outputs";
+  const Node& n = *g.node(id);
+  return (n.group.empty() ? n.type->name() : n.group) + "  #" + std::to_string(id);
+}
+
+// A value in a line or so: JSON for the types that have it, else its type.
+std::string value_text(const Value& v) {
+  if (v.empty()) return "(none)";
+  if (!v.type()->has_json()) return "a " + v.type()->name();
+  nlohmann::json j;
+  v.type()->to_json(v.raw(), j);
+  std::string t = j.dump();
+  return t.size() > 80 ? t.substr(0, 77) + "..." : t;
+}
+
+// The name drawn beside a pin. Pseudo nodes: graph inputs are the outputs of
+// kGraphInputs, graph outputs the inputs of kGraphOutputs.
+std::string port_label(const Graph& g, PortRef p, bool is_output) {
+  if (p.node == kGraphInputs) return g.inputs()[p.port].name;
+  if (p.node == kGraphOutputs) return g.outputs()[p.port].name;
+  const NodeDecl& d = g.node(p.node)->decl();
+  if (is_output) return d.outputs()[p.port].name;
+  return d.inputs()[p.port].name + (d.inputs()[p.port].optional ? "?" : "");
+}
+
+std::string port_tooltip(const Graph& g, PortRef p, bool is_output, const EvalSnapshot* eval) {
+  const ValueType* type = is_output ? g.output_type(p) : g.input_type(p);
+  std::string doc;
+  if (p.node == kGraphInputs) doc = g.inputs()[p.port].doc;
+  else if (p.node == kGraphOutputs) doc = g.outputs()[p.port].doc;
+  else doc = (is_output ? g.node(p.node)->decl().outputs() : g.node(p.node)->decl().inputs())[p.port].doc;
+  std::string t = (is_output ? "output " : "input ") + port_label(g, p, is_output) + " : " + (type ? type->name() : "?");
+  if (!doc.empty()) t += "\n" + doc;
+  // The value there: an output's own, an input's from its source.
+  std::optional<PortRef> at = is_output ? std::optional<PortRef>(p) : g.source(p);
+  if (eval && at)
+    if (auto it = eval->values.find(*at); it != eval->values.end()) t += "\nvalue: " + value_text(it->second);
+  return t;
+}
+
+std::string node_tooltip(const Graph& g, NodeId id, const EvalSnapshot* eval) {
+  std::string t = title_of(g, id);
+  if (id > kMaxNodeId) return t;
+  const Node& n = *g.node(id);
+  for (std::size_t i = 0; i < n.params.size(); ++i) {
+    const ParamDecl& p = n.decl().params()[i];
+    t += "\n  " + p.name + " = " + value_text(n.params[i]) + (p.unit.empty() ? "" : " " + p.unit);
+  }
+  if (const NodeMarks m = marks_of(eval, id); m.stats) t += std::string("\n") + to_string(m.stats->outcome);
+  return t;
+}
+
 }  // namespace
+
+float NodeCanvas::legible_zoom() { return kMinTextPx / ImGui::GetFontSize(); }
 
 void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
   ImGuiIO& io = ImGui::GetIO();
@@ -84,7 +152,7 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
 
   std::vector<NodeBox> boxes = layout(g);
   if (frame_pending_) {
-    if (!boxes.empty()) view_.frame(bounds(boxes), size);
+    if (!boxes.empty()) view_.frame(bounds(boxes), size, legible_zoom());
     frame_pending_ = false;
   }
   const glm::vec2 mouse_s(io.MousePos.x, io.MousePos.y);
@@ -124,16 +192,26 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
     bezier(dl, view_.to_screen(fb->outputs[from.port]), view_.to_screen(tb->inputs[to.port]), type_color(g.output_type(from)), zoom);
   }
 
-  // Nodes.
+  // Nodes. Text never below kMinTextPx: port names only when they are that
+  // big, titles held at that size while the box is wide enough, then boxes only.
+  const bool port_text = font_size >= kMinTextPx;
+  const float title_size = std::max(font_size, kMinTextPx);
+  const bool title_text = zoom >= kTitleMinZoom;
+  min_text_px_ = 0.0f;
+  auto text = [&](float px, ImVec2 at, ImU32 col, const std::string& s) {
+    dl->AddText(font, px, at, col, s.c_str());
+    min_text_px_ = min_text_px_ == 0.0f ? px : std::min(min_text_px_, px);
+  };
   std::string hover_text;
+  const bool idle = drag_ == Drag::kNone && hovered;
+  const float pick = std::max(kPinRadius * 2.0f, 9.0f / zoom);  // pins are easy to hit at any zoom
+  const std::optional<PinHit> hover_pin = idle ? pin_at(boxes, mouse, pick) : std::nullopt;
   for (const NodeBox& b : boxes) {
     if (!b.rect.overlaps(visible)) continue;
     const glm::vec2 a = view_.to_screen(b.rect.min), c = view_.to_screen(b.rect.max);
     const bool pseudo = b.id > kMaxNodeId;
     const Node* n = pseudo ? nullptr : g.node(b.id);
-    std::string title;
-    if (pseudo) title = b.id == kGraphInputs ? "Graph inputs" : "Graph outputs";
-    else title = (n->group.empty() ? n->type->name() : n->group) + "  #" + std::to_string(b.id);
+    const std::string title = title_of(g, b.id);
     const std::string& category = n ? n->decl().category() : title;
     dl->AddRectFilled(im(a), im(c), IM_COL32(46, 48, 56, 235), 6.0f * zoom);
     dl->AddRectFilled(im(a), ImVec2(c.x, a.y + kHeaderHeight * zoom), color_of(tag_color(category) * 0.6f), 6.0f * zoom,
@@ -141,40 +219,43 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
     const bool selected = doc.selection().count(b.id) > 0;
     dl->AddRect(im(a), im(c), selected ? IM_COL32(255, 170, 40, 255) : IM_COL32(80, 82, 92, 255), 6.0f * zoom, 0,
                 selected ? 2.5f : 1.0f);
-    dl->AddText(font, font_size, ImVec2(a.x + 16.0f * zoom, a.y + 5.0f * zoom), IM_COL32(240, 240, 240, 255), title.c_str());
-    // Ports with their names.
+    if (title_text) {
+      const float inset = (port_text ? 16.0f : 4.0f) * zoom;
+      const std::string shown = fit_text(font, title_size, title, c.x - a.x - inset - 4.0f);
+      text(title_size, ImVec2(a.x + inset, a.y + std::max(5.0f * zoom, (kHeaderHeight * zoom - title_size) * 0.5f)), IM_COL32(240, 240, 240, 255), shown);
+    }
+    // Ports, with their names when legible.
     for (std::uint32_t i = 0; i < b.inputs.size(); ++i) {
-      const PortRef p{b.id, i};
       const glm::vec2 s = view_.to_screen(b.inputs[i]);
-      const std::string name = pseudo ? g.outputs()[i].name : n->decl().inputs()[i].name + (n->decl().inputs()[i].optional ? "?" : "");
-      dl->AddCircleFilled(im(s), kPinRadius * zoom, type_color(g.input_type(p)));
-      dl->AddText(font, font_size, ImVec2(s.x + 9.0f * zoom, s.y - font_size * 0.5f), IM_COL32(200, 200, 205, 255), name.c_str());
+      dl->AddCircleFilled(im(s), std::max(kPinRadius * zoom, 2.0f), type_color(g.input_type({b.id, i})));
+      if (port_text) text(font_size, ImVec2(s.x + 9.0f * zoom, s.y - font_size * 0.5f), IM_COL32(200, 200, 205, 255), port_label(g, {b.id, i}, false));
     }
     for (std::uint32_t i = 0; i < b.outputs.size(); ++i) {
-      const PortRef p{b.id, i};
       const glm::vec2 s = view_.to_screen(b.outputs[i]);
-      const std::string name = pseudo ? g.inputs()[i].name : n->decl().outputs()[i].name;
-      dl->AddCircleFilled(im(s), kPinRadius * zoom, type_color(g.output_type(p)));
+      dl->AddCircleFilled(im(s), std::max(kPinRadius * zoom, 2.0f), type_color(g.output_type({b.id, i})));
+      if (!port_text) continue;
+      const std::string name = port_label(g, {b.id, i}, true);
       const float w = font->CalcTextSizeA(font_size, 1e9f, 0.0f, name.c_str()).x;
-      dl->AddText(font, font_size, ImVec2(s.x - 9.0f * zoom - w, s.y - font_size * 0.5f), IM_COL32(200, 200, 205, 255), name.c_str());
+      text(font_size, ImVec2(s.x - 9.0f * zoom - w, s.y - font_size * 0.5f), IM_COL32(200, 200, 205, 255), name);
     }
     if (pseudo) continue;
-    // Evaluation marks: a dot for cached / computed, a badge for errors and warnings.
+    // Evaluation marks: a dot for cached / computed, a badge for errors and warnings (never too small to see or hover).
     const NodeMarks m = marks_of(eval, b.id);
     if (m.stats) {
       const glm::vec2 dot(a.x + 8.0f * zoom, a.y + kHeaderHeight * zoom * 0.5f);
-      dl->AddCircleFilled(im(dot), 4.0f * zoom, outcome_color(m.stats->outcome));
-      if (glm::distance(mouse_s, dot) < 7.0f * zoom) {
+      dl->AddCircleFilled(im(dot), std::max(4.0f * zoom, 2.0f), outcome_color(m.stats->outcome));
+      if (port_text && glm::distance(mouse_s, dot) < 7.0f * zoom) {
         char buf[96];
         std::snprintf(buf, sizeof buf, "%s, %.2f ms", to_string(m.stats->outcome), static_cast<double>(m.stats->time_ns) * 1e-6);
         hover_text = buf;
       }
     }
     if (!m.errors.empty() || !m.warnings.empty()) {
-      const glm::vec2 badge(c.x - 10.0f * zoom, a.y + kHeaderHeight * zoom * 0.5f);
-      dl->AddCircleFilled(im(badge), 8.0f * zoom, m.errors.empty() ? IM_COL32(230, 190, 40, 255) : IM_COL32(220, 50, 45, 255));
-      dl->AddText(font, font_size, ImVec2(badge.x - 2.5f * zoom, badge.y - font_size * 0.5f), IM_COL32(20, 20, 20, 255), "!");
-      if (glm::distance(mouse_s, badge) < 10.0f * zoom) {
+      const float r = std::max(8.0f * zoom, 5.0f);
+      const glm::vec2 badge(c.x - r - 2.0f * zoom, a.y + kHeaderHeight * zoom * 0.5f);
+      dl->AddCircleFilled(im(badge), r, m.errors.empty() ? IM_COL32(230, 190, 40, 255) : IM_COL32(220, 50, 45, 255));
+      if (port_text) text(font_size, ImVec2(badge.x - 2.5f * zoom, badge.y - font_size * 0.5f), IM_COL32(20, 20, 20, 255), "!");
+      if (glm::distance(mouse_s, badge) < r + 2.0f) {
         for (const auto* list : {&m.errors, &m.warnings})
           for (const Diagnostic* d : *list) {
             if (!hover_text.empty()) hover_text += '\n';
@@ -183,9 +264,19 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
       }
     }
   }
+  // Hover: a pin names its port, type, doc and the value last computed there;
+  // a node shows its title and parameters (all that its box may be too small to say).
+  if (hover_text.empty() && hover_pin) {
+    hover_text = port_tooltip(g, hover_pin->port, hover_pin->is_output, eval);
+  } else if (hover_text.empty() && idle) {
+    for (auto b = boxes.rbegin(); b != boxes.rend(); ++b)
+      if (b->rect.contains(mouse)) {
+        if (!port_text || mouse.y < b->rect.min.y + kHeaderHeight) hover_text = node_tooltip(g, b->id, eval);
+        break;
+      }
+  }
 
   // Gestures.
-  const float pick = std::max(kPinRadius * 2.0f, 9.0f / zoom);
   const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && drag_ == Drag::kNone) {
     if (auto pin = pin_at(boxes, mouse, pick)) {
@@ -273,18 +364,20 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
   if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) && ImGui::GetMouseDragDelta(ImGuiMouseButton_Right).x == 0 &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Right).y == 0) {
     add_at_ = mouse;
+    wire_from_ = doc.selected();
     ImGui::OpenPopup("add_node");
   }
   if (ImGui::IsWindowFocused() && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab))) {
       add_at_ = hovered ? mouse : view_.to_canvas(view_.origin + size * 0.5f);
+      wire_from_ = doc.selected();
       ImGui::OpenPopup("add_node");
     }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)))
       if (Status s = doc.remove_selection(); !s) status = s.message();
     if (!ctrl && ImGui::IsKeyPressed('F')) {
       const std::vector<NodeId> sel(doc.selection().begin(), doc.selection().end());
-      if (!boxes.empty()) view_.frame(bounds(boxes, sel), size);
+      if (!boxes.empty()) view_.frame(bounds(boxes, sel), size, legible_zoom());
     }
     if (ctrl && (ImGui::IsKeyPressed('C') || ImGui::IsKeyPressed('X')) && !doc.selection().empty()) {
       ImGui::SetClipboardText(doc.copy_selection().c_str());
@@ -295,6 +388,8 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
       const char* text = ImGui::GetClipboardText();
       if (auto r = doc.paste(text ? text : "", 40.0, 40.0); !r) status = r.message();
     }
+    if (!ctrl && ImGui::IsKeyPressed('L'))
+      if (Status s = doc.tidy_layout(); !s) status = s.message();
     if (ctrl && ImGui::IsKeyPressed('G'))
       if (auto r = doc.group_selection(); !r) status = r.message();
   }
@@ -305,35 +400,85 @@ void NodeCanvas::draw_add_menu(Document& doc, std::string& status) {
   if (!ImGui::BeginPopup("add_node")) return;
   if (ImGui::IsWindowAppearing()) {
     search_[0] = '\0';
+    highlight_ = 0;
     ImGui::SetKeyboardFocusHere();
   }
+  ImGui::SetNextItemWidth(280);
   const bool enter = ImGui::InputTextWithHint("##search", "search nodes", search_, sizeof search_, ImGuiInputTextFlags_EnterReturnsTrue);
+  if (ImGui::IsItemEdited()) highlight_ = 0;
+  // Best matches first: the name starting with the text, containing it, then category, then docs.
   struct Entry {
-    std::string name, category, doc;
+    std::string name, category;
+    const NodeDecl* decl;
     bool group;
+    int score;
   };
   std::vector<Entry> entries;
-  for (const auto& t : NodeRegistry::global().all()) entries.push_back({t->name(), t->decl.category(), t->decl.doc(), false});
-  for (const auto& [name, def] : doc.graph().groups()) entries.push_back({name, "Groups", def.type->decl.doc(), true});
-  std::erase_if(entries, [&](const Entry& e) { return !contains_nocase(e.name, search_) && !contains_nocase(e.category, search_); });
-  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.category < b.category; });
-  const Entry* pick = enter && !entries.empty() ? &entries.front() : nullptr;
-  ImGui::BeginChild("entries", ImVec2(280, 260));
+  auto score = [&](const std::string& name, const std::string& category, const std::string& docs) {
+    const std::string_view q = search_;
+    if (q.empty()) return 0;
+    if (name.size() >= q.size() && contains_nocase(name.substr(0, q.size()), q)) return 0;
+    if (contains_nocase(name, q)) return 1;
+    if (contains_nocase(category, q)) return 2;
+    if (contains_nocase(docs, q)) return 3;
+    return -1;
+  };
+  for (const auto& t : NodeRegistry::global().all())
+    entries.push_back({t->name(), t->decl.category(), &t->decl, false, score(t->name(), t->decl.category(), t->decl.doc())});
+  for (const auto& [name, def] : doc.graph().groups())
+    entries.push_back({name, "Groups", &def.type->decl, true, score(name, "Groups", def.type->decl.doc())});
+  std::erase_if(entries, [](const Entry& e) { return e.score < 0; });
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.score != b.score ? a.score < b.score : a.category < b.category;
+  });
+  const int count = static_cast<int>(entries.size());
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow))) highlight_ = std::min(highlight_ + 1, count - 1);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) highlight_ = std::max(highlight_ - 1, 0);
+  highlight_ = std::clamp(highlight_, 0, std::max(count - 1, 0));
+  const Entry* pick = enter && count > 0 ? &entries[static_cast<std::size_t>(highlight_)] : nullptr;
+  ImGui::BeginChild("entries", ImVec2(280, 300));
   std::string category = "\x01";
-  for (const Entry& e : entries) {
-    if (e.category != category) {
+  for (int i = 0; i < count; ++i) {
+    const Entry& e = entries[static_cast<std::size_t>(i)];
+    if (e.category != category && !search_[0]) {
       category = e.category;
       ImGui::TextDisabled("%s", category.empty() ? "Other" : category.c_str());
     }
     ImGui::Indent();
-    if (ImGui::Selectable(e.name.c_str())) pick = &e;
+    if (ImGui::Selectable(e.name.c_str(), i == highlight_)) pick = &e;
+    if (i == highlight_ && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_UpArrow))))
+      ImGui::SetScrollHereY();
+    if (ImGui::IsItemHovered()) highlight_ = i;
     ImGui::Unindent();
-    if (ImGui::IsItemHovered() && !e.doc.empty()) ImGui::SetTooltip("%s", e.doc.c_str());
   }
   if (entries.empty()) ImGui::TextDisabled("no node type matches");
   ImGui::EndChild();
+  // The highlighted type's documentation, as `procex nodes` prints it.
+  ImGui::SameLine();
+  ImGui::BeginChild("docs", ImVec2(340, 300), true);
+  if (count > 0) {
+    const Entry& e = entries[static_cast<std::size_t>(highlight_)];
+    ImGui::TextUnformatted(e.name.c_str());
+    ImGui::TextDisabled("%s", e.category.c_str());
+    ImGui::Separator();
+    if (!e.decl->doc().empty()) ImGui::TextWrapped("%s", e.decl->doc().c_str());
+    auto ports = [](const char* what, const std::vector<PortDecl>& list) {
+      if (list.empty()) return;
+      ImGui::Spacing();
+      ImGui::TextDisabled("%s", what);
+      for (const PortDecl& p : list) ImGui::BulletText("%s : %s%s", p.name.c_str(), p.type ? p.type->name().c_str() : "?", p.optional ? " (optional)" : "");
+    };
+    ports("inputs", e.decl->inputs());
+    ports("outputs", e.decl->outputs());
+    if (!e.decl->params().empty()) {
+      ImGui::Spacing();
+      ImGui::TextDisabled("parameters");
+      for (const ParamDecl& p : e.decl->params()) ImGui::BulletText("%s%s%s", p.name.c_str(), p.unit.empty() ? "" : " / ", p.unit.c_str());
+    }
+  }
+  ImGui::EndChild();
   if (pick) {
-    auto r = pick->group ? doc.add_group_node(pick->name, add_at_.x, add_at_.y) : doc.add_node(pick->name, add_at_.x, add_at_.y);
+    auto r = doc.add_node_wired(pick->name, pick->group, add_at_.x, add_at_.y, wire_from_);
     if (!r) status = r.message();
     ImGui::CloseCurrentPopup();
   }

@@ -6,7 +6,7 @@
 // output to an input to connect (refusals explained), drag a connected input
 // away to disconnect, drag nodes to move them, click/ctrl-click/rubber band to
 // select, right click or Tab for the searchable add menu, wheel to zoom,
-// middle drag to pan, F to frame, Delete, Ctrl+C / Ctrl+V / Ctrl+X, Ctrl+G to group.
+// middle drag to pan, F to frame, L to lay the graph out, Delete, Ctrl+C / Ctrl+V / Ctrl+X, Ctrl+G to group.
 #pragma once
 
 #include <optional>
@@ -37,6 +37,11 @@ class NodeCanvas {
   };
   const std::vector<PinOnScreen>& pins_on_screen() const { return pins_on_screen_; }
   Rect screen_rect() const { return screen_rect_; }
+  float zoom() const { return view_.zoom; }
+  // The smallest text the last frame drew on the canvas, in pixels (0: none).
+  float min_text_px() const { return min_text_px_; }
+  // The zoom at which the canvas's text is kMinTextPx high.
+  static float legible_zoom();
 
  private:
   void draw_add_menu(Document& doc, std::string& status);
@@ -50,8 +55,11 @@ class NodeCanvas {
   PinHit link_from_{};
   glm::vec2 add_at_{0.0f};
   char search_[64] = {};
+  int highlight_ = 0;    // the search list's entry that Enter places
+  NodeId wire_from_ = 0;  // the node selected when the search opened: the new node is wired from it
   std::vector<PinOnScreen> pins_on_screen_;
   Rect screen_rect_;
+  float min_text_px_ = 0.0f;
 };
 
 }  // namespace procex::studio

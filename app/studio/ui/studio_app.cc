@@ -77,6 +77,7 @@ class App {
   Document& doc() { return *doc_; }
   const EvalSnapshot* shown() const { return shown_.get(); }
   const PreviewView& preview() const { return *preview_; }
+  const NodeCanvas& canvas() const { return canvas_; }
 
   void frame() {
     if (!preview_) {
@@ -242,6 +243,8 @@ class App {
         if (Status s = doc_->remove_selection(); !s) status_ = s.message();
       if (ImGui::MenuItem("Group selected", "Ctrl+G", false, !doc_->selection().empty()))
         if (auto r = doc_->group_selection(); !r) status_ = r.message();
+      if (ImGui::MenuItem("Tidy layout", "L"))
+        if (Status s = doc_->tidy_layout(); !s) status_ = s.message();
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -490,6 +493,10 @@ class App {
     j["selected"] = doc_->selected();
     const Rect c = canvas_.screen_rect();
     j["canvas"] = {c.min.x, c.min.y, c.max.x - c.min.x, c.max.y - c.min.y};
+    j["canvas_zoom"] = canvas_.zoom();
+    j["canvas_min_text_px"] = canvas_.min_text_px();
+    j["node_positions"] = nlohmann::json::object();
+    for (const auto& [id, n] : doc_->graph().nodes()) j["node_positions"][std::to_string(id)] = {n.editor.x, n.editor.y};
     j["pins"] = nlohmann::json::array();
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
@@ -576,6 +583,8 @@ void write_screenshot_info(const fs::path& file, App& app, int width, int height
         j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
   }
   j["errors"] = errors;
+  // How readable the node canvas is: its zoom and the smallest text it drew.
+  j["canvas"] = {{"zoom", app.canvas().zoom()}, {"min_text_px", app.canvas().min_text_px()}, {"legible_zoom", NodeCanvas::legible_zoom()}};
   const glm::vec3 marker = PreviewMesh::kAnchorColor;
   j["anchor_color"] = {marker.r, marker.g, marker.b};
   j["anchors_present"] = app.shown() && app.shown()->preview ? app.shown()->preview->anchors.size() - app.shown()->preview->absent_anchors() : 0;

@@ -526,5 +526,43 @@ TEST(StudioInteraction, DragsAProfileOffsetHandle) {
   fs::remove_all(dir);
 }
 
+// Tab opens the node search over the canvas; typing filters it and Enter
+// places the best match at the cursor, wired from the selected node. L lays
+// the graph out again (one undo step).
+TEST(StudioInteraction, TabSearchPlacesAWiredNodeAndLTidiesTheLayout) {
+  const fs::path dir = fresh_dir("search");
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
+  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["selected"] == 2; });
+  // A click on the selected Extrude focuses the canvas and keeps the selection.
+  const auto [ox, oy] = pin(map, 2, 0, true);
+  xdo("mousemove " + std::to_string(ox - 50) + " " + std::to_string(oy) + " sleep 0.2 click 1 sleep 0.3");
+  const auto canvas = map["canvas"];
+  const int x = map["window"][0].get<int>() + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.5);
+  const int y = map["window"][1].get<int>() + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.85);
+  xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.3");
+  std::uint64_t rev = revision(map);
+  press("Tab");
+  xdo("sleep 0.4 type transf");
+  press("Return");
+  map = studio.wait("the Transform placed and wired", [&](const json& j) { return revision(j) > rev && j["selected"] == 3 && j["links"].size() == 3; });
+  const auto placed = map["node_positions"]["3"];
+  rev = revision(map);
+  press("l");
+  map = studio.wait("the layout tidied", [&](const json& j) { return revision(j) > rev; });
+  EXPECT_NE(map["node_positions"]["3"], placed);
+  EXPECT_GE(map["canvas_min_text_px"].get<double>(), 10.0);
+  save_and_quit(studio);
+
+  const Graph g = load_pxg(recipe);
+  ASSERT_TRUE(g.node(3));
+  EXPECT_EQ(g.node(3)->type->name(), "Transform");
+  EXPECT_EQ(g.source({3, 0}), (PortRef{2, 0}));
+  // Laid out in layers: each node right of the one feeding it.
+  EXPECT_LT(g.node(1)->editor.x, g.node(2)->editor.x);
+  EXPECT_LT(g.node(2)->editor.x, g.node(3)->editor.x);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio

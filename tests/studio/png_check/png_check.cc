@@ -5,7 +5,9 @@
 // (some faces may hide behind others), and each required tag is clearly
 // visible (a soffit seen from below the eaves), and with --require-anchors
 // that the anchors have markers (pixels of the marker colour). INFO.json is
-// what `procex-studio --screenshot-info` wrote beside the image.
+// what `procex-studio --screenshot-info` wrote beside the image. The node
+// canvas's text must be legible (at least 10 px) and its framing zoom no lower
+// than the legible one.
 #include <stb_image.h>
 
 #include <algorithm>
@@ -139,6 +141,16 @@ int main(int argc, char** argv) {
     const long present = info["anchors_present"].get<long>();
     check(present > 0 && anchor_pixels >= 40 * present,
           std::to_string(anchor_pixels) + " pixels of anchor markers for " + std::to_string(present) + " present anchors (at least 40 each)");
+  }
+  // Readable node canvas: whatever text it drew is at least the legible size, and a
+  // graph framed at open uses a zoom no lower than the one that keeps text that size.
+  if (info.contains("canvas")) {
+    const double min_px = info["canvas"]["min_text_px"].get<double>(), zoom = info["canvas"]["zoom"].get<double>();
+    const double legible = info["canvas"]["legible_zoom"].get<double>();
+    check(min_px == 0.0 || min_px >= 10.0 - 1e-3, "the smallest text on the node canvas is " + std::to_string(min_px) + " px (at least 10)");
+    check(zoom >= legible - 1e-4, "the node canvas opened at zoom " + std::to_string(zoom) + " (legible from " + std::to_string(legible) + ")");
+  } else {
+    check(false, "INFO.json says how the node canvas was drawn");
   }
   check(tagged > geometry / 2, std::to_string(tagged) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
   stbi_image_free(data);
