@@ -134,14 +134,17 @@ void check_topology(const Mesh& mesh, const std::vector<std::uint32_t>& welded, 
 }
 
 double signed_volume(const Mesh& mesh) {
+  // Relative to a vertex of the mesh: far from the origin (a building at
+  // x = 1e9) the products of absolute coordinates would lose the volume.
+  const glm::dvec3 origin = mesh.n_vertices() > 0 ? to_glm(mesh.point(*mesh.vertices_begin())) : glm::dvec3(0.0);
   double six_v = 0.0;
   for (const auto f : mesh.faces()) {
     auto it = mesh.cfv_iter(f);
-    const glm::dvec3 a = to_glm(mesh.point(*it));
+    const glm::dvec3 a = to_glm(mesh.point(*it)) - origin;
     ++it;
-    glm::dvec3 b = to_glm(mesh.point(*it));
+    glm::dvec3 b = to_glm(mesh.point(*it)) - origin;
     for (++it; it.is_valid(); ++it) {
-      const glm::dvec3 c = to_glm(mesh.point(*it));
+      const glm::dvec3 c = to_glm(mesh.point(*it)) - origin;
       six_v += glm::dot(a, glm::cross(b, c));
       b = c;
     }

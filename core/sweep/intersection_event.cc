@@ -70,7 +70,11 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
 }
 
 // Clusters collisions at one height closer than delta3 in the plan, in
-// first-member order.
+// first-member order. Collisions that share a corner there are one event
+// (a corner meeting many planes at once, the corners of a regular polygon
+// meeting at its centre): they are joined through their corners first, and
+// the plan grid compares one point per such group, so a thousand-fold
+// coincidence costs a thousand steps, not a million pairs.
 std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collision>& cs) {
   const double radius = st.tol().position();
   std::vector<int> parent(cs.size());
@@ -79,6 +83,14 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
+  std::unordered_map<int, int> by_corner;
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i)
+    for (int c : cs[i].corners) {
+      const auto [it, fresh] = by_corner.try_emplace(c, i);
+      if (!fresh && glm::length(cs[i].p - cs[it->second].p) <= radius) parent[find(i)] = find(it->second);
+    }
+  std::vector<int> leader(cs.size());
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i) leader[i] = find(i);
   // Grid of cell size `radius`: only neighbouring cells can hold partners.
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
@@ -86,6 +98,7 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
     return static_cast<std::uint64_t>(x) * 73856093ULL ^ static_cast<std::uint64_t>(y) * 19349663ULL;
   };
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
+    if (leader[i] != i) continue;
     const long long gx = static_cast<long long>(std::floor(cs[i].p.x / radius));
     const long long gy = static_cast<long long>(std::floor(cs[i].p.y / radius));
     for (long long dx = -1; dx <= 1; ++dx)
@@ -93,7 +106,7 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
         auto it = grid.find(key(gx + dx, gy + dy));
         if (it == grid.end()) continue;
         for (int j : it->second)
-          if (glm::length(cs[i].p - cs[j].p) <= radius) parent[find(i)] = find(j);
+          if (find(i) != find(j) && glm::length(cs[i].p - cs[j].p) <= radius) parent[find(i)] = find(j);
       }
     grid[key(gx, gy)].push_back(i);
   }
@@ -254,7 +267,8 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
   }
 
-  const std::uint32_t v = st.add_vertex(meeting_point(st, edges, at_p, p, near));
+  const glm::dvec3 meet = meeting_point(st, edges, at_p, p, near);
+  const std::uint32_t v = st.vertex_at(glm::dvec2(meet), meet.z);
   for (int c : at_p) {
     st.emit_trajectory(c, v);
     st.corners[c].alive = false;

@@ -19,7 +19,16 @@
 namespace procex {
 namespace {
 
-engine::Tolerances tolerances_for(const Footprint& fp) {
+// The footprint's own frame: its bounding box, centred on the origin. The
+// engine's arithmetic is on differences of coordinates; far from the origin
+// (a city in UTM metres, x = 1e9) the absolute values would eat their digits,
+// and a roof would depend on where it stands.
+struct LocalFrame {
+  glm::dvec2 centre;
+  double extent;
+};
+
+LocalFrame local_frame(const Footprint& fp) {
   glm::dvec2 lo{1e300}, hi{-1e300};
   for (const Loop& l : fp.loops)
     for (glm::dvec2 p : l.points) {
@@ -28,7 +37,24 @@ engine::Tolerances tolerances_for(const Footprint& fp) {
     }
   const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
   if (!(extent > 0.0) || !std::isfinite(extent)) throw InputError("footprint has no extent");
-  return {extent};
+  return {0.5 * (lo + hi), extent};
+}
+
+Footprint moved(Footprint fp, glm::dvec2 by) {
+  for (Loop& l : fp.loops)
+    for (glm::dvec2& p : l.points) p += by;
+  return fp;
+}
+
+void move(Surface& s, glm::dvec2 by) {
+  const glm::dvec3 d{by, 0.0};
+  for (glm::dvec3& v : s.vertices) v += d;
+  for (auto* resolved : {&s.anchors, &s.plan_edits})
+    for (ResolvedAnchor& a : *resolved) {
+      a.frame.origin += d;
+      a.span_from += d;
+      a.span_to += d;
+    }
 }
 
 // The first plane of a footprint edge, checked: errors name its loop and vertex.
@@ -105,12 +131,16 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
 }  // namespace
 
 Surface sweep(const Footprint& footprint, const SweepOptions& options) {
-  engine::Tolerances tol = tolerances_for(footprint);
+  const LocalFrame frame = local_frame(footprint);
+  const Footprint local = moved(footprint, -frame.centre);
+  engine::Tolerances tol{frame.extent};
   std::optional<SweepError> first;
   for (double relative : engine::Tolerances::retry_relative) {
     tol.relative = relative;
     try {
-      return sweep_with(footprint, options, tol);
+      Surface s = sweep_with(local, options, tol);
+      move(s, frame.centre);
+      return s;
     } catch (const SweepError& e) {
       if (!first) first = e;
     }

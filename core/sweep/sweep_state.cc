@@ -69,6 +69,27 @@ std::uint32_t State::add_vertex(glm::dvec3 p) {
   return static_cast<std::uint32_t>(vertices.size() - 1);
 }
 
+std::uint32_t State::vertex_at(glm::dvec2 p, double z) {
+  if (std::abs(height - level_height_) > tol_.height()) {
+    ++level_;
+    level_height_ = height;
+  }
+  const double cell = tol_.position();
+  const auto gx = static_cast<std::int64_t>(std::floor(p.x / cell));
+  const auto gy = static_cast<std::int64_t>(std::floor(p.y / cell));
+  auto key = [&](std::int64_t x, std::int64_t y) { return LevelCell{level_, x, y}; };
+  for (std::int64_t dx = -1; dx <= 1; ++dx)
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      const auto it = level_vertices_.find(key(gx + dx, gy + dy));
+      if (it == level_vertices_.end()) continue;
+      const glm::dvec3& q = vertices[it->second];
+      if (std::abs(q.z - z) <= tol_.height() && glm::length(glm::dvec2(q) - p) <= cell) return it->second;
+    }
+  const std::uint32_t v = add_vertex({p, z});
+  level_vertices_.try_emplace(key(gx, gy), v);
+  return v;
+}
+
 bool State::reflex(int c) const {
   const Corner& k = corners[c];
   return cross(edges[k.prev_edge].dir, edges[k.next_edge].dir) <= Tolerances::parallel_sin;
@@ -94,7 +115,7 @@ std::uint32_t State::vertex_now(int c) {
   // A corner with no direction exists only at the height it was made.
   if (std::abs(o.z - height) <= tol_.height() || k.motion == Motion::Ridge || k.motion == Motion::Ambiguous)
     return k.origin;
-  const std::uint32_t v = add_vertex({position(c, height), height});
+  const std::uint32_t v = vertex_at(position(c, height), height);
   emit_trajectory(c, v);
   return v;
 }

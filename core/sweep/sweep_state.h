@@ -4,8 +4,10 @@
 // so iteration order (and therefore output) is deterministic.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/geom/profile.h"
@@ -99,6 +101,12 @@ class State {
                int face = -1);
   int add_corner(int prev_edge, int next_edge, std::uint32_t origin);
   std::uint32_t add_vertex(glm::dvec3 p);
+  // The output vertex at plan point p on the sweep plane (now at `height`):
+  // one made at this height within delta3 of p if there is one, else a new
+  // one at (p, z). Every step that resolves events at one height (clusters,
+  // spikes folding across to other clusters, ambiguity steps) reaches a point
+  // of the sweep plane through this, so each point of it is one vertex.
+  std::uint32_t vertex_at(glm::dvec2 p, double z);
   void link(int a, int b) {  // corner a is followed by corner b
     corners[a].next = b;
     corners[b].prev = a;
@@ -126,6 +134,23 @@ class State {
  private:
   Tolerances tol_;
   SweepOptions options_;
+  // vertex_at's vertices by (height level, delta3 cell); those of earlier
+  // levels never match again, so nothing is ever cleared.
+  struct LevelCell {
+    std::uint64_t level;
+    std::int64_t x, y;
+    bool operator==(const LevelCell&) const = default;
+  };
+  struct LevelCellHash {
+    std::size_t operator()(const LevelCell& c) const {
+      // Unsigned arithmetic: far cells wrap instead of overflowing.
+      return static_cast<std::size_t>(static_cast<std::uint64_t>(c.x) * 73856093ULL ^
+                                      static_cast<std::uint64_t>(c.y) * 19349663ULL ^ c.level * 83492791ULL);
+    }
+  };
+  std::unordered_map<LevelCell, std::uint32_t, LevelCellHash> level_vertices_;
+  std::uint64_t level_ = 0;
+  double level_height_ = -HUGE_VAL;
 };
 
 }  // namespace procex::engine
