@@ -26,6 +26,7 @@
 #include "core/io/polyjson.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/cgal_skeleton.h"
+#include "tests/support/point_set.h"
 #include "tests/support/sanitizers.h"
 #include "tests/support/data_files.h"
 
@@ -36,27 +37,7 @@ namespace {
 // footprint's bounding-box diagonal (issue 2: 1e-6 relative).
 constexpr double kOracleRelative = 1e-6;
 
-// Points sorted by x, so that finding a neighbour within tol is a binary search.
-class PointSet {
- public:
-  explicit PointSet(std::vector<glm::dvec3> points) : points_(std::move(points)) {
-    std::sort(points_.begin(), points_.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
-  }
-  // Distance to the nearest point among those within tol in x; +inf if none.
-  double nearest(const glm::dvec3& p, double tol) const {
-    auto it = std::lower_bound(points_.begin(), points_.end(), p.x - tol,
-                               [](const glm::dvec3& a, double x) { return a.x < x; });
-    double best = std::numeric_limits<double>::infinity();
-    for (; it != points_.end() && it->x <= p.x + tol; ++it) {
-      const glm::dvec3 d = *it - p;
-      best = std::min(best, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
-    }
-    return best;
-  }
-
- private:
-  std::vector<glm::dvec3> points_;
-};
+using testing::PointSet;
 
 std::string describe(const glm::dvec3& p) {
   std::ostringstream s;
@@ -69,7 +50,7 @@ std::string describe(const glm::dvec3& p) {
 std::vector<std::string> compare_with_cgal(const Footprint& footprint) {
   const double tol = kOracleRelative * length_scale(footprint);
   const std::vector<glm::dvec3> ours_all = sweep(footprint).vertices;
-  const std::vector<glm::dvec3> theirs = CgalSkeletonInput(footprint).inner_nodes();
+  const std::vector<glm::dvec3> theirs = CgalSkeletonInput(footprint).skeleton(0.0).nodes;
 
   std::vector<glm::dvec3> ours;
   for (const glm::dvec3& v : ours_all)
@@ -138,7 +119,7 @@ std::vector<std::string> compare_guarded(const Footprint& footprint) {
 
 TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
   const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
-  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(square).inner_nodes();
+  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(square).skeleton(0.0).nodes;
   ASSERT_FALSE(nodes.empty());
   for (const glm::dvec3& n : nodes) {
     EXPECT_NEAR(n.x, 2.0, 1e-12);
@@ -152,7 +133,7 @@ TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
 //   +-----------+   at height 2 (half the width)
 TEST(CgalOracle, RectangleRidge) {
   const Footprint rect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
-  std::vector<glm::dvec3> nodes = CgalSkeletonInput(rect).inner_nodes();
+  std::vector<glm::dvec3> nodes = CgalSkeletonInput(rect).skeleton(0.0).nodes;
   std::sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
   ASSERT_EQ(nodes.size(), 2u);
   EXPECT_NEAR(glm::distance(nodes[0], glm::dvec3(2, 2, 2)), 0.0, 1e-12);
@@ -173,7 +154,7 @@ TEST(CgalOracle, SplitsNestedLoopsIntoPolygonsWithHoles) {
                                       45.0);
   const CgalSkeletonInput input(fp);
   EXPECT_EQ(input.polygon_count(), 2u);
-  const std::vector<glm::dvec3> nodes = input.inner_nodes();
+  const std::vector<glm::dvec3> nodes = input.skeleton(0.0).nodes;
   // The frame between outer and hole is 5 wide: its nodes stand at most 2.5 high.
   // The 6 x 6 island peaks at 3.
   double highest = 0.0;
@@ -186,7 +167,7 @@ TEST(CgalOracle, ComparisonNoticesAWrongSurface) {
   // matcher must report it, or a passing oracle test proves nothing.
   const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
   const PointSet wrong({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {2, 2, 2.001}});
-  for (const glm::dvec3& n : CgalSkeletonInput(square).inner_nodes())
+  for (const glm::dvec3& n : CgalSkeletonInput(square).skeleton(0.0).nodes)
     EXPECT_GT(wrong.nearest(n, kOracleRelative * length_scale(square)), kOracleRelative * length_scale(square));
 }
 

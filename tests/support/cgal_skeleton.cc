@@ -1,9 +1,13 @@
 #include "tests/support/cgal_skeleton.h"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
@@ -11,13 +15,20 @@
 namespace procex {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Polygon = CGAL::Polygon_2<Kernel>;
-
 struct PolygonWithHoles {
-  Polygon outer;
-  std::vector<Polygon> holes;
+  std::vector<glm::dvec2> outer;
+  std::vector<std::vector<glm::dvec2>> holes;
 };
+
+// A contour edge by its end points, the key from CGAL's contour halfedges back
+// to footprint edge ids (CGAL keeps the input points exactly).
+using EdgeKey = std::pair<std::pair<double, double>, std::pair<double, double>>;
+
+EdgeKey edge_key(glm::dvec2 a, glm::dvec2 b) {
+  std::pair<double, double> p{a.x, a.y}, q{b.x, b.y};
+  if (q < p) std::swap(p, q);
+  return {p, q};
+}
 
 bool point_in_loop(const Loop& loop, glm::dvec2 p) {
   bool inside = false;
@@ -39,12 +50,6 @@ bool loop_inside(const Loop& inner, const Loop& outer) {
   return 2 * inside > inner.points.size();
 }
 
-Polygon to_cgal(const Loop& loop) {
-  Polygon poly;
-  for (const glm::dvec2& p : loop.points) poly.push_back(Kernel::Point_2(p.x, p.y));
-  return poly;
-}
-
 std::vector<PolygonWithHoles> split_by_nesting(const Footprint& fp) {
   const std::size_t n = fp.loops.size();
   std::vector<std::vector<std::size_t>> containers(n);
@@ -57,7 +62,7 @@ std::vector<PolygonWithHoles> split_by_nesting(const Footprint& fp) {
   for (std::size_t i = 0; i < n; ++i) {
     if (containers[i].size() % 2 != 0) continue;
     polygon_of[i] = out.size();
-    out.push_back({to_cgal(fp.loops[i]), {}});
+    out.push_back({fp.loops[i].points, {}});
   }
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t depth = containers[i].size();
@@ -66,33 +71,52 @@ std::vector<PolygonWithHoles> split_by_nesting(const Footprint& fp) {
                                      [&](std::size_t j) { return containers[j].size() + 1 == depth; });
     if (parent == containers[i].end())
       throw std::runtime_error("cgal_skeleton: loop " + std::to_string(i) + " has no enclosing outer loop");
-    out[polygon_of[*parent]].holes.push_back(to_cgal(fp.loops[i]));
+    out[polygon_of[*parent]].holes.push_back(fp.loops[i].points);
   }
   return out;
+}
+
+template <class Kernel>
+CGAL::Polygon_2<Kernel> to_cgal(const std::vector<glm::dvec2>& loop) {
+  CGAL::Polygon_2<Kernel> poly;
+  for (const glm::dvec2& p : loop) poly.push_back(typename Kernel::Point_2(p.x, p.y));
+  return poly;
+}
+
+template <class Kernel, class Visit>
+void for_each_skeleton(const std::vector<PolygonWithHoles>& polygons, Visit&& visit) {
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const auto outer = to_cgal<Kernel>(polygons[i].outer);
+    std::vector<CGAL::Polygon_2<Kernel>> holes;
+    for (const auto& h : polygons[i].holes) holes.push_back(to_cgal<Kernel>(h));
+    const auto ss = CGAL::create_interior_straight_skeleton_2(outer.vertices_begin(), outer.vertices_end(),
+                                                              holes.begin(), holes.end(), Kernel());
+    if (!ss)
+      throw std::runtime_error("CGAL create_interior_straight_skeleton_2 failed on polygon " + std::to_string(i) +
+                               " (" + std::to_string(outer.size()) + " outer vertices, " +
+                               std::to_string(holes.size()) + " holes)");
+    visit(*ss);
+  }
+}
+
+template <class Vertex>
+glm::dvec3 node(const Vertex& v) {
+  return {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()), CGAL::to_double(v->time())};
 }
 
 }  // namespace
 
 struct CgalSkeletonInput::Impl {
   std::vector<PolygonWithHoles> polygons;
-
-  template <class Visit>
-  void for_each_skeleton(Visit&& visit) const {
-    for (std::size_t i = 0; i < polygons.size(); ++i) {
-      const PolygonWithHoles& p = polygons[i];
-      const auto ss = CGAL::create_interior_straight_skeleton_2(p.outer.vertices_begin(), p.outer.vertices_end(),
-                                                                p.holes.begin(), p.holes.end(), Kernel());
-      if (!ss)
-        throw std::runtime_error("CGAL create_interior_straight_skeleton_2 failed on polygon " + std::to_string(i) +
-                                 " (" + std::to_string(p.outer.size()) + " outer vertices, " +
-                                 std::to_string(p.holes.size()) + " holes)");
-      visit(*ss);
-    }
-  }
+  std::map<EdgeKey, std::int32_t> edge_ids;
 };
 
 CgalSkeletonInput::CgalSkeletonInput(const Footprint& footprint)
-    : impl_(std::make_unique<Impl>(Impl{split_by_nesting(footprint)})) {}
+    : impl_(std::make_unique<Impl>(Impl{split_by_nesting(footprint), {}})) {
+  for (const Loop& loop : footprint.loops)
+    for (std::size_t i = 0; i < loop.points.size(); ++i)
+      impl_->edge_ids[edge_key(loop.points[i], loop.points[(i + 1) % loop.points.size()])] = loop.edges[i].id;
+}
 CgalSkeletonInput::CgalSkeletonInput(CgalSkeletonInput&&) noexcept = default;
 CgalSkeletonInput& CgalSkeletonInput::operator=(CgalSkeletonInput&&) noexcept = default;
 CgalSkeletonInput::~CgalSkeletonInput() = default;
@@ -101,17 +125,39 @@ std::size_t CgalSkeletonInput::polygon_count() const { return impl_->polygons.si
 
 std::size_t CgalSkeletonInput::skeletonise() const {
   std::size_t vertices = 0;
-  impl_->for_each_skeleton([&](const auto& ss) { vertices += ss.size_of_vertices(); });
+  for_each_skeleton<CGAL::Exact_predicates_inexact_constructions_kernel>(
+      impl_->polygons, [&](const auto& ss) { vertices += ss.size_of_vertices(); });
   return vertices;
 }
 
-std::vector<glm::dvec3> CgalSkeletonInput::inner_nodes() const {
-  std::vector<glm::dvec3> nodes;
-  impl_->for_each_skeleton([&](const auto& ss) {
+CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge) const {
+  CgalSkeleton out;
+  std::set<std::pair<std::int32_t, std::int32_t>> adjacent;
+  std::map<std::int32_t, std::size_t> faces;
+  for (const auto& [key, id] : impl_->edge_ids) faces[id] = 0;
+  for_each_skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(impl_->polygons, [&](const auto& ss) {
     for (auto v = ss.vertices_begin(); v != ss.vertices_end(); ++v)
-      if (v->is_skeleton()) nodes.emplace_back(v->point().x(), v->point().y(), v->time());
+      if (v->is_skeleton()) out.nodes.push_back(node(v));
+    // A skeleton face's own halfedge is its contour edge.
+    const auto face_edge = [&](const auto& face) {
+      const auto h = face->halfedge();
+      const glm::dvec3 a = node(h->vertex()), b = node(h->opposite()->vertex());
+      const auto it = impl_->edge_ids.find(edge_key({a.x, a.y}, {b.x, b.y}));
+      if (it == impl_->edge_ids.end()) throw std::runtime_error("cgal_skeleton: a contour edge is not a footprint edge");
+      return it->second;
+    };
+    for (auto f = ss.faces_begin(); f != ss.faces_end(); ++f) ++faces[face_edge(f)];
+    for (auto h = ss.halfedges_begin(); h != ss.halfedges_end(); ++h) {
+      if (!h->is_bisector() || h->face() == nullptr || h->opposite()->face() == nullptr) continue;
+      const glm::dvec3 d = node(h->vertex()) - node(h->opposite()->vertex());
+      if (std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) <= min_ridge) continue;
+      const std::int32_t i = face_edge(h->face()), j = face_edge(h->opposite()->face());
+      if (i != j) adjacent.insert({std::min(i, j), std::max(i, j)});
+    }
   });
-  return nodes;
+  out.adjacent_edges.assign(adjacent.begin(), adjacent.end());
+  out.faces_per_edge.assign(faces.begin(), faces.end());
+  return out;
 }
 
 }  // namespace procex

@@ -1,11 +1,14 @@
 // CGAL 5.5's interior straight skeleton as an oracle for the sweep: with every
-// edge at 45 degrees the sweep's roof vertices are the skeleton's nodes, each
-// at the height of its time. CGAL stays inside cgal_skeleton.cc because its
-// headers cost many seconds per translation unit.
+// edge at one angle the sweep's roof vertices are the skeleton's nodes, each
+// at the height of its time, and two edges' roof faces meet along a ridge
+// exactly where their skeleton faces share a bisector. CGAL stays inside
+// cgal_skeleton.cc because its headers cost many seconds per translation unit.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -13,6 +16,19 @@
 #include "core/geom/footprint.h"
 
 namespace procex {
+
+// What the oracle compares: skeleton nodes and which edges' faces meet.
+struct CgalSkeleton {
+  // The inner nodes (not the contour vertices) as (x, y, time).
+  std::vector<glm::dvec3> nodes;
+  // Pairs of footprint edge ids (EdgeSpec::id, smaller first, sorted, unique)
+  // whose skeleton faces share a bisector longer than the length given to
+  // CgalSkeletonInput::skeleton().
+  std::vector<std::pair<std::int32_t, std::int32_t>> adjacent_edges;
+  // Number of skeleton faces per footprint edge id, in id order of
+  // CgalSkeletonInput::edge_ids(); a straight skeleton has exactly one.
+  std::vector<std::pair<std::int32_t, std::size_t>> faces_per_edge;
+};
 
 // A footprint split into the polygons with holes CGAL takes: every loop at
 // even nesting depth with the odd-depth loops directly inside it. Loops must
@@ -26,14 +42,17 @@ class CgalSkeletonInput {
 
   std::size_t polygon_count() const;
 
-  // Runs create_interior_straight_skeleton_2 (Exact_predicates_inexact_
-  // constructions_kernel) on every polygon and returns the number of skeleton
-  // vertices it built. Throws std::runtime_error naming the polygon if CGAL
-  // gives up.
+  // Runs create_interior_straight_skeleton_2 with CGAL's fast kernel
+  // (Exact_predicates_inexact_constructions_kernel, the benchmarks' reference)
+  // on every polygon and returns the number of skeleton vertices it built.
+  // Throws std::runtime_error naming the polygon if CGAL gives up.
   std::size_t skeletonise() const;
 
-  // The skeleton's inner nodes (not the contour vertices) as (x, y, time).
-  std::vector<glm::dvec3> inner_nodes() const;
+  // The oracle: the skeleton built with the exact-construction kernel
+  // (Exact_predicates_exact_constructions_kernel). Bisectors no longer than
+  // min_ridge are not ridges: CGAL splits a node where more than three faces
+  // meet into several joined by zero-length bisectors.
+  CgalSkeleton skeleton(double min_ridge) const;
 
  private:
   struct Impl;

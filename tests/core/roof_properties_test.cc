@@ -1,0 +1,153 @@
+// The generated suites' own tools must be right, or their passes mean
+// nothing: each property check reports a roof broken on purpose, the
+// generators give valid and reproducible plans, the shrinker minimises, and
+// a fixture reads back as the case it was written from.
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <gtest/gtest.h>
+
+#include "core/geom/prepare.h"
+#include "core/io/geojson.h"
+#include "core/sweep/sweep.h"
+#include "tests/support/generators/check_case.h"
+#include "tests/support/generators/grid_plans.h"
+#include "tests/support/generators/shrink.h"
+#include "tests/support/roof_properties.h"
+
+namespace procex::testing {
+namespace {
+
+const Footprint kRect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
+
+TEST(RoofProperties, ARightRoofPassesEveryCheck) {
+  const Surface roof = sweep(kRect);
+  const double tol = roof_tolerance(kRect);
+  EXPECT_TRUE(check_valid_mesh(roof).empty());
+  EXPECT_TRUE(check_faces_on_planes(kRect, {}, roof, tol).empty());
+  EXPECT_TRUE(check_inward_roof(kRect, {}, roof, tol, 1).empty());
+  // A hip roof on 10 x 4 at 45 degrees: (W L H - (W + L) s H^2 + 4/3 s^2 H^3) with H = 2.
+  EXPECT_NEAR(surface_volume(roof), 40.0 * 2 - 14.0 * 4 + 4.0 / 3.0 * 8, 1e-9);
+  EXPECT_NEAR(volume_of_offset_areas(40.0, -28.0, 4.0, 2.0), 34.666666666666667, 1e-12);
+}
+
+TEST(RoofProperties, ARaisedRidgeIsOffItsPlanesAndTheEnvelope) {
+  Surface roof = sweep(kRect);
+  for (glm::dvec3& v : roof.vertices)
+    if (v.z > 1.0) v.z += 0.01;
+  const double tol = roof_tolerance(kRect);
+  EXPECT_FALSE(check_faces_on_planes(kRect, {}, roof, tol).empty());
+  EXPECT_FALSE(check_inward_roof(kRect, {}, roof, tol, 1).empty());
+}
+
+TEST(RoofProperties, AFaceTurnedDownOrMissingBreaksTheTiling) {
+  Surface roof = sweep(kRect);
+  // Reverse one roof face: it looks down, and the plan no longer adds up.
+  for (SurfaceFace& f : roof.faces)
+    if (f.kind == FaceKind::Side && f.source_edge == 0) {
+      std::reverse(f.loops[0].begin(), f.loops[0].end());
+      break;
+    }
+  EXPECT_FALSE(check_inward_roof(kRect, {}, roof, roof_tolerance(kRect), 1).empty());
+}
+
+TEST(RoofProperties, TransformedRoofsMatchOnlyWhenTransformed) {
+  const Surface roof = sweep(kRect);
+  const double tol = roof_tolerance(kRect);
+  for (const PlanTransform& t : {PlanTransform::rotation(90), PlanTransform::mirror(), PlanTransform::translation({5e5, 5e6}),
+                                 PlanTransform::rotation(30).after(PlanTransform::scale(1e-3))}) {
+    const Footprint moved = transformed(kRect, t);
+    const Surface other = sweep(prepare_footprint(moved).footprint);
+    EXPECT_TRUE(compare_transformed(roof, t, other, std::max(tol * t.height_scale(), roof_tolerance(moved))).empty()) << t.name;
+    EXPECT_FALSE(compare_transformed(roof, {}, other, std::max(tol, roof_tolerance(moved))).empty()) << t.name;
+  }
+}
+
+TEST(RoofProperties, MirroringKeepsEachEdgeItsSpec) {
+  Footprint fp = kRect;
+  for (std::size_t i = 0; i < 4; ++i) fp.loops[0].edges[i].angle_deg = 10.0 * static_cast<double>(i + 1);
+  const Footprint m = transformed(fp, PlanTransform::mirror());
+  const Loop& loop = m.loops[0];
+  for (std::size_t i = 0; i < 4; ++i) {
+    // Edge i of the mirror runs between the mirrored ends of the original edge with its id.
+    const Loop& orig = fp.loops[0];
+    const std::size_t k = static_cast<std::size_t>(loop.edges[i].id);
+    EXPECT_EQ(loop.edges[i].angle_deg, orig.edges[k].angle_deg);
+    EXPECT_EQ(loop.points[i], glm::dvec2(-orig.points[(k + 1) % 4].x, orig.points[(k + 1) % 4].y));
+    EXPECT_EQ(loop.points[(i + 1) % 4], glm::dvec2(-orig.points[k].x, orig.points[k].y));
+  }
+}
+
+TEST(Generators, PlansAreValidFootprintsOfTheirSize) {
+  std::size_t with_holes = 0;
+  for (std::uint64_t seed = 0; seed < 300; ++seed) {
+    std::mt19937_64 rng(seed);
+    for (const NamedPlan& plan : {polyomino_plan(rng), letter_plan(rng), with_collinear_vertices(letter_plan(rng), rng)}) {
+      std::size_t n = 0;
+      for (const auto& loop : plan.loops) n += loop.size();
+      EXPECT_GE(n, 4u) << plan.name;
+      EXPECT_LE(n, 400u) << plan.name;
+      with_holes += plan.loops.size() > 1 ? 1 : 0;
+      EXPECT_NO_THROW(prepare_footprint(make_footprint(plan.loops, 45.0))) << plan.name;
+    }
+  }
+  EXPECT_GT(with_holes, 30u);
+}
+
+TEST(Generators, ASeedGivesTheSameCaseEveryTime) {
+  for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size}) {
+    for (std::uint64_t seed : {0u, 7u, 12345u}) {
+      const GeneratedCase a = generate_case(cls, seed), b = generate_case(cls, seed);
+      EXPECT_EQ(a.description, b.description);
+      ASSERT_EQ(a.footprint.loops.size(), b.footprint.loops.size());
+        for (std::size_t l = 0; l < a.footprint.loops.size(); ++l) {
+        EXPECT_EQ(a.footprint.loops[l].points, b.footprint.loops[l].points);
+      }
+    }
+  }
+  EXPECT_NE(generate_case(CaseClass::Grid, 1).description, generate_case(CaseClass::Grid, 2).description);
+}
+
+TEST(Shrink, DropsWhatTheFailureDoesNotNeedAndRounds) {
+  // "Fails" while some vertex lies right of x = 7: the minimum keeps one
+  // such vertex in a triangle, on whole numbers.
+  GeneratedCase c;
+  c.footprint = make_footprint({{{0.123, 0}, {10.4567, 0}, {10.2, 4.31}, {5, 6}, {0, 4.8}}}, 45.0);
+  const auto fails = [](const GeneratedCase& k) {
+    for (const glm::dvec2& p : k.footprint.loops[0].points)
+      if (p.x > 7.0) return true;
+    return false;
+  };
+  const GeneratedCase small = shrink(c, fails, 100);
+  ASSERT_EQ(small.footprint.loops[0].points.size(), 3u);
+  EXPECT_TRUE(fails(small));
+  for (const glm::dvec2& p : small.footprint.loops[0].points) EXPECT_EQ(p, glm::round(p));
+}
+
+TEST(Shrink, AFixtureReadsBackAsItsCase) {
+  for (std::uint64_t seed : {3u, 25u, 60u, 70u}) {  // one angle, per-edge angles, profiles, plan edits
+    const GeneratedCase c = generate_case(CaseClass::Angles, seed);
+    const GeoJsonCollection read = parse_geojson(fixture_geojson(c, "none"));
+    ASSERT_EQ(read.features.size(), 1u);
+    const GeneratedCase back = case_from_fixture(read.features[0]);
+    EXPECT_EQ(back.description, c.description);
+    ASSERT_EQ(back.footprint.loops.size(), c.footprint.loops.size());
+    for (std::size_t l = 0; l < c.footprint.loops.size(); ++l) {
+      EXPECT_EQ(back.footprint.loops[l].points, c.footprint.loops[l].points);
+      for (std::size_t i = 0; i < c.footprint.loops[l].edges.size(); ++i) {
+        EXPECT_EQ(back.footprint.loops[l].edges[i].angle_deg, c.footprint.loops[l].edges[i].angle_deg);
+        const int p = c.footprint.loops[l].edges[i].profile, q = back.footprint.loops[l].edges[i].profile;
+        ASSERT_EQ(p >= 0, q >= 0);
+        if (p >= 0) {
+          EXPECT_EQ(back.footprint.profiles[static_cast<std::size_t>(q)].name,
+                    c.footprint.profiles[static_cast<std::size_t>(p)].name);
+        }
+      }
+    }
+    EXPECT_EQ(back.options.max_height, c.options.max_height);
+    EXPECT_EQ(back.options.plan_edits.size(), c.options.plan_edits.size());
+  }
+}
+
+}  // namespace
+}  // namespace procex::testing

@@ -1,0 +1,144 @@
+#include "tests/support/generators/generated_case.h"
+
+#include <random>
+#include <sstream>
+
+#include "tests/support/generators/edge_profiles.h"
+#include "tests/support/generators/grid_plans.h"
+#include "tests/support/generators/size_plans.h"
+
+namespace procex::testing {
+namespace {
+
+// Roof presets drawn per edge (the rest of profile_preset_names() serve the plan edits).
+constexpr std::size_t kRoofPresets = 7;
+
+std::string number(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+// The plans classes (a) and (b) share: polyominoes and letters, a quarter of
+// them with collinear vertices added.
+NamedPlan grid_or_letter_plan(std::mt19937_64& rng, std::size_t max_vertices) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  NamedPlan plan = unit(rng) < 0.45 ? polyomino_plan(rng, max_vertices) : letter_plan(rng);
+  return unit(rng) < 0.25 ? with_collinear_vertices(std::move(plan), rng) : plan;
+}
+
+GeneratedCase grid_case(std::uint64_t seed, std::mt19937_64& rng) {
+  const NamedPlan plan = grid_or_letter_plan(rng, 400);
+  const PlanTransform t = generated_transform(seed, rng);
+  static constexpr double kAngles[] = {30.0, 45.0, 60.0};
+  const double angle = kAngles[std::uniform_int_distribution<int>(0, 2)(rng)];
+  GeneratedCase c;
+  c.footprint = make_footprint(apply(t, plan.loops), angle);
+  c.description = plan.name + ", " + t.name + ", every edge at " + number(angle) + " degrees";
+  return c;
+}
+
+GeneratedCase angles_case(std::uint64_t seed, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const NamedPlan plan = grid_or_letter_plan(rng, 120);
+  const PlanTransform t = generated_transform(seed % 6, rng);  // no scaling or moving: heights stay in metres
+  GeneratedCase c;
+  c.footprint = make_footprint(apply(t, plan.loops), 45.0);
+  c.description = plan.name + ", " + t.name + ", ";
+  const auto angle_in = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  const std::size_t mode = (seed / 10) % 8;
+  const bool capped = mode == 1 || mode == 3 || mode == 5 || (mode == 6 && unit(rng) < 0.5);
+  const auto each_edge = [&](auto&& assign) {
+    for (Loop& loop : c.footprint.loops)
+      for (std::size_t i = 0; i < loop.edges.size(); ++i) assign(loop, i);
+  };
+  switch (mode) {
+    case 0:
+    case 1: {
+      const double a = mode == 0 ? angle_in(5, 80) : angle_in(-60, 80);
+      each_edge([&](Loop& loop, std::size_t i) { loop.edges[i].angle_deg = a; });
+      c.description += "every edge at " + number(a) + " degrees";
+      break;
+    }
+    case 2:
+    case 3:
+      each_edge([&](Loop& loop, std::size_t i) { loop.edges[i].angle_deg = mode == 2 ? angle_in(5, 80) : angle_in(-60, 80); });
+      c.description += mode == 2 ? "per-edge angles in 5..80" : "per-edge angles in -60..80";
+      break;
+    case 4:
+    case 5:
+      // A quarter of the edges vertical; uncapped, no two vertical edges are
+      // neighbours, so that sloped ones close the roof over them.
+      each_edge([&](Loop& loop, std::size_t i) {
+        const bool after_vertical = i > 0 && loop.edges[i - 1].angle_deg == 0.0;
+        const bool vertical = unit(rng) < 0.25 && (mode == 5 || (!after_vertical && i + 1 < loop.edges.size()));
+        loop.edges[i].angle_deg = vertical ? 0.0 : mode == 4 ? angle_in(5, 80) : angle_in(-60, 80);
+      });
+      c.description += mode == 4 ? "per-edge angles in 5..80, a quarter vertical" : "per-edge angles in -60..80, a quarter vertical";
+      break;
+    case 6: {
+      const bool one = unit(rng) < 0.5;
+      const std::size_t first = std::uniform_int_distribution<std::size_t>(0, kRoofPresets - 1)(rng);
+      const std::vector<std::string> names = profile_preset_names();
+      for (std::size_t k = 0; k < kRoofPresets; ++k) {
+        c.footprint.profiles.push_back(profile_preset(names[k]));
+        c.profile_presets.push_back(names[k]);
+      }
+      each_edge([&](Loop& loop, std::size_t i) {
+        loop.edges[i].profile =
+            static_cast<int>(one ? first : std::uniform_int_distribution<std::size_t>(0, kRoofPresets - 1)(rng));
+      });
+      c.description += one ? "every edge with the " + names[first] + " profile" : "per-edge profiles";
+      break;
+    }
+    default:
+      for (const std::string& name : plan_edit_profile_names()) {
+        c.footprint.profiles.push_back(profile_preset(name));
+        c.profile_presets.push_back(name);
+      }
+      each_edge([&](Loop& loop, std::size_t i) { loop.edges[i].profile = 0; });
+      c.options.plan_edits = preset_plan_edits();
+      c.preset_plan_edits = true;
+      c.description += "hip profile with a bay, a dormer and a recess on every edge";
+  }
+  if (capped) {
+    c.options.max_height = angle_in(0.5, 12.0);
+    c.description += ", max_height " + number(*c.options.max_height);
+  }
+  return c;
+}
+
+GeneratedCase size_case(std::uint64_t seed, std::mt19937_64& rng) {
+  const std::size_t n = std::uniform_int_distribution<std::size_t>(500, 5000)(rng) * 2;
+  NamedPlan plan;
+  switch (seed % 3) {
+    case 0: plan = star(n, 50.0, std::uniform_real_distribution<double>(20.0, 49.0)(rng)); break;
+    case 1: plan = regular_polygon(n, 50.0); break;
+    default: plan = random_star_shaped(n, 50.0, rng);
+  }
+  GeneratedCase c;
+  c.footprint = make_footprint(plan.loops, 45.0);
+  c.description = plan.name + ", every edge at 45 degrees";
+  return c;
+}
+
+}  // namespace
+
+const char* class_name(CaseClass c) {
+  switch (c) {
+    case CaseClass::Grid: return "grid";
+    case CaseClass::Angles: return "angles";
+    case CaseClass::Size: return "size";
+  }
+  return "?";
+}
+
+GeneratedCase generate_case(CaseClass c, std::uint64_t seed) {
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(c));
+  GeneratedCase out = c == CaseClass::Grid ? grid_case(seed, rng) : c == CaseClass::Angles ? angles_case(seed, rng) : size_case(seed, rng);
+  out.description = std::string("class ") + class_name(c) + " seed " + std::to_string(seed) + ": " + out.description;
+  return out;
+}
+
+}  // namespace procex::testing

@@ -1,0 +1,39 @@
+// One generated input: a footprint with its edges' angles or profiles and the
+// sweep's options, from a class and a seed (issue 12 item 2). The same class
+// and seed give the same case on every machine (std::mt19937_64 and the
+// generators' own distributions of integers; real draws go through
+// uniform_real_distribution, which libstdc++ fixes).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geom/footprint.h"
+#include "core/sweep/sweep.h"
+
+namespace procex::testing {
+
+enum class CaseClass {
+  Grid,    // (a) grid and letter plans, transformed, one angle
+  Angles,  // (b) the same plans under per-edge angles, vertical edges, caps, profiles, plan edits
+  Size,    // (c) 1,000 to 10,000 vertices
+};
+
+const char* class_name(CaseClass c);
+
+struct GeneratedCase {
+  std::string description;  // class, seed, plan, transform, angles: enough to rebuild it by hand
+  Footprint footprint;      // as generated, before prepare_footprint
+  SweepOptions options;
+  // Names of the profile presets (edge_profiles.h) the footprint's profiles
+  // are, in order, and whether options.plan_edits are the preset edits: what
+  // a fixture file records to rebuild the case.
+  std::vector<std::string> profile_presets;
+  bool preset_plan_edits = false;
+};
+
+GeneratedCase generate_case(CaseClass c, std::uint64_t seed);
+
+}  // namespace procex::testing

@@ -1,0 +1,59 @@
+// Runs a part of a generated class's budget inside a GoogleTest test: every
+// failing case is minimised (shrink.h) and reported with its fixture; with
+// PROCEX_FINDINGS_DIR set, the fixture is also written there as
+// <class>_<seed>.geojson. PROCEX_SOAK=1 selects the soak budget; under the
+// sanitizers (Debug, 20-100x slower) a fiftieth of the normal one runs.
+#pragma once
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/generators/check_case.h"
+#include "tests/support/generators/shrink.h"
+#include "tests/support/sanitizers.h"
+
+namespace procex::testing {
+
+struct Budget {
+  std::size_t normal = 0;       // cases in the normal suite
+  std::size_t soak = 0;         // cases with PROCEX_SOAK=1
+  std::size_t shrink_tries = 0;  // candidates tried while minimising one failure
+};
+
+inline bool soak_run() {
+  const char* s = std::getenv("PROCEX_SOAK");
+  return s != nullptr && std::string(s) == "1";
+}
+
+inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, const Budget& budget) {
+  constexpr std::size_t kSanitizedShare = kSanitized ? 50 : 1;
+  const std::size_t total = soak_run() ? budget.soak : std::max<std::size_t>(parts, budget.normal / kSanitizedShare);
+  const std::size_t begin = total * part / parts, end = total * (part + 1) / parts;
+  std::size_t failed = 0;
+  for (std::size_t seed = begin; seed < end; ++seed) {
+    const GeneratedCase c = generate_case(cls, seed);
+    const CaseResult r = check_case(c);
+    if (!r.failed()) continue;
+    ++failed;
+    const GeneratedCase small = shrink(
+        c, [](const GeneratedCase& candidate) { return !check_case(candidate).refused && check_case(candidate).failed(); },
+        r.refused ? 0 : budget.shrink_tries);
+    const CaseResult small_result = check_case(small);
+    const std::string problem = small_result.problems.empty() ? r.problems.front() : small_result.problems.front();
+    const std::string fixture = fixture_geojson(small, problem);
+    std::string lines;
+    for (std::size_t i = 0; i < r.problems.size() && i < 6; ++i) lines += "\n  " + r.problems[i];
+    ADD_FAILURE() << c.description << lines << "\nminimised (" << small.description << "): " << problem << "\n" << fixture;
+    if (const char* dir = std::getenv("PROCEX_FINDINGS_DIR"))
+      std::ofstream(std::string(dir) + "/" + class_name(cls) + "_" + std::to_string(seed) + ".geojson") << fixture;
+  }
+  std::cout << "class " << class_name(cls) << " seeds " << begin << ".." << end - 1 << ": " << end - begin
+            << " cases, " << failed << " failed\n";
+}
+
+}  // namespace procex::testing

@@ -1,0 +1,64 @@
+// Property checks on a swept roof that do not use the engine's code: each
+// recomputes what the roof must be from the footprint alone (edge lines,
+// angles, profiles) and compares it with the Surface. Every check returns one
+// line per problem (at most a few of each kind); empty means it holds.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "core/geom/footprint.h"
+#include "core/mesh/surface.h"
+#include "core/sweep/sweep.h"
+#include "tests/support/generators/plan_transform.h"
+
+namespace procex::testing {
+
+// Positions agree within this: 1e-6 of the footprint's bounding-box diagonal
+// (the mesh validator's tolerance) plus the rounding of its largest coordinate.
+double roof_tolerance(const Footprint& footprint);
+
+// build_mesh + validate: closed, 2-manifold, oriented, planar faces, no
+// self-intersection.
+std::vector<std::string> check_valid_mesh(const Surface& surface);
+
+// Every face with a footprint edge's id lies on a plane of that edge: the
+// plane through the edge leaning at its angle, or one of its profile's
+// segments (the last one extended). Caps lie at max_height, the base at 0.
+std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const SweepOptions& options,
+                                               const Surface& surface, double tol);
+
+// For roofs whose every edge leans inward (0 < angle < 90, no profiles, no
+// plan edits): the faces seen from above tile the footprint exactly once (no
+// face faces down, projected areas sum to the footprint's within 1e-9
+// relative plus coordinate rounding), and at sampled points the roof height
+// is that of the source edge's plane; on a convex footprint it is the lower
+// envelope of all planes, and with one angle everywhere it is at most the
+// distance to the boundary over tan(angle) (the wavefront at time t keeps at
+// least t from the footprint's edges). `seed` picks the sample points.
+std::vector<std::string> check_inward_roof(const Footprint& footprint, const SweepOptions& options,
+                                           const Surface& surface, double tol, unsigned seed);
+
+// The enclosed volume by the divergence theorem over the surface's faces.
+double surface_volume(const Surface& surface);
+
+// The volume under a roof whose cross-section at height h has area
+// a0 + a1 h + a2 h^2 up to h_end (a rectangle's or a regular polygon's
+// offsets before they vanish): the integral of the offset areas.
+double volume_of_offset_areas(double a0, double a1, double a2, double h_end);
+
+// The footprint transformed; a mirror reverses every loop, each edge keeping
+// its spec, so loops keep their orientation and edges their ids.
+Footprint transformed(const Footprint& footprint, const PlanTransform& t);
+
+// The roof of the transformed input against the transformed roof: every
+// vertex of each within tol of one of the other, and the same total face
+// area per source edge.
+std::vector<std::string> compare_transformed(const Surface& original, const PlanTransform& t,
+                                             const Surface& of_transformed, double tol);
+
+}  // namespace procex::testing

@@ -1,0 +1,135 @@
+#include "tests/support/skeleton_oracle.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/error.h"
+#include "core/sweep/sweep.h"
+#include "tests/support/cgal_skeleton.h"
+#include "tests/support/point_set.h"
+#include "tests/support/roof_properties.h"
+
+namespace procex::testing {
+namespace {
+
+constexpr std::size_t kShown = 5;
+
+std::string describe(const glm::dvec3& p) {
+  std::ostringstream s;
+  s.precision(12);
+  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return s.str();
+}
+
+std::string pair_text(std::pair<std::int32_t, std::int32_t> p) {
+  return std::to_string(p.first) + "-" + std::to_string(p.second);
+}
+
+Footprint without_straight_vertices(const Footprint& fp) {
+  Footprint out = fp;
+  for (Loop& loop : out.loops) {
+    Loop kept;
+    const std::size_t n = loop.points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec2 a = loop.points[(i + n - 1) % n], b = loop.points[i], c = loop.points[(i + 1) % n];
+      const glm::dvec2 d1 = b - a, d2 = c - b;
+      const double turn = (d1.x * d2.y - d1.y * d2.x) / (glm::length(d1) * glm::length(d2));
+      if (std::abs(turn) < 1e-9 && glm::dot(d1, d2) > 0.0) continue;
+      kept.points.push_back(b);
+      kept.edges.push_back(loop.edges[i]);
+    }
+    loop = std::move(kept);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof) {
+  const double tol = roof_tolerance(footprint);
+  const double rise = 1.0 / std::tan(footprint.loops.at(0).edges.at(0).angle_deg * M_PI / 180.0);
+  std::vector<std::string> problems = check_valid_mesh(roof);
+
+  CgalSkeleton cgal = CgalSkeletonInput(footprint).skeleton(tol);
+  for (glm::dvec3& n : cgal.nodes) n.z *= rise;
+
+  // One roof face per footprint edge.
+  std::map<std::int32_t, std::size_t> faces;
+  for (const SurfaceFace& f : roof.faces)
+    if (f.kind == FaceKind::Side) ++faces[f.source_edge];
+  std::size_t wrong_faces = 0;
+  for (const auto& [id, n] : cgal.faces_per_edge) {
+    const auto it = faces.find(id);
+    const std::size_t ours = it == faces.end() ? 0 : it->second;
+    if (n != 1 && ++wrong_faces <= kShown)
+      problems.push_back("CGAL has " + std::to_string(n) + " faces for edge " + std::to_string(id));
+    if (ours != 1 && ++wrong_faces <= kShown)
+      problems.push_back("edge " + std::to_string(id) + " has " + std::to_string(ours) + " roof faces, not 1");
+  }
+
+  // Which edges' faces meet along a ridge (an edge longer than tol between two roof faces).
+  std::set<std::pair<std::int32_t, std::int32_t>> ridges;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::int32_t> half;
+  for (const SurfaceFace& f : roof.faces) {
+    if (f.kind != FaceKind::Side) continue;
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+        if (glm::distance(roof.vertices[a], roof.vertices[b]) <= tol) continue;
+        const auto other = half.find({b, a});
+        if (other != half.end() && other->second != f.source_edge)
+          ridges.insert({std::min(other->second, f.source_edge), std::max(other->second, f.source_edge)});
+        half[{a, b}] = f.source_edge;
+      }
+  }
+  const std::set<std::pair<std::int32_t, std::int32_t>> theirs(cgal.adjacent_edges.begin(), cgal.adjacent_edges.end());
+  std::size_t missing_ridges = 0, extra_ridges = 0;
+  for (const auto& p : theirs)
+    if (!ridges.count(p) && ++missing_ridges <= kShown)
+      problems.push_back("CGAL's faces of edges " + pair_text(p) + " share a bisector, the roof's faces meet in no ridge");
+  for (const auto& p : ridges)
+    if (!theirs.count(p) && ++extra_ridges <= kShown)
+      problems.push_back("the roof's faces of edges " + pair_text(p) + " meet in a ridge, CGAL's share no bisector");
+
+  // Node positions and heights, both ways.
+  std::vector<glm::dvec3> ours;
+  for (const glm::dvec3& v : roof.vertices)
+    if (v.z > tol) ours.push_back(v);
+  const PointSet ours_set(roof.vertices), theirs_set(cgal.nodes);
+  std::size_t missing = 0, extra = 0;
+  for (const glm::dvec3& n : cgal.nodes) {
+    if (n.z <= tol || ours_set.nearest(n, tol) <= tol) continue;
+    if (++missing <= kShown) problems.push_back("CGAL node " + describe(n) + " has no roof vertex within " + std::to_string(tol));
+  }
+  for (const glm::dvec3& v : ours) {
+    if (theirs_set.nearest(v, tol) <= tol) continue;
+    if (++extra <= kShown) problems.push_back("roof vertex " + describe(v) + " has no CGAL node within " + std::to_string(tol));
+  }
+  if (missing + extra + missing_ridges + extra_ridges + wrong_faces > 0)
+    problems.push_back(std::to_string(missing) + " of " + std::to_string(cgal.nodes.size()) + " CGAL nodes and " +
+                       std::to_string(extra) + " of " + std::to_string(ours.size()) + " roof vertices unmatched, " +
+                       std::to_string(missing_ridges) + " of " + std::to_string(theirs.size()) + " CGAL ridges and " +
+                       std::to_string(extra_ridges) + " of " + std::to_string(ridges.size()) +
+                       " roof ridges unmatched, " + std::to_string(wrong_faces) + " edges without one face");
+  return problems;
+}
+
+std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint) {
+  try {
+    const Footprint fp = without_straight_vertices(footprint);
+    return compare_with_cgal(fp, sweep(fp));
+  } catch (const SweepError& e) {
+    std::ostringstream s;
+    s << "sweep failed: " << e.what() << " at height " << e.height() << ", edges";
+    for (int id : e.edge_ids()) s << " " << id;
+    return {s.str()};
+  } catch (const std::exception& e) {
+    return {std::string("exception: ") + e.what()};
+  }
+}
+
+}  // namespace procex::testing

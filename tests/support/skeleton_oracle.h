@@ -1,0 +1,28 @@
+// The sweep against CGAL 5.5's straight skeleton (exact constructions): with
+// one angle on every edge the roof is the skeleton's roof. Compared: the mesh
+// validates; each footprint edge has exactly one roof face, as each has one
+// skeleton face; the roof faces that meet along a ridge are those whose
+// skeleton faces share a bisector; every skeleton node is a roof vertex at
+// its time / tan(angle) and every roof vertex above the base is a node.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/geom/footprint.h"
+#include "core/mesh/surface.h"
+
+namespace procex::testing {
+
+// Empty when `roof` and CGAL's skeleton of `footprint` agree, else one line
+// per disagreement (a few of each kind). Every edge of `footprint` must have
+// the same angle, in (0, 90).
+std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof);
+
+// Drops the vertices where a loop runs straight on (CGAL and the sweep place
+// their node by different conventions: the sweep perpendicular to the edges,
+// which sweep_test.cc tests in closed form), sweeps and compares. A sweep or
+// CGAL exception becomes a problem line.
+std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint);
+
+}  // namespace procex::testing
