@@ -28,6 +28,7 @@
 #include "tests/support/cgal_skeleton.h"
 #include "tests/support/point_set.h"
 #include "tests/support/sanitizers.h"
+#include "tests/support/skeleton_oracle.h"
 #include "tests/support/data_files.h"
 
 namespace procex {
@@ -77,30 +78,7 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint) {
 }
 
 // Runs the comparison, turning a sweep or oracle exception into a problem line.
-// Drops vertices where a loop runs straight on (|sin| of the turn below
-// 1e-9). Such a vertex splits one plane into two coplanar faces: the roof is
-// the same without it, but its node is a matter of convention. procex moves
-// it perpendicular to the edges, as the limit of a vanishing turn; CGAL moves
-// it wherever rounding of the turn puts the bisector (w143210026: 0.8 mm off
-// the perpendicular at 1e-13 rad). The convention has its own closed-form
-// tests (sweep_test.cc: TenCollinearVerticesAlongOneSide).
-Footprint without_straight_vertices(const Footprint& fp) {
-  Footprint out = fp;
-  for (Loop& loop : out.loops) {
-    Loop kept;
-    const std::size_t n = loop.points.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::dvec2 a = loop.points[(i + n - 1) % n], b = loop.points[i], c = loop.points[(i + 1) % n];
-      const glm::dvec2 d1 = b - a, d2 = c - b;
-      const double turn = (d1.x * d2.y - d1.y * d2.x) / (glm::length(d1) * glm::length(d2));
-      if (std::abs(turn) < 1e-9 && glm::dot(d1, d2) > 0.0) continue;
-      kept.points.push_back(b);
-      kept.edges.push_back(loop.edges[i]);
-    }
-    loop = std::move(kept);
-  }
-  return out;
-}
+using testing::without_straight_vertices;
 
 std::vector<std::string> compare_guarded(const Footprint& footprint) {
   try {

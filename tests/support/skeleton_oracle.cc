@@ -29,6 +29,8 @@ std::string pair_text(std::pair<std::int32_t, std::int32_t> p) {
   return std::to_string(p.first) + "-" + std::to_string(p.second);
 }
 
+}  // namespace
+
 Footprint without_straight_vertices(const Footprint& fp) {
   Footprint out = fp;
   for (Loop& loop : out.loops) {
@@ -46,8 +48,6 @@ Footprint without_straight_vertices(const Footprint& fp) {
   }
   return out;
 }
-
-}  // namespace
 
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof) {
   const double tol = roof_tolerance(footprint);

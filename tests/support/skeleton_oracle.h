@@ -19,10 +19,18 @@ namespace procex::testing {
 // the same angle, in (0, 90).
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof);
 
-// Drops the vertices where a loop runs straight on (CGAL and the sweep place
-// their node by different conventions: the sweep perpendicular to the edges,
-// which sweep_test.cc tests in closed form), sweeps and compares. A sweep or
-// CGAL exception becomes a problem line.
+// The footprint without the vertices where a loop runs straight on (|sin| of
+// the turn below 1e-9). Such a vertex splits one plane into two coplanar
+// faces: the roof is the same without it, but its node is a matter of
+// convention. procex moves it perpendicular to the edges, as the limit of a
+// vanishing turn; CGAL moves it wherever rounding of the turn puts the
+// bisector (w143210026: 0.8 mm off the perpendicular at 1e-13 rad). The
+// convention has its own closed-form tests (sweep_test.cc:
+// TenCollinearVerticesAlongOneSide).
+Footprint without_straight_vertices(const Footprint& footprint);
+
+// Drops the straight vertices, sweeps and compares. A sweep or CGAL
+// exception becomes a problem line.
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint);
 
 }  // namespace procex::testing
