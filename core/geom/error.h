@@ -35,6 +35,13 @@ class SweepError : public std::runtime_error {
   std::vector<int> edge_ids_;
 };
 
+// The sweep passed one of its limits (SweepBudget): the input makes the
+// engine run away. Not retried at other tolerances.
+class SweepBudgetError : public SweepError {
+ public:
+  using SweepError::SweepError;
+};
+
 // Assembling or checking a mesh failed (a face OpenMesh refused, ...).
 class MeshError : public std::runtime_error {
  public:

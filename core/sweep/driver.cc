@@ -143,6 +143,7 @@ void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, Anc
       throw SweepError("sweep: events repeat without rising at height " + std::to_string(st.height), st.height, {});
     }
     st.height = std::max(st.height, z);
+    st.check_time();
     resolve_intersections(st, queue, queue.pop_cluster(st));
   }
   // Open loops (capped) still carry anchors up to the cap.

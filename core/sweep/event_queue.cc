@@ -61,6 +61,7 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   if (at < z - st.tol().height()) return;
   // Two corners made at one collision meet there because of it.
   if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
+  st.count_events(1);
   heap_.push({std::max(at, z), at, c, n, kNone, kNone});
 }
 
@@ -175,6 +176,7 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
     list.splits.push_back({at, e});
   }
+  st.count_events(list.splits.size());
   advance(i, c);
 }
 

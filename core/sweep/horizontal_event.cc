@@ -320,7 +320,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
   SweepOptions options;
   for (const auto& [s, step] : steps) options.max_height = std::max(options.max_height.value_or(0.0), std::abs(step.inward));
   options.ambiguity = st.options().ambiguity;
-  Nested n{State(st.tol(), options), {}, {}, {}, *options.max_height};
+  Nested n{State(st.tol(), options, st.budget()), {}, {}, {}, *options.max_height};
   sweep_nested(n, st, loops, at, steps);
   const std::vector<std::uint32_t> vertex = flatten_vertices(n, st, z);
 

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -204,15 +205,21 @@ bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle
 void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {
   const double z = st.height;
   glm::dvec2 p{0.0};
+  // The participating edges, each once: a corner meeting a thousand planes
+  // at one point brings each of them in once per collision.
   std::vector<int> edges;
+  std::unordered_set<int> participating;
+  auto add_edge = [&](int e) {
+    if (participating.insert(e).second) edges.push_back(e);
+  };
   std::vector<char> at(st.corners.size(), 0);
   std::vector<int> at_p;
   auto mark = [&](int c) {
     if (at[c]) return;
     at[c] = 1;
     at_p.push_back(c);
-    edges.push_back(st.corners[c].prev_edge);
-    edges.push_back(st.corners[c].next_edge);
+    add_edge(st.corners[c].prev_edge);
+    add_edge(st.corners[c].next_edge);
   };
   for (int m : members) p += cs[m].p;
   p /= static_cast<double>(members.size());
@@ -224,7 +231,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     if (!std::all_of(cs[m].corners.begin(), cs[m].corners.end(), [&](int c) { return st.corners[c].alive; }))
       continue;
     for (int c : cs[m].corners) mark(c);
-    edges.insert(edges.end(), cs[m].edges.begin(), cs[m].edges.end());
+    for (int e : cs[m].edges) add_edge(e);
   }
   if (at_p.empty()) return;
 
@@ -233,7 +240,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   // its line meets the sweep plane in one point, and both planes pass through
   // p. Computing its position instead would be ill-conditioned when the
   // planes are nearly parallel.
-  auto participates = [&](int e) { return std::find(edges.begin(), edges.end(), e) != edges.end(); };
+  auto participates = [&](int e) { return participating.count(e) > 0; };
   auto is_at_p = [&](int c) {
     const Corner& k = st.corners[c];
     if (k.motion == Motion::Regular && participates(k.prev_edge) && participates(k.next_edge))
@@ -248,7 +255,6 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     }
   }
   std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
   // Runs of consecutive corners at p, and edges cut through the middle.
   std::vector<Chain> chains;

@@ -102,8 +102,10 @@ void load(engine::State& st, const Footprint& fp) {
   }
 }
 
-Surface sweep_with(const Footprint& footprint, const SweepOptions& options, const engine::Tolerances& tol) {
-  engine::State st(tol, options);
+Surface sweep_with(const Footprint& footprint, const SweepOptions& options, const engine::Tolerances& tol,
+                   engine::Budget& budget) {
+  budget.start_attempt();
+  engine::State st(tol, options, &budget);
   load(st, footprint);
   engine::EventQueue queue;
   engine::schedule_all(st, queue);
@@ -134,13 +136,16 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const LocalFrame frame = local_frame(footprint);
   const Footprint local = moved(footprint, -frame.centre);
   engine::Tolerances tol{frame.extent};
+  engine::Budget budget(options.budget);
   std::optional<SweepError> first;
   for (double relative : engine::Tolerances::retry_relative) {
     tol.relative = relative;
     try {
-      Surface s = sweep_with(local, options, tol);
+      Surface s = sweep_with(local, options, tol, budget);
       move(s, frame.centre);
       return s;
+    } catch (const SweepBudgetError&) {
+      throw;  // a runaway runs away at any tolerance
     } catch (const SweepError& e) {
       if (!first) first = e;
     }

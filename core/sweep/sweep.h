@@ -4,6 +4,7 @@
 // cross-section. The result is a closed, consistently oriented 2-manifold.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,22 @@ namespace procex {
 // How to resolve parallel, same-direction edges meeting (paper 4.5, fig. 18-19).
 enum class Ambiguity { MaximizeVolume, MinimizeVolume };
 
+// Limits on one footprint's sweep (0: none). An input that makes the engine
+// run away (corners made without end, events that never rise, a sweep far
+// slower than its size warrants) fails with a SweepBudgetError naming the
+// limit it passed, in bounded time and memory, instead of a hang or a crash.
+struct SweepBudget {
+  // Vertices made by one attempt (nested sweeps included): corners, planes
+  // and faces grow with them, so this bounds the engine's memory.
+  std::size_t max_vertices = 10'000'000;
+  // Potential events queued by one attempt (a few words of memory each while
+  // their corner lives): a reflex corner lists one per live plane, so this
+  // grows as vertices times reflex corners.
+  std::size_t max_events = 1'000'000'000;
+  // Seconds from the start of sweep(), its retries included.
+  double max_seconds = 600.0;
+};
+
 struct SweepOptions {
   std::optional<double> max_height;  // caps the sweep with horizontal faces
   Ambiguity ambiguity = Ambiguity::MaximizeVolume;
@@ -25,10 +42,12 @@ struct SweepOptions {
   // applied (or why not) goes to Surface::plan_edits. Their edges' profiles
   // index into the footprint's.
   std::vector<PlanEdit> plan_edits;
+  SweepBudget budget;
 };
 
-// Throws InputError for unusable footprints and SweepError when an event
-// cannot be resolved; never returns a surface that is not closed.
+// Throws InputError for unusable footprints, SweepError when an event cannot
+// be resolved and SweepBudgetError past the budget; never returns a surface
+// that is not closed.
 Surface sweep(const Footprint& footprint, const SweepOptions& options = {});
 
 }  // namespace procex

@@ -65,6 +65,7 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
 }
 
 std::uint32_t State::add_vertex(glm::dvec3 p) {
+  if (budget_) budget_->add_vertex(height);
   vertices.push_back(p);
   return static_cast<std::uint32_t>(vertices.size() - 1);
 }

@@ -12,6 +12,7 @@
 
 #include "core/geom/profile.h"
 #include "core/mesh/surface.h"
+#include "core/sweep/budget.h"
 #include "core/sweep/plane.h"
 #include "core/sweep/sweep.h"
 #include "core/geom/tolerances.h"
@@ -81,10 +82,22 @@ struct FaceGroup {
 
 class State {
  public:
-  State(const Tolerances& tol, const SweepOptions& options) : tol_(tol), options_(options) {}
+  // `budget` (shared by the nested sweeps of one attempt) counts what this
+  // state makes; null: no limits.
+  State(const Tolerances& tol, const SweepOptions& options, Budget* budget = nullptr)
+      : tol_(tol), options_(options), budget_(budget) {}
 
   const Tolerances& tol() const { return tol_; }
   const SweepOptions& options() const { return options_; }
+  Budget* budget() const { return budget_; }
+  // Counts n potential events queued against the budget.
+  void count_events(std::size_t n) const {
+    if (budget_) budget_->add_events(n, height);
+  }
+  // Refuses the sweep once its time is up (called once per event batch).
+  void check_time() const {
+    if (budget_) budget_->check_time(height);
+  }
 
   std::vector<Source> sources;
   std::vector<Edge> edges;
@@ -134,6 +147,7 @@ class State {
  private:
   Tolerances tol_;
   SweepOptions options_;
+  Budget* budget_;
   // vertex_at's vertices by (height level, delta3 cell); those of earlier
   // levels never match again, so nothing is ever cleared.
   struct LevelCell {

@@ -1,0 +1,45 @@
+// The limits of one sweep() call in force (SweepBudget): what every state of
+// an attempt makes (nested sweeps included) is counted, against one deadline
+// for all attempts.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+
+#include "core/sweep/sweep.h"
+
+namespace procex::engine {
+
+class Budget {
+ public:
+  explicit Budget(const SweepBudget& limits);
+
+  // A new attempt (another tolerance): its vertices and events count afresh.
+  void start_attempt() { vertices_ = events_ = 0; }
+  // Each throws SweepBudgetError past its limit, at sweep height `z`.
+  void add_vertex(double z) {
+    if (++vertices_ > limits_.max_vertices && limits_.max_vertices > 0) vertices_exceeded(z);
+  }
+  void add_events(std::size_t n, double z) {
+    events_ += n;
+    if (events_ > limits_.max_events && limits_.max_events > 0) events_exceeded(z);
+  }
+  // Reads the clock only every few calls: it is called once per event batch.
+  void check_time(double z) {
+    if (++since_clock_ < kClockStride || !(limits_.max_seconds > 0.0)) return;
+    since_clock_ = 0;
+    if (std::chrono::steady_clock::now() > deadline_) time_exceeded(z);
+  }
+
+ private:
+  static constexpr std::size_t kClockStride = 64;
+  [[noreturn]] void vertices_exceeded(double z) const;
+  [[noreturn]] void events_exceeded(double z) const;
+  [[noreturn]] void time_exceeded(double z) const;
+
+  SweepBudget limits_;
+  std::chrono::steady_clock::time_point deadline_;
+  std::size_t vertices_ = 0, events_ = 0, since_clock_ = 0;
+};
+
+}  // namespace procex::engine

@@ -1,0 +1,72 @@
+// The sweep's budget (SweepBudget): past a limit the sweep stops with a
+// SweepBudgetError naming it, whatever the input; within it nothing changes.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/geom/error.h"
+#include "core/sweep/sweep.h"
+
+namespace procex {
+namespace {
+
+std::vector<glm::dvec2> star(int n, double r_even, double r_odd) {
+  std::vector<glm::dvec2> p;
+  for (int k = 0; k < n; ++k) {
+    const double r = k % 2 ? r_odd : r_even, a = 2 * M_PI * k / n;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return p;
+}
+
+// The error a sweep with `budget` throws, or "" if it succeeds.
+std::string refusal(const Footprint& fp, const SweepBudget& budget) {
+  SweepOptions o;
+  o.budget = budget;
+  try {
+    (void)sweep(fp, o);
+  } catch (const SweepBudgetError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SweepBudget, VerticesPastTheLimitRefuseTheFootprint) {
+  const Footprint fp = make_footprint({star(400, 100, 60)}, 45);
+  SweepBudget b;
+  b.max_vertices = 300;
+  EXPECT_NE(refusal(fp, b).find("after 300 vertices (the vertex budget)"), std::string::npos) << refusal(fp, b);
+  b.max_vertices = 0;  // no limit
+  EXPECT_EQ(refusal(fp, b), "");
+}
+
+TEST(SweepBudget, EventsPastTheLimitRefuseTheFootprint) {
+  const Footprint fp = make_footprint({star(400, 100, 60)}, 45);
+  SweepBudget b;
+  b.max_events = 1000;  // 200 reflex corners list 400 planes each
+  EXPECT_NE(refusal(fp, b).find("potential events (the event budget)"), std::string::npos) << refusal(fp, b);
+}
+
+TEST(SweepBudget, TimePastTheLimitRefusesTheFootprint) {
+  // Radii drawn (seeded) so events come at many heights: the clock is read
+  // once every few dozen of them.
+  std::vector<glm::dvec2> p;
+  unsigned seed = 12345;
+  for (int k = 0; k < 2000; ++k) {
+    seed = seed * 1103515245u + 12345u;
+    const double r = 50.0 + 50.0 * static_cast<double>(seed >> 16 & 0x7fff) / 32768.0, a = 2 * M_PI * k / 2000;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  SweepBudget b;
+  b.max_seconds = 1e-9;
+  EXPECT_NE(refusal(make_footprint({p}, 45), b).find("s (the time budget)"), std::string::npos);
+}
+
+TEST(SweepBudget, DefaultsLeaveLargeInputsAlone) {
+  EXPECT_EQ(refusal(make_footprint({star(1000, 100, 60)}, 45), SweepBudget{}), "");
+}
+
+}  // namespace
+}  // namespace procex
