@@ -107,14 +107,20 @@ class SetParam final : public Command {
     if (!i) return Status::error("node " + std::to_string(id_) + " (" + n->type->name() + ") has no parameter '" + param_ + "'");
     index_ = *i;
     previous_ = n->params[index_];
+    const auto e = n->expressions.find(static_cast<std::uint32_t>(index_));
+    previous_expression_ = e == n->expressions.end() ? nullptr : e->second;
     return g.set_param(id_, index_, value_);
   }
-  void revert(Graph& g) override { (void)g.set_param(id_, index_, previous_); }
+  void revert(Graph& g) override {
+    (void)g.set_param(id_, index_, previous_);
+    if (previous_expression_) (void)g.set_expression(id_, index_, previous_expression_->text());
+  }
 
  private:
   NodeId id_;
   std::string param_;
   Value value_, previous_;
+  std::shared_ptr<const Expression> previous_expression_;  // the value replaced it; undo brings it back
   std::size_t index_ = 0;
 };
 

@@ -9,6 +9,8 @@
 
 #include <tbb/task_group.h>
 
+#include "graph/expression_value.h"
+
 namespace procex {
 
 namespace {
@@ -267,24 +269,89 @@ class Run {
     }
   }
 
-  // A node's parameters with the exposed parameters of enclosing groups
-  // applied; `storage` holds them when they differ from the node's own.
-  static const std::vector<Value>& params_in(const Frame& f, const Node& node, std::vector<Value>& storage) {
+  // A node's parameters as they are in frame f: exposed parameters of
+  // enclosing groups applied, expressions evaluated. `storage` holds them when
+  // they differ from the node's own; a parameter without a value (a failed
+  // expression, a result out of range) sets `error`. Warnings go to `warnings`
+  // when given.
+  const std::vector<Value>& params_in(const Frame& f, const Node& node, std::vector<Value>& storage, std::string& error,
+                                      std::vector<std::string>* warnings = nullptr) const {
     auto o = f.overrides.find(node.id);
-    if (o == f.overrides.end()) return node.params;
+    if (o == f.overrides.end() && node.expressions.empty()) return node.params;
     storage = node.params;
-    for (const auto& [param, v] : o->second) storage[param] = v;
+    for (std::uint32_t p = 0; p < storage.size() && error.empty(); ++p) {
+      if (o == f.overrides.end() && !node.expressions.count(p)) continue;
+      try {
+        storage[p] = param_value(f, node, p, 0, warnings);
+      } catch (const std::exception& e) {
+        error = "parameter '" + node.decl().params()[p].name + "': " + e.what();
+      }
+    }
     return storage;
+  }
+
+  // Parameter p of `node` in frame f (throws, naming what is wrong).
+  Value param_value(const Frame& f, const Node& node, std::uint32_t p, std::size_t depth,
+                    std::vector<std::string>* warnings) const {
+    if (auto o = f.overrides.find(node.id); o != f.overrides.end())
+      for (auto it = o->second.rbegin(); it != o->second.rend(); ++it)
+        if (it->first == p) return it->second;
+    auto e = node.expressions.find(p);
+    if (e == node.expressions.end()) return node.params[p];
+    if (depth > kMaxGroupDepth) throw std::runtime_error("expressions read each other in a cycle");
+    const Expression& expr = *e->second;
+    const ParamDecl& decl = node.decl().params()[p];
+    Expression::Env env;
+    env.name = [&](std::string_view name) { return name_value(f, name, depth, warnings); };
+    env.attribute = [this](std::string_view key) -> const std::string* {
+      auto a = options_.attributes.find(key);
+      return a == options_.attributes.end() ? nullptr : &a->second;
+    };
+    if (warnings) env.warn = [&](std::string m) { warnings->push_back("parameter '" + decl.name + "': " + std::move(m)); };
+    Result<Value> v = from_expr_value(expr.evaluate(env), *decl.type);
+    if (!v) throw std::runtime_error(v.message());
+    if (Status s = decl.check(*v); !s) throw std::runtime_error("'" + expr.text() + "' gives a value the parameter refuses: " + s.message());
+    return *v;
+  }
+
+  // What an expression name reads in frame f: a graph input known before
+  // evaluation, or an exposed parameter.
+  ExprValue name_value(const Frame& f, std::string_view name, std::size_t depth, std::vector<std::string>* warnings) const {
+    std::string q = "'";  // appended, not added: GCC 12's -Wrestrict misreads '"x" + std::string(...)' here
+    q.append(name).append("'");
+    if (auto i = f.graph->input_index(name)) {
+      const Source& s = *i < f.inputs.size() ? f.inputs[*i] : Source{};
+      if (s.kind == Source::kValue && s.value.empty()) {  // assume_inputs_bound: any value of the type will do
+        const ExprType t = expression_type(*f.graph->inputs()[*i].type).value_or(ExprType::kNumber);
+        return t == ExprType::kNumber ? ExprValue(0.0) : t == ExprType::kBool ? ExprValue(false) : ExprValue(std::string());
+      }
+      if (s.kind == Source::kValue && expression_type(*s.value.type())) return to_expr_value(s.value);
+      if (s.kind == Source::kNode)
+        throw ExprError("input " + q + " is fed by a node's output, known only once the graph runs; expressions read "
+                        "values known before: the recipe's inputs, exposed parameters and attr()");
+      throw ExprError("input " + q + " has no value" + (s.why.empty() ? "" : ": " + s.why));
+    }
+    for (const ExposedParam& e : f.graph->exposed_params()) {
+      if (e.name != name) continue;
+      try {
+        return to_expr_value(param_value(f, *f.graph->node(e.node), e.param, depth + 1, warnings));
+      } catch (const std::exception& err) {
+        throw ExprError("exposed parameter " + q + ": " + err.what());
+      }
+    }
+    throw ExprError("no graph input or exposed parameter named " + q + " here");
   }
 
   // The input that every output of node `id` hands on, when its parameters
   // say so and that input is linked (a Switch): nothing upstream of its other
   // inputs is needed, so none of it is planned or hashed.
-  static std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) {
+  std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) const {
     const Node* node = f.graph->node(id);
     if (!node || node->type->is_group() || !node->decl().pass_through()) return std::nullopt;
     std::vector<Value> storage;
-    const std::vector<Value>& params = params_in(f, *node, storage);
+    std::string error;
+    const std::vector<Value>& params = params_in(f, *node, storage, error);
+    if (!error.empty()) return std::nullopt;
     std::optional<std::size_t> only;
     for (std::size_t o = 0; o < node->decl().outputs().size(); ++o) {
       const std::optional<std::size_t> p = node->decl().pass_through()(params, o);
@@ -304,9 +371,12 @@ class Run {
     NodePath path = f.prefix;
     path.push_back(id);
     std::vector<Value> overridden;
-    params_in(f, *node, overridden);
+    std::string param_error;
+    std::vector<std::string> param_warnings;
+    params_in(f, *node, overridden, param_error, &param_warnings);
+    for (std::string& w : param_warnings) result_.diagnostics.push_back({Severity::kWarning, path, node->type->name(), std::move(w)});
     if (node->type->is_group()) {
-      emit_group(f, *node, std::move(path), overridden.empty() ? node->params : overridden, depth);
+      emit_group(f, *node, std::move(path), overridden.empty() ? node->params : overridden, param_error, depth);
       return;
     }
     auto pn = std::make_unique<PlanNode>();
@@ -314,9 +384,11 @@ class Run {
     n.path = std::move(path);
     n.node = node;
     n.overridden = std::move(overridden);
+    n.static_error = std::move(param_error);
     Hasher h;
     h.hash(salt_).hash(node->type->key);
     for (const Value& v : n.params()) v.hash(h);
+    for (const auto& [p, e] : node->expressions) h.u64(p).str(e->text());
     if (decl.hash_extra()) decl.hash_extra()(n.params(), options_.folder, h);
     n.inputs.reserve(decl.inputs().size());
     const std::optional<std::uint32_t> only = passed_input(f, id);
@@ -363,16 +435,18 @@ class Run {
     plan_.push_back(std::move(pn));
   }
 
-  void emit_group(Frame& f, const Node& node, NodePath path, const std::vector<Value>& params, std::size_t depth) {
+  void emit_group(Frame& f, const Node& node, NodePath path, const std::vector<Value>& params,
+                  const std::string& param_error, std::size_t depth) {
     const Graph& body = *node.type->body;
     std::vector<Source>& outs = f.group_outputs[node.id];
     const bool too_deep = depth + 1 > kMaxGroupDepth;
-    if (too_deep || ++expanded_ + plan_.size() > options_.max_expanded_nodes) {
+    if (!param_error.empty() || too_deep || ++expanded_ + plan_.size() > options_.max_expanded_nodes) {
       Source s;
       s.kind = Source::kMissing;
-      s.why = too_deep ? "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " at node " + to_string(path)
-                       : "the graph expands to more than " + std::to_string(options_.max_expanded_nodes) +
-                             " nodes once its groups are flattened (at group node " + to_string(path) + ")";
+      s.why = !param_error.empty() ? "group node " + to_string(path) + ": " + param_error
+              : too_deep ? "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " at node " + to_string(path)
+                         : "the graph expands to more than " + std::to_string(options_.max_expanded_nodes) +
+                               " nodes once its groups are flattened (at group node " + to_string(path) + ")";
       outs.assign(body.outputs().size(), s);
       return;
     }

@@ -47,6 +47,10 @@ struct EvalOptions {
   // (to a value known only by name), so checking a recipe before its inputs
   // are known reports every other problem. evaluate() asserts it is off.
   bool assume_inputs_bound = false;
+  // What attr("key", default) reads in expressions: one feature's attributes
+  // as text (a GeoJSON property's value). They reach a node's key through the
+  // parameter values they give, so one recipe and one cache serve many features.
+  std::map<std::string, std::string, std::less<>> attributes;
 };
 
 struct OutputResult {

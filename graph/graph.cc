@@ -4,6 +4,8 @@
 #include <optional>
 #include <set>
 
+#include "graph/expression_value.h"
+
 namespace procex {
 
 namespace {
@@ -98,6 +100,61 @@ Status Graph::set_param(NodeId id, std::size_t param, Value v) {
     n.type = std::move(variant);
   }
   n.params[param] = std::move(v);
+  n.expressions.erase(static_cast<std::uint32_t>(param));
+  return Status::ok();
+}
+
+std::optional<ExprType> Graph::expression_name_type(std::string_view name) const {
+  if (auto i = input_index(name)) return expression_type(*inputs_[*i].type);
+  for (const ExposedParam& e : exposed_)
+    if (e.name == name) return expression_type(*node(e.node)->decl().params()[e.param].type);
+  return std::nullopt;
+}
+
+Status Graph::set_expression(NodeId id, std::string_view param, std::string_view text) {
+  const Node* n = node(id);
+  if (!n) return Status::error("no node " + std::to_string(id));
+  auto i = n->decl().param_index(param);
+  if (!i) return Status::error("node " + std::to_string(id) + " (" + n->type->name() + ") has no parameter " + q(param));
+  return set_expression(id, *i, text);
+}
+
+Status Graph::set_expression(NodeId id, std::size_t param, std::string_view text) {
+  auto it = nodes_.find(id);
+  if (it == nodes_.end()) return Status::error("no node " + std::to_string(id));
+  Node& n = it->second;
+  if (param >= n.params.size()) return Status::error("node " + std::to_string(id) + " has no parameter #" + std::to_string(param));
+  const ParamDecl& decl = n.decl().params()[param];
+  const std::string where = "node " + std::to_string(id) + " (" + n.type->name() + "), parameter " + q(decl.name) + ": ";
+  const std::optional<ExprType> want = expression_type(*decl.type);
+  if (!want || decl.sets_port_count)
+    return Status::error(where + "a " + decl.type->name() + " parameter" + (want ? " that sets the number of ports" : "") +
+                         " cannot hold an expression (float, int, bool, string and enum parameters can)");
+  auto parsed = Expression::parse(text);
+  if (!parsed) return Status::error(where + parsed.message());
+  const Expression& e = **parsed;
+  auto type = e.check([this](std::string_view name) { return expression_name_type(name); });
+  if (!type) return Status::error(where + type.message());
+  if (*type != *want)
+    return Status::error(where + "column 1: the expression gives a " + to_string(*type) + " but the parameter takes a " +
+                         decl.type->name());
+  // An exposed parameter whose expression reads itself, directly or through others, has no value.
+  std::vector<std::string> todo = e.names();
+  std::set<std::string, std::less<>> seen;
+  while (!todo.empty()) {
+    const std::string name = todo.back();
+    todo.pop_back();
+    if (!seen.insert(name).second) continue;
+    for (const ExposedParam& x : exposed_) {
+      if (x.name != name) continue;
+      if (x.node == id && x.param == param)
+        return Status::error(where + "the expression reads " + q(name) + ", which is this parameter itself");
+      const Node& target = nodes_.at(x.node);
+      if (auto te = target.expressions.find(x.param); te != target.expressions.end())
+        todo.insert(todo.end(), te->second->names().begin(), te->second->names().end());
+    }
+  }
+  n.expressions[static_cast<std::uint32_t>(param)] = *parsed;
   return Status::ok();
 }
 
@@ -346,6 +403,12 @@ std::vector<Diagnostic> Graph::validate() const {
       if (!inputs[i].optional && !links_.count(PortRef{id, static_cast<std::uint32_t>(i)}))
         out.push_back({Severity::kError, {id}, n.type->name(), "input " + q(inputs[i].name) + " is not connected"});
   }
+  for (const auto& [id, n] : nodes_)
+    for (const auto& [param, e] : n.expressions) {
+      auto type = e->check([this](std::string_view name) { return expression_name_type(name); });
+      if (!type)
+        out.push_back({Severity::kError, {id}, n.type->name(), "parameter " + q(n.decl().params()[param].name) + ": " + type.message()});
+    }
   for (std::size_t i = 0; i < outputs_.size(); ++i)
     if (!links_.count(PortRef{kGraphOutputs, static_cast<std::uint32_t>(i)}))
       out.push_back({Severity::kError, {}, {}, "graph output " + q(outputs_[i].name) + " is not connected"});

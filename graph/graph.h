@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "graph/diagnostic.h"
+#include "graph/expression.h"
 #include "graph/registry.h"
 #include "graph/status.h"
 #include "graph/value.h"
@@ -54,6 +55,9 @@ struct Node {
   NodeId id = 0;
   std::shared_ptr<const NodeType> type;
   std::vector<Value> params;  // in declaration order, always complete
+  // Parameters that hold an expression instead of a value (by parameter
+  // index); params keeps the last value for editors to show.
+  std::map<std::uint32_t, std::shared_ptr<const Expression>> expressions;
   std::string group;          // group instances: the name of the group in Graph::groups()
   EditorState editor;
 
@@ -115,8 +119,17 @@ class Graph {
   const std::map<NodeId, Node>& nodes() const { return nodes_; }
   NodeId next_id() const { return next_id_; }
 
+  // A value replaces the parameter's expression, if it had one.
   Status set_param(NodeId id, std::string_view param, Value v);
   Status set_param(NodeId id, std::size_t param, Value v);
+  // Gives a float, int, bool, string or enum parameter an expression
+  // (docs/expressions.md), typed against this graph's inputs and exposed
+  // parameters. Refusals name the node, the parameter and the column.
+  Status set_expression(NodeId id, std::string_view param, std::string_view text);
+  Status set_expression(NodeId id, std::size_t param, std::string_view text);
+  // The type an expression name has in this graph: a graph input or exposed
+  // parameter of a float, int, bool, string or enum type; nullopt otherwise.
+  std::optional<ExprType> expression_name_type(std::string_view name) const;
   Status set_editor_state(NodeId id, EditorState s);
 
   // ---- links ----

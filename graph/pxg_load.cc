@@ -55,6 +55,14 @@ struct Loader {
   // (references that fan out level after level would otherwise multiply).
   std::map<fs::path, std::shared_ptr<const Graph>> libraries;
   std::vector<std::string> warnings;
+  // Parameters saved as {"expr": "..."}: typed once the graph's inputs and
+  // exposed parameters are known (read_graph).
+  struct PendingExpression {
+    NodeId node;
+    std::size_t param;
+    std::string text, ptr;
+  };
+  std::vector<PendingExpression> expressions = {};
 
   [[noreturn]] void fail(const std::string& file, const std::string& where, const std::string& message) const {
     throw PxgError(file, where, message);
@@ -205,9 +213,15 @@ struct Loader {
     read_groups(g, j, base, path, group_depth);
     read_interface(g, j, base, file);
     std::map<NodeId, std::string> node_ptr;
+    const std::size_t first_expression = expressions.size();  // group bodies, read above, took theirs
     read_nodes(g, j, base, file, node_ptr);
     read_links(g, j, base, file);
     read_exposed(g, j, base, file);
+    for (std::size_t i = first_expression; i < expressions.size(); ++i) {
+      const PendingExpression& e = expressions[i];
+      if (Status s = g.set_expression(e.node, e.param, e.text); !s) fail(file, e.ptr, s.message());
+    }
+    expressions.resize(first_expression);
     read_editor(g, j, base, file);
     return g;
   }
@@ -358,6 +372,13 @@ struct Loader {
         fail(c.file, pp, msg);
       }
       const ParamDecl& p = decl.params()[*index];
+      if (value.is_object()) {
+        auto text = value.find("expr");
+        if (value.size() != 1 || text == value.end() || !text->is_string())
+          fail(c.file, pp, "expected a value, or {\"expr\": \"an expression\"}");
+        expressions.push_back({id, *index, text->get<std::string>(), pp + "/expr"});
+        continue;
+      }
       Value v = value_from(*p.type, value, Ctx{c.file, pp});
       if (Status s = g.set_param(id, *index, std::move(v)); !s) fail(c.file, pp, s.message());
     }

@@ -46,7 +46,10 @@ json graph_json(const Graph& g) {
     }
     json params = json::object();
     const auto& decls = n.decl().params();
-    for (std::size_t i = 0; i < decls.size(); ++i) params[decls[i].name] = param_json(n.params[i]);
+    for (std::size_t i = 0; i < decls.size(); ++i) {
+      auto expr = n.expressions.find(static_cast<std::uint32_t>(i));
+      params[decls[i].name] = expr == n.expressions.end() ? param_json(n.params[i]) : json{{"expr", expr->second->text()}};
+    }
     e["params"] = std::move(params);
     nodes.push_back(std::move(e));
     editor[std::to_string(id)] = {{"x", n.editor.x}, {"y", n.editor.y}, {"comment", n.editor.comment}, {"collapsed", n.editor.collapsed}};

@@ -47,8 +47,8 @@ void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_g
   const auto start = std::chrono::steady_clock::now();
   Graph graph = recipe.graph;
   Bindings bindings = recipe.bindings;
-  b.warnings = bind_feature(graph, bindings, *b.feature);
   EvalOptions options = recipe.options;
+  b.warnings = bind_feature(graph, bindings, options, *b.feature);
   options.parallel = false;  // buildings run in parallel already
   const EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
   for (const Diagnostic& d : r.diagnostics) {

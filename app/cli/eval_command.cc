@@ -28,7 +28,7 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
       return kExitUnusableInput;
     }
     feature = *found;
-    for (const std::string& w : bind_feature(recipe->graph, recipe->bindings, *feature))
+    for (const std::string& w : bind_feature(recipe->graph, recipe->bindings, recipe->options, *feature))
       err << options.footprints.string() << ": feature " << feature->id << ": warning: " << w << "\n";
   }
   ResultCache cache;

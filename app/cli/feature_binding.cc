@@ -43,8 +43,11 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
   }
 }
 
-std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, const GeoJsonFeature& f) {
+std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f) {
   std::vector<std::string> warnings;
+  options.attributes.clear();
+  for (const auto& [name, json_text] : f.properties)
+    if (json_text != "null") options.attributes.emplace(name, *f.property_text(name));
   bindings["footprint"] = Value::make(to_footprint(f, 45.0));
   if (graph.input_index("building_id")) bindings["building_id"] = Value::make(f.id);
   for (const auto& [name, json_text] : f.properties) {

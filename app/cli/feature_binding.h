@@ -27,10 +27,11 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
                                                  const std::filesystem::path& footprints, const std::string& command,
                                                  std::ostream& err);
 
-// Binds f to graph (a copy of the recipe) and bindings. Returns one warning per
-// property that names a parameter but does not fit it; properties that name
-// nothing in the recipe are ignored.
-std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, const GeoJsonFeature& f);
+// Binds f to graph (a copy of the recipe) and bindings, and its properties
+// (by their own names) to the attributes expressions read with attr(). Returns
+// one warning per property that names a parameter but does not fit it;
+// properties that name nothing in the recipe are ignored.
+std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);
 
 // Marks every part with f's id and index (written to .glb extras).
 void label_parts(MeshSet& meshes, const GeoJsonFeature& f);
