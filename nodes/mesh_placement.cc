@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <tuple>
 
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
+#include "core/placement/face_cover.h"
 #include "core/placement/frame_transform.h"
 #include "core/placement/place_mesh.h"
 #include "core/placement/placement_error.h"
@@ -25,7 +27,7 @@ namespace fs = std::filesystem;
 enum Param : std::size_t {
   kFile, kName, kAnchor, kTopAnchor, kMode, kPivot, kScale, kOffset,
   kColumns, kColumnSpacing, kRounding, kFill, kLayout, kMarginStart, kMarginEnd,
-  kRows, kRowSpacing, kZFrom, kZTo, kFit, kMargin, kTag, kUpright,
+  kRows, kRowSpacing, kZFrom, kZTo, kFit, kMargin, kTag, kUpright, kZToTop, kFloorFrom, kFloorTo,
 };
 
 // An edited mesh file is read again.
@@ -40,7 +42,11 @@ void declare(NodeDecl& d) {
         "`row` a row across the face at the anchor's height, `grid` rows and columns up the face between z_from "
         "and z_to, `stretch` from `anchor` (the mesh's bottom) to `top_anchor` (its top) on the same edge. Rows "
         "and columns take `rows` / `columns` items, or one every `row_spacing` / `column_spacing` metres as the "
-        "face allows (rounding, fill, layout and margins apply to both). The meshes "
+        "face allows (rounding, fill, layout and margins apply to both). Row, grid and stretch items whose mesh, "
+        "seen along the face's normal, is not wholly on the anchor's face (above the roof line, across a set-back, "
+        "past a corner) are dropped and counted in `dropped`. A grid's z_to may be an expression of the recipe's "
+        "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
+        "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot. The meshes "
         "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. Where an anchor "
         "resolved as absent (its edge is gone at that height) nothing is placed and a warning says so.")
       .category("Geometry");
@@ -49,7 +55,7 @@ void declare(NodeDecl& d) {
   d.param<std::string>("name").default_value(std::string()).doc("tags the mesh's faces without a material (empty: the file's name)");
   d.param<std::string>("anchor").default_value(std::string("window")).doc("the anchor to place at (for stretch: the bottom)");
   d.param<std::string>("top_anchor").default_value(std::string()).doc("stretch: the anchor the mesh's top follows");
-  d.param_enum("mode", {"single", "row", "grid", "stretch"}).doc("how many and where");
+  d.param_enum("mode", {"single", "row", "grid", "stretch", "tiles"}).doc("how many and where");
   d.param<Vec3>("pivot").default_value(Vec3{0.5, 0.0, 0.0})
       .doc("the point of the mesh's bounds put on the anchor, as fractions of its size (x along, y up, z out)");
   d.param<Vec3>("scale").default_value(Vec3{1, 1, 1}).doc("the mesh's scale (single; row and grid without fit)");
@@ -68,12 +74,17 @@ void declare(NodeDecl& d) {
   d.param<double>("row_spacing").default_value(3.0).range(0, 1000).unit("m").doc("grid: the pitch when rows is 0");
   d.param<double>("z_from").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows start");
   d.param<double>("z_to").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows end");
-  d.param<bool>("fit").default_value(false).doc("row and grid: scale each mesh to fill its cell (less margin)");
+  d.param<bool>("fit").default_value(false)
+      .doc("row and grid: scale each mesh to fill its cell (less margin); single: to fill each Facade Split tile");
   d.param<double>("margin").default_value(0.0).range(0, 1000).unit("m").doc("fit: the gap kept around each mesh in its cell");
   d.param<std::string>("tag").default_value(std::string()).doc("tags every face of the placed meshes (empty: their own tags)");
   d.param<bool>("upright").default_value(false)
       .doc("stand the mesh upright: its up is the world's, not the face's (a chimney on a roof slope)");
+  d.param<bool>("z_to_top").default_value(false).doc("grid: the rows end at the top of each anchor's face (z_to is ignored)");
+  d.param<std::int64_t>("floor_from").default_value<std::int64_t>(0).range(0, 10000).doc("tiles: the lowest floor placed in");
+  d.param<std::int64_t>("floor_to").default_value<std::int64_t>(10000).range(0, 10000).doc("tiles: the highest floor placed in");
   d.output<MeshSet>("mesh");
+  d.output<std::int64_t>("dropped").doc("row, grid and stretch items left out: not wholly on their face");
   d.hash_extra(hash_file);
 }
 
@@ -116,7 +127,8 @@ MeshPlacementSpec spec_of(const EvalContext& ctx) {
   s.anchor = ctx.param<std::string>(kAnchor);
   s.top_anchor = ctx.param<std::string>(kTopAnchor);
   constexpr MeshPlacementSpec::Mode kModes[] = {MeshPlacementSpec::Mode::Single, MeshPlacementSpec::Mode::Row,
-                                                MeshPlacementSpec::Mode::Grid, MeshPlacementSpec::Mode::Stretch};
+                                                MeshPlacementSpec::Mode::Grid, MeshPlacementSpec::Mode::Stretch,
+                                                MeshPlacementSpec::Mode::Tiles};
   s.mode = kModes[ctx.choice_index(kMode)];
   s.pivot = vec(ctx.param<Vec3>(kPivot));
   s.scale = vec(ctx.param<Vec3>(kScale));
@@ -134,6 +146,9 @@ MeshPlacementSpec spec_of(const EvalContext& ctx) {
   s.rows.spacing = ctx.param<double>(kRowSpacing);
   s.z_from = ctx.param<double>(kZFrom);
   s.z_to = ctx.param<double>(kZTo);
+  s.z_to_top = ctx.param<bool>(kZToTop);
+  s.floor_from = static_cast<int>(ctx.param<std::int64_t>(kFloorFrom));
+  s.floor_to = static_cast<int>(ctx.param<std::int64_t>(kFloorTo));
   s.fit = ctx.param<bool>(kFit);
   s.margin = ctx.param<double>(kMargin);
   s.tag = ctx.param<std::string>(kTag);
@@ -148,7 +163,8 @@ std::vector<ResolvedAnchor> stood_upright(std::vector<ResolvedAnchor> anchors) {
   return anchors;
 }
 
-bool carries(const TaggedMesh& part, const std::string& anchor) {
+bool carries(const TaggedMesh& part, const std::string& anchor, bool tiles) {
+  if (tiles) return std::any_of(part.tiles.begin(), part.tiles.end(), [&](const FacadeTile& t) { return t.name == anchor; });
   return std::any_of(part.anchors.begin(), part.anchors.end(), [&](const ResolvedAnchor& a) { return a.name == anchor; });
 }
 
@@ -171,12 +187,25 @@ void evaluate(EvalContext& ctx) {
   std::set<std::string> names;  // of all anchors there are, for the error below
   const bool upright = ctx.param<bool>(kUpright);
   bool placed_any = false;
+  std::int64_t dropped = 0;
+  const bool tiles = spec.mode == MeshPlacementSpec::Mode::Tiles;
   for (TaggedMesh& part : out.parts) {
-    for (const ResolvedAnchor& a : part.anchors) names.insert(a.name);
-    if (!carries(part, spec.anchor)) continue;  // another building type's mesh
+    if (tiles)
+      for (const FacadeTile& t : part.tiles) names.insert(t.name);
+    else
+      for (const ResolvedAnchor& a : part.anchors) names.insert(a.name);
+    if (!carries(part, spec.anchor, tiles)) continue;  // another building type's mesh
     placed_any = true;
     try {
-      const PlaceMeshReport report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors, spec);
+      if (tiles) {
+        place_in_tiles(part.placed, mesh, part.tiles, spec);
+        continue;
+      }
+      const std::optional<FaceCover> cover =
+          spec.mode == MeshPlacementSpec::Mode::Single || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);
+      const PlaceMeshReport report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors,
+                                                spec, cover ? &*cover : nullptr);
+      dropped += static_cast<std::int64_t>(report.dropped);
       for (const std::string& absent : report.absent)
         ctx.warning((part.building.empty() ? "" : "building " + part.building + ": ") + absent);
     } catch (const PlacementError& e) {
@@ -185,14 +214,17 @@ void evaluate(EvalContext& ctx) {
   }
   if (!placed_any) {
     if (names.empty()) {
-      ctx.warning("anchor '" + spec.anchor + "': the input carries no resolved anchors, nothing is placed");
+      ctx.warning("anchor '" + spec.anchor + "': the input carries no " + (tiles ? "facade tiles" : "resolved anchors") +
+                  ", nothing is placed");
     } else {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
-      return ctx.error("anchor: no anchor named '" + spec.anchor + "' on the input (there are " + list + ")");
+      return ctx.error("anchor: no " + std::string(tiles ? "tiles" : "anchor") + " named '" + spec.anchor +
+                       "' on the input (there are " + list + ")");
     }
   }
   ctx.set_output(0, std::move(out));
+  ctx.set_output(1, dropped);
 }
 
 }  // namespace

@@ -55,6 +55,11 @@ void evaluate(EvalContext& ctx) {
       r.frame.along = turn(r.frame.along), r.frame.up = turn(r.frame.up), r.frame.normal = turn(r.frame.normal);
       r.span_from = point(r.span_from), r.span_to = point(r.span_to);
     }
+    for (FacadeTile& t : part.tiles) {  // sizes scale with the mesh
+      t.frame.origin = point(t.frame.origin);
+      t.frame.along = turn(t.frame.along), t.frame.up = turn(t.frame.up), t.frame.normal = turn(t.frame.normal);
+      t.width *= s, t.height *= s;
+    }
   }
   ctx.set_output(0, std::move(out));
 }

@@ -106,6 +106,12 @@ void hash_anchor(const ResolvedAnchor& a, Hasher& h) {
     hash_vec3(v, h);
 }
 
+void hash_tile(const FacadeTile& t, Hasher& h) {
+  hash_str(t.name, h);
+  h.i64(t.edge_id).f64(t.width).f64(t.height).i64(t.floor).i64(t.bay);
+  for (const glm::dvec3& v : {t.frame.origin, t.frame.along, t.frame.up, t.frame.normal}) hash_vec3(v, h);
+}
+
 // Placed meshes by content (their own face tags included): two runs that
 // read the same file hash alike.
 void hash_placed(const PlacementResult& placed, Hasher& h) {
@@ -136,6 +142,8 @@ void hash_mesh_set(const MeshSet& set, Hasher& h) {
     hash_mesh(*part.mesh, h);
     h.u64(part.anchors.size());
     for (const ResolvedAnchor& a : part.anchors) hash_anchor(a, h);
+    h.u64(part.tiles.size());
+    for (const FacadeTile& t : part.tiles) hash_tile(t, h);
     hash_placed(part.placed, h);
   }
 }
@@ -154,6 +162,8 @@ std::size_t mesh_set_size(const MeshSet& set) {
          part.building.capacity();
     n += part.anchors.capacity() * sizeof(ResolvedAnchor);
     for (const ResolvedAnchor& a : part.anchors) n += a.name.capacity() + a.reason.capacity();
+    n += part.tiles.capacity() * sizeof(FacadeTile);
+    for (const FacadeTile& t : part.tiles) n += t.name.capacity();
     n += part.placed.instances.capacity() * sizeof(Instance) + part.placed.meshes.capacity() * sizeof(PlaceableMesh);
     for (const PlaceableMesh& m : part.placed.meshes) n += mesh_size(*m.mesh);
   }

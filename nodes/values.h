@@ -15,6 +15,7 @@
 #include "core/geom/plan_edit.h"
 #include "core/geom/profile.h"
 #include "core/mesh/mesh.h"
+#include "core/placement/facade_split.h"
 #include "core/placement/placement.h"
 
 namespace procex {
@@ -30,6 +31,9 @@ struct TaggedMesh {
   // Where the sweep resolved the footprint's anchors on this mesh (Extrude),
   // in the same coordinates as the mesh: what Mesh placement places at.
   std::vector<ResolvedAnchor> anchors;
+  // Facade tiles on this mesh (Facade Split), in the mesh's coordinates: what
+  // Mesh placement's `tiles` mode places in.
+  std::vector<FacadeTile> tiles;
   // Meshes placed on this one (windows, chimneys), kept as instances
   // (placed.building is null; transforms in the mesh's coordinates): .glb
   // files instance them, OBJ and PLY get them flattened into the mesh.

@@ -1,8 +1,12 @@
 #include "core/placement/place_mesh.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/placement/box.h"
+#include "core/placement/face_cover.h"
 #include "core/placement/frame_transform.h"
 #include "core/placement/placement_error.h"
 #include "core/placement/stretch.h"
@@ -33,18 +37,19 @@ glm::dmat4 shift(const Frame& f, const glm::dvec3& offset) {
 
 // The transforms for one present resolution.
 std::vector<glm::dmat4> transforms(const Box3& box, const ResolvedAnchor& a, const std::vector<ResolvedAnchor>& anchors,
-                                   const MeshPlacementSpec& spec, PlaceMeshReport& report) {
+                                   const MeshPlacementSpec& spec, double z_to, PlaceMeshReport& report) {
   const FramePlacement at{box.at(spec.pivot), spec.scale, spec.offset};
   std::vector<glm::dmat4> out;
   switch (spec.mode) {
     case MeshPlacementSpec::Mode::Single:
+    case MeshPlacementSpec::Mode::Tiles:  // place_in_tiles
       out.push_back(place_at(a.frame, at));
       break;
     case MeshPlacementSpec::Mode::Row:
     case MeshPlacementSpec::Mode::Grid: {
       const bool row = spec.mode == MeshPlacementSpec::Mode::Row;
       for (const Cell& cell : row ? repeat_on_span(a, spec.columns)
-                                  : repeat_grid(a, spec.z_from, spec.z_to, spec.columns, spec.rows))
+                                  : repeat_grid(a, spec.z_from, z_to, spec.columns, spec.rows))
         out.push_back(spec.fit ? shift(cell.frame, spec.offset) * fit_to_cell(box, cell, spec.margin)
                                : place_at(cell.frame, at));
       break;
@@ -66,10 +71,31 @@ std::vector<glm::dmat4> transforms(const Box3& box, const ResolvedAnchor& a, con
   return out;
 }
 
+// The world height of the highest point of `faces` (in a's frame coordinates); the anchor's own if none.
+double top_of(const std::vector<std::vector<glm::dvec2>>& faces, const ResolvedAnchor& a) {
+  double top = 0;
+  for (const auto& face : faces)
+    for (const glm::dvec2& p : face) top = std::max(top, p.y);
+  return a.frame.origin.z + top * a.frame.up.z;
+}
+
+// Whether the box, placed by t, lies on `faces` (in a's frame coordinates) seen along a's normal.
+bool on_face(const Box3& box, const glm::dmat4& t, const ResolvedAnchor& a, const std::vector<std::vector<glm::dvec2>>& faces) {
+  glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 corner(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z);
+    const glm::dvec3 d = glm::dvec3(t * glm::dvec4(corner, 1.0)) - a.frame.origin;
+    const glm::dvec2 p(glm::dot(d, a.frame.along), glm::dot(d, a.frame.up));
+    lo = glm::min(lo, p), hi = glm::max(hi, p);
+  }
+  return covered(faces, lo, hi);
+}
+
 }  // namespace
 
 PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
-                           const std::vector<ResolvedAnchor>& anchors, const MeshPlacementSpec& spec) {
+                           const std::vector<ResolvedAnchor>& anchors, const MeshPlacementSpec& spec,
+                           const FaceCover* cover) {
   const std::vector<const ResolvedAnchor*> resolutions = named(anchors, spec.anchor);
   if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
   const Box3 box = bounds(*mesh.mesh);
@@ -80,8 +106,21 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
       report.absent.push_back(where(*a) + " is absent: " + a->reason);
       continue;
     }
+    const bool clipped = cover && spec.mode != MeshPlacementSpec::Mode::Single;
+    const auto faces = clipped ? cover->faces_in_plane(a->edge_id, a->frame) : std::vector<std::vector<glm::dvec2>>();
     try {
-      for (const glm::dmat4& t : transforms(box, *a, anchors, spec, report)) placed.push_back({0, t, spec.tag, a->edge_id});
+      double z_to = spec.z_to;
+      if (spec.z_to_top) {
+        if (!clipped) throw PlacementError("z_to_top needs the anchor's face: a grid, not stood upright");
+        z_to = top_of(faces, *a);
+      }
+      for (const glm::dmat4& t : transforms(box, *a, anchors, spec, z_to, report)) {
+        if (clipped && !on_face(box, t, *a, faces)) {
+          ++report.dropped;
+          continue;
+        }
+        placed.push_back({0, t, spec.tag, a->edge_id});
+      }
     } catch (const PlacementError& e) {
       throw PlacementError(where(*a) + ": " + e.what());
     }
@@ -91,6 +130,34 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
     in.mesh = index;
     result.add_instance(std::move(in));
   }
+  report.instances = placed.size();
+  return report;
+}
+
+PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mesh, const std::vector<FacadeTile>& tiles,
+                               const MeshPlacementSpec& spec) {
+  if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
+  const Box3 box = bounds(*mesh.mesh);
+  const FramePlacement at{box.at(spec.pivot), spec.scale, spec.offset};
+  std::vector<Instance> placed;
+  for (const FacadeTile& t : tiles) {
+    if (t.name != spec.anchor || t.floor < spec.floor_from || t.floor > spec.floor_to) continue;
+    Cell cell{t.frame, t.width, t.height, t.bay, t.floor};
+    cell.frame.origin += t.height / 2 * t.frame.up;  // a cell's origin is its centre
+    try {
+      placed.push_back({0, spec.fit ? shift(cell.frame, spec.offset) * fit_to_cell(box, cell, spec.margin) : place_at(t.frame, at),
+                        spec.tag, t.edge_id});
+    } catch (const PlacementError& e) {
+      throw PlacementError("tile '" + t.name + "' on edge " + std::to_string(t.edge_id) + ", floor " + std::to_string(t.floor) +
+                           ", bay " + std::to_string(t.bay) + ": " + e.what());
+    }
+  }
+  const std::size_t index = result.add_mesh(mesh);
+  for (Instance& in : placed) {
+    in.mesh = index;
+    result.add_instance(std::move(in));
+  }
+  PlaceMeshReport report;
   report.instances = placed.size();
   return report;
 }

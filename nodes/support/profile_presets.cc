@@ -17,7 +17,7 @@ double inward(double pitch_deg, double rise) { return rise * std::tan(pitch_deg 
 
 const std::vector<std::string>& preset_names() {
   static const std::vector<std::string> kNames = {"vertical_wall", "hip", "gable_end", "mansard", "overhanging_eave",
-                                                  "curved"};
+                                                  "curved",        "overhanging_gable", "setback"};
   return kNames;
 }
 
@@ -43,6 +43,30 @@ Profile make_preset(std::string_view preset, const PresetSize& s) {
     return {name,
             {{0, 0}, {0, s.height}, {s.overhang, s.height}, {s.overhang - inward(s.pitch_deg, s.roof_height), top}},
             {"wall", "soffit", "roof"}};
+  }
+  if (preset == "overhanging_gable") {
+    // The verge over a gable wall: out by the eaves' overhang at their height, so the roof planes of the
+    // overhanging_eave edges meet it there.
+    require(s.overhang > 0, "overhanging_gable: overhang must be positive");
+    return {name, {{0, 0}, {0, s.height}, {s.overhang, s.height}, {s.overhang, s.height + s.roof_height}},
+            {"wall", "soffit", "gable"}};
+  }
+  if (preset == "setback") {
+    // Tiers `height` high, each stepping in by `overhang`, up to `roof_height`, where the sweep caps it.
+    require(s.overhang > 0, "setback: overhang (the step) must be positive");
+    require(s.roof_height <= 1000 * s.height, "setback: more than 1000 tiers");
+    Profile p{name, {{0, 0}}, {}};
+    double x = 0, z = 0;
+    while (z + s.height < s.roof_height * (1 - 1e-9)) {
+      z += s.height;
+      p.points.push_back({x, z});
+      x -= s.overhang;
+      p.points.push_back({x, z});
+      p.tags.insert(p.tags.end(), {"wall", "ledge"});
+    }
+    p.points.push_back({x, s.roof_height});
+    p.tags.push_back("wall");
+    return p;
   }
   if (preset == "curved") {
     // A quarter circle of radius roof_height bending inward from vertical to flat.

@@ -1,0 +1,82 @@
+// The recipes of issue 15: the barn's five sizes typed once, and the set-back
+// tower's windows only where its walls are, checked against the faces.
+#include <gtest/gtest.h>
+
+#include "core/mesh/validate.h"
+#include "core/placement/face_cover.h"
+#include "graph/pxg.h"
+#include "nodes/values.h"
+#include "tests/nodes/node_runner.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kSamples = PROCEX_SAMPLES;
+
+const MeshSet& mesh_of(const EvalResult& r) {
+  const Value* v = r.output("mesh");
+  if (!v) throw std::runtime_error("no mesh: " + (r.diagnostics.empty() ? std::string() : r.diagnostics[0].to_string()));
+  return v->get<MeshSet>();
+}
+
+double top_of(const Mesh& m) {
+  double top = -HUGE_VAL;
+  for (auto v : m.vertices()) top = std::max(top, m.point(v)[2]);
+  return top;
+}
+
+TEST(BarnSample, EachSizeTypedOnceFollowsEverywhere) {
+  Graph g = load_pxg(kSamples / "barn.pxg");
+  const MeshSet a = mesh_of(test::evaluate_mesh(g, kSamples));
+  ASSERT_EQ(a.parts.size(), 1u);
+  EXPECT_TRUE(validate(*a.parts[0].mesh).ok());
+  // Wall height and overhang move the eaves and the verges (a second node) together: still closed.
+  ASSERT_TRUE(g.set_exposed("wall_height", Value::make(6.0)));
+  ASSERT_TRUE(g.set_exposed("overhang", Value::make(1.2)));
+  ASSERT_TRUE(g.set_exposed("width", Value::make(16.0)));
+  const MeshSet b = mesh_of(test::evaluate_mesh(g, kSamples));
+  EXPECT_TRUE(validate(*b.parts[0].mesh).ok());
+  double lo_x = HUGE_VAL, hi_x = -HUGE_VAL, lo_y = HUGE_VAL, hi_y = -HUGE_VAL;
+  for (auto v : b.parts[0].mesh->vertices()) {
+    const auto& p = b.parts[0].mesh->point(v);
+    lo_x = std::min(lo_x, p[0]), hi_x = std::max(hi_x, p[0]);
+    lo_y = std::min(lo_y, p[1]), hi_y = std::max(hi_y, p[1]);
+  }
+  // The eaves and the verges both reach 1.2 m past the 16 x 24 m walls.
+  EXPECT_NEAR(hi_x - lo_x, 16 + 2 * 1.2, 1e-6);
+  EXPECT_NEAR(hi_y - lo_y, 24 + 2 * 1.2, 1e-6);
+  // The ridge of a 50-degree roof over 16 + 2.4 m, from 6 m eaves.
+  EXPECT_NEAR(top_of(*b.parts[0].mesh), 6 + (16 + 2.4) / 2 / std::tan(50 * M_PI / 180), 1e-6);
+}
+
+TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
+  const Graph g = load_pxg(kSamples / "setback_tower.pxg");
+  const EvalResult r = test::evaluate_mesh(g, kSamples);
+  const MeshSet& set = mesh_of(r);
+  ASSERT_EQ(set.parts.size(), 1u);
+  const TaggedMesh& part = set.parts[0];
+  EXPECT_TRUE(validate(*part.mesh).ok());
+  EXPECT_NEAR(top_of(*part.mesh), 69, 1e-9);
+  const FaceCover cover(*part.mesh);
+  std::size_t tiles = 0;
+  for (const FacadeTile& a : part.tiles) {
+    ASSERT_EQ(a.name, "tile");
+    ++tiles;
+    // The tile lies on its edge's faces in its plane, checked point by point against the mesh's faces too.
+    EXPECT_TRUE(cover.covers(a.edge_id, a.frame, {-a.width / 2, 0}, {a.width / 2, a.height}));
+    EXPECT_LE(a.frame.origin.z + a.height, 69 + 1e-9);
+    const auto faces = cover.faces_in_plane(a.edge_id, a.frame);
+    double face_top = -HUGE_VAL, face_bottom = HUGE_VAL;
+    for (const auto& f : faces)
+      for (const glm::dvec2& p : f) face_top = std::max(face_top, p.y), face_bottom = std::min(face_bottom, p.y);
+    EXPECT_LE(a.height, face_top + 1e-9) << "tile above its wall on edge " << a.edge_id;
+    EXPECT_GE(0.0, face_bottom - 1e-9) << "tile below its wall on edge " << a.edge_id;
+  }
+  EXPECT_GT(tiles, 100u);
+  // One window per tile, fitted into it.
+  ASSERT_EQ(part.placed.instances.size(), tiles);
+}
+
+}  // namespace
+}  // namespace procex
