@@ -42,7 +42,7 @@ void declare(NodeDecl& d) {
         "`row` a row across the face at the anchor's height, `grid` rows and columns up the face between z_from "
         "and z_to, `stretch` from `anchor` (the mesh's bottom) to `top_anchor` (its top) on the same edge. Rows "
         "and columns take `rows` / `columns` items, or one every `row_spacing` / `column_spacing` metres as the "
-        "face allows (rounding, fill, layout and margins apply to both). Row, grid and stretch items whose mesh, "
+        "face allows (rounding, fill, layout and margins apply to both). Row and grid items whose mesh, "
         "seen along the face's normal, is not wholly on the anchor's face (above the roof line, across a set-back, "
         "past a corner) are dropped and counted in `dropped`. A grid's z_to may be an expression of the recipe's "
         "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
@@ -84,7 +84,7 @@ void declare(NodeDecl& d) {
   d.param<std::int64_t>("floor_from").default_value<std::int64_t>(0).range(0, 10000).doc("tiles: the lowest floor placed in");
   d.param<std::int64_t>("floor_to").default_value<std::int64_t>(10000).range(0, 10000).doc("tiles: the highest floor placed in");
   d.output<MeshSet>("mesh");
-  d.output<std::int64_t>("dropped").doc("row, grid and stretch items left out: not wholly on their face");
+  d.output<std::int64_t>("dropped").doc("row and grid items left out: not wholly on their face");
   d.hash_extra(hash_file);
 }
 
@@ -202,7 +202,7 @@ void evaluate(EvalContext& ctx) {
         continue;
       }
       const std::optional<FaceCover> cover =
-          spec.mode == MeshPlacementSpec::Mode::Single || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);
+          (spec.mode != MeshPlacementSpec::Mode::Row && spec.mode != MeshPlacementSpec::Mode::Grid) || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);
       const PlaceMeshReport report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors,
                                                 spec, cover ? &*cover : nullptr);
       dropped += static_cast<std::int64_t>(report.dropped);

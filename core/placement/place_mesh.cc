@@ -106,7 +106,7 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
       report.absent.push_back(where(*a) + " is absent: " + a->reason);
       continue;
     }
-    const bool clipped = cover && spec.mode != MeshPlacementSpec::Mode::Single;
+    const bool clipped = cover && (spec.mode == MeshPlacementSpec::Mode::Row || spec.mode == MeshPlacementSpec::Mode::Grid);
     const auto faces = clipped ? cover->faces_in_plane(a->edge_id, a->frame) : std::vector<std::vector<glm::dvec2>>();
     try {
       double z_to = spec.z_to;

@@ -44,17 +44,18 @@ struct MeshPlacementSpec {
 struct PlaceMeshReport {
   std::size_t instances = 0;
   std::vector<std::string> absent;  // one line per resolution that placed nothing, with the reason
-  std::size_t dropped = 0;          // Row, Grid and Stretch items not wholly on their face (see `cover`)
+  std::size_t dropped = 0;          // Row and Grid items not wholly on their face (see `cover`)
 };
 
 class FaceCover;
 
 // Adds the mesh (once) and its instances to `result`; each instance's source
 // edge is its anchor's edge. With `cover` (the faces of the building the
-// anchors were resolved on), a Row, Grid or Stretch item whose mesh's bounds,
-// seen along the face's normal, do not lie wholly on the anchor's face is
-// dropped and counted: no window above the roof line, across a set-back or
-// past a corner. Throws PlacementError, leaving `result` as it
+// anchors were resolved on), a Row or Grid item whose mesh's bounds, seen
+// along the face's normal, do not lie wholly on the anchor's face is dropped
+// and counted: no window above the roof line, across a set-back or past a
+// corner. Stretch items are not: they span their own two anchors, and often
+// stand free of the face on purpose (a pillar under a jetty, moved out). Throws PlacementError, leaving `result` as it
 // was, if no resolution carries the anchor's name (the message lists the
 // names there are), or for a bad spec (repetition, fit or frame errors,
 // naming the anchor and edge).
