@@ -1,4 +1,5 @@
-// The Mesh Placement node on a hipped 10 x 6 m block whose anchors are
+// The Mesh Placement node on a 10 x 6 m block with 6 m walls (rows and
+// grids are clipped to the faces, so the anchors lie on them) whose anchors are
 // resolved by hand (tests/nodes/hand_anchors.h): counts and positions per
 // mode, absent anchors as warnings, mistakes as errors naming what is wrong.
 #include <filesystem>
@@ -16,12 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_node;
 
-const Footprint kPlan = make_footprint({{{0, 0}, {10, 0}, {10, 6}, {0, 6}}}, 45);
+const Footprint kPlan = make_footprint({{{0, 0}, {10, 0}, {10, 6}, {0, 6}}}, 0);
 
 // Extrude's block with anchors "sill" (1 m up, mid-wall) and "eave" (3 m up)
 // on every wall; `absent` edges lost at the sill.
 Value block(const std::vector<int>& absent = {}) {
-  const auto r = run_node("Extrude", {}, {{"footprint", Value::make(kPlan)}});
+  const auto r = run_node("Extrude", {{"max_height", Value::make(6.0)}}, {{"footprint", Value::make(kPlan)}});
   EXPECT_TRUE(r.ok()) << r.messages();
   MeshSet set = r.outputs.at(0).get<MeshSet>();
   set.parts.at(0).building = "b7";
@@ -67,7 +68,7 @@ TEST(MeshPlacement, RowsFollowEachFacadesLength) {
                         {"column_spacing", Value::make(2.0)}, {"tag", Value::make(std::string("window"))}});
   ASSERT_TRUE(r.ok()) << r.messages();
   const TaggedMesh& p = part(r);
-  EXPECT_EQ(p.placed.instances.size(), 5u + 3u + 5u + 3u);  // every 2 m: 10 m walls get 5, 6 m walls 3
+  ASSERT_EQ(p.placed.instances.size(), 5u + 3u + 5u + 3u);  // every 2 m: 10 m walls get 5, 6 m walls 3
   EXPECT_EQ(p.placed.instances[0].tag, "window");
   const auto counted = place({{"anchor", Value::make(std::string("sill"))}, {"mode", mode("row")},
                               {"columns", Value::make<std::int64_t>(2)}});
@@ -80,6 +81,22 @@ TEST(MeshPlacement, GridAndStretch) {
                            {"z_from", Value::make(1.0)}, {"z_to", Value::make(4.0)}});
   ASSERT_TRUE(grid.ok()) << grid.messages();
   EXPECT_EQ(part(grid).placed.instances.size(), 4u * 2u * 3u);
+  EXPECT_EQ(grid.outputs.at(1).get<std::int64_t>(), 0);
+  // Four 1.5 m rows from 1 m, windows centred in them: the fourth (5.5 to 7 m) passes the 6 m walls.
+  const Value centred = Value::make(Vec3{0.5, 0.5, 0.0});
+  const auto tall = place({{"anchor", Value::make(std::string("sill"))}, {"mode", mode("grid")}, {"pivot", centred},
+                           {"columns", Value::make<std::int64_t>(2)}, {"rows", Value::make<std::int64_t>(4)},
+                           {"z_from", Value::make(1.0)}, {"z_to", Value::make(7.0)}});
+  ASSERT_TRUE(tall.ok()) << tall.messages();
+  EXPECT_EQ(part(tall).placed.instances.size(), 4u * 2u * 3u);
+  EXPECT_EQ(tall.outputs.at(1).get<std::int64_t>(), 8);
+  // z_to_top: up to each face's own top (6 m), whatever z_to says: (6 - 1) / 1.5 gives 3 rows.
+  const auto top = place({{"anchor", Value::make(std::string("sill"))}, {"mode", mode("grid")}, {"pivot", centred},
+                          {"columns", Value::make<std::int64_t>(2)}, {"row_spacing", Value::make(1.5)},
+                          {"z_from", Value::make(1.0)}, {"z_to", Value::make(100.0)}, {"z_to_top", Value::make(true)}});
+  ASSERT_TRUE(top.ok()) << top.messages();
+  EXPECT_EQ(part(top).placed.instances.size(), 4u * 2u * 3u);
+  EXPECT_EQ(top.outputs.at(1).get<std::int64_t>(), 0);
   const auto pillar = place({{"anchor", Value::make(std::string("sill"))}, {"top_anchor", Value::make(std::string("eave"))},
                              {"mode", mode("stretch")}});
   ASSERT_TRUE(pillar.ok()) << pillar.messages();
