@@ -53,7 +53,7 @@ TEST(Split, MistakesNameTheCharacter) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(refusal("3 {2}* {1}*"), "split '3 {2}* {1}*', character 7: only one repeated group is allowed");
+  EXPECT_EQ(refusal("3 {2}* {1}*"), "split '3 {2}* {1}*', character 8: only one repeated group is allowed");
   EXPECT_EQ(refusal("{3 {1}*}*"), "split '{3 {1}*}*', character 4: groups do not nest");
   EXPECT_EQ(refusal("{3}"), "split '{3}', character 4: '*' expected after the group ('{...}*' or '{...}*3')");
   EXPECT_EQ(refusal("{3"), "split '{3', character 1: the group is not closed with '}*'");

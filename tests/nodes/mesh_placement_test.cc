@@ -116,7 +116,7 @@ TEST(MeshPlacement, AbsentAnchorsAreWarningsNotErrors) {
 }
 
 TEST(MeshPlacement, InputWithoutAnchorsPassesWithAWarning) {
-  const auto plain = run_node("Extrude", {}, {{"footprint", Value::make(kPlan)}});
+  const auto plain = run_node("Extrude", {{"max_height", Value::make(6.0)}}, {{"footprint", Value::make(kPlan)}});
   const auto r = place({}, plain.outputs.at(0));
   ASSERT_TRUE(r.ok()) << r.messages();
   EXPECT_TRUE(part(r).placed.instances.empty());
