@@ -1,13 +1,23 @@
 #!/usr/bin/env bash
-# A short fuzz session of the .pxg loader (CI runs it after the tests).
-#   fuzz/run.sh [seconds]      builds build-fuzz/ with clang + ASan/UBSan + libFuzzer
+# Fuzzes every reader of untrusted files for a while (CI runs a short session
+# after the tests; run a longer one before a stop and note it in TESTING.md).
+#   fuzz/run.sh [seconds per target] [target...]   targets: pxg geojson polyjson obj glb (default: all)
+# Builds build-fuzz/ with clang + ASan/UBSan + libFuzzer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
+seconds=${1:-12}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(pxg geojson polyjson obj glb)
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPROCEX_FUZZ=ON \
   -DPROCEX_SANITIZE=ON -DPROCEX_STUDIO=OFF -DPROCEX_BENCH=OFF >/dev/null
-cmake --build build-fuzz --target procex_pxg_fuzz -j "${PROCEX_JOBS:-$(nproc)}"
-mkdir -p build-fuzz/corpus
-# New inputs go to the first (scratch) folder; the seed corpus in fuzz/corpus stays as committed.
-build-fuzz/fuzz/procex_pxg_fuzz -max_total_time="$seconds" -max_len=4096 -rss_limit_mb=1024 \
-  -print_final_stats=1 build-fuzz/corpus fuzz/corpus
+binaries=()
+for t in "${targets[@]}"; do binaries+=("procex_${t}_fuzz"); done
+cmake --build build-fuzz --target "${binaries[@]}" -j "${PROCEX_JOBS:-$(nproc)}"
+for t in "${targets[@]}"; do
+  mkdir -p "build-fuzz/corpus/$t"
+  echo "== fuzz $t: ${seconds}s"
+  # New inputs go to the first (scratch) folder; the seed corpus in fuzz/corpus/<t> stays as committed.
+  "build-fuzz/fuzz/procex_${t}_fuzz" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=1024 -timeout=20 \
+    -print_final_stats=1 "build-fuzz/corpus/$t" "fuzz/corpus/$t"
+done

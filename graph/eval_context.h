@@ -13,11 +13,14 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "base/confined_path.h"
 #include "graph/cancel.h"
 #include "graph/diagnostic.h"
 #include "graph/node_decl.h"
@@ -33,12 +36,26 @@ struct Cancelled : std::runtime_error {
 class EvalContext {
  public:
   EvalContext(const NodeDecl& decl, const std::vector<Value>& params, const std::vector<Value>& inputs,
-              const CancelToken& cancel, const std::filesystem::path& folder = {})
-      : decl_(decl), params_(params), inputs_(inputs), outputs_(decl.outputs().size()), cancel_(cancel), folder_(folder) {}
+              const CancelToken& cancel, const std::filesystem::path& folder = {},
+              std::span<const std::filesystem::path> allowed_folders = {})
+      : decl_(decl),
+        params_(params),
+        inputs_(inputs),
+        outputs_(decl.outputs().size()),
+        cancel_(cancel),
+        folder_(folder),
+        allowed_folders_(allowed_folders) {}
 
   const NodeDecl& decl() const { return decl_; }
   // Where relative file paths in parameters resolve (EvalOptions::folder; usually the recipe's).
   const std::filesystem::path& folder() const { return folder_; }
+  // The file a parameter names, resolved against folder() and confined to it
+  // or to EvalOptions::allowed_folders, symlinks followed (a shared recipe
+  // must not read or write elsewhere). Throws IoError naming it otherwise,
+  // which fails the node. Every node that reads or writes a file uses this.
+  std::filesystem::path file(std::string_view name) const {
+    return confined_path(folder_, name, allowed_folders_);
+  }
 
   // False for an unconnected optional input.
   bool has_input(std::size_t i) const { return !inputs_.at(i).empty(); }
@@ -108,6 +125,7 @@ class EvalContext {
   bool failed_ = false;
   const CancelToken& cancel_;
   std::filesystem::path folder_;
+  std::span<const std::filesystem::path> allowed_folders_;
 };
 
 }  // namespace procex

@@ -529,7 +529,7 @@ class Run {
       n.state = State::kCancelled;
       return;
     }
-    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder);
+    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders);
     const auto t0 = Clock::now();
     try {
       n.node->type->evaluate(ctx);

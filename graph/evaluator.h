@@ -43,6 +43,9 @@ struct EvalOptions {
   // Relative file paths in parameters resolve against this folder, usually the
   // recipe's (EvalContext::folder(), NodeDecl::hash_extra). Empty: the working directory.
   std::filesystem::path folder;
+  // Files named by parameters must lie inside `folder` or one of these
+  // (EvalContext::file, base/confined_path.h): what `--allow-path` adds.
+  std::vector<std::filesystem::path> allowed_folders;
   // hash_outputs only: graph inputs without binding or default count as bound
   // (to a value known only by name), so checking a recipe before its inputs
   // are known reports every other problem. evaluate() asserts it is off.

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "base/atomic_write.h"  // write_file_atomically: save_pxg uses it, and so do editors
+#include "base/json_depth.h"
 #include "graph/graph.h"
 
 namespace procex {
@@ -42,7 +43,7 @@ inline constexpr int kPxgVersion = 2;
 
 struct PxgLimits {
   std::size_t max_file_bytes = std::size_t{32} << 20;
-  std::size_t max_depth = 64;        // JSON nesting
+  std::size_t max_depth = kMaxJsonDepth;  // JSON nesting
   std::size_t max_nodes = 100000;    // per graph
   std::size_t max_links = 400000;    // per graph
   std::size_t max_string = 1 << 16;  // bytes per JSON string
@@ -55,6 +56,8 @@ struct PxgOptions {
   // Group library files must resolve inside this folder. Empty: the folder of
   // the top-level recipe.
   std::filesystem::path root;
+  // ... or inside one of these (what `--allow-path` adds; base/confined_path.h).
+  std::vector<std::filesystem::path> allowed_folders;
   // Non-fatal notes (migrated from an older version...) are appended here.
   std::vector<std::string>* warnings = nullptr;
 };

@@ -1,12 +1,13 @@
 // Reading .pxg files. Everything in a file is untrusted: each check names the
 // file and a JSON pointer (or line and column for syntax errors).
 #include <algorithm>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "base/confined_path.h"
+#include "base/json_depth.h"
+#include "base/read_file.h"
 #include "graph/pxg.h"
 #include "graph/pxg_migrate.h"
 
@@ -68,33 +69,13 @@ struct Loader {
     throw PxgError(file, where, message);
   }
 
-  // Refuses nesting beyond the limit before the JSON parser sees it.
-  void check_depth(std::string_view text, const std::string& file) const {
-    std::size_t depth = 0;
-    bool in_string = false, escaped = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      const char c = text[i];
-      if (in_string) {
-        if (escaped) escaped = false;
-        else if (c == '\\') escaped = true;
-        else if (c == '"') in_string = false;
-      } else if (c == '"') {
-        in_string = true;
-      } else if (c == '[' || c == '{') {
-        if (++depth > options.limits.max_depth)
-          fail(file, line_column(text, i), "nesting deeper than " + std::to_string(options.limits.max_depth) + " levels");
-      } else if ((c == ']' || c == '}') && depth > 0) {
-        --depth;
-      }
-    }
-  }
-
   Graph parse_file_text(std::string_view text, const fs::path& path, std::size_t group_depth) {
     const std::string file = path.string();
     if (text.size() > options.limits.max_file_bytes)
       fail(file, "", "file is " + std::to_string(text.size()) + " bytes; the limit is " +
                          std::to_string(options.limits.max_file_bytes));
-    check_depth(text, file);
+    if (const auto at = json_too_deep_at(text, options.limits.max_depth))
+      fail(file, line_column(text, *at), "nesting deeper than " + std::to_string(options.limits.max_depth) + " levels");
     json j;
     try {
       j = json::parse(text);
@@ -103,6 +84,8 @@ struct Loader {
       // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "; keep the reason.
       if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
       fail(file, line_column(text, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + what);
+    } catch (const json::exception& e) {  // a number beyond double range (out_of_range.406)
+      fail(file, "", std::string("unreadable JSON: ") + e.what());
     }
     if (!j.is_object()) fail(file, "", "expected a JSON object at the top");
     auto format = j.find("format");
@@ -129,17 +112,13 @@ struct Loader {
   }
 
   Graph load_file(const fs::path& path, const std::string& from_file, const std::string& where, std::size_t group_depth) {
-    std::error_code ec;
-    const auto size = fs::file_size(path, ec);
-    if (ec) fail(from_file, where, "cannot read " + path.string() + ": " + ec.message());
-    if (size > options.limits.max_file_bytes)
-      fail(path.string(), "", "file is " + std::to_string(size) + " bytes; the limit is " +
-                                  std::to_string(options.limits.max_file_bytes));
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) fail(from_file, where, "cannot read " + path.string());
-    return parse_file_text(text.str(), path, group_depth);
+    std::string text;
+    try {
+      text = read_file(path, options.limits.max_file_bytes);
+    } catch (const IoError& e) {
+      fail(from_file, where, e.what());
+    }
+    return parse_file_text(text, path, group_depth);
   }
 
   // ---- typed access with pointers ----
@@ -257,12 +236,13 @@ struct Loader {
     if (ref.empty() || rel.is_absolute() || rel.has_root_name())
       fail(file, where, "group file '" + ref + "' must be a path relative to the recipe's folder");
     const fs::path from_dir = fs::path(file).parent_path();
-    std::error_code ec;
-    const fs::path target = fs::weakly_canonical(fs::absolute(from_dir / rel), ec);
-    if (ec) fail(file, where, "cannot resolve group file '" + ref + "': " + ec.message());
-    const auto [root_end, target_it] = std::mismatch(root.begin(), root.end(), target.begin(), target.end());
-    if (root_end != root.end())
-      fail(file, where, "group file '" + ref + "' lies outside the recipe's folder " + root.string());
+    fs::path target;
+    try {
+      std::error_code ec;
+      target = confined_path(root, fs::absolute(from_dir / rel, ec).string(), options.allowed_folders);
+    } catch (const IoError& e) {
+      fail(file, where, "group file '" + ref + "': " + e.what());
+    }
     if (std::find(chain.begin(), chain.end(), target) != chain.end())
       fail(file, where, "group file '" + ref + "' includes itself (through " + std::to_string(chain.size()) + " files)");
     if (auto known = libraries.find(target); known != libraries.end()) return known->second;

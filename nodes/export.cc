@@ -19,9 +19,11 @@ void declare(NodeDecl& d) {
 }
 
 void evaluate(EvalContext& ctx) {
-  const std::filesystem::path path = ctx.folder() / ctx.param<std::string>(0);
-  if (!is_mesh_file(path)) return ctx.error("file: '" + path.string() + "' does not end in .obj, .ply or .glb");
+  const std::string& file = ctx.param<std::string>(0);
+  if (!is_mesh_file(file)) return ctx.error("file: '" + file + "' does not end in .obj, .ply or .glb");
+  std::filesystem::path path;
   try {
+    path = ctx.file(file);
     write_mesh_set(path, ctx.input<MeshSet>(0));
   } catch (const IoError& e) {
     return ctx.error(e.what());

@@ -33,7 +33,7 @@ void evaluate(EvalContext& ctx) {
   const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(2));
   GeoJsonCollection collection;
   try {
-    collection = read_geojson_file(ctx.folder() / file);
+    collection = read_geojson_file(ctx.file(file));
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }

@@ -171,16 +171,17 @@ bool carries(const TaggedMesh& part, const std::string& anchor, bool tiles) {
 void evaluate(EvalContext& ctx) {
   const std::string& file = ctx.param<std::string>(kFile);
   if (file.empty()) return ctx.error("file: no mesh file given (an .obj, relative to the recipe's folder)");
-  const fs::path path = ctx.folder() / file;
+  fs::path path;
   SharedMesh read;
   try {
+    path = ctx.file(file);
     read = read_shared(path);
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }
   for (const std::string& w : read.warnings) ctx.warning(w);
   const std::string& name = ctx.param<std::string>(kName);
-  const PlaceableMesh mesh{name.empty() ? path.stem().string() : name, read.mesh};
+  const PlaceableMesh mesh{name.empty() ? fs::path(file).stem().string() : name, read.mesh};
   const MeshPlacementSpec spec = spec_of(ctx);
 
   MeshSet out = ctx.input<MeshSet>(0);

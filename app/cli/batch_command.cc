@@ -2,22 +2,30 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
-#include <cstdio>
+#include <charconv>
 #include <mutex>
 #include <ostream>
+#include <set>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
-#include "core/io/atomic_write.h"
+#include "app/cli/report_text.h"
+#include "base/atomic_file_set.h"
+#include "base/read_file.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
+#include "graph/hash.h"
 #include "nodes/support/mesh_export.h"
 #include "nodes/support/mesh_summary.h"
 
@@ -30,6 +38,7 @@ struct Building {
   const GeoJsonFeature* feature = nullptr;  // null: the feature could not be read
   std::string status = "ok";                // ok, refused (unreadable feature), failed
   std::string reason;
+  std::string file;  // per-building output: its file name in the folder
   std::vector<std::string> warnings;
   MeshSet meshes;                     // dropped once converted for a single .glb
   GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
@@ -37,18 +46,63 @@ struct Building {
   double ms = 0;
 };
 
-std::string file_name(const std::string& id) {
-  std::string out;
-  for (unsigned char c : id) out += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
-  return out.empty() || out[0] == '.' ? "_" + out : out;
+// What identifies a run's inputs in its report, so that merge can tell the
+// shards of one run from those of another.
+std::string file_hash(const std::filesystem::path& path) {
+  return Hasher().str(read_file(path, kMaxDataFileBytes)).result().hex();
 }
 
-void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb, Building& b) {
+// Per-building file names: the id with characters other than [A-Za-z0-9._-]
+// as '_', cut to a length every file system takes, and made unique (ignoring
+// case, for file systems that fold it) with the feature's index after a '~',
+// which no cleaned id contains: ids that collide once cleaned ("a/b" and
+// "a_b", two ids in another script), repeat, or are too long for a file name
+// never overwrite each other.
+void assign_file_names(std::vector<Building>& buildings, const std::string& format) {
+  constexpr std::size_t kMaxStem = 100;
+  std::set<std::string> used;
+  for (Building& b : buildings) {
+    std::string stem;
+    for (unsigned char c : b.id) stem += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
+    if (stem.empty() || stem[0] == '.') stem.insert(0, "_");
+    const bool cut = stem.size() > kMaxStem;
+    stem.resize(std::min(stem.size(), kMaxStem));
+    std::string key = stem;
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (cut || !used.insert(key).second) stem += "~" + std::to_string(b.index);
+    b.file = stem + format;
+  }
+}
+
+// What the whole batch holds until it is written, counted as buildings finish:
+// a batch over its budget stops early and writes nothing, whatever the order
+// its buildings ran in, instead of running out of memory.
+struct BatchBudget {
+  std::size_t max_faces, max_placed;
+  std::atomic<std::size_t> faces{0}, placed{0};
+  std::atomic<bool> exceeded{false};
+
+  void add(const MeshSet& meshes) {
+    std::size_t f = 0, p = 0;
+    for (const TaggedMesh& part : meshes.parts) {
+      f += part.mesh->n_faces() + part.placed.placed_faces;
+      p += part.placed.instances.size();
+    }
+    if (faces += f; faces > max_faces) exceeded = true;
+    if (placed += p; placed > max_placed) exceeded = true;
+  }
+};
+
+void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb, BatchBudget& budget, Building& b) {
   const auto start = std::chrono::steady_clock::now();
   Graph graph = recipe.graph;
   Bindings bindings = recipe.bindings;
   EvalOptions options = recipe.options;
-  b.warnings = bind_feature(graph, bindings, options, *b.feature);
+  if (const std::vector<std::string> problems = bind_feature(graph, bindings, options, *b.feature); !problems.empty()) {
+    b.status = "refused";
+    for (const std::string& p : problems) b.reason += (b.reason.empty() ? "" : "; ") + p;
+    return;
+  }
   options.parallel = false;  // buildings run in parallel already
   const EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
   for (const Diagnostic& d : r.diagnostics) {
@@ -60,6 +114,8 @@ void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_g
     if (b.reason.empty()) b.reason = "an output is missing";
   } else {
     b.meshes = gather_meshes(r);
+    budget.add(b.meshes);
+    if (budget.exceeded) return;  // the batch is refused: free nothing more
     label_parts(b.meshes, *b.feature);
     b.summary = summarize(b.meshes);
     if (to_glb) {
@@ -106,6 +162,7 @@ nlohmann::ordered_json building_json(const Building& b) {
   j["id"] = b.id;
   j["status"] = b.status;
   j["reason"] = b.reason;
+  if (!b.file.empty()) j["file"] = b.file;
   j["warnings"] = b.warnings;
   const MeshSummary& s = b.summary;
   j["meshes"] = s.meshes;
@@ -126,9 +183,15 @@ bool is_folder_output(const std::filesystem::path& p) {
 }  // namespace
 
 bool parse_shard(const std::string& text, std::size_t& shard, std::size_t& shards) {
+  // Digits only: sscanf's %zu takes "-2" (and wraps it) and overflows silently.
+  auto number = [](std::string_view digits, std::size_t& out) {
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), out);
+    return !digits.empty() && ec == std::errc() && end == digits.data() + digits.size();
+  };
+  const std::size_t slash = text.find('/');
   std::size_t i = 0, n = 0;
-  char slash = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%zu%c%zu%c", &i, &slash, &n, &rest) != 3 || slash != '/' || n == 0 || i >= n)
+  if (slash == std::string::npos || !number(std::string_view(text).substr(0, slash), i) ||
+      !number(std::string_view(text).substr(slash + 1), n) || n == 0 || i >= n)
     return false;
   shard = i, shards = n;
   return true;
@@ -143,7 +206,12 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         << ": use .obj, .ply or .glb\n";
     return kExitUnusableInput;
   }
-  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
+  if (const auto clash = output_clash({options.recipe, options.footprints},
+                                      {per_building ? std::filesystem::path() : options.output, options.report})) {
+    err << "procex batch: " << *clash << "\n";
+    return kExitUnusableInput;
+  }
+  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err);
   if (!recipe) return kExitUnusableInput;
   const std::optional<GeoJsonCollection> opened =
       open_footprints(recipe->graph, options.recipe, options.footprints, "batch", err);
@@ -169,49 +237,74 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   const bool one_glb = !per_building && options.output.extension() == ".glb";
   Evaluator evaluator(cache, kEngineSalt);
   Progress progress(err, buildings.size(), options.progress);
+  BatchBudget budget{options.max_faces, options.max_placed};
   tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
-      if (buildings[i].feature)
-        evaluate_building(*recipe, evaluator, one_glb, buildings[i]);
+      if (buildings[i].feature && !budget.exceeded) evaluate_building(*recipe, evaluator, one_glb, budget, buildings[i]);
       progress.step();
     });
   });
 
+  if (budget.exceeded) {
+    err << "procex batch: refused: the buildings would hold more than " << options.max_faces << " faces or "
+        << options.max_placed << " placed meshes (" << budget.faces << " faces, " << budget.placed
+        << " placed meshes when it stopped), more than one run should hold in memory; nothing written. Split the "
+           "batch with --shard i/N and join the parts with procex merge, or raise --max-faces / --max-placed\n";
+    return kExitUnusableInput;
+  }
   cache.clear();  // per-building results are never asked for again: free them before the write's peak
   const auto evaluated = std::chrono::steady_clock::now();
   std::size_t ok = 0, refused = 0, failed = 0;
+  for (const Building& b : buildings) {
+    if (b.status == "ok") {
+      ++ok;
+      continue;
+    }
+    ++(b.status == "refused" ? refused : failed);
+    err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason << "\n";
+  }
+  if (per_building) assign_file_names(buildings, format);
+  std::string recipe_hash, footprints_hash;  // read when a report is asked for
+  auto report = [&](std::chrono::steady_clock::time_point written) {
+    nlohmann::ordered_json j;
+    j["recipe"] = options.recipe.string();
+    j["footprints"] = options.footprints.string();
+    j["output"] = options.output.string();
+    j["shard"] = {{"index", options.shard}, {"count", options.shards}, {"recipe", recipe_hash},
+                  {"footprints", footprints_hash}};
+    j["buildings"] = nlohmann::ordered_json::array();
+    for (const Building& b : buildings) j["buildings"].push_back(building_json(b));
+    auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
+    j["summary"] = {{"buildings", buildings.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
+                    {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
+                    {"ms", ms(start, std::chrono::steady_clock::now())}};
+    return report_text(j);
+  };
   MeshSet all;
   GltfScene all_gltf;
   try {
+    // Meshes and report both or neither: the report is written (beside its
+    // target) before the meshes, so a report that cannot be written stops the
+    // run before any mesh is replaced; it is put in place with its final
+    // numbers once the meshes are.
+    AtomicFileSet report_file;
+    if (!options.report.empty()) {
+      recipe_hash = file_hash(options.recipe), footprints_hash = file_hash(options.footprints);
+      report_file.add(options.report, report(evaluated));
+    }
     if (per_building) std::filesystem::create_directories(options.output);
     for (Building& b : buildings) {
-      if (b.status == "ok") {
-        ++ok;
-        if (per_building) write_mesh_set(options.output / (file_name(b.id) + format), b.meshes);
-        else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
-        else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
-        continue;
-      }
-      ++(b.status == "refused" ? refused : failed);
-      err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason << "\n";
+      if (b.status != "ok") continue;
+      if (per_building) write_mesh_set(options.output / b.file, b.meshes);
+      else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
+      else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
     }
     if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
     else if (!per_building) write_mesh_set(options.output, all);
-    const auto written = std::chrono::steady_clock::now();
     if (!options.report.empty()) {
-      nlohmann::ordered_json report;
-      report["recipe"] = options.recipe.string();
-      report["footprints"] = options.footprints.string();
-      report["output"] = options.output.string();
-      report["shard"] = {{"index", options.shard}, {"count", options.shards}};
-      report["buildings"] = nlohmann::ordered_json::array();
-      for (const Building& b : buildings) report["buildings"].push_back(building_json(b));
-      auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-      report["summary"] = {{"buildings", buildings.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
-                           {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
-                           {"ms", ms(start, std::chrono::steady_clock::now())}};
-      write_file_atomically(options.report, report.dump(1) + "\n");
+      report_file.add(options.report, report(std::chrono::steady_clock::now()));
+      report_file.commit();
     }
   } catch (const std::exception& e) {  // IoError, or a folder that cannot be made
     err << "procex batch: " << e.what() << "\n";
@@ -219,7 +312,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   }
   out << "procex batch: " << buildings.size() << " buildings: " << ok << " ok, " << refused << " refused, " << failed
       << " failed -> " << options.output.string() << "\n";
-  return failed > 0 ? kExitEvaluationFailed : 0;
+  // Nothing produced is no success, even when every building was only refused.
+  return failed > 0 || ok == 0 ? kExitEvaluationFailed : 0;
 }
 
 }  // namespace procex

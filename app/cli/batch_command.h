@@ -28,13 +28,18 @@ struct BatchCommandOptions {
   int jobs = 0;                      // worker threads; 0 = one per hardware thread
   std::size_t shard = 0, shards = 1;
   std::vector<std::string> settings;  // name=value applied to every building
+  std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
+  // What the whole batch may hold in memory (building faces plus placed
+  // meshes' faces; placed meshes): more is refused, exit 2, nothing written.
+  std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.
 bool parse_shard(const std::string& text, std::size_t& shard, std::size_t& shards);
 
-// 0: every building evaluated; 1: some failed (reported, the rest written);
+// 0: every building evaluated; 1: some failed (reported, the rest written),
+// or none was written (every one refused, or no features);
 // 2: unusable recipe, footprints or output.
 int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostream& err);
 

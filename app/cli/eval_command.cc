@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "core/io/geojson.h"
 #include "core/io/io_error.h"
@@ -15,7 +16,11 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply or .glb\n";
     return kExitUnusableInput;
   }
-  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, err);
+  if (const auto clash = output_clash({options.recipe, options.footprints}, {options.output})) {
+    err << "procex eval: " << *clash << "\n";
+    return kExitUnusableInput;
+  }
+  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err);
   if (!recipe) return kExitUnusableInput;
   std::optional<GeoJsonCollection> collection;
   const GeoJsonFeature* feature = nullptr;
@@ -28,8 +33,10 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
       return kExitUnusableInput;
     }
     feature = *found;
-    for (const std::string& w : bind_feature(recipe->graph, recipe->bindings, recipe->options, *feature))
-      err << options.footprints.string() << ": feature " << feature->id << ": warning: " << w << "\n";
+    const std::vector<std::string> problems = bind_feature(recipe->graph, recipe->bindings, recipe->options, *feature);
+    for (const std::string& p : problems)
+      err << "procex eval: " << options.footprints.string() << ": feature " << feature->id << ": refused: " << p << "\n";
+    if (!problems.empty()) return kExitUnusableInput;
   }
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);

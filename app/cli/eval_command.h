@@ -18,6 +18,7 @@ struct EvalCommandOptions {
   std::vector<std::string> settings;  // name=value: exposed parameters or graph inputs
   std::filesystem::path footprints;   // GeoJSON FeatureCollection; empty: no feature bound
   std::string feature;                // the feature's id, or its index in the file
+  std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <map>
 #include <ostream>
 
 #include "app/cli/recipe_session.h"
@@ -44,24 +45,32 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 }
 
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f) {
-  std::vector<std::string> warnings;
+  std::vector<std::string> problems;
   options.attributes.clear();
   for (const auto& [name, json_text] : f.properties)
     if (json_text != "null") options.attributes.emplace(name, *f.property_text(name));
   bindings["footprint"] = Value::make(to_footprint(f, 45.0));
   if (graph.input_index("building_id")) bindings["building_id"] = Value::make(f.id);
+  std::map<std::string, std::string> property_of;  // setting -> the property that set it
   for (const auto& [name, json_text] : f.properties) {
     const std::string key = identifier(name);
     if (key == "footprint" || key == "building_id" || !names_setting(graph, key)) continue;
+    if (const auto [it, first] = property_of.try_emplace(key, name); !first) {
+      problems.push_back("properties '" + it->second + "' and '" + name + "' both set '" + key +
+                         "': keep one of them in the footprint file");
+      continue;
+    }
     Status s = apply_setting(graph, bindings, key, *f.property_text(name));
-    if (const auto number = f.property_number(name); !s && number) {  // "12 m" for a float parameter
+    if (const auto number = f.property_number(name); !s && number) {  // "12 m", "40 ft" for a number parameter
       char text[32];
       std::snprintf(text, sizeof text, "%.17g", *number);
       s = apply_setting(graph, bindings, key, text);
     }
-    if (!s) warnings.push_back("property " + name + ": " + s.message());
+    if (!s)
+      problems.push_back("property " + name + ": " + s.message() +
+                         " (numbers take a unit of m, ft or ' at most: fix the value in the footprint file)");
   }
-  return warnings;
+  return problems;
 }
 
 void label_parts(MeshSet& meshes, const GeoJsonFeature& f) {

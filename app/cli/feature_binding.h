@@ -29,8 +29,12 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 
 // Binds f to graph (a copy of the recipe) and bindings, and its properties
 // (by their own names) to the attributes expressions read with attr(). Returns
-// one warning per property that names a parameter but does not fit it;
-// properties that name nothing in the recipe are ignored.
+// why the feature cannot be evaluated as given, one line per problem: a
+// property that names a parameter but whose value does not fit it (read
+// strictly: "3,5", "3 storeys" or "0x3" are not 3), or two properties that
+// name the same one (max_height and MAX_HEIGHT). The caller refuses such a
+// feature rather than evaluate it with the recipe's defaults. Properties that
+// name nothing in the recipe are ignored.
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);
 
 // Marks every part with f's id and index (written to .glb extras).

@@ -1,6 +1,7 @@
 // procex: the command line. CLI11 lives in this file only (it costs seconds
 // per translation unit); each subcommand is a plain options struct and a run
 // function in its own <name>_command.{h,cc}, bound here by one add_* function.
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/merge_command.h"
+#include "app/cli/recipe_session.h"
 #include "app/cli/nodes_command.h"
 #include "app/cli/roof_command.h"
 #include "app/cli/stats_command.h"
@@ -21,6 +23,25 @@ namespace {
 
 using Runner = std::function<int()>;
 
+// CLI11's range checks compare, and every comparison with NaN is false: a
+// number option must be finite before its range means anything.
+const CLI::Validator kFinite(
+    [](std::string& text) {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v)) return std::string("not a finite number: ") + text;
+      return std::string();
+    },
+    "FINITE");
+
+// Every command that evaluates a recipe keeps its files inside the recipe's
+// folder unless the user names more folders.
+void add_allow_path(CLI::App* cmd, std::vector<std::filesystem::path>& folders) {
+  cmd->add_option("--allow-path", folders,
+                  "A folder outside the recipe's own whose files the recipe may read or write (repeatable; only for "
+                  "recipes you trust)")
+      ->check(CLI::ExistingDirectory);
+}
+
 Runner add_roof(CLI::App& app) {
   auto options = std::make_shared<RoofOptions>();
   CLI::App* cmd = app.add_subcommand("roof", "Extrude every footprint of a GeoJSON file into a roof, validate it, "
@@ -28,13 +49,13 @@ Runner add_roof(CLI::App& app) {
   cmd->add_option("footprints", options->input, "GeoJSON FeatureCollection of Polygon/MultiPolygon features")
       ->required();
   cmd->add_option("--angle", options->angle_deg, "Angle of every edge, degrees from the vertical (0 = wall)")
-      ->check(CLI::Range(-90.0, 90.0))
+      ->check(kFinite & CLI::Range(-90.0, 90.0))
       ->capture_default_str();
   cmd->add_option("--angles-property", options->angles_property,
                   "Feature property with per-edge angles: one list per ring, one angle per edge");
   cmd->add_option_function<double>(
          "--max-height", [options](double h) { options->max_height = h; }, "Cap the roofs with flat faces at this height")
-      ->check(CLI::PositiveNumber);
+      ->check(kFinite & CLI::PositiveNumber);
   cmd->add_option("-o,--output", options->output, "Mesh file for every feature (.obj or .ply)")->required();
   cmd->add_option("--report", options->report, "JSON report, one entry per feature")->required();
   cmd->add_option("-j,--jobs", options->jobs, "Worker threads (0 = one per hardware thread)")
@@ -53,6 +74,7 @@ Runner add_eval(CLI::App& app) {
                                             "GeoJSON FeatureCollection: bind one feature as `procex batch` does");
   cmd->add_option("--feature", options->feature, "The feature's id, or its index in --footprints")->needs(footprints);
   footprints->needs("--feature");
+  add_allow_path(cmd, options->allowed_paths);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -60,6 +82,7 @@ Runner add_validate(CLI::App& app) {
   auto options = std::make_shared<ValidateCommandOptions>();
   CLI::App* cmd = app.add_subcommand("validate", "Load and type-check a recipe; report problems without evaluating");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
+  add_allow_path(cmd, options->allowed_paths);
   return [cmd, options] { return *cmd ? run_validate(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -68,6 +91,7 @@ Runner add_stats(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("stats", "Evaluate a recipe; print per-node time, cache hits and memory");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
   cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
+  add_allow_path(cmd, options->allowed_paths);
   return [cmd, options] { return *cmd ? run_stats(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -100,7 +124,13 @@ Runner add_batch(CLI::App& app) {
       },
       "Take only features whose index is i modulo N (e.g. $SLURM_ARRAY_TASK_ID/$N)");
   cmd->add_option("--set", options->settings, "name=value applied to every building (repeatable)");
+  cmd->add_option("--max-faces", options->max_faces, "Refuse a batch whose buildings hold more faces (placed meshes' "
+                                                     "included) than this: split it with --shard")
+      ->capture_default_str();
+  cmd->add_option("--max-placed", options->max_placed, "Refuse a batch with more placed meshes than this")
+      ->capture_default_str();
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
+  add_allow_path(cmd, options->allowed_paths);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -122,7 +152,14 @@ int main(int argc, char** argv) {
   std::vector<procex::Runner> commands = {procex::add_roof(app),     procex::add_eval(app),  procex::add_validate(app),
                                           procex::add_stats(app),    procex::add_nodes(app), procex::add_batch(app),
                                           procex::add_merge(app)};
-  CLI11_PARSE(app, argc, argv);
+  app.set_version_flag("--version", "procex 0.1");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints the problem (or the help, or the version); the process
+    // keeps procex's codes: 0 for help and version, 2 for unusable options.
+    return app.exit(e) == 0 ? 0 : procex::kExitUnusableInput;
+  }
   for (const procex::Runner& run : commands)
     if (const int code = run(); code >= 0) return code;
   return 0;

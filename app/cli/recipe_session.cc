@@ -6,9 +6,11 @@
 
 namespace procex {
 
-std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err) {
+std::optional<Graph> load_recipe(const std::filesystem::path& file, const AllowedFolders& allowed, std::ostream& err) {
   try {
-    return load_pxg(file);
+    PxgOptions options;
+    options.allowed_folders = allowed;
+    return load_pxg(file, options);
   } catch (const PxgError& e) {
     err << e.file() << ": " << (e.where().empty() ? "" : e.where() + ": ") << e.message() << "\n";
   } catch (const std::exception& e) {  // filesystem errors from resolving the path
@@ -17,9 +19,10 @@ std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream
   return std::nullopt;
 }
 
-EvalOptions recipe_eval_options(const std::filesystem::path& file) {
+EvalOptions recipe_eval_options(const std::filesystem::path& file, const AllowedFolders& allowed) {
   EvalOptions options;
   options.folder = std::filesystem::absolute(file).parent_path();
+  options.allowed_folders = allowed;
   return options;
 }
 
@@ -65,10 +68,10 @@ std::vector<std::string> mesh_outputs(const Graph& graph) {
 }
 
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
-                                           std::ostream& err) {
-  std::optional<Graph> graph = load_recipe(file, err);
+                                           const AllowedFolders& allowed, std::ostream& err) {
+  std::optional<Graph> graph = load_recipe(file, allowed, err);
   if (!graph) return std::nullopt;
-  MeshRecipe r{std::move(*graph), {}, {}, recipe_eval_options(file)};
+  MeshRecipe r{std::move(*graph), {}, {}, recipe_eval_options(file, allowed)};
   if (!apply_settings(r.graph, r.bindings, settings, err)) return std::nullopt;
   r.outputs = mesh_outputs(r.graph);
   if (r.outputs.empty()) {

@@ -19,12 +19,16 @@ namespace procex {
 inline constexpr int kExitEvaluationFailed = 1;  // a node (or a building) failed
 inline constexpr int kExitUnusableInput = 2;     // the recipe or an input cannot be read, an output not written
 
+// Folders besides the recipe's own that its files may lie in (`--allow-path`,
+// repeatable): a shared recipe reads and writes only inside its folder.
+using AllowedFolders = std::vector<std::filesystem::path>;
+
 // "file: where: message" for a PxgError. nullopt after writing the error to err.
-std::optional<Graph> load_recipe(const std::filesystem::path& file, std::ostream& err);
+std::optional<Graph> load_recipe(const std::filesystem::path& file, const AllowedFolders& allowed, std::ostream& err);
 
 // Options for evaluating the recipe in `file`: its nodes resolve relative
-// paths against the file's folder.
-EvalOptions recipe_eval_options(const std::filesystem::path& file);
+// paths against the file's folder and keep to it and `allowed`.
+EvalOptions recipe_eval_options(const std::filesystem::path& file, const AllowedFolders& allowed);
 
 // Applies "name=value" assignments: to the exposed parameter of that name, else
 // to the graph input of that name (added to bindings). False after writing
@@ -44,7 +48,7 @@ struct MeshRecipe {
 };
 // nullopt after writing the problem to err (load error, bad setting, no mesh output).
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
-                                           std::ostream& err);
+                                           const AllowedFolders& allowed, std::ostream& err);
 
 // Names of the graph outputs whose type is "mesh", in order; empty if none.
 std::vector<std::string> mesh_outputs(const Graph& graph);

@@ -10,9 +10,11 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "app/cli/output_paths.h"
+#include "app/cli/report_text.h"
 #include "core/geom/error.h"
 #include "core/geom/prepare.h"
-#include "core/io/atomic_write.h"
+#include "base/atomic_file_set.h"
 #include "core/io/geojson.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
@@ -142,6 +144,10 @@ nlohmann::ordered_json feature_json(const FeatureResult& r) {
 
 int run_roof(const RoofOptions& options, std::ostream& out, std::ostream& err) {
   const auto start = std::chrono::steady_clock::now();
+  if (const auto clash = output_clash({options.input}, {options.output, options.report})) {
+    err << "procex roof: " << *clash << "\n";
+    return kExitUnusableFile;
+  }
   GeoJsonCollection collection;
   try {
     collection = read_geojson_file(options.input, {options.angles_property, /*require_angles=*/false});
@@ -194,8 +200,12 @@ int run_roof(const RoofOptions& options, std::ostream& out, std::ostream& err) {
                        {"failed", counts[static_cast<int>(Status::Failed)]},
                        {"ms", elapsed_ms(start)}};
   try {
+    // Both or neither: the report is written (beside its target) before the
+    // mesh, and put in place only once the mesh is.
+    AtomicFileSet report_file;
+    report_file.add(options.report, report_text(report));
     write_mesh_file(options.output, meshes);
-    write_file_atomically(options.report, report.dump(1) + "\n");
+    report_file.commit();
   } catch (const IoError& e) {
     err << "procex roof: " << e.what() << "\n";
     return kExitUnusableFile;
@@ -204,7 +214,8 @@ int run_roof(const RoofOptions& options, std::ostream& out, std::ostream& err) {
   const std::size_t failed = counts[static_cast<int>(Status::Failed)];
   out << "procex roof: " << results.size() << " features: " << counts[0] << " ok, " << counts[1] << " refused, "
       << failed << " failed -> " << options.output.string() << ", " << options.report.string() << "\n";
-  return failed > 0 ? kExitFeatureFailed : 0;
+  // Nothing produced is no success, even when every feature was only refused.
+  return failed > 0 || counts[0] == 0 ? kExitFeatureFailed : 0;
 }
 
 }  // namespace procex

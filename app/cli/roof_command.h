@@ -21,8 +21,9 @@ struct RoofOptions {
   int jobs = 0;                  // worker threads; 0 = one per hardware thread
 };
 
-// Exit codes: 0 when no feature failed (refused inputs are not failures),
-// 1 when at least one feature failed, 2 when the input cannot be read or an
+// Exit codes: 0 when no feature failed (refused inputs are not failures) and
+// at least one was written, 1 when at least one feature failed or none was
+// written, 2 when the input cannot be read or an
 // output cannot be written. One line per refused or failed feature goes to
 // `err`, the summary to `out`.
 inline constexpr int kExitFeatureFailed = 1;

@@ -7,13 +7,13 @@
 namespace procex {
 
 int run_stats(const StatsCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<Graph> graph = load_recipe(options.recipe, err);
+  std::optional<Graph> graph = load_recipe(options.recipe, options.allowed_paths, err);
   if (!graph) return kExitUnusableInput;
   Bindings bindings;
   if (!apply_settings(*graph, bindings, options.settings, err)) return kExitUnusableInput;
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);
-  const EvalOptions eval_options = recipe_eval_options(options.recipe);
+  const EvalOptions eval_options = recipe_eval_options(options.recipe, options.allowed_paths);
   const EvalResult cold = evaluator.evaluate(*graph, bindings, {}, eval_options);
   print_diagnostics(cold, options.recipe, err);
   out << options.recipe.string() << ": first evaluation\n";

@@ -13,6 +13,7 @@ namespace procex {
 struct StatsCommandOptions {
   std::filesystem::path recipe;
   std::vector<std::string> settings;
+  std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
 };
 
 // 0, or 1 if a node failed, 2 if the recipe cannot be loaded.

@@ -7,7 +7,7 @@
 namespace procex {
 
 int run_validate(const ValidateCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<Graph> graph = load_recipe(options.recipe, err);
+  std::optional<Graph> graph = load_recipe(options.recipe, options.allowed_paths, err);
   if (!graph) return kExitUnusableInput;
   std::size_t errors = 0, warnings = 0;
   auto report = [&](const Diagnostic& d) {
@@ -19,7 +19,7 @@ int run_validate(const ValidateCommandOptions& options, std::ostream& out, std::
   // graph inputs without a default are bound later, by --set or batch.
   ResultCache cache(1 << 20);
   Evaluator evaluator(cache, kEngineSalt);
-  EvalOptions hash_options = recipe_eval_options(options.recipe);
+  EvalOptions hash_options = recipe_eval_options(options.recipe, options.allowed_paths);
   hash_options.assume_inputs_bound = true;
   for (const Diagnostic& d : evaluator.hash_outputs(*graph, {}, {}, hash_options).diagnostics) report(d);
   // Not a problem: batch binds `footprint` per feature, --set binds the rest.

@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <vector>
 
 namespace procex {
 
 struct ValidateCommandOptions {
   std::filesystem::path recipe;
+  std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
 };
 
 // Inputs without a default are noted (batch binds them), not counted as problems.

@@ -1,6 +1,7 @@
 #include "core/io/geojson.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -158,11 +159,20 @@ std::optional<std::string> GeoJsonFeature::property_text(const std::string& name
 std::optional<double> GeoJsonFeature::property_number(const std::string& name) const {
   const std::optional<std::string> text = property_text(name);
   if (!text || text->empty()) return std::nullopt;
-  const char* begin = text->c_str();
-  char* end = nullptr;
-  const double v = std::strtod(begin, &end);
-  if (end == begin || !std::isfinite(v)) return std::nullopt;
-  return v;
+  std::string_view rest = *text;
+  auto skip_spaces = [&rest] {
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  };
+  skip_spaces();
+  double v = 0;
+  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), v);
+  if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
+  rest.remove_prefix(static_cast<std::size_t>(end - rest.data()));
+  skip_spaces();
+  constexpr double kFoot = 0.3048;
+  if (rest.empty() || rest == "m") return v;
+  if (rest == "ft" || rest == "'") return v * kFoot;
+  return std::nullopt;
 }
 
 GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {

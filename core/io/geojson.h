@@ -47,8 +47,10 @@ struct GeoJsonFeature {
   // A property's value as plain text: a JSON string unquoted and unescaped,
   // any other value as its JSON text; nullopt if absent.
   std::optional<std::string> property_text(const std::string& name) const;
-  // A property's value as a number: a JSON number, or a string starting with
-  // one ("12 m" -> 12); nullopt if absent or not numeric.
+  // A property's value as a number: a JSON number, or a string holding one
+  // and nothing else but a unit of length: "12", "12 m", "40 ft", "40'"
+  // (feet become metres). nullopt if absent or anything else ("3,5", "0x3",
+  // "3 storeys"): a value is never taken from the front of a string.
   std::optional<double> property_number(const std::string& name) const;
 };
 

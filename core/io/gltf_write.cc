@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
-#include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <string_view>
 
@@ -18,7 +18,9 @@
 
 #include "core/geom/convex_partition.h"
 #include "core/geom/polygon3.h"
+#include "base/read_file.h"
 #include "core/io/atomic_write.h"
+#include "core/io/byte_range.h"
 #include "core/io/io_error.h"
 #include "core/placement/placement.h"
 #include "core/placement/trs_split.h"
@@ -504,11 +506,13 @@ std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component,
   if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() ||
       (v.byteStride != 0 && v.byteStride != per * sizeof(T)))
     bad(path, where + ": unexpected buffer or stride");
-  const std::size_t bytes = a.count * per * sizeof(T);
-  const auto& data = m.buffers[static_cast<std::size_t>(v.buffer)].data;
-  if (a.byteOffset + bytes > v.byteLength || v.byteOffset + v.byteLength > data.size()) bad(path, where + " runs past its buffer");
-  std::vector<T> out(a.count * per);
-  std::memcpy(out.data(), data.data() + v.byteOffset + a.byteOffset, bytes);
+  const std::vector<unsigned char>& data = m.buffers[static_cast<std::size_t>(v.buffer)].data;
+  const auto bytes = checked_product(a.count, per * sizeof(T));
+  const auto view = byte_range(data, v.byteOffset, v.byteLength);
+  const auto range = bytes && view ? byte_range(*view, a.byteOffset, *bytes) : std::nullopt;
+  if (!range) bad(path, where + " runs past its buffer");
+  std::vector<T> out(range->size() / sizeof(T));
+  std::memcpy(out.data(), range->data(), range->size());
   return out;
 }
 
@@ -634,15 +638,35 @@ void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData
   write_scene(path, meshes, {});
 }
 
+namespace {
+
+// Reading a shard must not reach outside it: a buffer or image URI naming a
+// file (merge would copy ../../etc/passwd into its output) is refused, and
+// images, which procex never writes, are not decoded.
+bool refuse_external_file(std::vector<unsigned char>*, std::string* err, const std::string& name, void*) {
+  if (err) *err += "it refers to the external file '" + name + "': a .glb from procex holds everything in itself";
+  return false;
+}
+bool no_file(const std::string&, void*) { return false; }
+std::string same_path(const std::string& name, void*) { return name; }
+bool refuse_image(tinygltf::Image*, const int, std::string* err, std::string*, int, int, const unsigned char*, int, void*) {
+  if (err) *err += "it holds an image: a .glb from procex has none";
+  return false;
+}
+
+}  // namespace
+
 GltfScene read_glb_scene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw IoError("cannot open '" + path.string() + "'", path.string());
-  std::string bytes(static_cast<std::size_t>(in.tellg()), '\0');
-  in.seekg(0);
-  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-    throw IoError("cannot read '" + path.string() + "'", path.string());
+  return parse_glb_scene(read_file(path, kMaxDataFileBytes), path);
+}
+
+GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path) {
+  if (bytes.size() > std::numeric_limits<unsigned int>::max())
+    throw IoError("cannot read '" + path.string() + "': too large for a glTF binary", path.string());
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&no_file, &same_path, &refuse_external_file, nullptr, nullptr});
+  loader.SetImageLoader(&refuse_image, nullptr);
   std::string err, warn;
   if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                    static_cast<unsigned int>(bytes.size())))

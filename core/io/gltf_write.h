@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -93,5 +94,8 @@ void write_glb(const std::filesystem::path& path, const GltfScene& scene);
 // instances (they need read_glb_scene's prototypes).
 std::vector<GltfMeshData> read_glb(const std::filesystem::path& path);
 GltfScene read_glb_scene(const std::filesystem::path& path);
+// The same on a file's bytes already in memory; path names it in messages.
+// External buffer URIs and images are refused: a shard holds everything.
+GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path);
 
 }  // namespace procex

@@ -1,48 +1,52 @@
 #include "core/io/json_read.h"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
+#include "base/json_depth.h"
+#include "base/read_file.h"
 #include "core/io/io_error.h"
 
 namespace procex::io_detail {
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open '" + path.string() + "' for reading", path.string());
-  std::string text;
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size > 0) {
-    text.resize(static_cast<std::size_t>(size));
-    in.seekg(0, std::ios::beg);
-    in.read(text.data(), size);
+namespace {
+
+std::string line_column(std::string_view text, std::size_t byte) {
+  const std::size_t at = std::min(byte, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
   }
-  if (!in) throw IoError("cannot read '" + path.string() + "'", path.string());
-  return text;
+  return std::to_string(line) + ":" + std::to_string(column);
 }
 
-nlohmann::json parse_json(std::string_view text, const std::string& source) {
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& path) { return read_file(path, kMaxDataFileBytes); }
+
+template <class Json>
+Json parse_json(std::string_view text, const std::string& source) {
+  if (const auto at = json_too_deep_at(text))
+    throw IoError(source + ":" + line_column(text, *at) + ": nesting deeper than " + std::to_string(kMaxJsonDepth) +
+                      " levels (no footprint or report needs that many)",
+                  source);
   try {
-    return nlohmann::json::parse(text);
+    return Json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    // Byte offset -> line and column, which is what an editor shows.
-    const std::size_t at = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < at; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    std::ostringstream msg;
-    msg << source << ":" << line << ":" << column << ": not valid JSON (" << e.what() << ")";
-    throw IoError(msg.str(), source);
+    throw IoError(source + ":" + line_column(text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON (" + e.what() + ")",
+                  source);
+  } catch (const nlohmann::json::exception& e) {  // out_of_range.406: a number beyond double range
+    throw IoError(source + ": unreadable JSON (" + std::string(e.what()) + "); numbers must fit a double", source);
   }
 }
+
+template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&);
+template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&);
 
 std::string pointer_token(std::string_view key) {
   std::string out;
@@ -96,3 +100,11 @@ glm::dvec2 point_in(const nlohmann::json& array, const std::string& parent_point
 }
 
 }  // namespace procex::io_detail
+
+namespace procex {
+
+nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
+  return io_detail::parse_json<nlohmann::ordered_json>(io_detail::read_text_file(path), path.string());
+}
+
+}  // namespace procex

@@ -1,5 +1,8 @@
-// Shared by the JSON readers in core/io: loading a file and turning
-// nlohmann's parse errors into located IoErrors. Include only from .cc files.
+// Every JSON file procex reads (footprints, shapes, batch reports) goes
+// through here: its size and nesting bounded (base/read_file.h,
+// base/json_depth.h), nlohmann's errors (syntax, a number beyond double
+// range) turned into IoErrors naming the file, line and column. The
+// io_detail helpers are for the readers in core/io. Include only from .cc files.
 #pragma once
 
 #include <filesystem>
@@ -9,13 +12,27 @@
 #include <glm/vec2.hpp>
 #include <nlohmann/json.hpp>
 
+namespace procex {
+
+// A JSON document with its members in file order (what merge needs to write
+// reports back unchanged). Throws IoError as io_detail::parse_json.
+nlohmann::ordered_json read_json_file(const std::filesystem::path& path);
+
+}  // namespace procex
+
 namespace procex::io_detail {
 
-// The whole file as text; throws IoError if it cannot be read.
+// The whole file as text, at most kMaxDataFileBytes; throws IoError if it
+// cannot be read (see read_file).
 std::string read_text_file(const std::filesystem::path& path);
 
-// Parses text; throws IoError naming source, line and column on a syntax error.
-nlohmann::json parse_json(std::string_view text, const std::string& source);
+// Parses text; throws IoError naming source, and line and column where there
+// is one, on a syntax error, nesting deeper than kMaxJsonDepth or a number
+// outside double range.
+template <class Json = nlohmann::json>
+Json parse_json(std::string_view text, const std::string& source);
+extern template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&);
+extern template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&);
 
 // A JSON pointer reference token with '~' and '/' escaped (RFC 6901).
 std::string pointer_token(std::string_view key);

@@ -6,12 +6,12 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <string_view>
 
+#include "base/read_file.h"
 #include "core/io/io_error.h"
 
 namespace procex {
@@ -149,16 +149,12 @@ Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".obj") fail(path, "cannot read meshes in '" + ext + "' files to place: use a Wavefront .obj file");
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
-  if (!std::filesystem::is_regular_file(path, ec)) fail(path, "is not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  if (!in || !(bytes << in.rdbuf())) {
-    if (std::filesystem::file_size(path, ec) == 0 && !ec) fail(path, "is empty (a mesh to place needs 'v' and 'f' lines)");
-    fail(path, "cannot read it");
-  }
-  const std::string text = std::move(bytes).str();
+  const std::string text = read_file(path, kMaxDataFileBytes);
+  if (text.empty()) fail(path, "is empty (a mesh to place needs 'v' and 'f' lines)");
+  return parse_obj_mesh(text, path, warnings);
+}
+
+Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::string>* warnings) {
   const ObjScan scan = scan_obj(path, text);
 
   Mesh mesh;
@@ -176,7 +172,8 @@ Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings) {
                    " faces");
   restore_precision(mesh, scan.vertices);
   if (warnings && mesh.n_vertices() > scan.vertices.size())
-    warnings->push_back("'" + path.string() + "': " + std::to_string(mesh.n_vertices() - scan.vertices.size()) +
+    // (Built with append: g++ 12 warns falsely on "'" + path.string() here.)
+    warnings->push_back(std::string("'").append(path.string()).append("': ") + std::to_string(mesh.n_vertices() - scan.vertices.size()) +
                         " vertices were duplicated to add faces that meet in a non-manifold way (an edge with "
                         "more than two faces, or neighbours facing opposite ways)");
   add_face_properties(mesh);

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/mesh/mesh.h"
@@ -29,5 +30,8 @@ namespace procex {
 // facing opposite ways) are kept and reported in `warnings` when given
 // (OpenMesh also prints "complex edge" on stderr for each). Thread-safe.
 Mesh read_mesh_file(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+// The same on the file's text already in memory; path names it in messages.
+Mesh parse_obj_mesh(std::string_view text, const std::filesystem::path& path,
+                    std::vector<std::string>* warnings = nullptr);
 
 }  // namespace procex

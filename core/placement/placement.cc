@@ -23,6 +23,10 @@ std::size_t PlacementResult::add_mesh(const PlaceableMesh& mesh) {
 }
 
 std::size_t PlacementResult::add_instance(Instance instance) {
+  if (instances.size() >= kMaxInstancesPerBuilding)
+    throw PlacementError("the building would get more than " + std::to_string(kMaxInstancesPerBuilding) +
+                         " placed meshes, more than one building can hold: place fewer (a larger spacing, fewer rows "
+                         "or columns)");
   instances.push_back(std::move(instance));
   try {
     check_instance(*this, instances.size() - 1);
@@ -30,6 +34,13 @@ std::size_t PlacementResult::add_instance(Instance instance) {
     instances.pop_back();
     throw;
   }
+  const std::size_t faces = meshes[instances.back().mesh].mesh->n_faces();
+  if (faces > kMaxPlacedFacesPerBuilding - placed_faces) {
+    instances.pop_back();
+    throw PlacementError("the building's placed meshes would have more than " + std::to_string(kMaxPlacedFacesPerBuilding) +
+                         " faces (" + std::to_string(instances.size()) + " placed so far): place fewer, or a simpler mesh");
+  }
+  placed_faces += faces;
   return instances.size() - 1;
 }
 

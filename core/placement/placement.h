@@ -32,16 +32,25 @@ struct Instance {
   std::int32_t source_edge = -1;  // the footprint edge it was placed on (EdgeSpec::id), -1 if none
 };
 
+// What one building (one PlacementResult) may hold. A legal recipe can ask
+// for far more than memory holds (a 300 x 300 window grid on each of six
+// walls is 540,000 windows and gigabytes once flattened): past these,
+// add_instance refuses with a PlacementError instead of running out.
+inline constexpr std::size_t kMaxInstancesPerBuilding = 100000;
+inline constexpr std::size_t kMaxPlacedFacesPerBuilding = 5000000;
+
 struct PlacementResult {
   std::shared_ptr<const Mesh> building;  // may be null: instances only
   std::vector<PlaceableMesh> meshes;     // distinct meshes
   std::vector<Instance> instances;
+  std::size_t placed_faces = 0;  // faces of all instances' meshes, as flatten() would add them
 
   // The index of `mesh` in `meshes`, added unless the same shared Mesh is
   // there under the same name (one file placed under two names keeps both
   // names). Throws PlacementError if it is null.
   std::size_t add_mesh(const PlaceableMesh& mesh);
-  // Adds an instance after check_instance. Returns its index.
+  // Adds an instance after check_instance and the per-building budgets above.
+  // Returns its index.
   std::size_t add_instance(Instance instance);
 };
 

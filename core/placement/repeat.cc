@@ -28,9 +28,10 @@ double rounded_count(double q, Repeat::Rounding rounding) {
 }
 
 void check_size(double items) {
-  if (items > static_cast<double>(kMaxRepeatItems))
-    throw PlacementError("the repetition would place " + std::to_string(static_cast<long long>(items)) +
-                         " items, more than " + std::to_string(kMaxRepeatItems) + ": use a larger spacing");
+  // (Not as an integer: a tiny spacing gives more items than any integer holds.)
+  if (!(items <= static_cast<double>(kMaxRepeatItems)))
+    throw PlacementError("the repetition would place more than " + std::to_string(kMaxRepeatItems) +
+                         " items: use a larger spacing or fewer items");
 }
 
 }  // namespace

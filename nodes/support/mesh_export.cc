@@ -5,7 +5,7 @@
 #include <charconv>
 #include <string>
 
-#include "core/io/atomic_write.h"
+#include "base/atomic_file_set.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
 #include "core/placement/placement_gltf.h"
@@ -66,8 +66,10 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set) {
     for (double c : tag_colour(name)) mtl_text += ' ', append_number(mtl_text, c);
     mtl_text += "\n";
   }
-  write_file_atomically(mtl, mtl_text);
-  write_file_atomically(path, obj);
+  AtomicFileSet files;  // both or neither: a failed .obj leaves no new .mtl beside the old one
+  files.add(mtl, mtl_text);
+  files.add(path, obj);
+  files.commit();
 }
 
 }  // namespace

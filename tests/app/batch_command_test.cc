@@ -200,6 +200,9 @@ TEST(BatchShard, Parses) {
   EXPECT_EQ(n, 5u);
   EXPECT_FALSE(parse_shard("5/5", i, n));
   EXPECT_FALSE(parse_shard("1/0", i, n));
+  // Negative and huge numbers used to wrap through sscanf's %zu.
+  for (const char* bad : {"0/-2", "-1/3", "0/99999999999999999999999", "1/3x", "1 /3", "+1/3", "/3", "1/"})
+    EXPECT_FALSE(parse_shard(bad, i, n)) << bad;
   EXPECT_FALSE(parse_shard("1/2x", i, n));
   EXPECT_FALSE(parse_shard("a/2", i, n));
 }

@@ -225,6 +225,13 @@ TEST_F(RoofCommand, ExecutableExitCodes) {
   EXPECT_NE(exit_code_of(exe + " roof " + sample + " --max-height -1" + outs), 0);
   EXPECT_NE(exit_code_of(exe + " roof " + sample), 0) << "-o and --report are required";
   EXPECT_NE(exit_code_of(exe), 0) << "a subcommand is required";
+  // NaN passes every comparison: refused like any other bad option, with procex's code, not CLI11's (104-109).
+  EXPECT_EQ(exit_code_of(exe + " roof " + sample + " --angle nan" + outs), kExitUnusableFile);
+  EXPECT_EQ(exit_code_of(exe + " roof " + sample + " --max-height nan" + outs), kExitUnusableFile);
+  EXPECT_EQ(exit_code_of(exe + " roof " + sample + " --jobs x" + outs), kExitUnusableFile);
+  EXPECT_EQ(exit_code_of(exe + " batch x.pxg --footprints y -o z.glb --shard 0/-2"), kExitUnusableFile);
+  EXPECT_EQ(exit_code_of(exe + " --version"), 0);
+  EXPECT_EQ(exit_code_of(exe + " roof --help"), 0);
   EXPECT_FALSE(fs::exists(dir_ / "out.obj"));
   EXPECT_EQ(exit_code_of(exe + " roof " + (dir_ / "missing.geojson").string() + outs), kExitUnusableFile);
 }

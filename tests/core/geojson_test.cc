@@ -127,3 +127,26 @@ TEST(GeoJson, RefusesWhatIsNotAFeatureCollection) {
 
 }  // namespace
 }  // namespace procex
+
+namespace procex {
+namespace {
+
+// Property values are numbers only when the whole value is one, with at
+// most a unit of length: never the front of a longer string.
+TEST(GeoJson, PropertyNumbersAreStrict) {
+  const GeoJsonCollection c = parse_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+      "properties": {"a": 12.5, "b": "12", "c": "12 m", "d": "40 ft", "e": "40'", "f": "3,5", "g": "0x3",
+                     "h": "3 storeys", "i": "", "j": "1e999", "k": " 7 m", "l": true},
+      "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,1]]]}}]})");
+  const GeoJsonFeature& f = c.features.at(0);
+  EXPECT_EQ(f.property_number("a"), 12.5);
+  EXPECT_EQ(f.property_number("b"), 12.0);
+  EXPECT_EQ(f.property_number("c"), 12.0);
+  EXPECT_NEAR(*f.property_number("d"), 12.192, 1e-12);
+  EXPECT_NEAR(*f.property_number("e"), 12.192, 1e-12);
+  EXPECT_EQ(f.property_number("k"), 7.0);
+  for (const char* bad : {"f", "g", "h", "i", "j", "l", "missing"}) EXPECT_EQ(f.property_number(bad), std::nullopt) << bad;
+}
+
+}  // namespace
+}  // namespace procex

@@ -65,7 +65,7 @@ TEST(MeshRead, BadFilesNameTheFileAndLine) {
   EXPECT_NE(read_error("mesh_no_faces.obj").find("has no faces"), std::string::npos);
   EXPECT_NE(read_error("mesh_empty.obj").find("is empty"), std::string::npos) << read_error("mesh_empty.obj");
   EXPECT_NE(read_error("mesh_binary_not_text.obj").find("is not a text OBJ file"), std::string::npos);
-  EXPECT_NE(read_error("mesh_that_does_not_exist.obj").find("no such file"), std::string::npos);
+  EXPECT_NE(read_error("mesh_that_does_not_exist.obj").find("No such file"), std::string::npos);
   EXPECT_NE(read_error("footprint_bowtie.json").find("use a Wavefront .obj file"), std::string::npos);
   for (const char* name : {"mesh_bad_coordinate.obj", "mesh_empty.obj", "mesh_that_does_not_exist.obj"})
     EXPECT_NE(read_error(name).find(data(name).string()), std::string::npos) << name;

@@ -149,3 +149,24 @@ TEST(MeshPlacement, TheFileIsReadOnceAndShared) {
 
 }  // namespace
 }  // namespace procex
+
+namespace procex {
+namespace {
+
+// A legal recipe that asks for more than a building can hold (300 x 300 on
+// each of four walls: 360,000 windows) is refused with a reason, not run
+// until memory runs out.
+TEST(MeshPlacement, ABuildingHasABudget) {
+  const auto huge = place({{"anchor", Value::make(std::string("sill"))}, {"mode", mode("grid")},
+                           {"columns", Value::make<std::int64_t>(300)}, {"rows", Value::make<std::int64_t>(300)},
+                           {"z_from", Value::make(1.0)}, {"z_to", Value::make(4.0)}});
+  EXPECT_FALSE(huge.ok());
+  EXPECT_NE(huge.messages().find("more than 100000 placed meshes"), std::string::npos) << huge.messages();
+  const auto tiny_spacing = place({{"anchor", Value::make(std::string("sill"))}, {"mode", mode("row")},
+                                   {"column_spacing", Value::make(1e-300)}});
+  EXPECT_FALSE(tiny_spacing.ok());
+  EXPECT_EQ(tiny_spacing.messages().find("-9223372036854775808"), std::string::npos) << tiny_spacing.messages();
+}
+
+}  // namespace
+}  // namespace procex

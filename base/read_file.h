@@ -1,0 +1,24 @@
+// Reading a whole input file that someone else may have made: a path given on
+// the command line or named in a shared recipe can be a directory, a FIFO
+// that never ends, a device or a file too large to hold. One reader for every
+// input, so each refuses those the same way and names the system's reason.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "base/io_error.h"
+
+namespace procex {
+
+// Largest footprint, shape, report or mesh file read (a city's footprints fit
+// many times over); parsing takes several times the file's size in memory.
+inline constexpr std::size_t kMaxDataFileBytes = std::size_t{1} << 30;
+
+// The file's bytes. Throws IoError naming the path and why it cannot be read
+// (no such file, permission denied, is a directory, not a regular file, more
+// than max_bytes), never blocking on a FIFO.
+std::string read_file(const std::filesystem::path& path, std::size_t max_bytes);
+
+}  // namespace procex

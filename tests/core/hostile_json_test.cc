@@ -1,0 +1,68 @@
+// The JSON readers of core/io (GeoJSON footprints, .json shapes, reports) on
+// files made to break them: numbers beyond double range, nesting deep enough
+// to overflow a stack, a folder where a file should be. Each is an IoError
+// naming the file, never an uncaught exception or a crash.
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/io/geojson.h"
+#include "core/io/io_error.h"
+#include "core/io/json_read.h"
+#include "core/io/polyjson.h"
+
+namespace procex {
+namespace {
+
+const std::string kSquare = R"("geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,1]]]})";
+
+template <class Read>
+std::string error_of(Read read) {
+  try {
+    read();
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return "no IoError";
+}
+
+TEST(HostileJson, NumbersBeyondDoubleRangeAreRefused) {
+  const std::string in_property = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties":
+      {"height": 1e400}, )" + kSquare + "}]}";
+  EXPECT_NE(error_of([&] { parse_geojson(in_property, {}, "big.geojson"); }).find("big.geojson: unreadable JSON"),
+            std::string::npos)
+      << error_of([&] { parse_geojson(in_property, {}, "big.geojson"); });
+  EXPECT_NE(error_of([&] { parse_polyjson(R"({"loops": [[[0,0],[1e400,0],[1,1]]]})", "big.json"); }).find("big.json"),
+            std::string::npos);
+}
+
+TEST(HostileJson, DeepNestingIsRefusedBeforeParsing) {
+  const std::string deep = std::string(80000, '[') + std::string(80000, ']');
+  const std::string in_property =
+      R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"x": )" + deep + "}, " + kSquare + "}]}";
+  const std::string why = error_of([&] { parse_geojson(in_property, {}, "deep.geojson"); });
+  EXPECT_NE(why.find("deep.geojson:1:"), std::string::npos) << why;
+  EXPECT_NE(why.find("nesting deeper than 64 levels"), std::string::npos) << why;
+  const std::string member = R"({"type": "FeatureCollection", "name": )" + deep + R"(, "features": []})";
+  EXPECT_NE(error_of([&] { parse_geojson(member, {}, "deep.geojson"); }).find("nesting deeper"), std::string::npos);
+  EXPECT_NE(error_of([&] { parse_polyjson(deep, "deep.json"); }).find("nesting deeper"), std::string::npos);
+  // A real MultiPolygon with holes is far from the limit.
+  const std::string multi = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"a": {"b": [1]}},
+      "geometry": {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,1]]]]}}]})";
+  EXPECT_EQ(parse_geojson(multi).features.size(), 1u);
+}
+
+TEST(HostileJson, AFolderIsNotAFile) {
+  const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_json_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "dir.geojson");
+  EXPECT_NE(error_of([&] { read_geojson_file(dir / "dir.geojson"); }).find("it is a folder, not a file"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_polyjson_file(dir / "dir.geojson"); }).find("it is a folder"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_json_file(dir / "dir.geojson"); }).find("it is a folder"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace procex
