@@ -25,8 +25,9 @@ std::optional<std::string> output_clash(const std::vector<fs::path>& inputs, con
       const fs::path r = resolved(out);
       for (const Seen& s : seen)
         if (s.resolved == r)
-          return "'" + out.string() + "' would overwrite '" + s.given.string() + "', which this run " +
-                 (s.input ? "reads" : "also writes") + ": give each output its own path";
+          // (Built with append: g++ 12 warns falsely on "'" + path.string().)
+          return std::string("'").append(out.string()).append("' would overwrite '").append(s.given.string()) +
+                 "', which this run " + (s.input ? "reads" : "also writes") + ": give each output its own path";
       seen.push_back({r, out, false});
     }
   }

@@ -18,6 +18,7 @@
 
 #include "core/geom/convex_partition.h"
 #include "core/geom/polygon3.h"
+#include "base/json_depth.h"
 #include "base/read_file.h"
 #include "core/io/atomic_write.h"
 #include "core/io/byte_range.h"
@@ -663,6 +664,17 @@ GltfScene read_glb_scene(const std::filesystem::path& path) {
 GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path) {
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     throw IoError("cannot read '" + path.string() + "': too large for a glTF binary", path.string());
+  // tinygltf reads extras recursively: the JSON chunk (its length at byte
+  // 12, its text from byte 20) is checked for nesting first.
+  const std::span<const unsigned char> all(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+  if (const auto length = byte_range(all, 12, 4)) {
+    std::uint32_t n = 0;
+    std::memcpy(&n, length->data(), 4);  // little-endian, as glTF and every machine procex runs on
+    if (const auto json = byte_range(all, 20, n)) {
+      if (json_too_deep_at(std::string_view(reinterpret_cast<const char*>(json->data()), json->size())))
+        bad(path, "its JSON is nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    }
+  }
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&no_file, &same_path, &refuse_external_file, nullptr, nullptr});

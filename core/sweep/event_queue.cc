@@ -33,7 +33,7 @@ bool may_split(const State& st, int c) {
     const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
     // A meeting point below the sweep plane means the planes diverge from here.
     const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    meet[j] = meets & !(at < earliest) & !(at > cap) ? at : HUGE_VAL;
+    meet[j] = (meets & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
   }
 }
 

@@ -43,7 +43,7 @@ TEST_F(ConfinedPath, NamesInsideTheFolderResolve) {
 }
 
 TEST_F(ConfinedPath, NamesOutsideAreRefusedHoweverSpelled) {
-  for (const std::string name : {"../secret.obj", "lib/../../secret.obj", "/etc/passwd", (base_ / "secret.obj").string()}) {
+  for (const std::string& name : std::vector<std::string>{"../secret.obj", "lib/../../secret.obj", "/etc/passwd", (base_ / "secret.obj").string()}) {
     const std::string why = refusal(name);
     EXPECT_NE(why.find("lies outside the recipe's folder"), std::string::npos) << name << ": " << why;
     EXPECT_NE(why.find("--allow-path"), std::string::npos) << why;

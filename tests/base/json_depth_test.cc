@@ -9,7 +9,8 @@ namespace procex {
 namespace {
 
 TEST(JsonDepth, FindsTheFirstBracketTooDeep) {
-  EXPECT_EQ(json_too_deep_at(R"({"a": [[1], {"b": [2]}]})", 3), std::nullopt);
+  EXPECT_EQ(json_too_deep_at(R"({"a": [[1], {"b": [2]}]})", 4), std::nullopt);
+  EXPECT_EQ(json_too_deep_at(R"({"a": [[1], {"b": [2]}]})", 3), std::size_t{18});
   EXPECT_EQ(json_too_deep_at(R"({"a": [[1], {"b": [2]}]})", 2), std::size_t{7});
   // Brackets in strings, escaped quotes included, do not count.
   EXPECT_EQ(json_too_deep_at(R"({"a": "[[[[\"[[[["})", 1), std::nullopt);

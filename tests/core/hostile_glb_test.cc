@@ -84,6 +84,12 @@ TEST(HostileGlb, CountsAndOffsetsThatOverflowAreRefused) {
   }
 }
 
+TEST(HostileGlb, DeepExtrasAreRefused) {
+  std::string json = triangle_json("3", "0");
+  json.insert(json.rfind('}'), R"(, "extras": {"x": )" + std::string(80000, '[') + std::string(80000, ']') + "}");
+  EXPECT_NE(error_of(glb(json, triangle_bin())).find("nested deeper than 64 levels"), std::string::npos);
+}
+
 TEST(HostileGlb, ExternalBuffersAreRefused) {
   const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_glb_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
