@@ -18,6 +18,6 @@ for t in "${targets[@]}"; do
   mkdir -p "build-fuzz/corpus/$t"
   echo "== fuzz $t: ${seconds}s"
   # New inputs go to the first (scratch) folder; the seed corpus in fuzz/corpus/<t> stays as committed.
-  "build-fuzz/fuzz/procex_${t}_fuzz" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=1024 -timeout=20 \
+  "build-fuzz/fuzz/procex_${t}_fuzz" -max_total_time="$seconds" -max_len=16384 -rss_limit_mb=1024 -timeout=20 \
     -print_final_stats=1 "build-fuzz/corpus/$t" "fuzz/corpus/$t"
 done

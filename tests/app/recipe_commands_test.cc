@@ -37,7 +37,7 @@ using test::read_text;
 TEST_F(RecipeCommands, EvalWritesEveryFormat) {
   for (const char* ext : {".obj", ".ply", ".glb"}) {
     const fs::path out = dir_ / (std::string("house") + ext);
-    EXPECT_EQ(run_eval({kSamples / "house.pxg", out, {}, {}, {}}, out_, err_), 0) << err_.str();
+    EXPECT_EQ(run_eval({kSamples / "house.pxg", out, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
     EXPECT_GT(fs::file_size(out), 100u) << ext;
   }
   const std::string obj = read_text(dir_ / "house.obj");
@@ -49,17 +49,17 @@ TEST_F(RecipeCommands, EvalWritesEveryFormat) {
 
 TEST_F(RecipeCommands, SetChangesExposedParameters) {
   const fs::path a = dir_ / "a.obj", b = dir_ / "b.obj";
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", a, {}, {}, {}}, out_, err_), 0) << err_.str();
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", b, {"shape=rectangle", "pitch=30"}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", a, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", b, {"shape=rectangle", "pitch=30"}, {}, {}, {}}, out_, err_), 0) << err_.str();
   EXPECT_NE(read_text(a), read_text(b));
 }
 
 TEST_F(RecipeCommands, BadSettingsNameTheProblem) {
-  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"colour=red"}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"colour=red"}, {}, {}, {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--set colour=red: the recipe has no exposed parameter or input named 'colour'"),
             std::string::npos) << err_.str();
   err_.str("");
-  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"shape=star"}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"shape=star"}, {}, {}, {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--set shape=star: "), std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "x.obj"));
 }
@@ -68,7 +68,7 @@ TEST_F(RecipeCommands, FailingNodeIsNamedAndNothingIsWritten) {
   std::string text = read_text(kSamples / "gallery_hipped.pxg");
   text.replace(text.find("\"* = hip\""), 9, "\"* = pagoda\"");
   const fs::path recipe = write("broken.pxg", text);
-  EXPECT_EQ(run_eval({recipe, dir_ / "broken.obj", {}, {}, {}}, out_, err_), kExitEvaluationFailed);
+  EXPECT_EQ(run_eval({recipe, dir_ / "broken.obj", {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed);
   EXPECT_NE(err_.str().find("broken.pxg: error: node 11 (Assign Profiles): rules: rule 1 ('* = pagoda')"),
             std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "broken.obj"));
@@ -76,18 +76,18 @@ TEST_F(RecipeCommands, FailingNodeIsNamedAndNothingIsWritten) {
 
 TEST_F(RecipeCommands, UnreadableRecipeNamesFileAndPlace) {
   const fs::path recipe = write("bad.pxg", "{\"format\": \"procex-graph\",\n \"version\": 2,\n \"nodes\": [}");
-  EXPECT_EQ(run_eval({recipe, dir_ / "x.glb", {}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval({recipe, dir_ / "x.glb", {}, {}, {}, {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("bad.pxg: line 3"), std::string::npos) << err_.str();
   err_.str("");
-  EXPECT_EQ(run_validate({dir_ / "missing.pxg"}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_validate({dir_ / "missing.pxg", {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("missing.pxg"), std::string::npos) << err_.str();
 }
 
 TEST_F(RecipeCommands, ValidateReportsUnboundInputsWithoutEvaluating) {
-  EXPECT_EQ(run_validate({kSamples / "house.pxg"}, out_, err_), 0) << err_.str();
+  EXPECT_EQ(run_validate({kSamples / "house.pxg", {}}, out_, err_), 0) << err_.str();
   EXPECT_NE(out_.str().find("6 nodes, 6 links, 0 inputs, 1 outputs, 2 exposed parameters"), std::string::npos) << out_.str();
   // city.pxg's footprint is bound per feature by batch: noted, not a problem.
-  EXPECT_EQ(run_validate({kSamples / "city.pxg"}, out_, err_), 0) << err_.str();
+  EXPECT_EQ(run_validate({kSamples / "city.pxg", {}}, out_, err_), 0) << err_.str();
   EXPECT_NE(out_.str().find("note: input 'footprint' (footprint) has no default"), std::string::npos) << out_.str();
   // A link to a missing node is.
   std::string text;
@@ -98,12 +98,12 @@ TEST_F(RecipeCommands, ValidateReportsUnboundInputsWithoutEvaluating) {
     text = s.str();
   }
   text.replace(text.find("\"12.mesh\""), 9, "\"13.mesh\"");
-  EXPECT_EQ(run_validate({write("dangling.pxg", text)}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_validate({write("dangling.pxg", text), {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("dangling.pxg"), std::string::npos) << err_.str();
 }
 
 TEST_F(RecipeCommands, StatsShowsNodesAndCacheHits) {
-  EXPECT_EQ(run_stats({kSamples / "house.pxg", {}}, out_, err_), 0) << err_.str();
+  EXPECT_EQ(run_stats({kSamples / "house.pxg", {}, {}}, out_, err_), 0) << err_.str();
   EXPECT_NE(out_.str().find("Extrude"), std::string::npos);
   EXPECT_NE(out_.str().find("second evaluation: 1 cache hits, 0 computed"), std::string::npos) << out_.str();
 }
