@@ -64,7 +64,7 @@ TEST_F(AnchoredSamples, EvaluateToValidGlbWithInstancedMeshes) {
 
 // windows_grid.pxg with its Footprint Polygon replaced by the graph input
 // `footprint` that batch binds, saved beside the test's output (the mesh
-// files then named by absolute path).
+// files then named by absolute path, in a folder the batch must allow).
 fs::path batch_recipe(const fs::path& dir) {
   Graph g = load_pxg(kSamples / "windows_grid.pxg");
   NodeId polygon = 0, assign = 0;
@@ -92,6 +92,7 @@ TEST_F(AnchoredSamples, BatchOfWindowsGridPlacesWindowsOnEveryBuilding) {
   o.report = dir_ / "block.json";
   o.progress = false;
   o.jobs = 2;
+  o.allowed_paths = {kSamples};
   ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str() << test::read_text(o.report);
   const GltfScene scene = read_glb_scene(o.output);
   const GeoJsonCollection block = read_geojson_file(o.footprints);

@@ -97,7 +97,7 @@ TEST_F(HostileInput, NamesThatAreNotUtf8StillGetAReport) {
   batch.report = dir_ / "batch.json";
   batch.progress = false;
   EXPECT_EQ(run_batch(batch, out_, err_), 0) << err_.str();
-  EXPECT_NO_THROW((void)nlohmann::json::parse(read_text(batch.report)));
+  EXPECT_TRUE(nlohmann::json::accept(read_text(batch.report)));
 }
 
 // A batch whose buildings would hold more than its budget is refused as a
