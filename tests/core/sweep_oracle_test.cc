@@ -1,18 +1,14 @@
-// The sweep against an oracle: with every edge at 45 degrees a procedural
-// extrusion is the roof of the straight skeleton, so each skeleton node of
-// CGAL 5.5's create_interior_straight_skeleton_2 at time t must be a vertex
-// of our surface at height t, and each of our vertices above the base must be
-// a CGAL node. Where more than three planes meet, CGAL may report several
-// nodes at one place (a regular n-gon's centre); matching by position within
-// a tolerance accepts that. Nodes within the tolerance of the base cannot be
-// told from base vertices and are not compared.
+// The sweep against an oracle over every real and synthetic footprint: with
+// every edge at 45 degrees a procedural extrusion is the roof of the straight
+// skeleton, so CGAL 5.5's create_interior_straight_skeleton_2 (exact
+// constructions) fixes its topology and its vertices. Compared
+// (tests/support/skeleton_oracle.h): the mesh validates, one roof face per
+// footprint edge, the same pairs of edges meeting along ridges, and every
+// skeleton node a roof vertex at the height of its time and back.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,101 +17,55 @@
 
 #include "core/geom/error.h"
 #include "core/geom/prepare.h"
-#include "core/geom/tolerances.h"
 #include "core/io/geojson.h"
 #include "core/io/polyjson.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/cgal_skeleton.h"
-#include "tests/support/point_set.h"
 #include "tests/support/sanitizers.h"
-#include "tests/support/skeleton_oracle.h"
 #include "tests/support/data_files.h"
+#include "tests/support/skeleton_oracle.h"
 
 namespace procex {
 namespace {
 
-// Agreement required between node positions and heights, relative to the
-// footprint's bounding-box diagonal (issue 2: 1e-6 relative).
-constexpr double kOracleRelative = 1e-6;
+using testing::compare_with_cgal;
+using testing::sweep_and_compare_with_cgal;
 
-using testing::PointSet;
-
-std::string describe(const glm::dvec3& p) {
-  std::ostringstream s;
-  s.precision(12);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
-
-// Empty when the sweep and CGAL agree, else one line per disagreement (at most a few).
-std::vector<std::string> compare_with_cgal(const Footprint& footprint) {
-  const double tol = kOracleRelative * length_scale(footprint);
-  const std::vector<glm::dvec3> ours_all = sweep(footprint).vertices;
-  const std::vector<glm::dvec3> theirs = CgalSkeletonInput(footprint).skeleton(0.0).nodes;
-
-  std::vector<glm::dvec3> ours;
-  for (const glm::dvec3& v : ours_all)
-    if (v.z > tol) ours.push_back(v);
-  const PointSet ours_set(ours_all), theirs_set(theirs);
-
-  constexpr std::size_t kShown = 5;
-  std::vector<std::string> problems;
-  std::size_t missing = 0, extra = 0;
-  for (const glm::dvec3& n : theirs) {
-    if (n.z <= tol || ours_set.nearest(n, tol) <= tol) continue;
-    if (++missing <= kShown)
-      problems.push_back("CGAL node " + describe(n) + " has no sweep vertex within " + std::to_string(tol));
-  }
-  for (const glm::dvec3& v : ours) {
-    if (theirs_set.nearest(v, tol) <= tol) continue;
-    if (++extra <= kShown)
-      problems.push_back("sweep vertex " + describe(v) + " has no CGAL node within " + std::to_string(tol));
-  }
-  if (missing + extra > 0)
-    problems.push_back(std::to_string(missing) + " of " + std::to_string(theirs.size()) + " CGAL nodes unmatched, " +
-                       std::to_string(extra) + " of " + std::to_string(ours.size()) + " sweep vertices above the base unmatched");
-  return problems;
-}
-
-// Runs the comparison, turning a sweep or oracle exception into a problem line.
-using testing::without_straight_vertices;
-
-std::vector<std::string> compare_guarded(const Footprint& footprint) {
-  try {
-    return compare_with_cgal(without_straight_vertices(footprint));
-  } catch (const SweepError& e) {
-    std::ostringstream s;
-    s << "sweep failed: " << e.what() << " at height " << e.height() << ", edges";
-    for (int id : e.edge_ids()) s << " " << id;
-    return {s.str()};
-  } catch (const std::exception& e) {
-    return {std::string("exception: ") + e.what()};
-  }
-}
+// Under the sanitizers (a Debug build, tens of times slower) every
+// kSanitizedStride-th footprint of the large sets is compared.
+constexpr std::size_t kSanitizedStride = kSanitized ? 40 : 1;
 
 // ---- the oracle itself must be right, or the comparisons mean nothing ----
 
 TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
   const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
-  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(square).skeleton(0.0).nodes;
-  ASSERT_FALSE(nodes.empty());
-  for (const glm::dvec3& n : nodes) {
+  const CgalSkeleton ss = CgalSkeletonInput(square).skeleton(1e-9);
+  ASSERT_FALSE(ss.nodes.empty());
+  for (const glm::dvec3& n : ss.nodes) {
     EXPECT_NEAR(n.x, 2.0, 1e-12);
     EXPECT_NEAR(n.y, 2.0, 1e-12);
     EXPECT_NEAR(n.z, 2.0, 1e-12);
   }
+  // Four hips, no ridge between opposite sides: they meet only at the centre.
+  const std::vector<std::pair<std::int32_t, std::int32_t>> expected{{0, 1}, {0, 3}, {1, 2}, {2, 3}};
+  EXPECT_EQ(ss.adjacent_edges, expected);
+  ASSERT_EQ(ss.faces_per_edge.size(), 4u);
+  for (const auto& [id, n] : ss.faces_per_edge) EXPECT_EQ(n, 1u) << "edge " << id;
 }
 
 //   +-----------+
 //   |           |   a 10 x 4 rectangle: the ridge runs from (2, 2) to (8, 2)
-//   +-----------+   at height 2 (half the width)
+//   +-----------+   at height 2 (half the width), between edges 0 and 2
 TEST(CgalOracle, RectangleRidge) {
   const Footprint rect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
-  std::vector<glm::dvec3> nodes = CgalSkeletonInput(rect).skeleton(0.0).nodes;
-  std::sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
-  ASSERT_EQ(nodes.size(), 2u);
-  EXPECT_NEAR(glm::distance(nodes[0], glm::dvec3(2, 2, 2)), 0.0, 1e-12);
-  EXPECT_NEAR(glm::distance(nodes[1], glm::dvec3(8, 2, 2)), 0.0, 1e-12);
+  CgalSkeleton ss = CgalSkeletonInput(rect).skeleton(1e-9);
+  std::sort(ss.nodes.begin(), ss.nodes.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  ASSERT_EQ(ss.nodes.size(), 2u);
+  EXPECT_NEAR(glm::distance(ss.nodes[0], glm::dvec3(2, 2, 2)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::distance(ss.nodes[1], glm::dvec3(8, 2, 2)), 0.0, 1e-12);
+  // The hips join every side to both ends, the ridge joins the long sides.
+  const std::vector<std::pair<std::int32_t, std::int32_t>> expected{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {2, 3}};
+  EXPECT_EQ(ss.adjacent_edges, expected);
 }
 
 // An island inside a hole is its own polygon; the hole belongs to the outer loop.
@@ -132,88 +82,101 @@ TEST(CgalOracle, SplitsNestedLoopsIntoPolygonsWithHoles) {
                                       45.0);
   const CgalSkeletonInput input(fp);
   EXPECT_EQ(input.polygon_count(), 2u);
-  const std::vector<glm::dvec3> nodes = input.skeleton(0.0).nodes;
   // The frame between outer and hole is 5 wide: its nodes stand at most 2.5 high.
   // The 6 x 6 island peaks at 3.
   double highest = 0.0;
-  for (const glm::dvec3& n : nodes) highest = std::max(highest, n.z);
+  for (const glm::dvec3& n : input.skeleton(1e-9).nodes) highest = std::max(highest, n.z);
   EXPECT_NEAR(highest, 3.0, 1e-12);
 }
 
-TEST(CgalOracle, ComparisonNoticesAWrongSurface) {
-  // Not the sweep's output but a surface with one misplaced node: the
-  // matcher must report it, or a passing oracle test proves nothing.
-  const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
-  const PointSet wrong({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {2, 2, 2.001}});
-  for (const glm::dvec3& n : CgalSkeletonInput(square).skeleton(0.0).nodes)
-    EXPECT_GT(wrong.nearest(n, kOracleRelative * length_scale(square)), kOracleRelative * length_scale(square));
+// Not the sweep's output but roofs with one misplaced node or one wrong
+// face: the comparison must report them, or a passing oracle test proves nothing.
+TEST(CgalOracle, ComparisonNoticesAWrongRoof) {
+  const Footprint rect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
+  const Surface right = sweep(rect);
+  ASSERT_TRUE(compare_with_cgal(rect, right).empty());
+
+  Surface raised = right;
+  for (glm::dvec3& v : raised.vertices)
+    if (v.z > 1.0) v.z += 1e-3;
+  EXPECT_FALSE(compare_with_cgal(rect, raised).empty());
+
+  // The same vertices, but one end face's source edge named as the other's:
+  // two faces for one edge, none for another, ridges between the wrong edges.
+  Surface renamed = right;
+  for (SurfaceFace& f : renamed.faces)
+    if (f.kind == FaceKind::Side && f.source_edge == 1) f.source_edge = 3;
+  EXPECT_FALSE(compare_with_cgal(rect, renamed).empty());
 }
 
-// ---- synthetic cases (data/synthetic/, see its README) ----
+// ---- synthetic cases (shared/data/synthetic, see its README) ----
 
 std::vector<std::string> synthetic_cases() {
-  // a_circle_4096 is left to the benchmark: CGAL alone needs 10 s on it.
-  std::vector<std::string> names = {"a_circle_0016", "a_circle_0064", "a_circle_0256", "a_circle_1024",
-                                    "b_image_contours"};
-  std::vector<std::string> globbed;
+  // Every single shape: a_* (regular polygons up to 4096), b, c_*, e_*; the
+  // collection d_city_6000 has its own test below.
+  std::vector<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(synthetic_file("x").parent_path())) {
     const std::string stem = e.path().stem().string();
-    if (e.path().extension() == ".json" && (stem.rfind("c_", 0) == 0 || stem.rfind("e_", 0) == 0))
-      globbed.push_back(stem);
+    if (e.path().extension() == ".json" && stem.size() > 2 && stem[1] == '_' && stem[0] != 'd') names.push_back(stem);
   }
-  std::sort(globbed.begin(), globbed.end());
-  names.insert(names.end(), globbed.begin(), globbed.end());
+  std::sort(names.begin(), names.end());
   return names;
 }
 
 TEST(SweepOracleData, SyntheticCasesArePresent) {
-  // 4 circles + b + 14 c_* + 12 e_* in data/synthetic/ (manifest.json).
-  EXPECT_EQ(synthetic_cases().size(), 31u);
+  // 5 circles + b + 14 c_* + 12 e_* in data/synthetic/ (manifest.json).
+  EXPECT_EQ(synthetic_cases().size(), 32u);
 }
 
 class SweepOracleSynthetic : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SweepOracleSynthetic, MatchesCgalSkeleton) {
-  if (kSanitized && GetParam() == "a_circle_1024")
-    GTEST_SKIP() << "CGAL alone needs about 8 minutes on the 1024-gon in a sanitized Debug build; Release covers it";
   const std::vector<PolyShape> shapes = read_polyjson_file(synthetic_file(GetParam()));
   ASSERT_EQ(shapes.size(), 1u);
   const PreparedFootprint prepared = prepare_footprint(to_footprint(shapes[0], 45.0));
-  for (const std::string& line : compare_guarded(prepared.footprint)) ADD_FAILURE() << GetParam() << ": " << line;
+  for (const std::string& line : sweep_and_compare_with_cgal(prepared.footprint))
+    ADD_FAILURE() << GetParam() << ": " << line;
 }
 
 INSTANTIATE_TEST_SUITE_P(Synthetic, SweepOracleSynthetic, ::testing::ValuesIn(synthetic_cases()),
                          [](const auto& info) { return info.param; });
 
 // The 6000 generated city blocks (rotated, bevelled, with courtyards): every
-// kCityStride-th one; the benchmark runs them all.
-TEST(SweepOracleCity, SampleMatchesCgalSkeleton) {
-  constexpr std::size_t kCityStride = 20;
+// kCityStride-th one, in kCityParts parts so that ctest runs them side by
+// side. All 6000 do not agree yet (shape 1: a node 4 mm off CGAL's and a
+// missing ridge, with the sweep of 7887b95); the full set waits on branch
+// generators for the engine.
+constexpr std::size_t kCityBlocks = 6000, kCityParts = 6, kCityStride = kSanitized ? 40 : 20;
+
+class SweepOracleCity : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(SweepOracleCity, MatchesCgalSkeleton) {
   const std::vector<PolyShape> shapes = read_polyjson_file(synthetic_file("d_city_6000"));
-  ASSERT_EQ(shapes.size(), 6000u);
-  for (std::size_t i = 0; i < shapes.size(); i += kCityStride) {
+  ASSERT_EQ(shapes.size(), kCityBlocks);
+  const std::size_t part = kCityBlocks / kCityParts;
+  std::size_t disagreeing = 0;
+  for (std::size_t i = GetParam() * part; i < (GetParam() + 1) * part; i += kCityStride) {
     const PreparedFootprint prepared = prepare_footprint(to_footprint(shapes[i], 45.0));
-    for (const std::string& line : compare_guarded(prepared.footprint)) ADD_FAILURE() << "shape " << i << ": " << line;
+    const std::vector<std::string> problems = sweep_and_compare_with_cgal(prepared.footprint);
+    disagreeing += problems.empty() ? 0 : 1;
+    for (const std::string& line : problems) ADD_FAILURE() << "shape " << i << ": " << line;
   }
+  std::cout << "d_city_6000 shapes " << GetParam() * part << ".." << (GetParam() + 1) * part - 1 << ": " << disagreeing
+            << " disagree with CGAL\n";
 }
+
+INSTANTIATE_TEST_SUITE_P(City, SweepOracleCity, ::testing::Range(std::size_t{0}, kCityParts));
 
 // ---- real OpenStreetMap footprints ----
 
-// A deterministic sample of a corpus file: every kStride-th feature, plus
-// every feature with a hole or with at least 100 vertices (the hard ones).
-constexpr std::size_t kStride = 25;
-
 class SweepOracleOsm : public ::testing::TestWithParam<std::filesystem::path> {};
 
-TEST_P(SweepOracleOsm, SampleMatchesCgalSkeleton) {
+TEST_P(SweepOracleOsm, EveryFootprintMatchesCgalSkeleton) {
   const GeoJsonCollection corpus = read_geojson_file(GetParam());
   ASSERT_TRUE(corpus.errors.empty()) << corpus.errors.front().message;
   std::size_t compared = 0, refused = 0, disagreeing = 0;
-  for (std::size_t i = 0; i < corpus.features.size(); ++i) {
+  for (std::size_t i = 0; i < corpus.features.size(); i += kSanitizedStride) {
     const GeoJsonFeature& f = corpus.features[i];
-    std::size_t vertices = 0;
-    for (const auto& loop : f.loops) vertices += loop.size();
-    if (i % kStride != 0 && f.loops.size() < 2 && vertices < 100) continue;
     Footprint fp;
     try {
       fp = prepare_footprint(to_footprint(f, 45.0)).footprint;
@@ -222,13 +185,13 @@ TEST_P(SweepOracleOsm, SampleMatchesCgalSkeleton) {
       continue;
     }
     ++compared;
-    const std::vector<std::string> problems = compare_guarded(fp);
+    const std::vector<std::string> problems = sweep_and_compare_with_cgal(fp);
     if (!problems.empty()) ++disagreeing;
     for (const std::string& line : problems) ADD_FAILURE() << "feature " << f.id << ": " << line;
   }
   std::cout << GetParam().filename().string() << ": compared " << compared << " footprints with CGAL, " << disagreeing
             << " disagree, " << refused << " refused by prepare_footprint\n";
-  EXPECT_GT(compared, 50u);
+  EXPECT_GT(compared, 50u / kSanitizedStride);
 }
 
 INSTANTIATE_TEST_SUITE_P(Osm, SweepOracleOsm, ::testing::ValuesIn(footprint_corpus_files()), [](const auto& info) {
