@@ -28,12 +28,18 @@ bool names_setting(const Graph& graph, const std::string& key) {
 
 }  // namespace
 
+Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
+  const auto i = recipe.input_index("footprint");
+  if (!i || recipe.inputs()[*i].type != &value_type<Footprint>())
+    return Status::error(recipe_file.string() + ": the recipe needs a graph input named 'footprint' of type footprint");
+  return Status::ok();
+}
+
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
                                                  const std::filesystem::path& footprints, const std::string& command,
                                                  std::ostream& err) {
-  const auto i = recipe.input_index("footprint");
-  if (!i || recipe.inputs()[*i].type != &value_type<Footprint>()) {
-    err << recipe_file.string() << ": the recipe needs a graph input named 'footprint' of type footprint\n";
+  if (const Status s = check_footprint_input(recipe, recipe_file); !s) {
+    err << s.message() << "\n";
     return std::nullopt;
   }
   try {
@@ -75,6 +81,40 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
 
 void label_parts(MeshSet& meshes, const GeoJsonFeature& f) {
   for (TaggedMesh& part : meshes.parts) part.building = f.id, part.feature = static_cast<std::int64_t>(f.index);
+}
+
+std::vector<std::string> FeatureEvaluation::warnings() const {
+  std::vector<std::string> out;
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::kWarning) out.push_back(d.to_string());
+  return out;
+}
+
+std::string FeatureEvaluation::reason() const {
+  std::string out;
+  for (const std::string& p : binding_problems) out += (out.empty() ? "" : "; ") + p;
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::kError) out += (out.empty() ? "" : "; ") + d.to_string();
+  return out;
+}
+
+FeatureEvaluation evaluate_feature(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f,
+                                   bool parallel) {
+  FeatureEvaluation out;
+  Graph graph = recipe.graph;
+  Bindings bindings = recipe.bindings;
+  EvalOptions options = recipe.options;
+  out.binding_problems = bind_feature(graph, bindings, options, f);
+  if (!out.binding_problems.empty()) return out;
+  options.parallel = parallel;
+  EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
+  out.ok = r.ok();
+  out.diagnostics = std::move(r.diagnostics);
+  if (out.ok) {
+    out.meshes = gather_meshes(r);
+    label_parts(out.meshes, f);
+  }
+  return out;
 }
 
 Result<const GeoJsonFeature*> find_feature(const GeoJsonCollection& collection, const std::string& id_or_index,

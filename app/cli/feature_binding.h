@@ -20,6 +20,10 @@
 
 namespace procex {
 
+// Ok, or why features cannot be bound to the recipe (no graph input named
+// `footprint` of type footprint), naming recipe_file.
+Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file);
+
 // The features a recipe loaded from recipe_file is to be evaluated for: checks
 // that it has a graph input named `footprint` of type footprint, then reads
 // `footprints`. nullopt after writing the problem to err ("procex <command>: ...").
@@ -39,6 +43,25 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
 
 // Marks every part with f's id and index (written to .glb extras).
 void label_parts(MeshSet& meshes, const GeoJsonFeature& f);
+
+struct MeshRecipe;
+
+// The recipe evaluated for one feature (a building of a batch).
+struct FeatureEvaluation {
+  bool ok = false;                           // every mesh output present, no error diagnostics
+  std::vector<std::string> binding_problems;  // why bind_feature refused the feature (then not evaluated)
+  std::vector<Diagnostic> diagnostics;       // the evaluation's
+  MeshSet meshes;                            // when ok: labelled with the feature's id and index
+
+  // The warning diagnostics (Diagnostic::to_string).
+  std::vector<std::string> warnings() const;
+  // The binding problems, then the error diagnostics, joined by "; " (a batch report's reason).
+  std::string reason() const;
+};
+// Binds f to a copy of the recipe and evaluates its mesh outputs; `parallel`
+// as EvalOptions::parallel (off when buildings already run in parallel).
+FeatureEvaluation evaluate_feature(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f,
+                                   bool parallel);
 
 // The feature whose id is `id_or_index`, else (if it is a number) the one at
 // that position. The message names the file, the feature and, for a feature
