@@ -1,0 +1,166 @@
+#include "app/python/recipe.h"
+
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "app/cli/feature_binding.h"
+#include "app/python/errors.h"
+#include "app/python/footprint_input.h"
+#include "app/python/mesh_arrays.h"
+#include "app/python/parameter_info.h"
+#include "app/python/python_json.h"
+
+namespace py = pybind11;
+
+namespace procex::python {
+namespace {
+
+MeshRecipe open(const std::filesystem::path& file) {
+  std::ostringstream err;
+  std::optional<MeshRecipe> r = open_mesh_recipe(file, {}, err);
+  if (!r) {
+    std::string message = err.str();
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    throw PythonError{ErrorKind::Recipe, message, {{"file", file.string()}}, {}, {}, {}, {}};
+  }
+  return std::move(*r);
+}
+
+struct Input {
+  std::string name, type, doc;
+  py::object default_value;
+  bool required = false;
+};
+
+std::vector<Parameter> exposed(const Graph& graph) {
+  std::vector<Parameter> out;
+  for (const ExposedParam& p : graph.exposed_params()) {
+    const Node& node = *graph.node(p.node);
+    Parameter& info = out.emplace_back(parameter_info(node.decl().params()[p.param], node.params[p.param]));
+    info.name = p.name;
+    info.node = std::to_string(p.node);
+    info.node_type = node.decl().type_name();
+  }
+  return out;
+}
+
+std::vector<Input> inputs(const Graph& graph) {
+  std::vector<Input> out;
+  for (const GraphInput& in : graph.inputs())
+    out.push_back({in.name, in.type->name(), in.doc, to_python(in.default_value), in.default_value.empty()});
+  return out;
+}
+
+}  // namespace
+
+Recipe::Recipe(const std::filesystem::path& file) : file_(file), recipe_(open(file)), evaluator_(cache_, kEngineSalt) {}
+
+void Recipe::set(const std::string& name, py::handle value) {
+  const std::string text = setting_text(value);
+  if (Status s = apply_setting(recipe_.graph, recipe_.bindings, name, text); !s)
+    throw PythonError{ErrorKind::Parameter, file_.string() + ": set " + name + "=" + text + ": " + s.message(),
+                      {{"name", name}}, {}, {}, {}, {}};
+}
+
+MeshRecipe Recipe::with(py::handle attributes) const {
+  MeshRecipe r = recipe_;
+  if (attributes.is_none()) return r;
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(attributes)) {
+    const std::string name = py::str(key), text = setting_text(value);
+    if (Status s = apply_setting(r.graph, r.bindings, name, text); !s)
+      throw PythonError{ErrorKind::Parameter, file_.string() + ": attribute " + name + "=" + text + ": " + s.message(),
+                        {{"name", name}}, {}, {}, {}, {}};
+  }
+  return r;
+}
+
+py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
+  const MeshRecipe r = with(attributes);
+  if (footprint.is_none()) {
+    EvalResult result;
+    {
+      py::gil_scoped_release release;
+      result = evaluator_.evaluate(r.graph, r.bindings, r.outputs, r.options);
+    }
+    warn(file_.string(), {}, result.diagnostics);
+    if (!result.ok()) raise_evaluation(file_, std::move(result.diagnostics));
+    return wrap_all(gather_meshes(result));
+  }
+  const GeoJsonFeature feature = feature_from_python(footprint);
+  FeatureEvaluation e;
+  {
+    py::gil_scoped_release release;
+    e = evaluate_feature(r, evaluator_, feature, /*parallel=*/true);
+  }
+  warn(file_.string() + ": feature " + feature.id, e.binding_warnings, e.diagnostics);
+  if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
+  return wrap_all(std::move(e.meshes));
+}
+
+void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic> diagnostics) {
+  std::string message;
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::kError) message += (message.empty() ? "" : "\n") + file.string() + ": " + d.to_string();
+  if (message.empty()) message = file.string() + ": a mesh output is missing";
+  throw PythonError{ErrorKind::Evaluation, message, {{"file", file.string()}}, {}, {}, {}, std::move(diagnostics)};
+}
+
+void warn(const std::string& where, const std::vector<std::string>& binding_warnings,
+          const std::vector<Diagnostic>& diagnostics) {
+  auto one = [](const std::string& text) {
+    if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+  };
+  for (const std::string& w : binding_warnings) one(where + ": warning: " + w);
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::kWarning) one(where + ": " + d.to_string());
+}
+
+void bind_recipe(py::module_& m) {
+  py::class_<Input>(m, "Input", "A graph input of a recipe (footprint, building_id, ...).")
+      .def_readonly("name", &Input::name)
+      .def_readonly("type", &Input::type)
+      .def_readonly("doc", &Input::doc)
+      .def_readonly("default", &Input::default_value, "Its default (None without one, or for footprints).")
+      .def_readonly("required", &Input::required, "No default: it must be bound (a footprint for procex batch).")
+      .def("__repr__", [](const Input& i) { return "<procex.Input " + i.name + ": " + i.type + ">"; });
+
+  py::class_<Recipe, std::shared_ptr<Recipe>>(
+      m, "Recipe",
+      "A .pxg recipe: load it, set its exposed parameters, evaluate it to meshes. Evaluating again recomputes only "
+      "the nodes a change reaches (each Recipe has its own result cache).")
+      .def_static("load", [](const std::filesystem::path& path) { return std::make_shared<Recipe>(path); },
+                  py::arg("path"), "Loads a recipe; RecipeError names the file and where it is wrong.")
+      .def_property_readonly("path", [](const Recipe& r) { return r.file(); })
+      .def_property_readonly("exposed", [](const Recipe& r) { return exposed(r.mesh_recipe().graph); },
+                             "The exposed parameters: name, type, value, default, min, max, unit, doc, choices.")
+      .def_property_readonly("inputs", [](const Recipe& r) { return inputs(r.mesh_recipe().graph); },
+                             "The graph inputs (footprint, building_id, ...).")
+      .def_property_readonly("outputs", [](const Recipe& r) { return r.mesh_recipe().outputs; },
+                             "The names of the mesh outputs evaluate() gathers.")
+      .def("set", &Recipe::set, py::arg("name"), py::arg("value"),
+           "Sets an exposed parameter (or binds a graph input) by name. A str is read as --set reads text; other "
+           "values as JSON (numbers, bools, lists, NumPy arrays). ParameterError says why a value does not fit.")
+      .def(
+          "get",
+          [](const Recipe& r, const std::string& name) -> py::object {
+            for (const Parameter& p : exposed(r.mesh_recipe().graph))
+              if (p.name == name) return p.value;
+            if (const auto it = r.mesh_recipe().bindings.find(name); it != r.mesh_recipe().bindings.end())
+              return to_python(it->second);
+            throw PythonError{ErrorKind::Parameter, r.file().string() + ": no exposed parameter named '" + name + "'",
+                              {{"name", name}}, {}, {}, {}, {}};
+          },
+          py::arg("name"), "The current value of an exposed parameter or bound graph input.")
+      .def("evaluate", &Recipe::evaluate, py::arg("footprint") = py::none(), py::arg("attributes") = py::none(),
+           "Evaluates the mesh outputs, returning a list of Mesh. footprint: a GeoJSON Feature or geometry dict, or "
+           "loops of (x, y) points, bound as procex batch binds a feature (its id to building_id, its properties to "
+           "the parameters of the same name). attributes: {name: value} set for this evaluation only, before the "
+           "feature's properties. The GIL is released while it runs. Raises EvaluationError (node diagnostics), "
+           "FootprintError, ParameterError; warnings become Python UserWarnings.")
+      .def("__repr__", [](const Recipe& r) { return "<procex.Recipe " + r.file().string() + ">"; });
+}
+
+}  // namespace procex::python

@@ -1,0 +1,53 @@
+// procex.Recipe: a .pxg recipe loaded once, its exposed parameters set from
+// Python and evaluated as often as wanted. Each Recipe keeps its own result
+// cache, so evaluating again after a change recomputes only the nodes the
+// change reaches. Loading, settings and footprint binding are the command
+// line's own (app/cli: open_mesh_recipe, apply_setting, evaluate_feature).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "app/cli/recipe_session.h"
+#include "graph/cache.h"
+#include "graph/evaluator.h"
+
+namespace procex::python {
+
+class Recipe {
+ public:
+  explicit Recipe(const std::filesystem::path& file);  // raises RecipeError
+
+  const std::filesystem::path& file() const { return file_; }
+  const MeshRecipe& mesh_recipe() const { return recipe_; }
+  Evaluator& evaluator() { return evaluator_; }
+
+  // Sets an exposed parameter, or binds a graph input; raises ParameterError.
+  void set(const std::string& name, pybind11::handle value);
+  // A copy of the recipe with `attributes` set as set() would (for one evaluation).
+  MeshRecipe with(pybind11::handle attributes) const;
+  // The recipe's meshes; raises EvaluationError with the diagnostics.
+  pybind11::list evaluate(pybind11::handle footprint, pybind11::handle attributes);
+
+ private:
+  std::filesystem::path file_;
+  MeshRecipe recipe_;
+  ResultCache cache_;
+  Evaluator evaluator_;
+};
+
+// Registers procex.Recipe, procex.Parameter and procex.Input on m.
+void bind_recipe(pybind11::module_& m);
+
+// The EvaluationError for a failed evaluation of `file`: one line per error
+// diagnostic, as `procex eval` prints it.
+[[noreturn]] void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic> diagnostics);
+
+// Python warnings (UserWarning) for warning diagnostics and binding warnings, prefixed by `where`.
+void warn(const std::string& where, const std::vector<std::string>& binding_warnings,
+          const std::vector<Diagnostic>& diagnostics);
+
+}  // namespace procex::python

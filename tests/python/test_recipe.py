@@ -1,0 +1,164 @@
+"""procex.Recipe: every sample evaluates to the summary the C++ sample test
+stores (samples/expected), exposed parameters as their declarations say, and
+a parameter change moves the mesh as it should."""
+import numpy as np
+import pytest
+
+import procex
+from conftest import SAMPLES, assert_matches, expected, summary
+
+NAMES = sorted(p.stem for p in SAMPLES.glob("*.pxg") if p.stem != "city")
+
+
+def test_every_sample_is_tested():
+    assert len(NAMES) >= 5 and "house" in NAMES
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_sample_matches_stored_summary(name):
+    parts = procex.Recipe.load(SAMPLES / f"{name}.pxg").evaluate()
+    assert_matches(expected(name), summary(parts), name)
+
+
+def test_house_exposed_parameters_come_from_declarations():
+    r = procex.Recipe.load(SAMPLES / "house.pxg")
+    exposed = {p.name: p for p in r.exposed}
+    assert set(exposed) == {"shape", "pitch"}
+    pitch = exposed["pitch"]
+    assert pitch.type == "float" and pitch.unit == "deg"
+    assert pitch.min is not None and pitch.max is not None and pitch.min < pitch.value < pitch.max
+    assert pitch.node_type and pitch.doc
+    shape = exposed["shape"]
+    assert shape.type == "enum" and shape.value in shape.choices and len(shape.choices) >= 2
+    assert r.get("pitch") == pitch.value
+    assert [o for o in r.outputs] == ["mesh"]
+
+
+def test_set_changes_the_mesh_and_back():
+    r = procex.Recipe.load(SAMPLES / "house.pxg")
+    base = summary(r.evaluate())
+    pitch = r.get("pitch")
+    r.set("pitch", pitch - 10)  # degrees from the vertical: a steeper roof
+    steeper = summary(r.evaluate())
+    assert steeper["faces"] == base["faces"]
+    assert steeper["max"][2] > base["max"][2] + 0.5  # a steeper roof is higher
+    assert steeper["volume"] > base["volume"]
+    np.testing.assert_allclose(steeper["min"], base["min"])  # the plan does not move
+    r.set("pitch", pitch)
+    assert_matches(expected("house"), summary(r.evaluate()), "house after setting pitch back")
+
+
+def test_setting_matches_cli_set(tmp_path):
+    from conftest import cli
+
+    r = procex.Recipe.load(SAMPLES / "house.pxg")
+    r.set("shape", "rectangle")
+    r.set("pitch", 40)
+    py = summary(r.evaluate())
+    code, out, err = cli("eval", SAMPLES / "house.pxg", "-o", tmp_path / "h.obj", "--set", "shape=rectangle",
+                         "--set", "pitch=40")
+    assert code == 0, err
+    assert f"{py['faces']} faces" in out
+
+
+def test_arrays_shapes_dtypes_and_views():
+    (part,) = procex.Recipe.load(SAMPLES / "house.pxg").evaluate()
+    v = part.vertices
+    assert v.shape == (part.n_vertices, 3) and v.dtype == np.float64
+    assert not v.flags.writeable
+    assert np.shares_memory(v, part.vertices)  # a view of the mesh's storage, not a fresh copy each time
+    assert part.face_offsets.shape == (part.n_faces + 1,) and part.face_offsets.dtype == np.int32
+    assert part.face_offsets[0] == 0 and part.face_offsets[-1] == len(part.face_indices)
+    assert np.all(np.diff(part.face_offsets) >= 3)
+    assert part.face_indices.min() >= 0 and part.face_indices.max() < part.n_vertices
+    assert part.face_tags.shape == (part.n_faces,) and part.face_tags.dtype == np.uint32
+    assert part.face_tags.max() < len(part.tags)
+    assert part.source_edges.shape == (part.n_faces,) and part.source_edges.dtype == np.int32
+    assert part.face_kinds.shape == (part.n_faces,) and set(part.face_kinds) <= {0, 1, 2}
+    # every edge of a closed 2-manifold is used once each way
+    idx, off = part.face_indices, part.face_offsets
+    halfedges = set()
+    for f in range(part.n_faces):
+        loop = idx[off[f]:off[f + 1]]
+        for a, b in zip(loop, np.roll(loop, -1)):
+            assert (a, b) not in halfedges
+            halfedges.add((a, b))
+    assert all((b, a) in halfedges for a, b in halfedges)
+
+
+def test_arrays_outlive_the_mesh_and_recipe():
+    v = procex.Recipe.load(SAMPLES / "house.pxg").evaluate()[0].vertices
+    import gc
+
+    gc.collect()
+    assert np.isfinite(v).all() and v[:, 2].max() > 8
+
+
+def test_placed_meshes_are_instances_with_matrices():
+    (part,) = procex.Recipe.load(SAMPLES / "windows_grid.pxg").evaluate()
+    assert len(part.placed) == 28
+    names = {p.mesh.name for p in part.placed}
+    assert names == {"window", "window_frame"}
+    for placement in part.placed:
+        mesh, matrix = placement
+        assert matrix.shape == (4, 4)
+        np.testing.assert_allclose(matrix[3], [0, 0, 0, 1])
+        world = mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
+        lo, hi = part.vertices.min(axis=0) - 1, part.vertices.max(axis=0) + 1
+        assert np.all(world >= lo) and np.all(world <= hi)  # on the building
+    by_name = {}
+    for p in part.placed:  # one mesh per name, shared by its placements
+        by_name.setdefault(p.mesh.name, p.mesh.vertices.__array_interface__["data"][0])
+        assert p.mesh.vertices.__array_interface__["data"][0] == by_name[p.mesh.name]
+
+
+def test_footprint_as_feature_and_as_loops(samples):
+    import json
+
+    r = procex.Recipe.load(samples / "city.pxg")
+    features = json.loads((samples / "footprints" / "sample_block.geojson").read_text())["features"]
+    want = expected("city")
+    for f in features[:3]:
+        (part,) = r.evaluate(footprint=f)
+        assert part.building == f["id"]
+        got = summary([part])
+        assert_matches({**want["buildings"][f["id"]], "tolerance": want["tolerance"]}, got, f["id"])
+    square = [[0, 0], [10, 0], [10, 10], [0, 10]]
+    (part,) = r.evaluate(footprint=[square])
+    assert part.vertices[:, 0].min() == 0 and part.vertices[:, 0].max() == 10
+    (geometry,) = r.evaluate(footprint={"type": "Polygon", "coordinates": [square + [square[0]]]})
+    np.testing.assert_allclose(summary([geometry])["volume"], summary([part])["volume"])
+
+
+def test_feature_properties_set_parameters_of_the_same_name():
+    r = procex.Recipe.load(SAMPLES / "city.pxg")
+    square = [[0, 0], [12, 0], [12, 12], [0, 12], [0, 0]]
+
+    def height(building):
+        feature = {"type": "Feature", "id": "b1", "properties": {"building": building},
+                   "geometry": {"type": "Polygon", "coordinates": [square]}}
+        (part,) = r.evaluate(footprint=feature)
+        assert part.building == "b1"
+        return part.vertices[:, 2].max()
+
+    assert height("church") != height("house")
+
+
+def test_attributes_apply_for_one_evaluation_only():
+    r = procex.Recipe.load(SAMPLES / "house.pxg")
+    steep = summary(r.evaluate(attributes={"pitch": r.get("pitch") - 10}))
+    again = summary(r.evaluate())
+    assert steep["max"][2] > again["max"][2]
+    assert_matches(expected("house"), again, "house after a one-off attribute")
+
+
+def test_node_types_document_their_declarations():
+    types = procex.node_types()
+    assert "Extrude" in types
+    extrude = types["Extrude"]
+    assert extrude.doc and "Extrude" in extrude.markdown
+    assert extrude.outputs and all(p.name for p in extrude.params)
+    for t in types.values():
+        for p in t.params:
+            if p.min is not None:
+                assert p.value is None or p.min <= p.value
