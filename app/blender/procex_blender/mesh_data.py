@@ -1,0 +1,95 @@
+"""procex meshes into Blender data: one Blender mesh from the parts of a
+building (NumPy arrays straight into foreach_set), one material per face tag,
+placed meshes as linked duplicates (objects sharing one mesh datablock)."""
+import zlib
+
+import bpy
+from mathutils import Matrix
+import numpy as np
+
+PLACED_KEY = "procex_placed"  # marks the objects the add-on placed (replaced on re-evaluation)
+
+
+def material(tag):
+    """The material of a face tag, made once per file with a colour of its own."""
+    name = "procex " + (tag or "untagged")
+    m = bpy.data.materials.get(name)
+    if m is None:
+        m = bpy.data.materials.new(name)
+        h = zlib.crc32(name.encode())
+        m.diffuse_color = (0.35 + 0.6 * (h & 255) / 255, 0.35 + 0.6 * ((h >> 8) & 255) / 255,
+                           0.35 + 0.6 * ((h >> 16) & 255) / 255, 1.0)
+    return m
+
+
+def fill(me, parts):
+    """Replaces the geometry of Blender mesh me with the parts (procex.Mesh list), in place."""
+    tags = []
+    slot = {}
+    vertices, starts, totals, indices, materials, edges = [], [], [], [], [], []
+    vertex_base = loop_base = 0
+    for part in parts:
+        offsets = part.face_offsets
+        vertices.append(part.vertices)
+        starts.append(offsets[:-1] + loop_base)
+        totals.append(np.diff(offsets))
+        indices.append(part.face_indices + vertex_base)
+        for t in part.tags:
+            slot.setdefault(t, len(slot))
+            if len(tags) < len(slot):
+                tags.append(t)
+        lut = np.array([slot[t] for t in part.tags], dtype=np.int32)
+        materials.append(lut[part.face_tags] if len(lut) else np.zeros(part.n_faces, np.int32))
+        edges.append(part.source_edges if len(part.source_edges) else np.full(part.n_faces, -1, np.int32))
+        vertex_base += part.n_vertices
+        loop_base += len(part.face_indices)
+    cat = (lambda a, dtype: np.ascontiguousarray(np.concatenate(a), dtype=dtype) if a else np.zeros(0, dtype))
+    co = cat(vertices, np.float32).ravel() if vertices else np.zeros(0, np.float32)
+    loop_start, loop_total = cat(starts, np.int32), cat(totals, np.int32)
+    me.clear_geometry()
+    me.vertices.add(len(co) // 3)
+    me.vertices.foreach_set("co", co)
+    me.loops.add(loop_base)
+    me.loops.foreach_set("vertex_index", cat(indices, np.int32))
+    me.polygons.add(len(loop_start))
+    me.polygons.foreach_set("loop_start", loop_start)
+    me.polygons.foreach_set("loop_total", loop_total)
+    me.polygons.foreach_set("material_index", cat(materials, np.int32))
+    me.materials.clear()
+    for t in tags:
+        me.materials.append(material(t))
+    attribute = me.attributes.get("procex_source_edge") or me.attributes.new("procex_source_edge", "INT", "FACE")
+    attribute.data.foreach_set("value", cat(edges, np.int32))
+    me.update(calc_edges=True)
+    return me
+
+
+def place(obj, parts, shared=None):
+    """Replaces the objects placed on obj by the parts' placed meshes: one
+    child object per placement, sharing one Blender mesh per distinct procex
+    mesh (across calls too when `shared` is the same dict)."""
+    for child in [c for c in obj.children if c.get(PLACED_KEY)]:
+        bpy.data.objects.remove(child)
+    shared = {} if shared is None else shared
+    collections = obj.users_collection or (bpy.context.scene.collection,)
+    count = 0
+    for part in parts:
+        for placement in part.placed:
+            mesh, matrix = placement
+            # one procex mesh under one name (its untagged faces take the name), however many placements
+            key = (mesh.vertices.__array_interface__["data"][0], mesh.name)
+            data = shared.get(key)
+            if data is None:
+                data = shared[key] = fill(bpy.data.meshes.new(mesh.name or "placed"), [mesh])
+            child = bpy.data.objects.new(f"{obj.name} {data.name} {count}", data)
+            child[PLACED_KEY] = True
+            child.parent = obj
+            child.matrix_basis = Matrix(matrix.tolist())
+            if placement.tag:  # the placement's tag wins over the mesh's own
+                for i, s in enumerate(child.material_slots):
+                    s.link = "OBJECT"
+                    child.material_slots[i].material = material(placement.tag)
+            for c in collections:
+                c.objects.link(child)
+            count += 1
+    return count

@@ -1,0 +1,166 @@
+"""The procex add-on in Blender, headless (tests/blender/CMakeLists.txt runs it):
+installs and enables it from the zip the build makes, imports the house
+recipe, changes exposed parameters and checks the mesh changed in place as the
+procex module says it should (vertex count, bounds and volume through bmesh),
+then imports the 18 sample-block buildings as a batch.
+
+    blender -b --factory-startup --python-exit-code 1 --python addon_test.py -- ADDON.zip SAMPLES_DIR
+"""
+import json
+import os
+import sys
+
+import bmesh
+import bpy
+
+addon, samples = sys.argv[sys.argv.index("--") + 1:][:2]
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def close(a, b, tolerance, what):
+    check(abs(a - b) <= tolerance, f"{what}: {a} != {b} (tolerance {tolerance})")
+
+
+def measure(obj):
+    """Vertex and face counts, bounds and volume of an object's mesh, through bmesh."""
+    bm = bmesh.new()
+    bm.from_mesh(obj.data)
+    co = [v.co for v in bm.verts]
+    result = {
+        "vertices": len(bm.verts),
+        "faces": len(bm.faces),
+        "min": [min(c[i] for c in co) for i in range(3)],
+        "max": [max(c[i] for c in co) for i in range(3)],
+        "volume": bm.calc_volume(signed=True),
+    }
+    bm.free()
+    return result
+
+
+def module_summary(parts):
+    """The same numbers from the procex module's arrays (the reference)."""
+    import numpy as np
+
+    v = np.concatenate([p.vertices for p in parts])
+    volume = 0.0
+    for p in parts:
+        for f in range(p.n_faces):
+            pts = p.vertices[p.face_indices[p.face_offsets[f]:p.face_offsets[f + 1]]]
+            volume += sum(np.dot(pts[0], np.cross(pts[k], pts[k + 1])) for k in range(1, len(pts) - 1)) / 6.0
+    return {"vertices": len(v), "faces": sum(p.n_faces for p in parts), "min": v.min(axis=0), "max": v.max(axis=0),
+            "volume": volume}
+
+
+def same(got, want, what):
+    """Blender stores float32 coordinates: compare within what float32 keeps."""
+    check(got["vertices"] == want["vertices"], f"{what}: {got['vertices']} vertices, want {want['vertices']}")
+    check(got["faces"] == want["faces"], f"{what}: {got['faces']} faces, want {want['faces']}")
+    for end in ("min", "max"):
+        for i in range(3):
+            close(got[end][i], want[end][i], 1e-4 * max(1.0, abs(want[end][i])), f"{what} {end}[{i}]")
+    close(got["volume"], want["volume"], 1e-5 * abs(want["volume"]), f"{what} volume")
+
+
+# ---- install and enable, as a user would from Preferences > Add-ons > Install
+bpy.ops.preferences.addon_install(filepath=addon, overwrite=True)
+bpy.ops.preferences.addon_enable(module="procex_blender")
+check("procex_blender" in bpy.context.preferences.addons, "the add-on is not enabled")
+from procex_blender import engine  # noqa: E402
+
+procex = engine.procex
+check(hasattr(bpy.types, "PROCEX_PT_parameters"), "the sidebar panel is not registered")
+
+# ---- File > Import > procex recipe
+house = os.path.join(samples, "house.pxg")
+check(bpy.ops.import_scene.procex_recipe(filepath=house) == {"FINISHED"}, "importing house.pxg failed")
+obj = bpy.context.active_object
+check(obj is not None and obj.name == "house", "the imported object is not active or not named house")
+stored = json.load(open(os.path.join(samples, "expected", "house.json")))
+got = measure(obj)
+check(got["faces"] == stored["faces"], f"house: {got['faces']} faces, stored {stored['faces']}")
+close(got["volume"], stored["volume"], 1e-5 * stored["volume"], "house volume")
+for end in ("min", "max"):
+    for i in range(3):
+        close(got[end][i], stored["bounds"][end][i], 1e-4, f"house {end}[{i}]")
+materials = {m.name for m in obj.data.materials}
+check(materials == {"procex " + t for t in stored["faces_per_tag"]}, f"materials per tag: {materials}")
+
+# the panel's parameters are the recipe's exposed ones, with ranges and units
+params = obj.procex.params
+check([p.name for p in params] == ["shape", "pitch"], f"parameters: {[p.name for p in params]}")
+pitch = params["pitch"]
+lowest, highest = pitch.range()
+declared = {p.name: p for p in procex.Recipe.load(house).exposed}["pitch"]
+check(pitch.kind == "FLOAT" and pitch.unit == "deg" and (lowest, highest) == (declared.min, declared.max),
+      f"pitch range or unit: {pitch.range_text()}")
+check(lowest < pitch.float_value < highest, "pitch outside its range")
+check("deg" in pitch.range_text(), pitch.range_text())
+
+# ---- change an exposed parameter: the mesh is replaced in place
+mesh_name = obj.data.name
+before = got
+pitch.float_value = pitch.float_value - 10  # steeper (degrees from the vertical); the update callback re-evaluates
+check(obj.procex.error == "", obj.procex.error)
+after = measure(obj)
+check(bpy.data.objects["house"] == obj and obj.data.name == mesh_name, "the mesh was not replaced in place")
+check(after["vertices"] == before["vertices"], "a steeper roof keeps the vertex count")
+check(after["max"][2] > before["max"][2] + 0.5, f"the roof did not rise: {before['max'][2]} -> {after['max'][2]}")
+check(after["volume"] > before["volume"], "the volume did not grow")
+reference = procex.Recipe.load(house)
+reference.set("pitch", pitch.float_value)
+same(after, module_summary(reference.evaluate()), "house at the new pitch")
+print(f"procex add-on: house re-mesh after a pitch change {obj.procex.last_ms:.1f} ms")
+
+params["shape"].enum_value = "rectangle"
+reference.set("shape", "rectangle")
+same(measure(obj), module_summary(reference.evaluate()), "house as a rectangle")
+check(measure(obj)["vertices"] != after["vertices"], "the shape change did not change the mesh")
+
+# an out-of-range value is clamped to the declared range, as the panel shows it
+pitch.float_value = highest + 100
+check(obj.procex.error == "", obj.procex.error)
+reference.set("pitch", highest)
+same(measure(obj), module_summary(reference.evaluate()), "house at the largest pitch")
+
+# ---- placed meshes are linked duplicates
+grid = os.path.join(samples, "windows_grid.pxg")
+check(bpy.ops.import_scene.procex_recipe(filepath=grid) == {"FINISHED"}, "importing windows_grid.pxg failed")
+building = bpy.context.active_object
+placed = [c for c in building.children if c.get("procex_placed")]
+check(len(placed) == 28, f"{len(placed)} placed objects, want 28")
+shared = {c.data.name for c in placed}
+check(len(shared) == 2, f"placed meshes are not shared: {len(shared)} meshes")
+check(sum(bpy.data.meshes[n].users for n in shared) == 28, "each placed mesh is used by its placements")
+params = building.procex.params
+params["spacing"].float_value = params["spacing"].float_value * 2  # wider spacing: fewer windows
+again = [c for c in building.children if c.get("procex_placed")]
+check(0 < len(again) < 28, f"{len(again)} placed objects after doubling the spacing")
+
+# ---- batch: one object per building of the sample block
+block = os.path.join(samples, "footprints", "sample_block.geojson")
+city = os.path.join(samples, "city.pxg")
+check(bpy.ops.import_scene.procex_batch(filepath=block, recipe=city) == {"FINISHED"}, "batch import failed")
+collection = bpy.data.collections["sample_block"]
+stored = json.load(open(os.path.join(samples, "expected", "city.json")))
+features = {f["id"]: f for f in json.load(open(block))["features"]}
+buildings = [o for o in collection.objects if not o.get("procex_placed")]
+check(sorted(o.name for o in buildings) == sorted(stored["buildings"]), "buildings are not named by their ids")
+for o in buildings:
+    want = stored["buildings"][o.name]
+    got = measure(o)
+    close(got["volume"], want["volume"], 1e-5 * want["volume"], f"{o.name} volume")
+    for end in ("min", "max"):
+        for i in range(3):
+            close(got[end][i], want["bounds"][end][i], 1e-3, f"{o.name} {end}[{i}]")
+    check(got["faces"] == sum(want["faces_per_tag"].values()), f"{o.name} faces")
+    check({m.name for m in o.data.materials} == {"procex " + t for t in want["faces_per_tag"]}, f"{o.name} materials")
+    for key, value in features[o.name]["properties"].items():
+        if value is not None:
+            check(o[key] == value, f"{o.name}: custom property {key} = {o.get(key)!r}, want {value!r}")
+    check(o.procex.recipe == city and o.procex.feature, f"{o.name} does not remember its recipe and feature")
+print(f"procex add-on: {len(buildings)} buildings imported")
+print("procex add-on test: ok")
