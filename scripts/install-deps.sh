@@ -11,6 +11,7 @@ packages=(
   xvfb xauth xdotool x11-apps netpbm
   libcgal-dev
   slurm-wlm munge
+  pybind11-dev python3-dev python3-numpy python3-pytest blender
   nodejs
 )
 

@@ -26,6 +26,11 @@ case "$mode" in
     build/app/cli/procex batch samples/city.pxg --footprints samples/footprints/sample_block.geojson \
       -o out/city.glb --report out/city.report.json
     echo "wrote out/house.obj (+ out/house.mtl), out/city.glb and out/city.report.json"
+    # The Python module (import procex) and the Blender add-on, enabled in the user's Blender.
+    sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo cmake --install build --component python
+    blender -b --python app/blender/install_addon.py -- build/blender/procex_blender.zip >/dev/null
+    echo "installed the procex Python module and the Blender add-on (File > Import > procex recipe)"
     ;;
   test)
     configure_and_build build -DCMAKE_BUILD_TYPE=Release
