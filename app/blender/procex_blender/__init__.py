@@ -19,16 +19,24 @@ bl_info = {
     "category": "Import-Export",
 }
 
+import bpy  # noqa: E402
+
 from . import batch_import, panel, parameters, recipe_import  # noqa: E402
 
-_modules = (parameters, recipe_import, batch_import, panel)
+_importers = (recipe_import, batch_import)  # each an OPERATOR with its File > Import entry (menu)
 
 
 def register():
-    for m in _modules:
-        m.register()
+    parameters.register()
+    for m in _importers:
+        bpy.utils.register_class(m.OPERATOR)
+        bpy.types.TOPBAR_MT_file_import.append(m.menu)
+    panel.register()
 
 
 def unregister():
-    for m in reversed(_modules):
-        m.unregister()
+    panel.unregister()
+    for m in reversed(_importers):
+        bpy.types.TOPBAR_MT_file_import.remove(m.menu)
+        bpy.utils.unregister_class(m.OPERATOR)
+    parameters.unregister()

@@ -74,11 +74,4 @@ def menu(self, context):
     self.layout.operator(PROCEX_OT_import_batch.bl_idname, text="procex batch (.geojson + .pxg)")
 
 
-def register():
-    bpy.utils.register_class(PROCEX_OT_import_batch)
-    bpy.types.TOPBAR_MT_file_import.append(menu)
-
-
-def unregister():
-    bpy.types.TOPBAR_MT_file_import.remove(menu)
-    bpy.utils.unregister_class(PROCEX_OT_import_batch)
+OPERATOR = PROCEX_OT_import_batch

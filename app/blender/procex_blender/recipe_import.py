@@ -38,11 +38,4 @@ def menu(self, context):
     self.layout.operator(PROCEX_OT_import_recipe.bl_idname, text="procex recipe (.pxg)")
 
 
-def register():
-    bpy.utils.register_class(PROCEX_OT_import_recipe)
-    bpy.types.TOPBAR_MT_file_import.append(menu)
-
-
-def unregister():
-    bpy.types.TOPBAR_MT_file_import.remove(menu)
-    bpy.utils.unregister_class(PROCEX_OT_import_recipe)
+OPERATOR = PROCEX_OT_import_recipe
