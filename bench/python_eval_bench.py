@@ -1,11 +1,13 @@
 """The procex Python module against procex eval's in-process evaluation, in
 one run (BENCHMARKS.md, "Python and Blender"): a recipe evaluated with an
 empty cache, its meshes handed back as NumPy arrays (vertices, faces, tags
-touched), median of N, alternating with the C++ reference
+touched), median of N in process CPU time (steadier than wall time on a
+loaded machine), alternating with the C++ reference
 (build/bench/procex_recipe_eval_bench).
 
     PYTHONPATH=build/python python3 bench/python_eval_bench.py [RECIPE] [ROUNDS]
 """
+import os
 import statistics
 import subprocess
 import sys
@@ -24,16 +26,16 @@ def python_median():
     times = []
     for _ in range(per_round):
         fresh = procex.Recipe.load(recipe)  # an empty cache, as procex eval has
-        start = time.perf_counter()
+        start = time.process_time()
         parts = fresh.evaluate()
         for p in parts:
             (p.vertices, p.face_offsets, p.face_indices, p.face_tags)
-        times.append((time.perf_counter() - start) * 1000)
+        times.append((time.process_time() - start) * 1000)
     return statistics.median(times)
 
 
 def cpp_median():
-    out = subprocess.run(["build/bench/procex_recipe_eval_bench", recipe, str(per_round)], check=True,
+    out = subprocess.run([os.environ.get("PROCEX_RECIPE_EVAL_BENCH", "build/bench/procex_recipe_eval_bench"), recipe, str(per_round)], check=True,
                          capture_output=True, text=True).stdout.split()
     return float(out[1])
 
