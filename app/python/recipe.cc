@@ -102,8 +102,11 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
 
 void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic> diagnostics) {
   std::string message;
-  for (const Diagnostic& d : diagnostics)
-    if (d.severity == Severity::kError) message += (message.empty() ? "" : "\n") + file.string() + ": " + d.to_string();
+  for (const Diagnostic& d : diagnostics) {
+    if (d.severity != Severity::kError) continue;
+    if (!message.empty()) message += '\n';
+    message.append(file.string()).append(": ").append(d.to_string());
+  }
   if (message.empty()) message = file.string() + ": a mesh output is missing";
   throw PythonError{ErrorKind::Evaluation, message, {{"file", file.string()}}, {}, {}, {}, std::move(diagnostics)};
 }
