@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const int iterations = argc > 2 ? std::atoi(argv[2]) : 50;
-  std::optional<MeshRecipe> recipe = open_mesh_recipe(argv[1], {}, std::cerr);
+  std::optional<MeshRecipe> recipe = open_mesh_recipe(argv[1], {}, {}, std::cerr);
   if (!recipe) return 2;
   std::vector<double> ms;
   std::size_t faces = 0;

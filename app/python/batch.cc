@@ -45,7 +45,7 @@ void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeatu
   b.warnings = e.warnings();
   b.reason = e.reason();
   if (e.ok) b.meshes = std::move(e.meshes);
-  else b.status = "failed";
+  else b.status = e.binding_problems.empty() ? "failed" : "refused";
 }
 
 py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int jobs, py::handle progress,

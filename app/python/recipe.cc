@@ -20,7 +20,7 @@ namespace {
 
 MeshRecipe open(const std::filesystem::path& file) {
   std::ostringstream err;
-  std::optional<MeshRecipe> r = open_mesh_recipe(file, {}, err);
+  std::optional<MeshRecipe> r = open_mesh_recipe(file, {}, {}, err);
   if (!r) {
     std::string message = err.str();
     while (!message.empty() && message.back() == '\n') message.pop_back();
@@ -85,7 +85,7 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
       py::gil_scoped_release release;
       result = evaluator_.evaluate(r.graph, r.bindings, r.outputs, r.options);
     }
-    warn(file_.string(), {}, result.diagnostics);
+    warn(file_.string(), result.diagnostics);
     if (!result.ok()) raise_evaluation(file_, std::move(result.diagnostics));
     return wrap_all(gather_meshes(result));
   }
@@ -95,7 +95,8 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
     py::gil_scoped_release release;
     e = evaluate_feature(r, evaluator_, feature, /*parallel=*/true);
   }
-  warn(file_.string() + ": feature " + feature.id, e.binding_warnings, e.diagnostics);
+  if (!e.binding_problems.empty()) raise(ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason());
+  warn(file_.string() + ": feature " + feature.id, e.diagnostics);
   if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
   return wrap_all(std::move(e.meshes));
 }
@@ -111,12 +112,10 @@ void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic>
   throw PythonError{ErrorKind::Evaluation, message, {{"file", file.string()}}, {}, {}, {}, std::move(diagnostics)};
 }
 
-void warn(const std::string& where, const std::vector<std::string>& binding_warnings,
-          const std::vector<Diagnostic>& diagnostics) {
+void warn(const std::string& where, const std::vector<Diagnostic>& diagnostics) {
   auto one = [](const std::string& text) {
     if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
   };
-  for (const std::string& w : binding_warnings) one(where + ": warning: " + w);
   for (const Diagnostic& d : diagnostics)
     if (d.severity == Severity::kWarning) one(where + ": " + d.to_string());
 }

@@ -46,8 +46,7 @@ void bind_recipe(pybind11::module_& m);
 // diagnostic, as `procex eval` prints it.
 [[noreturn]] void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic> diagnostics);
 
-// Python warnings (UserWarning) for warning diagnostics and binding warnings, prefixed by `where`.
-void warn(const std::string& where, const std::vector<std::string>& binding_warnings,
-          const std::vector<Diagnostic>& diagnostics);
+// Python warnings (UserWarning) for warning diagnostics, prefixed by `where`.
+void warn(const std::string& where, const std::vector<Diagnostic>& diagnostics);
 
 }  // namespace procex::python
