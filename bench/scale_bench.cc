@@ -24,6 +24,7 @@
 #include <ctime>
 #include <filesystem>
 #include <map>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -58,7 +59,7 @@ struct Input {
 // What a child reports through its pipe: a status word and, for the roof
 // pipeline, whether the mesh validated.
 struct ChildResult {
-  char status[16] = "crashed";  // ok, invalid, refused, crashed, budget
+  char status[16] = "crashed";  // ok, invalid (roof only), refused, memory (past --memory-gb), budget (CPU), crashed
 };
 
 struct Measurement {
@@ -90,6 +91,8 @@ ChildResult run_engine(const Input& in, Engine engine, double& engine_cpu_s) {
     }
     const Surface surface = sweep(footprint);
     if (engine == Engine::Roof && !validate(build_mesh(surface)).ok()) std::snprintf(r.status, sizeof r.status, "invalid");
+  } catch (const std::bad_alloc&) {
+    std::snprintf(r.status, sizeof r.status, "memory");
   } catch (const std::exception&) {
     std::snprintf(r.status, sizeof r.status, "refused");
   }
