@@ -570,6 +570,15 @@ std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mes
     prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
     prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
     prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
+    // Writers index normals by the position's index, so counts that differ or
+    // an index past the vertices would read or write past an array.
+    if (prim.normals.size() != prim.positions.size())
+      bad(path, "a primitive has " + std::to_string(prim.positions.size() / 3) + " positions but " +
+                    std::to_string(prim.normals.size() / 3) + " normals");
+    const std::size_t vertices = prim.positions.size() / 3;
+    for (const std::uint32_t i : prim.indices)
+      if (i >= vertices)
+        bad(path, "a primitive's index " + std::to_string(i) + " is past its " + std::to_string(vertices) + " vertices");
   }
   return out;
 }
@@ -648,7 +657,9 @@ bool refuse_external_file(std::vector<unsigned char>*, std::string* err, const s
   if (err) *err += "it refers to the external file '" + name + "': a .glb from procex holds everything in itself";
   return false;
 }
-bool no_file(const std::string&, void*) { return false; }
+// Every name "exists", so that tinygltf hands it to refuse_external_file,
+// whose refusal says why, instead of reporting the file as not found.
+bool every_name_exists(const std::string&, void*) { return true; }
 std::string same_path(const std::string& name, void*) { return name; }
 bool refuse_image(tinygltf::Image*, const int, std::string* err, std::string*, int, int, const unsigned char*, int, void*) {
   if (err) *err += "it holds an image: a .glb from procex has none";
@@ -677,7 +688,7 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
   }
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({&no_file, &same_path, &refuse_external_file, nullptr, nullptr});
+  loader.SetFsCallbacks({&every_name_exists, &same_path, &refuse_external_file, nullptr, nullptr});
   loader.SetImageLoader(&refuse_image, nullptr);
   std::string err, warn;
   if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
