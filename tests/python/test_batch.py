@@ -2,6 +2,7 @@
 (samples/expected/city.json), the same for any number of threads, progress
 reported, failures reported per building, and the GIL released."""
 import json
+import sys
 import threading
 import time
 
@@ -81,27 +82,37 @@ def test_missing_file_raises_footprint_error(tmp_path):
 
 
 def test_gil_is_released_while_buildings_evaluate():
-    # Python code keeps running beside a batch: the counter thread gets the GIL
-    # while the workers evaluate (a batch holding the GIL would starve it).
+    # Python code keeps running beside a batch. With the interpreter's forced
+    # switching turned off, a thread gets the GIL only when its holder lets go
+    # of it; the progress callback never does, so the counting thread can
+    # advance between two reports only if the batch releases the GIL while its
+    # workers evaluate. It counts events, not time: the outcome does not depend
+    # on the machine's speed.
     block = json.loads(BLOCK.read_text())
-    block["features"] = block["features"] * 20
-    ticks = []
+    block["features"] = block["features"] * 40
+    count = [0]
     done = threading.Event()
 
-    def tick():
+    def spin():
         while not done.is_set():
-            ticks.append(time.monotonic())
-            time.sleep(0.001)
+            count[0] += 1
+            time.sleep(0)  # lets go of the GIL, so the batch can always take it back
 
-    t = threading.Thread(target=tick)
+    reports = []
+    recipe = city()
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    t = threading.Thread(target=spin)
     t.start()
-    start = time.monotonic()
-    buildings = procex.batch(city(), block, jobs=2)
-    end = time.monotonic()
-    done.set()
-    t.join()
+    try:
+        buildings = procex.batch(recipe, block, jobs=2, progress=lambda d, n: reports.append((d, count[0])))
+    finally:
+        done.set()
+        t.join()
+        sys.setswitchinterval(interval)
     assert all(b.status == "ok" for b in buildings)
-    assert sum(start <= x <= end for x in ticks) >= 10
+    assert len(reports) >= 2 and reports[-1][0] == len(buildings)
+    assert reports[-1][1] > reports[0][1], "no Python ran while the buildings evaluated"
 
 
 def test_recipes_evaluate_concurrently_from_threads():
