@@ -283,9 +283,12 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
     type_into_slider(widget_centre(map, "width"), "23");
     studio.wait("width set", [&](const json& j) { return revision(j) > rev && j["dirty"].get<bool>(); });
     // Typing applies each digit ("2", then "23"): wait for an autosave of the whole value.
+    // Only a finished autosave counts: a write still in its temporary file
+    // (house-<hash>.pxg.tmp-...) is lost when the studio is killed before its rename.
     auto autosaved_23 = [&] {
       if (!fs::exists(dir / "home" / "autosave")) return false;
       for (const auto& f : fs::directory_iterator(dir / "home" / "autosave")) {
+        if (f.path().extension() != ".pxg") continue;
         std::ifstream in(f.path());
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (text.find("\"width\": 23.0") != std::string::npos) return true;
