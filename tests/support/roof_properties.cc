@@ -52,11 +52,48 @@ struct EdgeLine {
   }
 };
 
-std::map<std::int32_t, EdgeLine> edges_by_id(const Footprint& fp) {
+// Neighbouring edges that run straight on (same direction, |sin| of the turn
+// below 1e-9) with different angles are the paper's ambiguous case (4.5): their
+// planes meet only in the base line. The rule of the sweep's options picks one
+// angle for the whole run: the steepest (smallest from vertical) to maximise
+// the volume, the shallowest to minimise it. Runs holding a profiled edge keep
+// their own angles (a profile's planes are checked segment by segment).
+void resolve_straight_runs(std::vector<EdgeLine>& loop, Ambiguity rule) {
+  const std::size_t n = loop.size();
+  const auto straight_into = [&](std::size_t j) {  // the corner at the start of edge j
+    const glm::dvec2 a = glm::normalize(loop[(j + n - 1) % n].b - loop[(j + n - 1) % n].a);
+    const glm::dvec2 b = glm::normalize(loop[j].b - loop[j].a);
+    return std::abs(a.x * b.y - a.y * b.x) < 1e-9 && glm::dot(a, b) > 0.0;
+  };
+  std::size_t start = 0;
+  while (start < n && straight_into(start)) ++start;
+  if (start == n) return;
+  for (std::size_t i = 0; i < n;) {
+    std::size_t len = 1;
+    while (i + len < n && straight_into((start + i + len) % n)) ++len;
+    bool plain = true;
+    double pick = loop[(start + i) % n].spec.angle_deg;
+    for (std::size_t m = 0; m < len; ++m) {
+      const EdgeSpec& s = loop[(start + i + m) % n].spec;
+      plain = plain && s.profile < 0;
+      pick = rule == Ambiguity::MaximizeVolume ? std::min(pick, s.angle_deg) : std::max(pick, s.angle_deg);
+    }
+    if (plain)
+      for (std::size_t m = 0; m < len; ++m) loop[(start + i + m) % n].spec.angle_deg = pick;
+    i += len;
+  }
+}
+
+// Each edge's line and the angle its plane leans at.
+std::map<std::int32_t, EdgeLine> edges_by_id(const Footprint& fp, Ambiguity rule) {
   std::map<std::int32_t, EdgeLine> out;
-  for (const Loop& loop : fp.loops)
+  for (const Loop& loop : fp.loops) {
+    std::vector<EdgeLine> lines;
     for (std::size_t i = 0; i < loop.points.size(); ++i)
-      out[loop.edges[i].id] = {loop.points[i], loop.points[(i + 1) % loop.points.size()], loop.edges[i]};
+      lines.push_back({loop.points[i], loop.points[(i + 1) % loop.points.size()], loop.edges[i]});
+    resolve_straight_runs(lines, rule);
+    for (const EdgeLine& e : lines) out[e.spec.id] = e;
+  }
   return out;
 }
 
@@ -168,7 +205,7 @@ std::vector<std::string> check_valid_mesh(const Surface& surface) {
 std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const SweepOptions& options,
                                                const Surface& surface, double tol) {
   Problems problems;
-  const auto edges = edges_by_id(footprint);
+  const auto edges = edges_by_id(footprint, options.ambiguity);
   for (std::size_t fi = 0; fi < surface.faces.size(); ++fi) {
     const SurfaceFace& f = surface.faces[fi];
     // Largest distance of the face's vertices from a plane given as a signed
@@ -225,7 +262,7 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
   const Bounds b = bounds(footprint);
   const glm::dvec3 origin(footprint.loops.at(0).points.at(0), 0.0);
   const glm::dvec2 o(origin.x, origin.y);
-  const auto edges = edges_by_id(footprint);
+  const auto edges = edges_by_id(footprint, options.ambiguity);
 
   std::vector<std::vector<glm::dvec2>> plan_loops;
   double area = 0.0, perimeter = 0.0;

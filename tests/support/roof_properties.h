@@ -29,6 +29,8 @@ std::vector<std::string> check_valid_mesh(const Surface& surface);
 // Every face with a footprint edge's id lies on a plane of that edge: the
 // plane through the edge leaning at its angle, or one of its profile's
 // segments (the last one extended). Caps lie at max_height, the base at 0.
+// Edges that run straight on from each other with different angles share the
+// angle the options' ambiguity rule picks (paper 4.5), here and below.
 std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const SweepOptions& options,
                                                const Surface& surface, double tol);
 
