@@ -370,6 +370,46 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
   return problems.take();
 }
 
+namespace {
+
+// The height of the roof face over plan point p (relative to origin), or NaN.
+double height_over(const std::vector<PlanFace>& faces, glm::dvec2 p) {
+  for (const PlanFace& f : faces) {
+    if (f.loops.empty() || std::abs(f.normal.z) <= 1e-12 * glm::length(f.normal) || !inside_loops(f.loops, p)) continue;
+    return f.point.z - (f.normal.x * (p.x - f.point.x) + f.normal.y * (p.y - f.point.y)) / f.normal.z;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+double largest_height_difference(const Surface& a, const Surface& b, int samples, unsigned seed) {
+  if (a.vertices.empty()) return std::numeric_limits<double>::quiet_NaN();
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec3& v : a.vertices) {
+    lo = glm::min(lo, glm::dvec2(v));
+    hi = glm::max(hi, glm::dvec2(v));
+  }
+  const glm::dvec3 origin(lo, 0.0);
+  const auto plan = [&](const Surface& s) {
+    std::vector<PlanFace> faces;
+    for (const SurfaceFace& f : s.faces)
+      if (f.kind != FaceKind::Base) faces.push_back(plan_face(s, f, origin));
+    return faces;
+  };
+  const std::vector<PlanFace> fa = plan(a), fb = plan(b);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worst = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < samples; ++i) {
+    const glm::dvec2 p = glm::dvec2(u(rng), u(rng)) * (hi - lo);
+    const double za = height_over(fa, p), zb = height_over(fb, p);
+    if (std::isnan(za) || std::isnan(zb)) continue;
+    worst = std::isnan(worst) ? std::abs(za - zb) : std::max(worst, std::abs(za - zb));
+  }
+  return worst;
+}
+
 double surface_volume(const Surface& surface) {
   if (surface.vertices.empty()) return 0.0;
   const glm::dvec3 o = surface.vertices[0];

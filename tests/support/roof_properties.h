@@ -45,6 +45,12 @@ std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const
 std::vector<std::string> check_inward_roof(const Footprint& footprint, const SweepOptions& options,
                                            const Surface& surface, double tol, unsigned seed);
 
+// The largest difference in height between two roofs over the same plan, at
+// `samples` points drawn (by `seed`) over the first's bounding box where both
+// have a face that is not vertical above the point; NaN if no point was
+// covered by both.
+double largest_height_difference(const Surface& a, const Surface& b, int samples, unsigned seed);
+
 // The enclosed volume by the divergence theorem over the surface's faces.
 double surface_volume(const Surface& surface);
 
