@@ -258,8 +258,12 @@ class MakeGroup final : public SnapshotCommand {
     for (std::uint32_t k = 0; k < out_links.size(); ++k)
       for (const PortRef& to : out_links[k].second)
         if (Status s = g.connect(PortRef{instance_, k}, to); !s) return s;
-    for (std::uint32_t k = 0; k < carried.size(); ++k)
-      if (Status s = g.expose_param(ExposedParam{carried[k].name, instance_, k}); !s) return s;
+    for (std::uint32_t k = 0; k < carried.size(); ++k) {
+      ExposedParam outer = carried[k];  // its name, label, unit and range, now on the group's parameter k
+      outer.node = instance_;
+      outer.param = k;
+      if (Status s = g.expose_param(std::move(outer)); !s) return s;
+    }
     return Status::ok();
   }
 

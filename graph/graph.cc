@@ -361,6 +361,7 @@ Status Graph::expose_param(ExposedParam p) {
   if (n->decl().params()[p.param].sets_port_count)
     return Status::error("exposed parameter " + q(p.name) + ": " + q(n->decl().params()[p.param].name) + " of node " +
                          std::to_string(p.node) + " sets its number of ports, which a group's users cannot change");
+  if (p.min && p.max && *p.min > *p.max) return Status::error("exposed parameter " + q(p.name) + ": min is above max");
   exposed_.push_back(std::move(p));
   return Status::ok();
 }
@@ -375,6 +376,41 @@ Status Graph::set_exposed(std::string_view name, Value v) {
   for (const ExposedParam& e : exposed_)
     if (e.name == name) return set_param(e.node, e.param, std::move(v));
   return Status::error("no exposed parameter " + q(name));
+}
+
+Status Graph::set_preset(Preset p) {
+  if (p.name.empty()) return Status::error("a preset needs a name");
+  for (const auto& [name, v] : p.values) {
+    auto e = std::find_if(exposed_.begin(), exposed_.end(), [&](const ExposedParam& x) { return x.name == name; });
+    if (e == exposed_.end()) return Status::error("preset " + q(p.name) + ": no exposed parameter " + q(name));
+    const ValueType* want = nodes_.at(e->node).decl().params()[e->param].type;
+    if (v.type() != want)
+      return Status::error("preset " + q(p.name) + ": " + q(name) + " takes a " + want->name() + ", not a " + (v.type() ? v.type()->name() : "nothing"));
+  }
+  for (Preset& existing : presets_)
+    if (existing.name == p.name) {
+      existing = std::move(p);
+      return Status::ok();
+    }
+  presets_.push_back(std::move(p));
+  return Status::ok();
+}
+
+Status Graph::remove_preset(std::string_view name) {
+  if (!std::erase_if(presets_, [name](const Preset& p) { return p.name == name; })) return Status::error("no preset " + q(name));
+  return Status::ok();
+}
+
+Status Graph::apply_preset(std::string_view name) {
+  for (const Preset& p : presets_) {
+    if (p.name != name) continue;
+    for (const auto& [param, v] : p.values)
+      if (Status s = set_exposed(param, v); !s) return s;
+    return Status::ok();
+  }
+  std::string known;
+  for (const Preset& p : presets_) known += (known.empty() ? "" : ", ") + p.name;
+  return Status::error("no preset " + q(name) + (known.empty() ? " (the recipe has none)" : " (it has: " + known + ")"));
 }
 
 Status Graph::add_group(std::string name, std::shared_ptr<const Graph> body, std::string file) {
@@ -432,9 +468,9 @@ Result<std::shared_ptr<const NodeType>> make_group_type(std::string name, std::s
     const Node& inner = *body->node(e.node);
     ParamDecl p = inner.decl().params()[e.param];
     ParamBuilder b = t->decl.add_param(e.name, *p.type);
-    b.default_value_of(inner.params[e.param]).unit(p.unit).doc(p.doc);
-    if (p.min) b.min(*p.min);
-    if (p.max) b.max(*p.max);
+    b.default_value_of(inner.params[e.param]).unit(e.unit.empty() ? p.unit : e.unit).doc(e.label.empty() ? p.doc : e.label + (p.doc.empty() ? "" : ": " + p.doc));
+    if (e.min || p.min) b.min(e.min ? *e.min : *p.min);
+    if (e.max || p.max) b.max(e.max ? *e.max : *p.max);
     // Enum choices live on the declaration; copy them with the rest.
     const_cast<ParamDecl&>(t->decl.params().back()).choices = p.choices;
   }

@@ -81,9 +81,21 @@ struct GraphOutput {
 // A parameter of an inner node shown on the graph's interface when the graph
 // is used as a group (and settable from the CLI).
 struct ExposedParam {
+  ExposedParam() = default;
+  ExposedParam(std::string n, NodeId id, std::uint32_t index) : name(std::move(n)), node(id), param(index) {}
   std::string name;  // identifier, unique among exposed parameters
   NodeId node = 0;
   std::uint32_t param = 0;
+  // How the interface presents it; empty / unset: the inner parameter's own.
+  // (Its default is the inner parameter's current value.)
+  std::string label, unit;
+  std::optional<double> min, max;
+};
+
+// A named set of exposed parameter values, recalled as one ("tall", "cheap").
+struct Preset {
+  std::string name;
+  std::map<std::string, Value, std::less<>> values;  // exposed name -> value
 };
 
 // A group definition: a graph used as one node. Embedded in the recipe, or
@@ -95,7 +107,8 @@ struct GroupDef {
 };
 
 struct GraphMetadata {
-  std::string name, description, author;
+  std::string name, description, author, licence;
+  std::string thumbnail;  // a PNG beside the recipe (relative path), or empty
   friend bool operator==(const GraphMetadata&, const GraphMetadata&) = default;
 };
 
@@ -163,6 +176,15 @@ class Graph {
   Status set_exposed(std::string_view name, Value v);
   const std::vector<ExposedParam>& exposed_params() const { return exposed_; }
 
+  // ---- presets ----
+  // Refused if a value names no exposed parameter or has the wrong type.
+  // A value whose parameter is unexposed later stays (an undo may expose it
+  // again) but is not saved, and applying the preset then names it.
+  Status set_preset(Preset p);  // adds or replaces by name
+  Status remove_preset(std::string_view name);
+  Status apply_preset(std::string_view name);  // sets every value it holds
+  const std::vector<Preset>& presets() const { return presets_; }
+
   // ---- groups ----
   // Registers `body` as group `name` (its inputs, outputs and exposed
   // parameters become the node's declaration). `file`: the library file it
@@ -196,6 +218,7 @@ class Graph {
   std::vector<GraphInput> inputs_;
   std::vector<GraphOutput> outputs_;
   std::vector<ExposedParam> exposed_;
+  std::vector<Preset> presets_;
   std::map<std::string, GroupDef, std::less<>> groups_;
   NodeId next_id_ = 1;
 };

@@ -6,17 +6,19 @@
 // Layout (version 2; keys sorted, nodes by id, links by destination, so two
 // saves of the same graph are byte-identical):
 //   { "format": "procex-graph", "version": 2,
-//     "metadata": {"author": "", "description": "", "name": ""},
+//     "metadata": {"author": "", "description": "", "name": "", "licence": "CC-BY-4.0", "thumbnail": "house.png"},
 //     "inputs":  [{"name": "footprint", "type": "footprint", "doc": "", "default": ...}],
 //     "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
 //     "nodes":   [{"id": 3, "type": "Offset", "version": 1, "params": {"distance": 1.5}},
 //                 {"id": 4, "group": "facade", "params": {...exposed...}}],
 //     "links":   [{"from": "3.result", "to": "4.footprint"}, {"from": "@footprint", "to": "3.footprint"},
 //                 {"from": "4.mesh", "to": "@mesh"}],
-//     "exposed": [{"name": "height", "node": 3, "param": "distance"}],
+//     "exposed": [{"name": "height", "node": 3, "param": "distance", "label": "Height", "unit": "m", "min": 0, "max": 40}],
+//     "presets": [{"name": "tall", "values": {"height": 30}}],
 //     "groups":  [{"name": "facade", "file": "lib/facade.pxg"}, {"name": "inline", "graph": {...}}],
 //     "editor":  {"nodes": {"3": {"x": 0, "y": 0, "comment": "", "collapsed": false}}} }
-// Parameters equal to their default are still written: a file means the same
+// licence, thumbnail, an exposed parameter's label/unit/min/max and presets
+// are optional (written only when set). Parameters equal to their default are still written: a file means the same
 // thing after a node's defaults change.
 //
 // Untrusted input: every problem is a PxgError naming the file and a line and

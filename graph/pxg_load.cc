@@ -1,6 +1,7 @@
 // Reading .pxg files. Everything in a file is untrusted: each check names the
 // file and a JSON pointer (or line and column for syntax errors).
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -105,7 +106,7 @@ struct Loader {
     }
     for (const auto& [key, value] : j.items()) {
       static const std::set<std::string, std::less<>> kKnown = {"format", "version", "metadata", "inputs", "outputs", "nodes",
-                                                                "links", "exposed", "groups", "editor"};
+                                                                "links", "exposed", "presets", "groups", "editor"};
       if (!kKnown.count(key)) warnings.push_back(file + ": /" + token(key) + ": unknown key ignored");
     }
     return read_graph(j, "", path, group_depth);
@@ -188,6 +189,8 @@ struct Loader {
       g.metadata.name = string_member(*m, "name", c, false);
       g.metadata.description = string_member(*m, "description", c, false);
       g.metadata.author = string_member(*m, "author", c, false);
+      g.metadata.licence = string_member(*m, "licence", c, false);
+      g.metadata.thumbnail = string_member(*m, "thumbnail", c, false);
     }
     read_groups(g, j, base, path, group_depth);
     read_interface(g, j, base, file);
@@ -201,6 +204,7 @@ struct Loader {
       if (Status s = g.set_expression(e.node, e.param, e.text); !s) fail(file, e.ptr, s.message());
     }
     expressions.resize(first_expression);
+    read_presets(g, j, base, file);
     read_editor(g, j, base, file);
     return g;
   }
@@ -417,7 +421,36 @@ struct Loader {
       auto index = n->decl().param_index(param);
       if (!index) fail(file, c.ptr + "/param", "node " + std::to_string(id) + " has no parameter '" + param + "'");
       p.param = static_cast<std::uint32_t>(*index);
+      p.label = string_member(e, "label", c, false);
+      p.unit = string_member(e, "unit", c, false);
+      for (auto [key, bound] : {std::pair{"min", &p.min}, std::pair{"max", &p.max}}) {
+        auto it = e.find(key);
+        if (it == e.end()) continue;
+        if (!it->is_number() || !std::isfinite(it->get<double>())) fail(file, c.ptr + "/" + key, "expected a finite number");
+        *bound = it->get<double>();
+      }
       if (Status s = g.expose_param(std::move(p)); !s) fail(file, c.ptr, s.message());
+    }
+  }
+
+  void read_presets(Graph& g, const json& j, const std::string& base, const std::string& file) {
+    const json& presets = array_member(j, "presets", Ctx{file, base}, 4096);
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+      Ctx c{file, base + "/presets/" + std::to_string(i)};
+      const json& e = presets[i];
+      if (!e.is_object()) fail(file, c.ptr, "expected {\"name\": ..., \"values\": {...}}");
+      Preset p;
+      p.name = string_member(e, "name", c);
+      const json& values = member(e, "values", c, json::value_t::object);
+      for (const auto& [name, v] : values.items()) {
+        Ctx vc{file, c.ptr + "/values/" + token(name)};
+        auto ex = std::find_if(g.exposed_params().begin(), g.exposed_params().end(), [&](const ExposedParam& x) { return x.name == name; });
+        if (ex == g.exposed_params().end()) fail(file, vc.ptr, "no exposed parameter named '" + name + "'");
+        p.values[name] = value_from(*g.node(ex->node)->decl().params()[ex->param].type, v, vc);
+      }
+      for (const Preset& earlier : g.presets())
+        if (earlier.name == p.name) fail(file, c.ptr + "/name", "a second preset named '" + p.name + "'");
+      if (Status s = g.set_preset(std::move(p)); !s) fail(file, c.ptr, s.message());
     }
   }
 

@@ -23,6 +23,9 @@ std::string link_end(const Graph& g, PortRef p, bool is_output) { return g.port_
 json graph_json(const Graph& g) {
   json j = json::object();
   j["metadata"] = {{"name", g.metadata.name}, {"description", g.metadata.description}, {"author", g.metadata.author}};
+  // Newer fields only when set: older recipes save byte for byte as before.
+  if (!g.metadata.licence.empty()) j["metadata"]["licence"] = g.metadata.licence;
+  if (!g.metadata.thumbnail.empty()) j["metadata"]["thumbnail"] = g.metadata.thumbnail;
   json inputs = json::array();
   for (const GraphInput& in : g.inputs()) {
     json e = {{"name", in.name}, {"type", in.type->name()}, {"doc", in.doc}};
@@ -61,9 +64,24 @@ json graph_json(const Graph& g) {
   j["links"] = std::move(links);
 
   json exposed = json::array();
-  for (const ExposedParam& e : g.exposed_params())
-    exposed.push_back({{"name", e.name}, {"node", e.node}, {"param", g.node(e.node)->decl().params()[e.param].name}});
+  for (const ExposedParam& e : g.exposed_params()) {
+    json x = {{"name", e.name}, {"node", e.node}, {"param", g.node(e.node)->decl().params()[e.param].name}};
+    if (!e.label.empty()) x["label"] = e.label;
+    if (!e.unit.empty()) x["unit"] = e.unit;
+    if (e.min) x["min"] = *e.min;
+    if (e.max) x["max"] = *e.max;
+    exposed.push_back(std::move(x));
+  }
   j["exposed"] = std::move(exposed);
+  json presets = json::array();
+  for (const Preset& p : g.presets()) {
+    json values = json::object();
+    for (const auto& [name, v] : p.values)
+      if (std::any_of(g.exposed_params().begin(), g.exposed_params().end(), [&](const ExposedParam& e) { return e.name == name; }))
+        values[name] = param_json(v);
+    presets.push_back({{"name", p.name}, {"values", std::move(values)}});
+  }
+  if (!presets.empty()) j["presets"] = std::move(presets);
 
   json groups = json::array();
   for (const auto& [name, def] : g.groups()) {

@@ -19,6 +19,7 @@ struct EvalCommandOptions {
   std::filesystem::path footprints;   // GeoJSON FeatureCollection; empty: no feature bound
   std::string feature;                // the feature's id, or its index in the file
   std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
+  std::string preset;                 // a preset of the recipe, applied before the settings
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

@@ -70,6 +70,7 @@ Runner add_eval(CLI::App& app) {
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
   cmd->add_option("-o,--output", options->output, "Mesh file: .obj (+ .mtl), .ply or .glb")->required();
   cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
+  cmd->add_option("--preset", options->preset, "A named set of exposed values stored in the recipe, applied before --set");
   CLI::Option* footprints = cmd->add_option("--footprints", options->footprints,
                                             "GeoJSON FeatureCollection: bind one feature as `procex batch` does");
   cmd->add_option("--feature", options->feature, "The feature's id, or its index in --footprints")->needs(footprints);

@@ -68,10 +68,16 @@ std::vector<std::string> mesh_outputs(const Graph& graph) {
 }
 
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
-                                           const AllowedFolders& allowed, std::ostream& err) {
+                                           const AllowedFolders& allowed, std::ostream& err,
+                                           const std::string& preset) {
   std::optional<Graph> graph = load_recipe(file, allowed, err);
   if (!graph) return std::nullopt;
   MeshRecipe r{std::move(*graph), {}, {}, recipe_eval_options(file, allowed)};
+  if (!preset.empty())
+    if (Status s = r.graph.apply_preset(preset); !s) {
+      err << "--preset " << preset << ": " << s.message() << "\n";
+      return std::nullopt;
+    }
   if (!apply_settings(r.graph, r.bindings, settings, err)) return std::nullopt;
   r.outputs = mesh_outputs(r.graph);
   if (r.outputs.empty()) {

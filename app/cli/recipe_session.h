@@ -39,7 +39,7 @@ bool apply_settings(Graph& graph, Bindings& bindings, const std::vector<std::str
 // why not. Used for --set and for GeoJSON properties in batch.
 Status apply_setting(Graph& graph, Bindings& bindings, const std::string& name, const std::string& text);
 
-// A recipe ready to evaluate for meshes: loaded, --set applied, its mesh outputs found.
+// A recipe ready to evaluate for meshes: loaded, --preset then --set applied, its mesh outputs found.
 struct MeshRecipe {
   Graph graph;
   Bindings bindings;
@@ -48,7 +48,8 @@ struct MeshRecipe {
 };
 // nullopt after writing the problem to err (load error, bad setting, no mesh output).
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
-                                           const AllowedFolders& allowed, std::ostream& err);
+                                           const AllowedFolders& allowed, std::ostream& err,
+                                           const std::string& preset = {});
 
 // Names of the graph outputs whose type is "mesh", in order; empty if none.
 std::vector<std::string> mesh_outputs(const Graph& graph);

@@ -54,6 +54,19 @@ TEST_F(RecipeCommands, SetChangesExposedParameters) {
   EXPECT_NE(read_text(a), read_text(b));
 }
 
+// A preset is a named set of exposed values: the same mesh as setting them one by one; --set still wins.
+TEST_F(RecipeCommands, PresetSetsItsExposedValues) {
+  const fs::path by_hand = dir_ / "a.ply", preset = dir_ / "b.ply", both = dir_ / "c.ply", plain = dir_ / "d.ply";
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", by_hand, {"pitch=35", "shape=rectangle"}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", preset, {}, {}, {}, "cottage"}, out_, err_), 0) << err_.str();
+  EXPECT_EQ(read_text(by_hand), read_text(preset));
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", both, {"pitch=50", "shape=l"}, {}, {}, "cottage"}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval({kSamples / "house.pxg", plain, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  EXPECT_EQ(read_text(both), read_text(plain));
+  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {}, {}, {}, "tall"}, out_, err_), kExitUnusableInput);
+  EXPECT_NE(err_.str().find("--preset tall: no preset 'tall' (it has: cottage, steep)"), std::string::npos) << err_.str();
+}
+
 TEST_F(RecipeCommands, BadSettingsNameTheProblem) {
   EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"colour=red"}, {}, {}, {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--set colour=red: the recipe has no exposed parameter or input named 'colour'"),

@@ -246,5 +246,77 @@ TEST(Document, PortCountsChangeAsOneUndoStepAndNeverDropAConnectedPort) {
   EXPECT_FALSE(doc.set_port_count(sw, *doc.graph().node(sw)->decl().param_index("value"), 2));
 }
 
+// Making an asset: a parameter exposed with a name, label, range, default and
+// unit (saved, and the range and unit on the group node made from the recipe);
+// metadata; a preset saved and recalled; each one undo step.
+TEST(Document, ExposesParametersEditsMetadataAndKeepsPresets) {
+  const auto dir = test::temp_dir();
+  auto doc = Document::open(test::house_recipe());
+  ExposedParam style;
+  style.name = "wall_height";
+  style.label = "Wall height";
+  style.unit = "m";
+  style.min = 2.0;
+  style.max = 30.0;
+  const NodeId shape = 1;
+  const std::size_t width = *doc->graph().node(shape)->decl().param_index("width");
+  ASSERT_TRUE(doc->expose(shape, width, style, Value::make(16.0)));
+  EXPECT_DOUBLE_EQ(doc->graph().node(shape)->params[width].get<double>(), 16.0);
+  ASSERT_TRUE(doc->edit_recipe("set licence", [](Graph& g) {
+    g.metadata.licence = "CC-BY-4.0";
+    return Status::ok();
+  }));
+  ASSERT_TRUE(doc->save_preset("wide"));
+  ASSERT_TRUE(doc->set_param(shape, width, Value::make(9.0)));
+  ASSERT_TRUE(doc->apply_preset("wide"));
+  EXPECT_DOUBLE_EQ(doc->graph().node(shape)->params[width].get<double>(), 16.0);
+  EXPECT_FALSE(doc->expose(shape, width, style, Value()));  // the name is taken
+  doc->save_as(dir / "asset.pxg");
+
+  const Graph saved = load_pxg(dir / "asset.pxg");
+  ASSERT_EQ(saved.exposed_params().size(), 1u);
+  const ExposedParam& e = saved.exposed_params()[0];
+  EXPECT_EQ(e.label, "Wall height");
+  EXPECT_EQ(e.unit, "m");
+  EXPECT_EQ(e.min, 2.0);
+  EXPECT_EQ(e.max, 30.0);
+  EXPECT_EQ(saved.metadata.licence, "CC-BY-4.0");
+  ASSERT_EQ(saved.presets().size(), 1u);
+  EXPECT_DOUBLE_EQ(saved.presets()[0].values.at("wall_height").get<double>(), 16.0);
+  // Used as a group, the exposed parameter has the asset's range and unit, its value as default.
+  auto type = make_group_type("asset", std::make_shared<Graph>(saved));
+  ASSERT_TRUE(type);
+  const ParamDecl& p = (*type)->decl.params()[0];
+  EXPECT_EQ(p.name, "wall_height");
+  EXPECT_EQ(p.min, 2.0);
+  EXPECT_EQ(p.max, 30.0);
+  EXPECT_EQ(p.unit, "m");
+  EXPECT_NE(p.doc.find("Wall height"), std::string::npos);
+  EXPECT_DOUBLE_EQ(p.default_value.get<double>(), 16.0);
+  // Each edit undoes in one step: apply, set, preset, licence, expose.
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(doc->undo());
+  EXPECT_TRUE(doc->graph().exposed_params().empty());
+  EXPECT_TRUE(doc->graph().presets().empty());
+  EXPECT_TRUE(doc->graph().metadata.licence.empty());
+  EXPECT_DOUBLE_EQ(doc->graph().node(shape)->params[width].get<double>(), 14.0);
+}
+
+// A preset naming a parameter the recipe does not expose is refused where it is.
+TEST(Document, APresetForAnUnknownParameterIsALoadError) {
+  const auto dir = test::temp_dir();
+  std::string text = test::read_text(std::filesystem::path(PROCEX_SAMPLES) / "house.pxg");
+  const std::string pitch = "\"steep\", \"values\": {\"pitch\"";
+  ASSERT_NE(text.find(pitch), std::string::npos);
+  text.replace(text.find(pitch), pitch.size(), "\"steep\", \"values\": {\"colour\"");
+  std::ofstream(dir / "bad.pxg") << text;
+  try {
+    load_pxg(dir / "bad.pxg");
+    ADD_FAILURE() << "loaded";
+  } catch (const PxgError& e) {
+    EXPECT_EQ(e.where(), "/presets/1/values/colour");
+    EXPECT_NE(e.message().find("no exposed parameter named 'colour'"), std::string::npos) << e.message();
+  }
+}
+
 }  // namespace
 }  // namespace procex::studio

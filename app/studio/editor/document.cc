@@ -9,6 +9,27 @@
 namespace procex::studio {
 
 namespace {
+
+// A recipe-interface edit: whatever `edit` does, undone by restoring the
+// graph as it was (copies share node types, values and group bodies: cheap).
+class RecipeEdit : public Command {
+ public:
+  RecipeEdit(std::string label, std::function<Status(Graph&)> edit) : label_(std::move(label)), edit_(std::move(edit)) {}
+  std::string label() const override { return label_; }
+  Status apply(Graph& g) override {
+    before_ = g;
+    Status s = edit_(g);
+    if (!s) g = before_;
+    return s;
+  }
+  void revert(Graph& g) override { g = before_; }
+
+ private:
+  std::string label_;
+  std::function<Status(Graph&)> edit_;
+  Graph before_;
+};
+
 EditorState editor_at(double x, double y) {
   EditorState e;
   e.x = x;
@@ -181,6 +202,41 @@ Status Document::tidy_layout() {
   stack_.end_macro();
   stack_.end_interaction();
   return changed(Status::ok());
+}
+
+Result<std::vector<NodeId>> Document::ungroup_selection() {
+  const Node* n = graph_.node(selected());
+  if (!n || n->group.empty()) return Status::error("select one group node to ungroup");
+  end_gesture();
+  Result<std::vector<NodeId>> r = stack_.ungroup(n->id);
+  if (r) selection_ = std::set<NodeId>((*r).begin(), (*r).end());
+  return changed(std::move(r));
+}
+
+Status Document::edit_recipe(std::string label, std::function<Status(Graph&)> edit) {
+  end_gesture();
+  return changed(stack_.push(std::make_unique<RecipeEdit>(std::move(label), std::move(edit))));
+}
+
+Status Document::expose(NodeId id, std::size_t param, ExposedParam p, Value default_value) {
+  p.node = id;
+  p.param = static_cast<std::uint32_t>(param);
+  return edit_recipe("expose " + p.name, [p, default_value](Graph& g) {
+    if (Status s = g.expose_param(p); !s) return s;
+    if (!default_value.empty()) return g.set_param(p.node, p.param, default_value);
+    return Status::ok();
+  });
+}
+
+Status Document::save_preset(const std::string& name) {
+  Preset p{name, {}};
+  for (const ExposedParam& e : graph_.exposed_params()) p.values[e.name] = graph_.node(e.node)->params[e.param];
+  if (p.values.empty()) return Status::error("expose a parameter first: a preset holds exposed values");
+  return edit_recipe("save preset " + name, [p](Graph& g) { return g.set_preset(p); });
+}
+
+Status Document::apply_preset(const std::string& name) {
+  return edit_recipe("apply preset " + name, [name](Graph& g) { return g.apply_preset(name); });
 }
 
 bool Document::undo() {

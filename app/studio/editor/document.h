@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -65,6 +66,18 @@ class Document {
   Result<NodeId> group_selection();
   // Lays the whole graph out in layers from inputs to outputs (one undo step).
   Status tidy_layout();
+  // Replaces the selected group instance by the group's nodes (selected after).
+  Result<std::vector<NodeId>> ungroup_selection();
+  // An edit of the recipe's interface (exposed parameters, graph inputs and
+  // outputs, metadata, presets) as one undo step: `edit` changes the graph or
+  // refuses, and undo puts the graph back as it was.
+  Status edit_recipe(std::string label, std::function<Status(Graph&)> edit);
+  // Exposes parameter `param` of node `id` as `p.name`, presented as `p` says,
+  // with `default_value` (the inner parameter's value; empty: unchanged).
+  Status expose(NodeId id, std::size_t param, ExposedParam p, Value default_value);
+  // Stores the current values of every exposed parameter as preset `name`.
+  Status save_preset(const std::string& name);
+  Status apply_preset(const std::string& name);
   bool undo();
   bool redo();
   bool can_undo() const { return stack_.can_undo(); }

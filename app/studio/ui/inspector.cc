@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -149,10 +150,25 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
       ImGui::TextDisabled("%s: %s (not editable here)", label, v.type() ? v.type()->name().c_str() : "?");
     }
     if (ImGui::IsItemHovered() && !p.doc.empty()) ImGui::SetTooltip("%s", p.doc.c_str());
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    widgets_[p.name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    record(p.name);
+    // Right click: expose it on the recipe's interface, or take it off.
+    if (ImGui::BeginPopupContextItem("param_menu")) {
+      const auto& exposed = doc.graph().exposed_params();
+      auto it = std::find_if(exposed.begin(), exposed.end(), [&](const ExposedParam& e) { return e.node == id && e.param == i; });
+      if (it != exposed.end()) {
+        const std::string name = it->name;
+        if (ImGui::MenuItem(("Unexpose '" + name + "'").c_str()))
+          if (Status s = doc.edit_recipe("unexpose " + name, [name](Graph& g) { return g.unexpose_param(name); }); !s) status = s.message();
+      } else if (ImGui::MenuItem("Expose...")) {
+        expose_ = {true, id, i, p.name, "", p.unit, v.is<double>(), p.min.value_or(0.0), p.max.value_or(0.0), v.is<double>() ? v.get<double>() : 0.0};
+        if (expose_.numeric && !p.min && !p.max) expose_.max = expose_.min = expose_.value;
+      }
+      record("expose_menu");
+      ImGui::EndPopup();
+    }
     ImGui::PopID();
   }
+  expose_dialog(doc, status);
   if (!eval) return;
   ImGui::Separator();
   if (const NodeStats* s = eval->result.stats.find(NodePath{id}))
@@ -165,6 +181,52 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
     ImGui::TextWrapped("%s", d.to_string().c_str());
     ImGui::PopStyleColor();
   }
+}
+
+void Inspector::record(const std::string& name) {
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  widgets_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
+void Inspector::expose_dialog(Document& doc, std::string& status) {
+  if (expose_.open_requested) {
+    ImGui::OpenPopup("Expose parameter");
+    expose_.open_requested = false;
+  }
+  if (!ImGui::BeginPopupModal("Expose parameter", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextDisabled("shown on the recipe's interface, set with --set NAME=VALUE");
+  ImGui::InputText("name", &expose_.name);
+  record("expose.name");
+  ImGui::InputText("label", &expose_.label);
+  record("expose.label");
+  ImGui::InputText("unit", &expose_.unit);
+  if (expose_.numeric) {
+    ImGui::InputDouble("min", &expose_.min);
+    record("expose.min");
+    ImGui::InputDouble("max", &expose_.max);
+    record("expose.max");
+    ImGui::InputDouble("default", &expose_.value);
+    record("expose.default");
+  }
+  const bool ok = ImGui::Button("Expose");
+  record("expose.ok");
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  if (ok) {
+    ExposedParam p;
+    p.name = expose_.name;
+    p.label = expose_.label;
+    p.unit = expose_.unit;
+    // A range of one value is no range: the inner parameter's own stays.
+    if (expose_.numeric && expose_.min < expose_.max) {
+      p.min = expose_.min;
+      p.max = expose_.max;
+    }
+    if (Status s = doc.expose(expose_.node, expose_.param, p, expose_.numeric ? Value::make(expose_.value) : Value()); !s) status = "cannot expose: " + s.message();
+    else status = "exposed " + p.name;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
 }
 
 }  // namespace procex::studio

@@ -3,7 +3,9 @@
 // text for strings and tags, JSON text for anything else (lists, points).
 // A drag of a slider is one undo step. A parameter that sets a port count
 // (Merge inputs, Switch cases) gets - and + buttons. Also shows the node's documentation,
-// its diagnostics and its last evaluation outcome.
+// its diagnostics and its last evaluation outcome. Right click on a parameter
+// exposes it on the recipe's interface (name, label, range, default, unit) or
+// unexposes it.
 #pragma once
 
 #include <array>
@@ -26,6 +28,17 @@ class Inspector {
   // Text being edited for string and JSON parameters, by "node.param", until committed.
   std::map<std::string, std::string> editing_;
   std::map<std::string, std::array<float, 4>> widgets_;
+  void record(const std::string& name);  // the last item's rectangle into widgets_
+  void expose_dialog(Document& doc, std::string& status);
+  // The Expose dialog's fields, while it is open.
+  struct Expose {
+    bool open_requested = false;
+    NodeId node = 0;
+    std::size_t param = 0;
+    std::string name, label, unit;
+    bool numeric = false;
+    double min = 0, max = 0, value = 0;
+  } expose_;
 };
 
 }  // namespace procex::studio

@@ -29,6 +29,7 @@
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/partial_redraw.h"
 #include "app/studio/ui/preview_view.h"
+#include "app/studio/ui/recipe_panel.h"
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
 #include "core/io/mesh_write.h"
@@ -243,6 +244,11 @@ class App {
         if (Status s = doc_->remove_selection(); !s) status_ = s.message();
       if (ImGui::MenuItem("Group selected", "Ctrl+G", false, !doc_->selection().empty()))
         if (auto r = doc_->group_selection(); !r) status_ = r.message();
+      {
+        const Node* sel = doc_->graph().node(doc_->selected());
+        if (ImGui::MenuItem("Ungroup", nullptr, false, sel && !sel->group.empty()))
+          if (auto r = doc_->ungroup_selection(); !r) status_ = r.message();
+      }
       if (ImGui::MenuItem("Tidy layout", "L"))
         if (Status s = doc_->tidy_layout(); !s) status_ = s.message();
       ImGui::EndMenu();
@@ -262,17 +268,19 @@ class App {
     const float top = vp->WorkPos.y, status_h = ImGui::GetFrameHeight() + 4.0f;
     const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
     const float left_w = std::floor(w * 0.5f), upper_h = std::floor(h * 0.62f);
+    // With nothing selected the inspector has one line to say: the canvas takes its room.
+    const float canvas_h = doc_->selection().empty() ? h - std::floor(ImGui::GetFrameHeight() * 2.5f + 8.0f) : upper_h;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     auto place = [&](float x, float y, float ww, float hh) {
       ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + x, top + y));
       ImGui::SetNextWindowSize(ImVec2(ww, hh));
     };
-    place(0, 0, left_w, upper_h);
+    place(0, 0, left_w, canvas_h);
     if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
       canvas_.draw(*doc_, shown_.get(), status_);
     ImGui::End();
-    place(0, upper_h, left_w, h - upper_h);
+    place(0, canvas_h, left_w, h - canvas_h);
     if (ImGui::Begin("Inspector", nullptr, fixed)) inspector_.draw(*doc_, shown_.get(), status_);
     ImGui::End();
     place(left_w, 0, w - left_w, upper_h);
@@ -290,6 +298,12 @@ class App {
     if (!ImGui::BeginTabBar("eval")) return;
     if (ImGui::BeginTabItem("Plan / Profile")) {
       shape_editor_.draw(*doc_, shown_.get(), status_);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Recipe")) {
+      recipe_panel_.draw(*doc_, status_, [this](const fs::path& png) {
+        save_texture_png(static_cast<unsigned>(preview_->texture()), static_cast<int>(preview_->image_w), static_cast<int>(preview_->image_h), png);
+      });
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Diagnostics")) {
@@ -502,6 +516,7 @@ class App {
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
     j["buttons"] = buttons_;
     for (const auto& [name, r] : shape_editor_.buttons()) j["buttons"][name] = r;
+    for (const auto& [name, r] : recipe_panel_.widgets()) j["buttons"][name] = r;
     j["anchor_tool"] = shape_editor_.anchor_tool();
     j["links"] = nlohmann::json::array();
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
@@ -554,6 +569,7 @@ class App {
   std::unique_ptr<PreviewView> preview_;
   NodeCanvas canvas_;
   Inspector inspector_;
+  RecipePanel recipe_panel_;
   std::string status_, title_, ui_map_text_;
   std::uint64_t title_revision_ = 0;
   Clock::time_point title_checked_;
