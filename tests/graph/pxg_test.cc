@@ -42,7 +42,7 @@ Graph rich_graph() {
   (void)body->expose_param(ExposedParam{"scale", inner, 0});
 
   Graph g;
-  g.metadata = {"rich", "every feature of the format", "tests"};
+  g.metadata = {"rich", "every feature of the format", "tests", "", ""};
   (void)g.add_input(GraphInput{"seed", &value_type<std::int64_t>(), "random seed", Value::make<std::int64_t>(7)});
   (void)g.add_input(GraphInput{"x", &value_type<double>(), "", {}});
   (void)g.add_group("plus_one", body);
