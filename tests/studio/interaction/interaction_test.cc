@@ -224,9 +224,10 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
   const auto canvas = map["canvas"];
   const int wx = map["window"][0], wy = map["window"][1];
 
-  // Add a Transform from the searchable menu (right click on empty canvas).
+  // Add a Transform from the searchable menu (right click on empty canvas), high
+  // enough to stay in view when the inspector takes its room for the new node.
   const int ax = wx + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.45);
-  const int ay = wy + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.85);
+  const int ay = wy + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.2);
   xdo("mousemove " + std::to_string(ax) + " " + std::to_string(ay) + " sleep 0.2 click 3 sleep 0.4 type Transform");
   press("Return");
   map = studio.wait("the Transform node", [](const json& j) { return j["selected"] == 3; });
