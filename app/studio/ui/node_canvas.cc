@@ -47,6 +47,14 @@ NodeMarks marks_of(const EvalSnapshot* eval, NodeId id) {
   return m;
 }
 
+// "computed, 1.25 ms": what the last evaluation did at a node and how long its own evaluate took.
+std::string timing_label(const NodeStats& s) {
+  if (s.outcome != NodeOutcome::kComputed && s.outcome != NodeOutcome::kFailed) return to_string(s.outcome);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s, %.2f ms", to_string(s.outcome), static_cast<double>(s.time_ns) * 1e-6);
+  return buf;
+}
+
 ImU32 outcome_color(NodeOutcome o) {
   switch (o) {
     case NodeOutcome::kCacheHit: return IM_COL32(120, 140, 170, 255);
@@ -172,6 +180,7 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
 
   screen_rect_ = Rect{view_.origin, view_.origin + size};
   pins_on_screen_.clear();
+  timings_on_screen_.clear();
   for (const NodeBox& b : boxes) {
     for (std::uint32_t i = 0; i < b.inputs.size(); ++i) pins_on_screen_.push_back({{b.id, i}, false, view_.to_screen(b.inputs[i])});
     for (std::uint32_t i = 0; i < b.outputs.size(); ++i) pins_on_screen_.push_back({{b.id, i}, true, view_.to_screen(b.outputs[i])});
@@ -244,10 +253,15 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
     if (m.stats) {
       const glm::vec2 dot(a.x + 8.0f * zoom, a.y + kHeaderHeight * zoom * 0.5f);
       dl->AddCircleFilled(im(dot), std::max(4.0f * zoom, 2.0f), outcome_color(m.stats->outcome));
-      if (port_text && glm::distance(mouse_s, dot) < 7.0f * zoom) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%s, %.2f ms", to_string(m.stats->outcome), static_cast<double>(m.stats->time_ns) * 1e-6);
-        hover_text = buf;
+      const std::string timing = timing_label(*m.stats);
+      if (port_text && glm::distance(mouse_s, dot) < 7.0f * zoom) hover_text = timing;
+      // Under the box, where a slow node shows at a glance (legible sizes only, like port names).
+      if (port_text) {
+        const ImVec2 at(a.x + 4.0f * zoom, c.y + 3.0f * zoom);
+        text(font_size, at, outcome_color(m.stats->outcome), timing);
+        const float w = font->CalcTextSizeA(font_size, 1e9f, 0.0f, timing.c_str()).x;
+        timings_on_screen_.push_back({b.id, m.stats->outcome, static_cast<double>(m.stats->time_ns) * 1e-6,
+                                      Rect{{at.x, at.y}, {at.x + w, at.y + font_size}}});
       }
     }
     if (!m.errors.empty() || !m.warnings.empty()) {

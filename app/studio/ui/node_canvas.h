@@ -1,8 +1,8 @@
 // node_canvas.h -- the node editor panel, drawn with ImGui draw lists.
 //
 // Draws the document's graph every frame (nodes from their declarations,
-// links as bezier curves, error/warning badges and cached/computed marks from
-// the last evaluation) and turns gestures into Document edits: drag from an
+// links as bezier curves, error/warning badges, and cached/computed marks with
+// each node's time under its box, from the last evaluation) and turns gestures into Document edits: drag from an
 // output to an input to connect (refusals explained), drag a connected input
 // away to disconnect, drag nodes to move them, click/ctrl-click/rubber band to
 // select, right click or Tab for the searchable add menu, wheel to zoom,
@@ -37,6 +37,14 @@ class NodeCanvas {
   };
   const std::vector<PinOnScreen>& pins_on_screen() const { return pins_on_screen_; }
   Rect screen_rect() const { return screen_rect_; }
+  // Each node's outcome and time of the shown evaluation, where the last frame wrote it.
+  struct TimingOnScreen {
+    NodeId node = 0;
+    NodeOutcome outcome = NodeOutcome::kComputed;
+    double ms = 0.0;
+    Rect rect;
+  };
+  const std::vector<TimingOnScreen>& timings_on_screen() const { return timings_on_screen_; }
   float zoom() const { return view_.zoom; }
   // The smallest text the last frame drew on the canvas, in pixels (0: none).
   float min_text_px() const { return min_text_px_; }
@@ -58,6 +66,7 @@ class NodeCanvas {
   int highlight_ = 0;    // the search list's entry that Enter places
   NodeId wire_from_ = 0;  // the node selected when the search opened: the new node is wired from it
   std::vector<PinOnScreen> pins_on_screen_;
+  std::vector<TimingOnScreen> timings_on_screen_;
   Rect screen_rect_;
   float min_text_px_ = 0.0f;
 };

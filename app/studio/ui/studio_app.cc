@@ -514,6 +514,10 @@ class App {
     j["pins"] = nlohmann::json::array();
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
+    j["node_timings"] = nlohmann::json::object();
+    for (const auto& t : canvas_.timings_on_screen())
+      j["node_timings"][std::to_string(t.node)] = {{"outcome", to_string(t.outcome)}, {"ms", t.ms},
+                                                    {"rect", {t.rect.min.x, t.rect.min.y, t.rect.max.x - t.rect.min.x, t.rect.max.y - t.rect.min.y}}};
     j["buttons"] = buttons_;
     for (const auto& [name, r] : shape_editor_.buttons()) j["buttons"][name] = r;
     for (const auto& [name, r] : recipe_panel_.widgets()) j["buttons"][name] = r;

@@ -151,46 +151,63 @@ void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first)
 
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
 
-// Pixels of the preview's anchor-marker yellow on screen now (the screen
-// captured with xwd), so a test sees what a person would.
-long anchor_marker_pixels(const json& map) {
+// The screen now (xwd | xwdtopnm), so a test sees what a person would.
+struct Screen {
+  long w = 0, h = 0;
+  std::string ppm;
+  std::size_t at = 0;  // the first RGB byte
+  // Pixels of window rectangle [x, y, w, h] (window `origin` on screen) whose colour passes `is`.
+  long count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const {
+    const long x0 = origin.first + static_cast<long>(r[0].get<double>()), y0 = origin.second + static_cast<long>(r[1].get<double>());
+    const long x1 = x0 + static_cast<long>(r[2].get<double>()), y1 = y0 + static_cast<long>(r[3].get<double>());
+    long n = 0;
+    for (long y = std::max(0L, y0); y < std::min(h, y1); ++y)
+      for (long x = std::max(0L, x0); x < std::min(w, x1); ++x) {
+        const std::size_t i = at + static_cast<std::size_t>((y * w + x) * 3);
+        if (i + 2 >= ppm.size()) break;
+        n += is(static_cast<unsigned char>(ppm[i]), static_cast<unsigned char>(ppm[i + 1]), static_cast<unsigned char>(ppm[i + 2]));
+      }
+    return n;
+  }
+};
+
+Screen capture_screen() {
+  Screen s;
   FILE* pipe = popen("xwd -root -silent | xwdtopnm 2>/dev/null", "r");
   if (!pipe) {
     ADD_FAILURE() << "cannot run xwd";
-    return 0;
+    return s;
   }
-  std::string ppm;
   char buf[65536];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) ppm.append(buf, n);
+  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) s.ppm.append(buf, n);
   pclose(pipe);
   // P6 <width> <height> <maxval>, whitespace-separated, then RGB bytes.
-  std::size_t at = 0;
   std::vector<long> header;
-  while (header.size() < 4 && at < ppm.size()) {
-    while (at < ppm.size() && std::isspace(static_cast<unsigned char>(ppm[at]))) ++at;
-    const std::size_t start = at;
-    while (at < ppm.size() && !std::isspace(static_cast<unsigned char>(ppm[at]))) ++at;
-    const std::string token = ppm.substr(start, at - start);
+  while (header.size() < 4 && s.at < s.ppm.size()) {
+    while (s.at < s.ppm.size() && std::isspace(static_cast<unsigned char>(s.ppm[s.at]))) ++s.at;
+    const std::size_t start = s.at;
+    while (s.at < s.ppm.size() && !std::isspace(static_cast<unsigned char>(s.ppm[s.at]))) ++s.at;
+    const std::string token = s.ppm.substr(start, s.at - start);
     header.push_back(header.empty() ? (token == "P6" ? 6 : -1) : std::atol(token.c_str()));
   }
-  ++at;
+  ++s.at;
   if (header.size() < 4 || header[0] != 6 || header[3] != 255) {
     ADD_FAILURE() << "xwd | xwdtopnm gave no 8-bit P6 image";
-    return 0;
+    return {};
   }
-  const long w = header[1], h = header[2];
-  const json& r = map["preview"];
-  const long x0 = map["window"][0].get<long>() + r[0].get<long>(), y0 = map["window"][1].get<long>() + r[1].get<long>();
-  long count = 0;
-  for (long y = std::max(0L, y0); y < std::min(h, y0 + r[3].get<long>()); ++y)
-    for (long x = std::max(0L, x0); x < std::min(w, x0 + r[2].get<long>()); ++x) {
-      const std::size_t i = at + static_cast<std::size_t>((y * w + x) * 3);
-      if (i + 2 >= ppm.size()) break;
-      const double red = static_cast<unsigned char>(ppm[i]), green = static_cast<unsigned char>(ppm[i + 1]), blue = static_cast<unsigned char>(ppm[i + 2]);
-      // The marker's (1, 0.85, 0.1), lit: no tag colour is yellow with so little blue.
-      count += red > 80 && green > 0.65 * red && green < 1.05 * red && blue < 0.25 * red;
-    }
-  return count;
+  s.w = header[1];
+  s.h = header[2];
+  return s;
+}
+
+std::pair<long, long> window_origin(const json& map) { return {map["window"][0].get<long>(), map["window"][1].get<long>()}; }
+
+// Pixels of the preview's anchor-marker yellow on screen now.
+long anchor_marker_pixels(const json& map) {
+  // The marker's (1, 0.85, 0.1), lit: no tag colour is yellow with so little blue.
+  return capture_screen().count(window_origin(map), map["preview"], [](double red, double green, double blue) {
+    return red > 80 && green > 0.65 * red && green < 1.05 * red && blue < 0.25 * red;
+  });
 }
 
 // Ctrl+S, then Ctrl+Q: saved, and a clean exit.
@@ -565,6 +582,47 @@ TEST(StudioInteraction, TabSearchPlacesAWiredNodeAndLTidiesTheLayout) {
   // Laid out in layers: each node right of the one feeding it.
   EXPECT_LT(g.node(1)->editor.x, g.node(2)->editor.x);
   EXPECT_LT(g.node(2)->editor.x, g.node(3)->editor.x);
+  fs::remove_all(dir);
+}
+
+// Each node's outcome and time are written under its box: after an edit of
+// the Extrude, the footprint above it is a cache hit and the Extrude computed
+// again, on screen in their outcome's colour.
+TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
+  const fs::path dir = fresh_dir("timings");
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
+  const auto outcome = [](const json& j, const char* node) -> std::string {
+    return j["node_timings"].contains(node) ? j["node_timings"][node]["outcome"].get<std::string>() : "";
+  };
+  json map = studio.wait("the house evaluated", [&](const json& j) {
+    return j["settled"] && j["params"].contains("max_height") && outcome(j, "1") == "computed" && outcome(j, "2") == "computed";
+  });
+  EXPECT_GT(map["node_timings"]["1"]["ms"].get<double>(), 0.0);
+  EXPECT_GT(map["node_timings"]["2"]["ms"].get<double>(), 0.0);
+  // The computed green (90, 220, 110) of the label text; the cache-hit grey-blue (120, 140, 170).
+  const auto green = [](double r, double g, double b) { return g > 140 && g > 1.5 * r && g > 1.4 * b; };
+  const auto grey_blue = [](double r, double g, double b) { return b > 110 && b > r + 25 && b > g + 12; };
+  const Screen before = capture_screen();
+  EXPECT_GE(before.count(window_origin(map), map["node_timings"]["1"]["rect"], green), 10);
+  EXPECT_EQ(before.count(window_origin(map), map["node_timings"]["1"]["rect"], grey_blue), 0);
+
+  const std::uint64_t rev = revision(map);
+  type_into_slider(widget_centre(map, "max_height"), "6");
+  map = studio.wait("the Extrude evaluated again", [&](const json& j) {
+    return revision(j) > rev && j["settled"] && outcome(j, "1") == "cache hit" && outcome(j, "2") == "computed";
+  });
+  EXPECT_EQ(map["errors"], 0);
+  EXPECT_EQ(map["node_timings"]["1"]["ms"].get<double>(), 0.0);  // a cache hit evaluates nothing
+  long cached = 0, computed = 0;
+  for (int attempt = 0; attempt < 20 && (cached < 10 || computed < 10); ++attempt) {  // a frame or two after the result
+    std::this_thread::sleep_for(100ms);
+    const Screen after = capture_screen();
+    cached = after.count(window_origin(map), map["node_timings"]["1"]["rect"], grey_blue);
+    computed = after.count(window_origin(map), map["node_timings"]["2"]["rect"], green);
+  }
+  EXPECT_GE(cached, 10) << "the footprint's 'cache hit' on screen";
+  EXPECT_GE(computed, 10) << "the Extrude's time on screen";
   fs::remove_all(dir);
 }
 
