@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct TaggedMesh {
   std::vector<std::string> tags;         // distinct tag names, in order of first use
   std::string building;                  // building id ("" when not bound)
   std::int64_t feature = -1;             // the building's position in its GeoJSON file (batch), else -1
+  // Written to glTF extras: the feature's GeoJSON properties and the
+  // recipe's exposed values, each value as compact JSON text.
+  std::map<std::string, std::string> properties, parameters;
   // Where the sweep resolved the footprint's anchors on this mesh (Extrude),
   // in the same coordinates as the mesh: what Mesh placement places at.
   std::vector<ResolvedAnchor> anchors;

@@ -13,6 +13,7 @@ packages=(
   slurm-wlm munge
   pybind11-dev python3-dev python3-numpy python3-pytest blender
   nodejs
+  blender
 )
 
 # The Node.js tools the tests run (glTF validator, three.js), pinned by tools/package-lock.json.

@@ -1,13 +1,17 @@
 // Loads one .glb with three.js's GLTFLoader (as a browser would) and prints
-// what it found as JSON: one entry per primitive with its node's building id, its tag
-// (extras), material and triangle count. Exit code 1 if loading fails.
+// what it found as JSON: the scene's top nodes (name, position, extras), and
+// one entry per primitive with its node's building id, its tag (extras),
+// material, triangle count, whether it has normals and texture coordinates,
+// and its world bounds (three.js is +Y up, as glTF). Exit code 1 if loading fails.
 import { readFileSync } from 'node:fs';
+import { Box3 } from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 
 const file = process.argv[2];
 const buffer = readFileSync(file);
 const data = buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + buffer.byteLength);
 new GLTFLoader().parse(data, '', (gltf) => {
+  gltf.scene.updateMatrixWorld(true);
   const meshes = [];
   gltf.scene.traverse((o) => {
     if (!o.isMesh) return;
@@ -19,9 +23,13 @@ new GLTFLoader().parse(data, '', (gltf) => {
       triangles: o.geometry.index ? o.geometry.index.count / 3 : 0,
       vertices: o.geometry.attributes.position.count,
       normals: o.geometry.attributes.normal !== undefined,
+      uvs: o.geometry.attributes.uv !== undefined,
+      min: new Box3().setFromObject(o, true).min.toArray(),
+      max: new Box3().setFromObject(o, true).max.toArray(),
     });
   });
-  console.log(JSON.stringify({ nodes: gltf.scene.children.length, meshes }, null, 1));
+  const top = gltf.scene.children.map((n) => ({ name: n.name, position: n.position.toArray(), extras: n.userData }));
+  console.log(JSON.stringify({ nodes: gltf.scene.children.length, top, meshes }, null, 1));
 }, (error) => {
   console.error(`${file}: ${error.message ?? error}`);
   process.exit(1);

@@ -117,6 +117,7 @@ void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_g
     budget.add(b.meshes);
     if (budget.exceeded) return;  // the batch is refused: free nothing more
     label_parts(b.meshes, *b.feature);
+    label_parameters(b.meshes, graph);
     b.summary = summarize(b.meshes);
     if (to_glb) {
       b.gltf = to_gltf(b.meshes);
@@ -296,12 +297,12 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     if (per_building) std::filesystem::create_directories(options.output);
     for (Building& b : buildings) {
       if (b.status != "ok") continue;
-      if (per_building) write_mesh_set(options.output / b.file, b.meshes);
+      if (per_building) write_mesh_set(options.output / b.file, b.meshes, options.export_options);
       else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
       else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
     }
     if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
-    else if (!per_building) write_mesh_set(options.output, all);
+    else if (!per_building) write_mesh_set(options.output, all, options.export_options);
     if (!options.report.empty()) {
       report_file.add(options.report, report(std::chrono::steady_clock::now()));
       report_file.commit();

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "nodes/support/mesh_export.h"
+
 namespace procex {
 
 struct BatchCommandOptions {
@@ -33,6 +35,7 @@ struct BatchCommandOptions {
   // meshes' faces; placed meshes): more is refused, exit 2, nothing written.
   std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
+  ExportOptions export_options;       // --up
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

@@ -48,8 +48,9 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
   }
   MeshSet meshes = gather_meshes(r);
   if (feature) label_parts(meshes, *feature);
+  label_parameters(meshes, recipe->graph);
   try {
-    write_mesh_set(options.output, meshes);
+    write_mesh_set(options.output, meshes, options.export_options);
   } catch (const IoError& e) {
     err << "procex eval: " << e.what() << "\n";
     return kExitUnusableInput;

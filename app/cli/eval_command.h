@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "nodes/support/mesh_export.h"
+
 namespace procex {
 
 struct EvalCommandOptions {
@@ -20,6 +22,7 @@ struct EvalCommandOptions {
   std::string feature;                // the feature's id, or its index in the file
   std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
   std::string preset;                 // a preset of the recipe, applied before the settings
+  ExportOptions export_options;       // --up
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

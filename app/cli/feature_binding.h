@@ -41,7 +41,7 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 // name nothing in the recipe are ignored.
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);
 
-// Marks every part with f's id and index (written to .glb extras).
+// Marks every part with f's id, index and properties (written to .glb extras).
 void label_parts(MeshSet& meshes, const GeoJsonFeature& f);
 
 struct MeshRecipe;

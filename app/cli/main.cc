@@ -64,6 +64,16 @@ Runner add_roof(CLI::App& app) {
   return [cmd, options] { return *cmd ? run_roof(*options, std::cout, std::cerr) : -1; };
 }
 
+// --up for the commands that write OBJ or PLY: which file axis is up.
+void add_up_option(CLI::App* cmd, ExportOptions& options) {
+  cmd->add_option_function<std::string>(
+         "--up", [&options](const std::string& axis) { options.up = axis == "z" ? UpAxis::Z : UpAxis::Y; },
+         "Up axis of OBJ and PLY files: y (default; Blender, Maya, Houdini) or z (GIS tools: x east, y north, "
+         "z up). Units are metres. A .glb is always +Y up with x east and -z north, as glTF 2.0 says, so a "
+         "plan seen from above is not mirrored")
+      ->check(CLI::IsMember({"y", "z"}));
+}
+
 Runner add_eval(CLI::App& app) {
   auto options = std::make_shared<EvalCommandOptions>();
   CLI::App* cmd = app.add_subcommand("eval", "Evaluate a recipe (.pxg) and write its mesh outputs to one file");
@@ -76,6 +86,7 @@ Runner add_eval(CLI::App& app) {
   cmd->add_option("--feature", options->feature, "The feature's id, or its index in --footprints")->needs(footprints);
   footprints->needs("--feature");
   add_allow_path(cmd, options->allowed_paths);
+  add_up_option(cmd, options->export_options);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -132,6 +143,7 @@ Runner add_batch(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
   add_allow_path(cmd, options->allowed_paths);
+  add_up_option(cmd, options->export_options);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

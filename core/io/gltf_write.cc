@@ -14,6 +14,7 @@
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "core/geom/convex_partition.h"
@@ -23,6 +24,8 @@
 #include "core/io/atomic_write.h"
 #include "core/io/byte_range.h"
 #include "core/io/io_error.h"
+#include "core/io/up_axis.h"
+#include "core/mesh/uv_frames.h"
 #include "core/placement/placement.h"
 #include "core/placement/trs_split.h"
 
@@ -106,12 +109,23 @@ void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
     throw IoError("cannot write '" + path.string() + "': mesh '" + mesh.building + "' " + what, path.string());
   };
   if (!is_utf8(mesh.building)) refuse("has a name that is not UTF-8");
+  if (!std::all_of(mesh.origin.begin(), mesh.origin.end(), [](double x) { return std::isfinite(x); }))
+    refuse("has an origin that is not finite");
+  for (const auto* values : {&mesh.properties, &mesh.parameters})
+    for (const auto& [name, json] : *values)
+      if (!is_utf8(name) || !nlohmann::json::accept(json))
+        refuse("has an attribute '" + name + "' whose name is not UTF-8 or whose value is not JSON");
   for (const GltfPrimitiveData& p : mesh.primitives) {
     if (!is_utf8(p.tag)) refuse("has a tag that is not UTF-8");
     if (p.positions.size() % 3 != 0 || p.normals.size() != p.positions.size())
       refuse("has " + std::to_string(p.normals.size()) + " normal and " + std::to_string(p.positions.size()) +
              " position coordinates in primitive '" + p.tag + "'");
     const std::size_t vertices = p.positions.size() / 3;
+    if (!p.uvs.empty() && p.uvs.size() != 2 * vertices)
+      refuse("has " + std::to_string(p.uvs.size()) + " texture coordinates for " + std::to_string(vertices) +
+             " vertices in primitive '" + p.tag + "'");
+    if (!std::all_of(p.uvs.begin(), p.uvs.end(), [](float x) { return std::isfinite(x); }))
+      refuse("has texture coordinates that are not finite in primitive '" + p.tag + "'");
     if (p.indices.size() % 3 != 0 ||
         std::any_of(p.indices.begin(), p.indices.end(), [&](std::uint32_t i) { return i >= vertices; }))
       refuse("has indices that are not triangles of its " + std::to_string(vertices) + " vertices in primitive '" +
@@ -174,8 +188,8 @@ struct Item {
   const GltfMeshData* data = nullptr;
   bool placed = false;
   // Its first index in each array, and its first float in the position and
-  // normal views and first index in the index view.
-  std::size_t accessor = 0, mesh = 0, node = 0, floats = 0, indices = 0;
+  // normal views, in the texture coordinate view, and first index in the index view.
+  std::size_t accessor = 0, mesh = 0, node = 0, floats = 0, uv_floats = 0, indices = 0;
   bool has_mesh = false, has_node = false;
   // Its JSON, each a comma-separated run of array elements ("" if none).
   std::string nodes_json, mesh_json, accessors_json;
@@ -183,7 +197,7 @@ struct Item {
 
 // Counts every item's share of each array: its first indices follow.
 struct Totals {
-  std::size_t accessors = 0, meshes = 0, nodes = 0, floats = 0, indices = 0;
+  std::size_t accessors = 0, meshes = 0, nodes = 0, floats = 0, uv_floats = 0, indices = 0;
 };
 
 Totals place_items(std::vector<Item>& items) {
@@ -191,9 +205,12 @@ Totals place_items(std::vector<Item>& items) {
   for (Item& item : items) {
     const GltfMeshData& d = *item.data;
     item.accessor = t.accessors, item.mesh = t.meshes, item.node = t.nodes;
-    item.floats = t.floats, item.indices = t.indices;
-    for (const GltfPrimitiveData& p : d.primitives)
-      if (!p.indices.empty()) t.accessors += 3, t.floats += p.positions.size(), t.indices += p.indices.size();
+    item.floats = t.floats, item.uv_floats = t.uv_floats, item.indices = t.indices;
+    for (const GltfPrimitiveData& p : d.primitives) {
+      if (p.indices.empty()) continue;
+      t.accessors += p.uvs.empty() ? 3 : 4;
+      t.floats += p.positions.size(), t.uv_floats += p.uvs.size(), t.indices += p.indices.size();
+    }
     item.has_mesh = t.accessors > item.accessor;
     t.meshes += item.has_mesh;
     item.has_node = !item.placed && (item.has_mesh || !d.instances.empty());
@@ -226,7 +243,7 @@ void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials
   const GltfMeshData& d = *item.data;
   std::string& mesh = item.mesh_json;
   std::string& acc = item.accessors_json;
-  std::size_t a = item.accessor, floats = item.floats, indices = item.indices;
+  std::size_t a = item.accessor, floats = item.floats, uv_floats = item.uv_floats, indices = item.indices;
   mesh += "{\"name\":";
   put_string(mesh, d.building);
   mesh += ",\"primitives\":[";
@@ -239,6 +256,10 @@ void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials
     put_index(mesh, a + 1);
     mesh += ",\"POSITION\":";
     put_index(mesh, a);
+    if (!p.uvs.empty()) {
+      mesh += ",\"TEXCOORD_0\":";
+      put_index(mesh, a + 3);
+    }
     mesh += "},\"indices\":";
     put_index(mesh, a + 2);
     mesh += ",\"material\":";
@@ -246,7 +267,7 @@ void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials
     mesh += ",\"mode\":4,\"extras\":{\"tag\":";
     put_string(mesh, p.tag);
     mesh += "}}";
-    a += 3;
+    a += p.uvs.empty() ? 3 : 4;
 
     float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (std::size_t i = 0; i < p.positions.size(); i += 3)
@@ -266,7 +287,12 @@ void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials
     acc += '}';
     put_accessor(acc, 2, indices * sizeof(std::uint32_t), kUint, "SCALAR", p.indices.size());
     acc += '}';
+    if (!p.uvs.empty()) {
+      put_accessor(acc, 3, uv_floats * sizeof(float), kFloat, "VEC2", n);
+      acc += '}';
+    }
     floats += p.positions.size();
+    uv_floats += p.uvs.size();
     indices += p.indices.size();
   }
   mesh += ']';
@@ -289,6 +315,15 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
     out += ",\"mesh\":";
     put_index(out, item.mesh);
   }
+  const bool moved = d.origin != std::array<double, 3>{0, 0, 0};
+  if (moved) {
+    out += ",\"translation\":[";
+    for (int k = 0; k < 3; ++k) {
+      if (k > 0) out += ',';
+      put_number(out, d.origin[static_cast<std::size_t>(k)]);
+    }
+    out += ']';
+  }
   std::string children;
   std::size_t next = item.node + 1;
   for (const GltfInstanceData& in : d.instances) {
@@ -301,6 +336,28 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   put_string(out, d.building);
   out += ",\"feature\":";
   put_index(out, d.feature);
+  if (moved) {
+    out += ",\"origin\":[";  // procex's frame: east, north, up
+    const glm::dvec3 o = from_file_axes({d.origin[0], d.origin[1], d.origin[2]}, UpAxis::Y);
+    for (int k = 0; k < 3; ++k) {
+      if (k > 0) out += ',';
+      put_number(out, o[k] + 0.0);  // + 0.0: no "-0"
+    }
+    out += ']';
+  }
+  for (const auto& [key, values] : {std::pair{",\"properties\":{", &d.properties}, std::pair{",\"parameters\":{", &d.parameters}}) {
+    if (values->empty()) continue;
+    out += key;
+    bool first_value = true;
+    for (const auto& [name, json] : *values) {
+      if (!first_value) out += ',';
+      first_value = false;
+      put_string(out, name);
+      out += ':';
+      out += json;
+    }
+    out += '}';
+  }
   out += "}}";
 
   next = item.node + 1;
@@ -434,22 +491,27 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   if (!materials_json.empty()) json.add_own(",\"materials\":[" + materials_json + "]");
   json.add_array("accessors", items, &Item::accessors_json);
   const std::size_t vertex_bytes = totals.floats * sizeof(float), index_bytes = totals.indices * sizeof(std::uint32_t);
-  const std::size_t bin_bytes = 2 * vertex_bytes + index_bytes;
+  const std::size_t uv_bytes = totals.uv_floats * sizeof(float);
+  const std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes;
   std::string tail;
   if (bin_bytes > 0) {
-    // Three views, each tightly packed: every position, then every normal
-    // (vertex attributes, so a stride), then every index. Three views instead
-    // of three per primitive keep the JSON small for whole cities.
-    const std::size_t offsets[3] = {0, vertex_bytes, 2 * vertex_bytes};
-    const std::size_t lengths[3] = {vertex_bytes, vertex_bytes, index_bytes};
+    // Three or four views, each tightly packed: every position, then every
+    // normal (vertex attributes, so a stride), every index, and every texture
+    // coordinate pair. Views shared by all primitives keep the JSON small for
+    // whole cities.
+    const std::size_t offsets[4] = {0, vertex_bytes, 2 * vertex_bytes, 2 * vertex_bytes + index_bytes};
+    const std::size_t lengths[4] = {vertex_bytes, vertex_bytes, index_bytes, uv_bytes};
+    static constexpr const char* kViewTails[4] = {",\"byteStride\":12,\"target\":34962}",
+                                                  ",\"byteStride\":12,\"target\":34962}", ",\"target\":34963}",
+                                                  ",\"byteStride\":8,\"target\":34962}"};
     tail += ",\"bufferViews\":[";
-    for (int v = 0; v < 3; ++v) {
+    for (int v = 0; v < (uv_bytes > 0 ? 4 : 3); ++v) {
       if (v > 0) tail += ',';
       tail += "{\"buffer\":0,\"byteOffset\":";
       put_index(tail, offsets[v]);
       tail += ",\"byteLength\":";
       put_index(tail, lengths[v]);
-      tail += v < 2 ? ",\"byteStride\":12,\"target\":34962}" : ",\"target\":34963}";
+      tail += kViewTails[v];
     }
     tail += "],\"buffers\":[{\"byteLength\":";
     put_index(tail, bin_bytes);
@@ -486,6 +548,9 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     for (const Item& item : items)
       for (const GltfPrimitiveData& p : item.data->primitives)
         if (!p.indices.empty()) add(p.indices);
+    for (const Item& item : items)
+      for (const GltfPrimitiveData& p : item.data->primitives)
+        if (!p.indices.empty()) add(p.uvs);
   }
   write_file_atomically(path, pieces);
 }
@@ -503,7 +568,7 @@ std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component,
   if (a.componentType != component || a.type != type) bad(path, where + " has an unexpected component type");
   if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= m.bufferViews.size()) bad(path, where + " has no buffer view");
   const tinygltf::BufferView& v = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
-  const std::size_t per = (type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
+  const std::size_t per = (type == TINYGLTF_TYPE_VEC3 ? 3 : type == TINYGLTF_TYPE_VEC2 ? 2 : 1);
   if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() ||
       (v.byteStride != 0 && v.byteStride != per * sizeof(T)))
     bad(path, where + ": unexpected buffer or stride");
@@ -570,7 +635,9 @@ std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mes
     prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
     prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
     prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
-    // Writers index normals by the position's index, so counts that differ or
+    if (const auto uv = p.attributes.find("TEXCOORD_0"); uv != p.attributes.end())
+      prim.uvs = read_accessor<float>(m, uv->second, kFloat, TINYGLTF_TYPE_VEC2, path);
+    // Writers index normals and texture coordinates by the position's index, so counts that differ or
     // an index past the vertices would read or write past an array.
     if (prim.normals.size() != prim.positions.size())
       bad(path, "a primitive has " + std::to_string(prim.positions.size() / 3) + " positions but " +
@@ -579,6 +646,9 @@ std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mes
     for (const std::uint32_t i : prim.indices)
       if (i >= vertices)
         bad(path, "a primitive's index " + std::to_string(i) + " is past its " + std::to_string(vertices) + " vertices");
+    if (!prim.uvs.empty() && prim.uvs.size() != 2 * vertices)
+      bad(path, "a primitive has " + std::to_string(vertices) + " positions but " +
+                    std::to_string(prim.uvs.size() / 2) + " texture coordinates");
   }
   return out;
 }
@@ -596,19 +666,29 @@ std::array<double, 3> tag_colour(const std::string& tag) {
   return {g, g, g};
 }
 
+glm::dvec3 local_origin(const Mesh& mesh) {
+  if (mesh.n_vertices() == 0) return {0, 0, 0};
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const auto v : mesh.vertices())
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], mesh.point(v)[k]), hi[k] = std::max(hi[k], mesh.point(v)[k]);
+  return {std::round(0.5 * (lo[0] + hi[0])), std::round(0.5 * (lo[1] + hi[1])), 0.0};
+}
+
 void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
   const Mesh& mesh = *view.mesh;
+  const glm::dvec3 origin = from_file_axes({out.origin[0], out.origin[1], out.origin[2]}, UpAxis::Y);
   // The primitive of each of the view's tags, found by name among those already there.
   std::vector<int> primitive_of_tag(view.tags.size(), -1);
   for (std::size_t t = 0; t < view.tags.size(); ++t)
     for (std::size_t p = 0; p < out.primitives.size(); ++p)
       if (out.primitives[p].tag == view.tags[t]) primitive_of_tag[t] = static_cast<int>(p);
+  const std::vector<UvFrame> frames = face_uv_frames(mesh, origin);
   std::vector<glm::dvec3> pts;
   for (const auto f : mesh.faces()) {
     pts.clear();
     for (const auto v : mesh.fv_range(f)) {
       const Mesh::Point& p = mesh.point(v);
-      pts.push_back({p[0], p[1], p[2]});
+      pts.push_back(glm::dvec3(p[0], p[1], p[2]) - origin);
     }
     const glm::dvec3 n = newell_normal(pts);
     const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
@@ -617,14 +697,19 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
     int& slot = primitive_of_tag[tag];
     if (slot < 0) {
       slot = static_cast<int>(out.primitives.size());
-      out.primitives.push_back({view.tags[tag], {}, {}, {}});
+      out.primitives.push_back({view.tags[tag], {}, {}, {}, {}});
     }
     GltfPrimitiveData& prim = out.primitives[static_cast<std::size_t>(slot)];
     const auto base = static_cast<std::uint32_t>(prim.positions.size() / 3);
+    const glm::dvec3 file_n = to_file_axes(n / len, UpAxis::Y);
+    const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
     for (const glm::dvec3& p : pts) {
-      prim.positions.insert(prim.positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
-      prim.normals.insert(prim.normals.end(), {static_cast<float>(n.x / len), static_cast<float>(n.y / len),
-                                               static_cast<float>(n.z / len)});
+      const glm::dvec3 q = to_file_axes(p, UpAxis::Y);
+      const glm::dvec2 uv = frame.at(p);
+      prim.positions.insert(prim.positions.end(), {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
+      prim.normals.insert(prim.normals.end(), {static_cast<float>(file_n.x), static_cast<float>(file_n.y),
+                                               static_cast<float>(file_n.z)});
+      prim.uvs.insert(prim.uvs.end(), {static_cast<float>(uv.x), static_cast<float>(-uv.y)});
     }
     for (const auto& piece : convex_partition({drop_axis(pts, n)}))
       for (std::size_t k = 1; k + 1 < piece.size(); ++k)
@@ -632,10 +717,12 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
   }
 }
 
-GltfMeshData to_gltf_mesh(const TaggedMeshView& view) {
+GltfMeshData to_gltf_mesh(const TaggedMeshView& view, const glm::dvec3& origin) {
   GltfMeshData out;
   out.building = view.building;
   out.feature = view.feature;
+  const glm::dvec3 o = to_file_axes(origin, UpAxis::Y);
+  out.origin = {o.x, o.y, o.z};
   append_to_gltf_mesh(out, view);
   return out;
 }
@@ -694,6 +781,21 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
   if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                    static_cast<unsigned int>(bytes.size())))
     throw IoError("cannot read '" + path.string() + "' as glTF binary: " + err, path.string());
+  // tinygltf keeps extras as values; the attributes are wanted back as the
+  // JSON text they were written from.
+  std::uint32_t json_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);  // LoadBinaryFromMemory checked the header
+  const nlohmann::json raw = nlohmann::json::parse(bytes.begin() + 20, bytes.begin() + 20 + json_length, nullptr, false);
+  const auto attributes = [&](int node, const char* key) {
+    std::map<std::string, std::string> values;
+    if (!raw.contains("nodes") || !raw["nodes"].is_array() || static_cast<std::size_t>(node) >= raw["nodes"].size()) return values;
+    const nlohmann::json& n = raw["nodes"][static_cast<std::size_t>(node)];
+    if (!n.contains("extras") || !n["extras"].is_object() || !n["extras"].contains(key)) return values;
+    const nlohmann::json& members = n["extras"][key];
+    if (!members.is_object()) bad(path, "node " + std::to_string(node) + "'s extras." + key + " is not an object");
+    for (const auto& [name, value] : members.items()) values[name] = value.dump();
+    return values;
+  };
   GltfScene out;
   // Placed meshes carry their name in extras; the others are buildings'.
   std::map<int, std::size_t> prototype_of_mesh;
@@ -711,6 +813,14 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
     GltfMeshData& data = out.meshes.emplace_back();
     if (node.extras.Has("building")) data.building = node.extras.Get("building").Get<std::string>();
     if (node.extras.Has("feature")) data.feature = node.extras.Get("feature").GetNumberAsInt();
+    if (!node.matrix.empty() || !node.rotation.empty() || !node.scale.empty())
+      bad(path, "building node " + std::to_string(ni) + " has a matrix, rotation or scale (only a translation)");
+    if (!node.translation.empty()) {
+      if (node.translation.size() != 3) bad(path, "building node " + std::to_string(ni) + "'s translation is not 3 numbers");
+      std::copy(node.translation.begin(), node.translation.end(), data.origin.begin());
+    }
+    data.properties = attributes(ni, "properties");
+    data.parameters = attributes(ni, "parameters");
     if (node.mesh >= 0) data.primitives = read_primitives(m, node.mesh, path);
     for (int ci : node.children) {
       GltfInstanceData& instance = data.instances.emplace_back();

@@ -1,9 +1,14 @@
 // glTF 2.0 binary (.glb) output, written directly (each building's JSON
 // rendered in parallel, the binary chunk streamed from its arrays; tinygltf
-// only reads files back): one glTF mesh (and node) per
-// building, one primitive per face tag (triangles, flat normals), the tag in the
-// primitive's extras and material name, the building id (and the feature's
-// position in its source file, for merging shards) in the node's extras.
+// only reads files back), in glTF's frame: metres, +Y up (procex's z), the
+// plan not mirrored (core/io/up_axis.h). One glTF mesh (and node) per
+// building, one primitive per face tag (triangles, flat normals, texture
+// coordinates in metres), the tag in the primitive's extras and material name.
+// The node is named by the building id and stands at the building's local
+// origin (its translation, in double precision); its extras hold the id, the
+// feature's position in its source file (for merging shards), the origin in
+// procex's frame (x east, y north, z up), the feature's GeoJSON properties
+// and the recipe's exposed values.
 // Placed meshes (windows, pillars: core/placement) are instanced: one glTF
 // mesh per distinct placed mesh (its name in the mesh's extras as "placed"),
 // one child node of its building's node per instance, holding the instance's
@@ -16,12 +21,14 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include "core/mesh/mesh.h"
 
@@ -42,6 +49,10 @@ struct GltfPrimitiveData {
   std::vector<float> positions;  // x y z per vertex
   std::vector<float> normals;    // unit, per vertex (faces do not share vertices)
   std::vector<std::uint32_t> indices;
+  // Texture coordinates (TEXCOORD_0), u v per vertex or none: metres on the
+  // face (core/mesh/uv_frames.h), v negated as glTF's v runs down the image,
+  // so a texture stands upright on a wall.
+  std::vector<float> uvs;
 
   bool operator==(const GltfPrimitiveData&) const = default;
 };
@@ -49,13 +60,20 @@ struct GltfPrimitiveData {
 // One placement of a placed mesh.
 struct GltfInstanceData {
   std::size_t prototype = 0;   // index into GltfScene::prototypes
-  glm::dmat4 transform{1.0};   // the placed mesh's own coordinates to the world
+  glm::dmat4 transform{1.0};   // the placed mesh's own coordinates to its building's (glTF's frame, from the origin)
   std::string tag;             // the instance's tag ("" if none)
 };
 
 struct GltfMeshData {
   std::string building;
   std::int64_t feature = -1;
+  // Where the node stands (its translation, glTF's frame, double precision):
+  // positions and instance transforms are relative to it, so float32 keeps
+  // millimetres at UTM coordinates. Zero for placed meshes.
+  std::array<double, 3> origin{0, 0, 0};
+  // The node's extras: the feature's GeoJSON properties and the recipe's
+  // exposed values, each value as compact JSON text.
+  std::map<std::string, std::string> properties, parameters;
   std::vector<GltfPrimitiveData> primitives;  // in order of first use of the tag
   std::vector<GltfInstanceData> instances;    // the meshes placed on this building
 };
@@ -78,8 +96,14 @@ void append_scene(GltfScene& into, GltfScene part);
 // derived from the name otherwise. Shared with other writers (OBJ materials).
 std::array<double, 3> tag_colour(const std::string& tag);
 
-// Triangulates every face (convex pieces, fanned); faces with zero area are dropped.
-GltfMeshData to_gltf_mesh(const TaggedMeshView& view);
+// Triangulates every face (convex pieces, fanned); faces with zero area are
+// dropped. Positions and normals turn into glTF's frame here: every
+// GltfMeshData is in glTF's frame, so files read back write the same bytes.
+// `origin` (procex's frame) becomes GltfMeshData::origin.
+GltfMeshData to_gltf_mesh(const TaggedMeshView& view, const glm::dvec3& origin = {0, 0, 0});
+// A building's local origin: the centre of its plan bounds rounded to whole
+// metres, at height 0 (heights stay absolute).
+glm::dvec3 local_origin(const Mesh& mesh);
 // The same, added to an existing mesh (a building made of several procex
 // meshes): faces join the primitive of their tag, made if missing.
 void append_to_gltf_mesh(GltfMeshData& mesh, const TaggedMeshView& view);

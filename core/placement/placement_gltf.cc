@@ -4,6 +4,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/io/up_axis.h"
+
 namespace procex {
 namespace {
 
@@ -28,9 +32,9 @@ FaceTags face_tags(const Mesh& mesh, const std::string& fallback) {
 }
 
 GltfMeshData gltf_mesh(const Mesh& mesh, const std::string& name, const std::string& fallback_tag,
-                       std::int64_t feature) {
+                       std::int64_t feature, const glm::dvec3& origin = {0, 0, 0}) {
   const FaceTags tags = face_tags(mesh, fallback_tag);
-  return to_gltf_mesh({&mesh, tags.of_face, tags.names, name, feature});
+  return to_gltf_mesh({&mesh, tags.of_face, tags.names, name, feature}, origin);
 }
 
 }  // namespace
@@ -38,7 +42,7 @@ GltfMeshData gltf_mesh(const Mesh& mesh, const std::string& name, const std::str
 void GltfSceneBuilder::add(const PlacementResult& result, const std::string& building, std::int64_t feature) {
   for (std::size_t i = 0; i < result.instances.size(); ++i) check_instance(result, i);
   GltfMeshData data;
-  if (result.building) data = gltf_mesh(*result.building, building, "", feature);
+  if (result.building) data = gltf_mesh(*result.building, building, "", feature, local_origin(*result.building));
   data.building = building;
   data.feature = feature;
   add(std::move(data));
@@ -59,7 +63,9 @@ void GltfSceneBuilder::place(const PlacementResult& placed) {
     const PlaceableMesh& mesh = placed.meshes[in.mesh];
     auto [it, added] = prototype_of_.try_emplace(mesh.mesh, scene_.prototypes.size());
     if (added) scene_.prototypes.push_back(gltf_mesh(*mesh.mesh, mesh.name, mesh.name, -1));
-    data.instances.push_back({it->second, in.transform, in.tag});
+    // Relative to the building's origin, as its node stands there.
+    const glm::dmat4 from_origin = glm::translate(glm::dmat4(1.0), -glm::dvec3(data.origin[0], data.origin[1], data.origin[2]));
+    data.instances.push_back({it->second, from_origin * to_file_axes(in.transform, UpAxis::Y), in.tag});
   }
 }
 

@@ -5,9 +5,13 @@
 #include <charconv>
 #include <string>
 
+#include <glm/geometric.hpp>
+
 #include "base/atomic_file_set.h"
+#include "core/geom/polygon3.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
+#include "core/mesh/uv_frames.h"
 #include "core/placement/placement_gltf.h"
 
 namespace procex {
@@ -31,30 +35,63 @@ std::string obj_name(const std::string& name, const std::string& fallback) {
   return out;
 }
 
-void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set) {
+void append_triple(std::string& out, const char* key, const glm::dvec3& p) {
+  out += key;
+  for (int k = 0; k < 3; ++k) out += ' ', append_number(out, p[k]);
+  out += '\n';
+}
+
+// One object per part ("o building_id", as Blender, Maya and Houdini split
+// them), a material per face tag, and per face its flat normal (vn) and its
+// corners' texture coordinates in metres (vt: core/mesh/uv_frames.h).
+void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpAxis up) {
   std::filesystem::path mtl = path;
   mtl.replace_extension(".mtl");
-  std::string obj = "# procex\nmtllib " + mtl.filename().string() + "\n";
+  std::string obj = "# procex: metres, " + std::string(up == UpAxis::Y ? "+Y up (x east, -z north)" : "+Z up (x east, y north)") +
+                    "\nmtllib " + mtl.filename().string() + "\n";
   std::vector<std::string> materials;
-  std::size_t base = 1;  // OBJ numbers vertices from 1 across the file
+  std::size_t base = 1, normals = 1, uvs = 1;  // OBJ numbers each kind from 1 across the file
+  std::vector<glm::dvec3> pts;
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
     const Mesh& mesh = *part.mesh;
-    obj += "g " + obj_name(part.building, "mesh_" + std::to_string(i)) + "\n";
+    obj += "o " + obj_name(part.building, "mesh_" + std::to_string(i)) + "\n";
     for (const auto v : mesh.vertices()) {
-      obj += 'v';
-      for (int k = 0; k < 3; ++k) obj += ' ', append_number(obj, mesh.point(v)[k]);
-      obj += '\n';
+      const Mesh::Point& p = mesh.point(v);
+      append_triple(obj, "v", to_file_axes(glm::dvec3(p[0], p[1], p[2]), up));
     }
+    const std::vector<UvFrame> frames = face_uv_frames(mesh);
     for (std::uint32_t t = 0; t < part.tags.size(); ++t) {
       const std::string name = obj_name(part.tags[t], "untagged");
       bool used = false;
       for (const auto f : mesh.faces()) {
         if (part.face_tags[static_cast<std::size_t>(f.idx())] != t) continue;
         if (!used) obj += "usemtl " + name + "\n", used = true;
+        pts.clear();
+        for (const auto v : mesh.fv_range(f)) {
+          const Mesh::Point& p = mesh.point(v);
+          pts.push_back({p[0], p[1], p[2]});
+        }
+        const glm::dvec3 n = newell_normal(pts);
+        const double len = glm::length(n);
+        append_triple(obj, "vn", to_file_axes(len > 0 ? n / len : glm::dvec3(0, 0, 1), up));
+        const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
+        for (const glm::dvec3& p : pts) {
+          const glm::dvec2 uv = frame.at(p);
+          obj += "vt ";
+          append_number(obj, uv.x);
+          obj += ' ';
+          append_number(obj, uv.y);
+          obj += '\n';
+        }
         obj += 'f';
-        for (const auto v : mesh.fv_range(f)) obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx()));
+        std::size_t corner = 0;
+        for (const auto v : mesh.fv_range(f))
+          obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx())) + '/' + std::to_string(uvs + corner++) + '/' +
+                 std::to_string(normals);
         obj += '\n';
+        uvs += pts.size();
+        ++normals;
       }
       if (used && std::find(materials.begin(), materials.end(), name) == materials.end()) materials.push_back(name);
     }
@@ -80,8 +117,14 @@ GltfScene to_gltf(const MeshSet& set) {
     const TaggedMesh& part = set.parts[i];
     const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature};
     const bool same_building = i > 0 && set.parts[i - 1].building == part.building && set.parts[i - 1].feature == part.feature;
-    if (same_building) append_to_gltf_mesh(builder.last(), view);
-    else builder.add(to_gltf_mesh(view));
+    if (same_building) {
+      append_to_gltf_mesh(builder.last(), view);
+    } else {
+      GltfMeshData building = to_gltf_mesh(view, local_origin(*part.mesh));
+      building.properties = part.properties;
+      building.parameters = part.parameters;
+      builder.add(std::move(building));
+    }
     builder.place(part.placed);
   }
   return std::move(builder).take();
@@ -112,16 +155,16 @@ bool is_mesh_file(const std::filesystem::path& path) {
   return ext == ".obj" || ext == ".ply" || ext == ".glb";
 }
 
-void write_mesh_set(const std::filesystem::path& path, const MeshSet& set) {
+void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".glb") return write_glb(path, to_gltf(set));
   MeshSet flat;
   for (const TaggedMesh& part : set.parts) flat.parts.push_back(flattened(part));
-  if (ext == ".obj") return write_tagged_obj(path, flat);
+  if (ext == ".obj") return write_tagged_obj(path, flat, options.up);
   if (ext == ".ply") {
     std::vector<NamedMesh> named;
     for (const TaggedMesh& part : flat.parts) named.push_back({part.building, part.mesh.get()});
-    return write_ply(path, named);
+    return write_ply(path, named, options.up);
   }
   throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply or .glb)",
                 path.string());

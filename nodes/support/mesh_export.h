@@ -3,7 +3,8 @@
 // .ply (core's writer: source edges and face kinds, one group per mesh) or
 // .glb (one glTF mesh per building: consecutive parts with the same building
 // id and feature join; one primitive per tag; placed meshes instanced). OBJ
-// and PLY get placed meshes flattened into their part. Atomic writes;
+// and PLY get placed meshes flattened into their part. glTF is +Y up; OBJ and
+// PLY +Y up unless ExportOptions::up says Z (core/io/up_axis.h). Atomic writes;
 // IoError naming the file on failure.
 #pragma once
 
@@ -11,11 +12,17 @@
 #include <vector>
 
 #include "core/io/gltf_write.h"
+#include "core/io/up_axis.h"
 #include "nodes/values.h"
 
 namespace procex {
 
-void write_mesh_set(const std::filesystem::path& path, const MeshSet& set);
+// How the files are written beyond their format.
+struct ExportOptions {
+  UpAxis up = UpAxis::Y;  // OBJ and PLY (glTF is +Y up by its specification)
+};
+
+void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options = {});
 
 // The glTF form of the parts, in order, consecutive parts of one building
 // joined, their placed meshes as instances (each distinct placed mesh once).

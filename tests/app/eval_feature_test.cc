@@ -56,8 +56,8 @@ class EvalFeature : public test::CommandTest {
     std::istringstream in(read_text(obj));
     for (std::string line; std::getline(in, line);)
       if (line.rfind("v ", 0) == 0) {
-        double x, y, h;
-        std::istringstream(line.substr(2)) >> x >> y >> h;
+        double x, h, south;  // +Y up
+        std::istringstream(line.substr(2)) >> x >> h >> south;
         z = std::max(z, h);
       }
     return z;

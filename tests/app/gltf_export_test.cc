@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <fstream>
 #include <filesystem>
+#include <array>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -82,7 +84,7 @@ TEST_F(GltfExport, EverySampleValidatesWithoutErrors) {
   for (const char* name : {"house", "gallery_courtyard", "gallery_tower"}) {
     const fs::path out = dir_ / (std::string(name) + ".glb");
     std::ostringstream o, e;
-    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
     files.push_back(out);
   }
   for (const fs::path& f : files) {
@@ -121,6 +123,61 @@ TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
   EXPECT_EQ(tags, (std::set<std::string>{"base", "cap", "gable", "roof", "wall"}));
   EXPECT_EQ(buildings.size(), 18u);
   EXPECT_TRUE(buildings.count("w362871296"));  // the cathedral
+}
+
+// glTF is +Y up: three.js shows every building standing on y = 0 with its
+// plan not mirrored (x east, -z north), each building one top node named by
+// its id, standing at its local origin, with its feature's properties and the
+// recipe's values in extras, and texture coordinates on every primitive.
+TEST_F(GltfExport, ThreeJsSeesBuildingsUprightAtTheirOrigins) {
+  BatchCommandOptions o;
+  o.recipe = kRoot / "samples" / "city.pxg";
+  o.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+  o.output = dir_ / "city.glb";
+  o.report = dir_ / "city.json";
+  o.progress = false;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_batch(o, out, err), 0) << err.str();
+  std::map<std::string, json> report;
+  {
+    std::ifstream in(o.report);
+    const json whole = json::parse(in);
+    for (const json& b : whole["buildings"]) report[b["id"].get<std::string>()] = b;
+  }
+  const json loaded = node_json("load_gltf_three.mjs", o.output, 0);
+  ASSERT_EQ(loaded["top"].size(), report.size());
+  for (const json& node : loaded["top"]) {
+    const std::string id = node["name"];
+    SCOPED_TRACE(id);
+    ASSERT_TRUE(report.count(id));
+    const json& origin = node["extras"]["origin"];  // east, north, up
+    ASSERT_EQ(origin.size(), 3u);
+    EXPECT_EQ(node["position"], json::array({origin[0], origin[2], -origin[1].get<double>()}));
+    EXPECT_EQ(node["extras"]["properties"]["region"], "monaco") << node["extras"].dump();  // every feature has it
+    EXPECT_FALSE(node["extras"]["parameters"].empty()) << node["extras"].dump();
+  }
+  std::map<std::string, std::pair<std::array<double, 3>, std::array<double, 3>>> seen;
+  for (const json& m : loaded["meshes"]) {
+    EXPECT_TRUE(m["uvs"].get<bool>());
+    auto [it, added] = seen.try_emplace(m["building"].get<std::string>());
+    auto& [lo, hi] = it->second;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = added ? m["min"][k].get<double>() : std::min(lo[k], m["min"][k].get<double>());
+      hi[k] = added ? m["max"][k].get<double>() : std::max(hi[k], m["max"][k].get<double>());
+    }
+  }
+  ASSERT_EQ(seen.size(), report.size());
+  for (const auto& [id, box] : seen) {
+    SCOPED_TRACE(id);
+    const json& b = report[id]["bounds"];
+    const auto at = [&](const char* end, int k) { return b[end][k].get<double>(); };
+    EXPECT_NEAR(box.first[0], at("min", 0), 1e-3);  // x east
+    EXPECT_NEAR(box.second[0], at("max", 0), 1e-3);
+    EXPECT_NEAR(box.first[1], at("min", 2), 1e-3);  // y up
+    EXPECT_NEAR(box.second[1], at("max", 2), 1e-3);
+    EXPECT_NEAR(box.first[2], -at("max", 1), 1e-3);  // z south
+    EXPECT_NEAR(box.second[2], -at("min", 1), 1e-3);
+  }
 }
 
 }  // namespace

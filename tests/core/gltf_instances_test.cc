@@ -18,6 +18,7 @@
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
+#include "core/io/up_axis.h"
 #include "core/placement/frame_transform.h"
 #include "core/placement/placement_gltf.h"
 #include "core/placement/stretch.h"
@@ -149,8 +150,12 @@ TEST_F(GltfInstances, ThreeJsPlacesEveryInstanceWhereFlattenDoes) {
   std::vector<Bounds> want, got;
   for (const GltfMeshData& building : scene.meshes)
     for (const GltfInstanceData& in : building.instances) {
+      // The file is +Y up, each instance placed from its building's origin.
+      const glm::dmat4 at_origin =
+          glm::translate(glm::dmat4(1.0), glm::dvec3(building.origin[0], building.origin[1], building.origin[2]));
       PlacementResult one;
-      one.add_instance({one.add_mesh({"", in.prototype == 0 ? window_ : pillar_}), in.transform, "", -1});
+      one.add_instance({one.add_mesh({"", in.prototype == 0 ? window_ : pillar_}),
+                        at_origin * in.transform * file_axes_matrix(UpAxis::Y), "", -1});
       const Box3 b = bounds(flatten(one));
       want.push_back({b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z});
     }

@@ -84,7 +84,7 @@ std::vector<Mesh::Point> ply_points(const fs::path& file, std::size_t n) {
 TEST_F(MeshWrite, ObjRoundTripsThroughOpenMesh) {
   const Mesh mesh = build_mesh(awkward_box());
   const fs::path file = dir_ / "box.obj";
-  write_obj(file, mesh);
+  write_obj(file, mesh, UpAxis::Z);
   expect_only(file);
   Mesh back;
   ASSERT_TRUE(OpenMesh::IO::read_mesh(back, file.string()));
@@ -97,7 +97,7 @@ TEST_F(MeshWrite, ObjRoundTripsThroughOpenMesh) {
 TEST_F(MeshWrite, PlyRoundTripsThroughOpenMesh) {
   const Mesh mesh = build_mesh(test::combine(test::square_ring(), awkward_box()));
   const fs::path file = dir_ / "ring.ply";
-  write_ply(file, mesh);
+  write_ply(file, mesh, UpAxis::Z);
   expect_only(file);
   Mesh back;
   ASSERT_TRUE(OpenMesh::IO::read_mesh(back, file.string()));
@@ -108,7 +108,40 @@ TEST_F(MeshWrite, PlyRoundTripsThroughOpenMesh) {
   std::ifstream in(file);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   EXPECT_NE(text.find("property int procex_source_edge"), std::string::npos);
-  EXPECT_NE(text.find("\n4 0 1 9 8 0 1 0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n4 0 1 9 8 0 1 0 -1\n"), std::string::npos) << text;  // (test boxes have no tags)
+}
+
+// By default the files are +Y up as Blender, Maya and Houdini read them: a
+// quarter turn about x, (x, y, z) -> (x, z, -y), so nothing is mirrored.
+TEST_F(MeshWrite, DefaultIsYUpWithoutMirroring) {
+  const Mesh mesh = build_mesh(awkward_box());
+  for (const char* name : {"box.obj", "box.ply"}) {
+    SCOPED_TRACE(name);
+    const fs::path file = dir_ / name;
+    write_mesh_file(file, {{"box", &mesh}});
+    const std::vector<Mesh::Point> y_up =
+        fs::path(name).extension() == ".obj" ? exact_points(file) : ply_points(file, mesh.n_vertices());
+    ASSERT_EQ(y_up.size(), mesh.n_vertices());
+    for (const auto v : mesh.vertices()) {
+      const Mesh::Point& p = mesh.point(v);
+      EXPECT_EQ(y_up[static_cast<std::size_t>(v.idx())], Mesh::Point(p[0], p[2], -p[1]));
+    }
+  }
+}
+
+TEST_F(MeshWrite, PlyNamesFaceTags) {
+  Mesh mesh = build_mesh(test::box({0, 0, 0}, {1, 1, 1}));
+  const auto tags = face_tag_property(mesh);
+  for (const auto f : mesh.faces()) mesh.property(tags, f) = f.idx() == 0 ? "base" : "wall";
+  const fs::path file = dir_ / "tags.ply";
+  write_ply(file, mesh);
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("comment procex_tag 0 base\ncomment procex_tag 1 wall\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("property int procex_tag\n"), std::string::npos);
+  Mesh back;
+  ASSERT_TRUE(OpenMesh::IO::read_mesh(back, file.string()));
+  EXPECT_EQ(back.n_faces(), mesh.n_faces());
 }
 
 TEST_F(MeshWrite, SeveralMeshesBecomeGroups) {

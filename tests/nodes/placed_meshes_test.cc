@@ -3,10 +3,12 @@
 // as instanced nodes in .glb and flattened into the building in OBJ and PLY.
 #include <filesystem>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
+#include "core/io/up_axis.h"
 #include "core/placement/box.h"
 #include "core/placement/place_mesh.h"
 #include "nodes/support/mesh_summary.h"
@@ -112,8 +114,12 @@ TEST_F(PlacedMeshes, MergeAndExportGlbInstances) {
   EXPECT_EQ(scene.prototypes[0].building, "window");
   ASSERT_EQ(scene.meshes.size(), 1u);
   ASSERT_EQ(scene.meshes[0].instances.size(), 8u);
-  EXPECT_EQ(scene.meshes[0].instances[4].transform,
-            merged.outputs[0].get<MeshSet>().parts[1].placed.instances[0].transform);
+  // In glTF's frame (+Y up), from the building node's origin.
+  const GltfMeshData& building = scene.meshes[0];
+  const glm::dmat4 from_origin =
+      glm::translate(glm::dmat4(1.0), -glm::dvec3(building.origin[0], building.origin[1], building.origin[2]));
+  EXPECT_EQ(building.instances[4].transform,
+            from_origin * to_file_axes(merged.outputs[0].get<MeshSet>().parts[1].placed.instances[0].transform, UpAxis::Y));
   const test::NodeScriptRun v = test::run_gltf_script("validate_gltf.mjs", dir_ / "street.glb");
   if (v.node_missing) GTEST_SKIP() << v.problem;
   ASSERT_TRUE(v.problem.empty()) << v.problem;
