@@ -32,6 +32,7 @@
 #include "app/studio/ui/recipe_panel.h"
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
+#include "core/io/geojson.h"
 #include "core/io/mesh_write.h"
 #include "graph/pxg.h"
 
@@ -106,6 +107,32 @@ class App {
     modals();
     update_title();
     if (!options_.ui_map.empty()) write_ui_map();
+  }
+
+  // Files dropped onto the window: a recipe opens (after asking about unsaved
+  // changes); a GeoJSON's first feature becomes the preview's footprint.
+  void open_dropped(const fs::path& file) {
+    if (file.extension() == ".pxg") {
+      confirm_discard([this, file] { load(file, true); });
+      return;
+    }
+    if (file.extension() != ".geojson" && file.extension() != ".json") {
+      status_ = file.string() + ": drop a recipe (.pxg) to open it, or footprints (.geojson) to preview the first";
+      return;
+    }
+    try {
+      const GeoJsonCollection c = read_geojson_file(file);
+      if (c.features.empty()) {
+        status_ = file.string() + ": no feature could be read" + (c.errors.empty() ? "" : " (" + c.errors.front().message + ")");
+        return;
+      }
+      preview_footprint_ = to_footprint(c.features.front(), 45.0);
+      preview_footprint_source_ = file.string() + "#" + c.features.front().id;
+      submitted_ = 0;  // evaluate again with the new plan
+      status_ = "footprint input: feature " + c.features.front().id + " of " + file.string();
+    } catch (const std::exception& e) {
+      status_ = e.what();
+    }
   }
 
   // Close button: ask first when there are unsaved changes.
@@ -536,6 +563,7 @@ class App {
       for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;
     j["errors"] = errors;
     j["status"] = status_;
+    j["preview_footprint"] = preview_footprint_source_;
     std::string text = j.dump();
     if (text == ui_map_text_) return;
     try {
@@ -566,6 +594,7 @@ class App {
   std::unique_ptr<Document> doc_;
   EvalWorker worker_;
   Footprint preview_footprint_ = preview_footprint();
+  std::string preview_footprint_source_;  // the dropped GeoJSON and feature, or empty for the stand-in
   std::shared_ptr<const EvalSnapshot> shown_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
   NodeId submitted_node_ = 0;
@@ -687,9 +716,16 @@ int run_studio(const Options& options) {
     PartialRedraw redraw;
     std::uint64_t preview_renders = 0;
     // Uncovered or resized by the window system: its pixels are redrawn in full.
-    bool exposed = true;
-    glfwSetWindowUserPointer(window, &exposed);
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { *static_cast<bool*>(glfwGetWindowUserPointer(w)) = true; });
+    // Files dropped: opened by the app in the next frame.
+    struct WindowEvents {
+      bool exposed = true;
+      std::vector<fs::path> dropped;
+    } events;
+    glfwSetWindowUserPointer(window, &events);
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->exposed = true; });
+    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+      for (int i = 0; i < count; ++i) static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->dropped.emplace_back(paths[i]);
+    });
     const auto start = Clock::now();
     int settled_frames = 0;
     while (exit_code == 0) {
@@ -698,6 +734,8 @@ int run_studio(const Options& options) {
       else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);  // idle: no busy loop; evaluating: poll the worker
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
+      for (const fs::path& f : events.dropped) app.open_dropped(f);
+      events.dropped.clear();
       const bool busy = app.busy();
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
@@ -716,8 +754,8 @@ int run_studio(const Options& options) {
       std::vector<std::uintptr_t> redrawn;
       if (app.preview().renders() != preview_renders) redrawn.push_back(app.preview().texture());
       preview_renders = app.preview().renders();
-      if (exposed || options.full_redraw) redraw.invalidate();  // uncovered by the window system: everything is drawn again
-      exposed = false;
+      if (events.exposed || options.full_redraw) redraw.invalidate();  // uncovered by the window system: everything is drawn again
+      events.exposed = false;
       const PartialRedraw::Outcome drawn = redraw.render(ImGui::GetDrawData(), w, h, back_buffer_age(), redrawn, shoot);
       if (options.bench_edits > 0) {
         glFinish();  // benchmark: the software rasteriser's share, apart from the swap

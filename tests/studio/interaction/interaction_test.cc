@@ -626,5 +626,68 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   fs::remove_all(dir);
 }
 
+// Drops `file` on the studio's window at its canvas, as a file manager would (XDND).
+void drop_file(const json& map, const fs::path& file) {
+  FILE* pipe = popen("xdotool search --name 'procex-studio$' | head -n 1", "r");
+  ASSERT_TRUE(pipe);
+  char id[64] = {};
+  const bool read = std::fgets(id, sizeof id, pipe) != nullptr;
+  pclose(pipe);
+  ASSERT_TRUE(read) << "no procex-studio window";
+  const auto canvas = map["canvas"];
+  const int x = map["window"][0].get<int>() + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.5);
+  const int y = map["window"][1].get<int>() + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.5);
+  const std::string cmd = std::string(PROCEX_XDND_DROP) + " " + std::string(id).substr(0, std::string(id).find('\n')) + " " + std::to_string(x) + " " +
+                          std::to_string(y) + " '" + file.string() + "'";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+}
+
+// Files dragged onto the window: a GeoJSON's first feature becomes the plan of
+// the recipe's footprint input; a recipe opens; anything else is explained.
+TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
+  const fs::path dir = fresh_dir("drop");
+  const fs::path recipe = dir / "block.pxg";
+  std::ofstream(recipe) << R"({
+  "format": "procex-graph", "version": 2, "metadata": {"name": "block"},
+  "inputs": [{"name": "footprint", "type": "footprint", "doc": ""}],
+  "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
+  "nodes": [{"id": 1, "type": "Extrude", "version": 1, "params": {}}],
+  "links": [{"from": "@footprint", "to": "1.footprint"}, {"from": "1.mesh", "to": "@mesh"}],
+  "editor": {"nodes": {"1": {"x": 0, "y": 0}}}
+})";
+  // An L of six edges, where the stand-in plan is a rectangle of four.
+  const fs::path footprints = dir / "plots.geojson";
+  std::ofstream(footprints) << R"({"type": "FeatureCollection", "features": [
+  {"type": "Feature", "id": "plot-7", "properties": {}, "geometry": {"type": "Polygon",
+   "coordinates": [[[0, 0], [20, 0], [20, 8], [8, 8], [8, 16], [0, 16], [0, 0]]]}},
+  {"type": "Feature", "id": "plot-8", "properties": {}, "geometry": {"type": "Polygon",
+   "coordinates": [[[0, 0], [5, 0], [5, 5], [0, 5], [0, 0]]]}}]})";
+  const fs::path other = copy_test_recipe("house.pxg", dir);
+  std::ofstream(dir / "notes.txt") << "not a recipe\n";
+  Studio studio(recipe, dir);
+  json map = studio.wait("the stand-in plan evaluated", [](const json& j) { return j["settled"] && j["preview_faces"] > 0; });
+  const std::size_t rectangle = map["preview_faces"];
+  EXPECT_EQ(map["preview_footprint"], "");
+
+  drop_file(map, footprints);
+  map = studio.wait("the dropped plan evaluated", [&](const json& j) {
+    return j["settled"] && j["preview_footprint"].get<std::string>().ends_with("#plot-7") && j["preview_faces"] > rectangle;
+  });
+  EXPECT_EQ(map["errors"], 0);
+  EXPECT_FALSE(map["dirty"].get<bool>()) << "the preview's plan is not an edit of the recipe";
+
+  drop_file(map, dir / "notes.txt");
+  map = studio.wait("the refusal", [](const json& j) { return j["status"].get<std::string>().find("drop a recipe (.pxg)") != std::string::npos; });
+
+  drop_file(map, other);
+  map = studio.wait("the dropped recipe open", [&](const json& j) {
+    return j["settled"] && j["status"] == "opened " + other.string() && j["node_positions"].contains("2");
+  });
+  EXPECT_EQ(map["errors"], 0);
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
