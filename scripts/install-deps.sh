@@ -13,6 +13,7 @@ packages=(
   slurm-wlm munge
   pybind11-dev python3-dev python3-numpy python3-pytest blender
   nodejs
+  libgdal-dev gdal-bin python3-gdal
   blender
 )
 

@@ -17,6 +17,7 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/output_crs.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "app/cli/report_text.h"
@@ -202,9 +203,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   const auto start = std::chrono::steady_clock::now();
   const bool per_building = is_folder_output(options.output);
   const std::string format = "." + options.format;
-  if (per_building ? !is_mesh_file("x" + format) : !is_mesh_file(options.output)) {
+  const std::filesystem::path kind = per_building ? std::filesystem::path("x" + format) : options.output;
+  if (!is_mesh_file(kind) && !is_gis_file(kind)) {
     err << "procex batch: " << (per_building ? "--format " + options.format : options.output.string())
-        << ": use .obj, .ply or .glb\n";
+        << ": use .obj, .ply, .glb or .gpkg\n";
     return kExitUnusableInput;
   }
   if (const auto clash = output_clash({options.recipe, options.footprints},
@@ -218,6 +220,11 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       open_footprints(recipe->graph, options.recipe, options.footprints, "batch", err);
   if (!opened) return kExitUnusableInput;
   const GeoJsonCollection& collection = *opened;
+  ExportOptions export_options = options.export_options;
+  if (const auto problem = settle_output_crs(kind, &collection, export_options)) {
+    err << "procex batch: " << options.output.string() << ": " << *problem << "\n";
+    return kExitUnusableInput;
+  }
 
   std::vector<Building> buildings;
   for (const GeoJsonFeature& f : collection.features)
@@ -297,12 +304,12 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     if (per_building) std::filesystem::create_directories(options.output);
     for (Building& b : buildings) {
       if (b.status != "ok") continue;
-      if (per_building) write_mesh_set(options.output / b.file, b.meshes, options.export_options);
+      if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
       else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
       else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
     }
     if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
-    else if (!per_building) write_mesh_set(options.output, all, options.export_options);
+    else if (!per_building) write_mesh_set(options.output, all, export_options);
     if (!options.report.empty()) {
       report_file.add(options.report, report(std::chrono::steady_clock::now()));
       report_file.commit();

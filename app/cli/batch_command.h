@@ -5,8 +5,9 @@
 // exposed parameter or graph input of the same name (characters other than
 // a-z, 0-9 and _ become _, so building:levels sets building_levels).
 // Features are evaluated in parallel; one failing feature is reported and the
-// batch goes on. OUT is one mesh file (.obj, .ply, .glb) holding every
-// building, or a folder (ending in / or existing) with one <id>.<format> per
+// batch goes on. OUT is one mesh file (.obj, .ply, .glb) or GeoPackage
+// (.gpkg, in --crs or the footprints' "crs": app/cli/output_crs.h) holding
+// every building, or a folder (ending in / or existing) with one <id>.<format> per
 // building. Output bytes do not depend on --jobs; shard i of N takes the
 // features whose index is i modulo N, and `procex merge` joins the shards into
 // the bytes an unsharded run writes.
@@ -25,7 +26,7 @@ struct BatchCommandOptions {
   std::filesystem::path recipe;
   std::filesystem::path footprints;  // GeoJSON FeatureCollection
   std::filesystem::path output;      // mesh file, or folder for one file per building
-  std::string format = "glb";        // per-building files: obj, ply or glb
+  std::string format = "glb";        // per-building files: obj, ply, glb or gpkg
   std::filesystem::path report;      // JSON; empty: none
   int jobs = 0;                      // worker threads; 0 = one per hardware thread
   std::size_t shard = 0, shards = 1;
@@ -35,7 +36,7 @@ struct BatchCommandOptions {
   // meshes' faces; placed meshes): more is refused, exit 2, nothing written.
   std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
-  ExportOptions export_options;       // --up
+  ExportOptions export_options;       // --up, --crs
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/output_crs.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "core/io/geojson.h"
@@ -12,8 +13,8 @@
 namespace procex {
 
 int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream& err) {
-  if (!is_mesh_file(options.output)) {
-    err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply or .glb\n";
+  if (!is_mesh_file(options.output) && !is_gis_file(options.output)) {
+    err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply, .glb or .gpkg\n";
     return kExitUnusableInput;
   }
   if (const auto clash = output_clash({options.recipe, options.footprints}, {options.output})) {
@@ -38,6 +39,11 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
       err << "procex eval: " << options.footprints.string() << ": feature " << feature->id << ": refused: " << p << "\n";
     if (!problems.empty()) return kExitUnusableInput;
   }
+  ExportOptions export_options = options.export_options;
+  if (const auto problem = settle_output_crs(options.output, collection ? &*collection : nullptr, export_options)) {
+    err << "procex eval: " << options.output.string() << ": " << *problem << "\n";
+    return kExitUnusableInput;
+  }
   ResultCache cache;
   Evaluator evaluator(cache, kEngineSalt);
   const EvalResult r = evaluator.evaluate(recipe->graph, recipe->bindings, recipe->outputs, recipe->options);
@@ -50,7 +56,7 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
   if (feature) label_parts(meshes, *feature);
   label_parameters(meshes, recipe->graph);
   try {
-    write_mesh_set(options.output, meshes, options.export_options);
+    write_mesh_set(options.output, meshes, export_options);
   } catch (const IoError& e) {
     err << "procex eval: " << e.what() << "\n";
     return kExitUnusableInput;

@@ -1,4 +1,4 @@
-// `procex eval RECIPE -o out.(obj|ply|glb) [--set name=value ...]
+// `procex eval RECIPE -o out.(obj|ply|glb|gpkg) [--set name=value ...]
 // [--footprints FILE.geojson --feature ID_OR_INDEX]`: evaluates a recipe's mesh
 // outputs and writes them to one file (atomically). With --footprints, one
 // feature is bound exactly as `procex batch` binds each one (feature_binding.h);
@@ -16,13 +16,13 @@ namespace procex {
 
 struct EvalCommandOptions {
   std::filesystem::path recipe;
-  std::filesystem::path output;       // .obj, .ply or .glb
+  std::filesystem::path output;       // .obj, .ply, .glb or .gpkg
   std::vector<std::string> settings;  // name=value: exposed parameters or graph inputs
   std::filesystem::path footprints;   // GeoJSON FeatureCollection; empty: no feature bound
   std::string feature;                // the feature's id, or its index in the file
   std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
   std::string preset;                 // a preset of the recipe, applied before the settings
-  ExportOptions export_options;       // --up
+  ExportOptions export_options;       // --up, --crs
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

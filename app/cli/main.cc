@@ -74,11 +74,21 @@ void add_up_option(CLI::App* cmd, ExportOptions& options) {
       ->check(CLI::IsMember({"y", "z"}));
 }
 
+// --crs for the commands that write a GeoPackage.
+void add_crs_option(CLI::App* cmd, ExportOptions& options) {
+  cmd->add_option("--crs", options.crs,
+                  "The footprints' coordinate reference system, for a .gpkg: an EPSG code (EPSG:32632), WKT or a PROJ "
+                  "string, projected and in metres (procex computes in metres; longitude/latitude is refused). "
+                  "batch takes it from the GeoJSON's \"crs\" member when not given");
+}
+
 Runner add_eval(CLI::App& app) {
   auto options = std::make_shared<EvalCommandOptions>();
   CLI::App* cmd = app.add_subcommand("eval", "Evaluate a recipe (.pxg) and write its mesh outputs to one file");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
-  cmd->add_option("-o,--output", options->output, "Mesh file: .obj (+ .mtl), .ply or .glb")->required();
+  cmd->add_option("-o,--output", options->output,
+                  "Mesh file: .obj (+ .mtl), .ply or .glb; or a GeoPackage (.gpkg, with --crs) for GIS tools")
+      ->required();
   cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
   cmd->add_option("--preset", options->preset, "A named set of exposed values stored in the recipe, applied before --set");
   CLI::Option* footprints = cmd->add_option("--footprints", options->footprints,
@@ -87,6 +97,7 @@ Runner add_eval(CLI::App& app) {
   footprints->needs("--feature");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
+  add_crs_option(cmd, options->export_options);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -120,10 +131,11 @@ Runner add_batch(CLI::App& app) {
                                               "'footprint'; properties set exposed parameters of the same name)");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg) with a graph input 'footprint'")->required();
   cmd->add_option("--footprints", options->footprints, "GeoJSON FeatureCollection")->required();
-  cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb), or a folder (ending in /) "
-                                                  "for one file per building")->required();
+  cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb) or GeoPackage (.gpkg, "
+                                                  "each building a feature), or a folder (ending in /) for one file "
+                                                  "per building")->required();
   cmd->add_option("--format", options->format, "Per-building file format")
-      ->check(CLI::IsMember({"obj", "ply", "glb"}))
+      ->check(CLI::IsMember({"obj", "ply", "glb", "gpkg"}))
       ->capture_default_str();
   cmd->add_option("--report", options->report, "JSON report: one entry per building, failures with reasons");
   cmd->add_option("-j,--jobs", options->jobs, "Worker threads (0 = one per hardware thread)")
@@ -144,6 +156,7 @@ Runner add_batch(CLI::App& app) {
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
+  add_crs_option(cmd, options->export_options);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

@@ -9,6 +9,7 @@
 
 #include "base/atomic_file_set.h"
 #include "core/geom/polygon3.h"
+#include "core/io/geopackage_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
 #include "core/mesh/uv_frames.h"
@@ -109,6 +110,37 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
   files.commit();
 }
 
+std::vector<glm::dvec3> face_points(const Mesh& mesh, Mesh::FaceHandle f) {
+  std::vector<glm::dvec3> pts;
+  for (const auto v : mesh.fv_range(f)) {
+    const Mesh::Point& p = mesh.point(v);
+    pts.push_back({p[0], p[1], p[2]});
+  }
+  return pts;
+}
+
+// One GIS building per run of parts with the same building and feature, as
+// to_gltf joins them; the parts' own faces only.
+std::vector<GisBuilding> to_gis(const MeshSet& set) {
+  std::vector<GisBuilding> out;
+  for (std::size_t i = 0; i < set.parts.size(); ++i) {
+    const TaggedMesh& part = set.parts[i];
+    if (i == 0 || set.parts[i - 1].building != part.building || set.parts[i - 1].feature != part.feature) {
+      GisBuilding& b = out.emplace_back();
+      b.id = part.building.empty() ? "mesh_" + std::to_string(i) : part.building;
+      b.properties = part.properties;
+    }
+    GisBuilding& b = out.back();
+    for (const auto f : part.mesh->faces()) {
+      std::vector<glm::dvec3> pts = face_points(*part.mesh, f);
+      for (std::size_t k = 1; k + 1 < pts.size(); ++k) b.volume += glm::dot(pts[0], glm::cross(pts[k], pts[k + 1])) / 6.0;
+      b.faces.push_back(std::move(pts));
+      b.face_tags.push_back(face_tag(part, static_cast<std::size_t>(f.idx())));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 GltfScene to_gltf(const MeshSet& set) {
@@ -155,9 +187,12 @@ bool is_mesh_file(const std::filesystem::path& path) {
   return ext == ".obj" || ext == ".ply" || ext == ".glb";
 }
 
+bool is_gis_file(const std::filesystem::path& path) { return lower_extension(path) == ".gpkg"; }
+
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".glb") return write_glb(path, to_gltf(set));
+  if (ext == ".gpkg") return write_geopackage(path, options.crs, to_gis(set));
   MeshSet flat;
   for (const TaggedMesh& part : set.parts) flat.parts.push_back(flattened(part));
   if (ext == ".obj") return write_tagged_obj(path, flat, options.up);
@@ -166,7 +201,7 @@ void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const
     for (const TaggedMesh& part : flat.parts) named.push_back({part.building, part.mesh.get()});
     return write_ply(path, named, options.up);
   }
-  throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply or .glb)",
+  throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply, .glb or .gpkg)",
                 path.string());
 }
 

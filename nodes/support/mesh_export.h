@@ -2,13 +2,17 @@
 // .obj (one group per mesh, one material per face tag, with a .mtl beside it),
 // .ply (core's writer: source edges and face kinds, one group per mesh) or
 // .glb (one glTF mesh per building: consecutive parts with the same building
-// id and feature join; one primitive per tag; placed meshes instanced). OBJ
+// id and feature join; one primitive per tag; placed meshes instanced) or
+// .gpkg (core/io/geopackage_write.h: each building's shell and its faces in
+// ExportOptions::crs; placed meshes are left out, a GIS layer holds the
+// closed shells). OBJ
 // and PLY get placed meshes flattened into their part. glTF is +Y up; OBJ and
 // PLY +Y up unless ExportOptions::up says Z (core/io/up_axis.h). Atomic writes;
 // IoError naming the file on failure.
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/io/gltf_write.h"
@@ -20,6 +24,7 @@ namespace procex {
 // How the files are written beyond their format.
 struct ExportOptions {
   UpAxis up = UpAxis::Y;  // OBJ and PLY (glTF is +Y up by its specification)
+  std::string crs;        // .gpkg: the footprints' CRS (core/io/geopackage_write.h)
 };
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options = {});
@@ -33,7 +38,9 @@ GltfScene to_gltf(const MeshSet& set);
 // placed mesh's name) and no placed meshes left; the part itself if it has none.
 TaggedMesh flattened(const TaggedMesh& part);
 
-// Whether write_mesh_set knows the extension (case-insensitive).
+// Whether the extension (case-insensitive) is a mesh format write_mesh_set
+// writes, or its GIS format (which needs ExportOptions::crs).
 bool is_mesh_file(const std::filesystem::path& path);
+bool is_gis_file(const std::filesystem::path& path);
 
 }  // namespace procex
