@@ -14,12 +14,20 @@ namespace {
 
 // Collinear neighbouring edges with different slopes are the ambiguous case
 // (paper 4.5) from the start: the whole run takes the slope the volume rule
-// picks, so each edge keeps its own (coplanar) face.
-void unify_collinear_slopes(const std::vector<glm::dvec2>& dirs, std::vector<double>& slopes, Ambiguity rule) {
+// picks, so each edge keeps its own (coplanar) face. A corner is straight when
+// it lies within the clustering distance of its neighbours' line (the sine of
+// its turn times the shorter edge): a plan drawn straight keeps that rule
+// wherever it is, though far from the origin its coordinates' rounding turns
+// it by far more than a fixed sine.
+void unify_collinear_slopes(const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,
+                            std::vector<double>& slopes, Ambiguity rule, double position) {
   const std::size_t n = dirs.size();
   auto straight = [&](std::size_t j) {  // the corner at the start of edge j
     const glm::dvec2 a = dirs[(j + n - 1) % n], b = dirs[j];
-    return std::abs(cross(a, b)) <= Tolerances::parallel_sin && glm::dot(a, b) > 0.0;
+    const double shorter = std::min(glm::distance(points[(j + n - 1) % n], points[j]),
+                                    glm::distance(points[j], points[(j + 1) % n]));
+    return glm::dot(a, b) > 0.0 &&
+           (std::abs(cross(a, b)) <= Tolerances::parallel_sin || std::abs(cross(a, b)) * shorter <= position);
   };
   std::size_t start = 0;
   while (start < n && straight(start)) ++start;
@@ -77,7 +85,7 @@ void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<dou
     if (!(len > 0.0)) throw InputError("zero-length edge", loop, static_cast<int>(j));
     dirs[j] = d / len;
   }
-  unify_collinear_slopes(dirs, slopes, st.options().ambiguity);
+  unify_collinear_slopes(points, dirs, slopes, st.options().ambiguity, st.tol().position());
   for (std::size_t j = 0; j < n; ++j) {
     Source& src = st.sources[static_cast<std::size_t>(first_source) + j];
     src.start = points[j];
