@@ -65,7 +65,8 @@ Footprint transformed(const Footprint& footprint, const PlanTransform& t);
 
 // The roof of the transformed input against the transformed roof: every
 // vertex of each within tol of one of the other, and the same total face
-// area per source edge.
+// area per source edge; or, where seams between coplanar faces moved, the
+// same height everywhere (within 4 tol per unit of the steepest slope).
 std::vector<std::string> compare_transformed(const Surface& original, const PlanTransform& t,
                                              const Surface& of_transformed, double tol);
 

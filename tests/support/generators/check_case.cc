@@ -127,8 +127,11 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
     if (c.options.plan_edits.empty()) transforms.push_back(PlanTransform::mirror());
     for (const PlanTransform& t : transforms) {
       const Footprint moved = transformed(fp, t);
-      if (const std::optional<Surface> other = sweep_guarded(moved, c.options, t.name + ": "))
-        add(r.problems, t.name + ": ", compare_transformed(*roof, t, *other, std::max(tol, roof_tolerance(moved))));
+      if (const std::optional<Surface> other = sweep_guarded(moved, c.options, t.name + ": ")) {
+        const double moved_tol = std::max(tol, roof_tolerance(moved));
+        add(r.problems, t.name + ": ", check_faces_on_planes(moved, c.options, *other, moved_tol));
+        add(r.problems, t.name + ": ", compare_transformed(*roof, t, *other, moved_tol));
+      }
     }
   }
   return r;
