@@ -48,8 +48,8 @@ NodeMarks marks_of(const EvalSnapshot* eval, NodeId id) {
 }
 
 // "computed, 1.25 ms": what the last evaluation did at a node and how long its own evaluate took.
-std::string timing_label(const NodeStats& s) {
-  if (s.outcome != NodeOutcome::kComputed && s.outcome != NodeOutcome::kFailed) return to_string(s.outcome);
+std::string timing_label(const NodeStats& s, bool with_time) {
+  if (!with_time || (s.outcome != NodeOutcome::kComputed && s.outcome != NodeOutcome::kFailed)) return to_string(s.outcome);
   char buf[96];
   std::snprintf(buf, sizeof buf, "%s, %.2f ms", to_string(s.outcome), static_cast<double>(s.time_ns) * 1e-6);
   return buf;
@@ -253,7 +253,7 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
     if (m.stats) {
       const glm::vec2 dot(a.x + 8.0f * zoom, a.y + kHeaderHeight * zoom * 0.5f);
       dl->AddCircleFilled(im(dot), std::max(4.0f * zoom, 2.0f), outcome_color(m.stats->outcome));
-      const std::string timing = timing_label(*m.stats);
+      const std::string timing = timing_label(*m.stats, show_times_);
       if (port_text && glm::distance(mouse_s, dot) < 7.0f * zoom) hover_text = timing;
       // Under the box, where a slow node shows at a glance (legible sizes only, like port names).
       if (port_text) {

@@ -27,6 +27,9 @@ class NodeCanvas {
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
   // Frames all nodes on the next draw.
   void request_frame() { frame_pending_ = true; }
+  // Whether node labels carry their evaluation time: a screenshot leaves it
+  // out, so the same recipe gives the same picture on any machine.
+  void show_times(bool on) { show_times_ = on; }
 
   // Where the last frame drew the canvas and its pins, in window pixels: the
   // --ui-map that tests driving real input events aim at.
@@ -56,6 +59,7 @@ class NodeCanvas {
 
   CanvasView view_;
   bool frame_pending_ = true;
+  bool show_times_ = true;
   // Gesture state (transient, not recipe data).
   enum class Drag { kNone, kNodes, kLink, kBand, kPan } drag_ = Drag::kNone;
   glm::vec2 drag_start_{0.0f};  // canvas units

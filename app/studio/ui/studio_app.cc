@@ -58,6 +58,7 @@ class App {
  public:
   App(GLFWwindow* window, const Options& options) : window_(window), options_(options), home_(studio_home()), recent_(home_ / "recent.txt") {
     const bool interactive = options_.screenshot.empty() && options_.bench_edits == 0;
+    canvas_.show_times(options_.screenshot.empty());
     if (!options_.recipe.empty()) {
       load(options_.recipe, interactive);
       if (doc_->graph().node(options_.select)) doc_->select_only(options_.select);
