@@ -287,14 +287,20 @@ bool triangles_intersect(const Triangle& a, const Triangle& b, double tol) {
   return std::min(a_hi, b_hi) - std::max(a_lo, b_lo) > tol;
 }
 
-bool share_vertex(const Triangle& a, const Triangle& b) {
+// Triangles sharing an edge lie on two planes through it and meet only along
+// it (or fold flat onto each other facing opposite ways, which touching
+// allows). Triangles sharing one vertex are tested like any others: planes
+// through a common vertex cross on a line through it, and a fold-over there
+// shows as a segment of that line inside both.
+bool share_edge(const Triangle& a, const Triangle& b) {
+  int shared = 0;
   for (std::uint32_t u : a.v)
     for (std::uint32_t w : b.v)
-      if (u == w) return true;
-  return false;
+      if (u == w) ++shared;
+  return shared >= 2;
 }
 
-// Triangles of different faces that share no vertex, bucketed in a uniform
+// Triangles of different faces that share no edge, bucketed in a uniform
 // grid sized to the triangles, each pair tested once (in the lowest cell
 // both boxes cover).
 void check_intersections(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems) {
@@ -359,7 +365,7 @@ void check_intersections(const std::vector<Triangle>& tris, double tol, Validati
       for (std::size_t q = run_end; q < end; ++q) {
         const std::uint32_t i = entries[p].second, j = entries[q].second;
         const Triangle &a = tris[i], &b = tris[j];
-        if (share_vertex(a, b)) continue;
+        if (share_edge(a, b)) continue;
         const auto &ra = ranges[i], &rb = ranges[j];
         if (std::max(ra[0], rb[0]) != cx || std::max(ra[2], rb[2]) != cy || std::max(ra[4], rb[4]) != cz) continue;
         const auto &ba = boxes[i], &bb = boxes[j];

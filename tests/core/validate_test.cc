@@ -102,6 +102,47 @@ TEST(Validate, CoplanarOverlapIntersects) {
   EXPECT_FALSE(validate(build_mesh(s)).self_intersection_free);
 }
 
+// A double cone over a pentagram: its rim winds twice round the axis, so the
+// surface is closed, 2-manifold (one fan round every vertex), planar and of
+// positive volume, yet each face passes through two others along a segment
+// from the apex they share. Every crossing pair shares a vertex.
+Surface pentagram_bipyramid() {
+  Surface s;
+  s.vertices.push_back({0, 0, 1});   // apex above
+  s.vertices.push_back({0, 0, -1});  // apex below
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * std::numbers::pi * (2 * k) / 5.0;  // every second point of a pentagon
+    s.vertices.push_back({std::cos(a), std::sin(a), 0.0});
+  }
+  for (std::uint32_t k = 0; k < 5; ++k) {
+    const std::uint32_t p = 2 + k, q = 2 + (k + 1) % 5;
+    s.faces.push_back({FaceKind::Side, static_cast<std::int32_t>(k), {{0, p, q}}, {}});
+    s.faces.push_back({FaceKind::Side, static_cast<std::int32_t>(k), {{1, q, p}}, {}});
+  }
+  return s;
+}
+
+TEST(Validate, FoldThroughASharedVertexIntersects) {
+  const ValidationReport r = validate(build_mesh(pentagram_bipyramid()));
+  EXPECT_TRUE(r.closed && r.manifold && r.planar) << ::testing::PrintToString(r.problems);
+  EXPECT_GT(r.volume, 0.0);
+  EXPECT_FALSE(r.self_intersection_free);
+  EXPECT_TRUE(mentions(r, "intersect")) << ::testing::PrintToString(r.problems);
+  EXPECT_FALSE(r.ok());
+}
+
+// The same double cone over a pentagon (winding once) is valid: faces that
+// share an apex meet only there or along their common edge.
+TEST(Validate, ConvexFanRoundASharedVertexIsValid) {
+  Surface s = pentagram_bipyramid();
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 5.0;
+    s.vertices[2 + k] = {std::cos(a), std::sin(a), 0.0};
+  }
+  const ValidationReport r = validate(build_mesh(s));
+  EXPECT_TRUE(r.ok()) << ::testing::PrintToString(r.problems);
+}
+
 TEST(Validate, SeparateAndTouchingBoxesDoNotIntersect) {
   EXPECT_TRUE(validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({2, 0, 0}, {3, 1, 1})))).ok());
   // Face to face contact is not an intersection.
