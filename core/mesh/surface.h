@@ -35,6 +35,11 @@ struct Surface {
   // One per plan edit and selected edge, in order: the anchor frame where the
   // edit was inserted, or absent with the reason (edge gone, no room on it).
   std::vector<ResolvedAnchor> plan_edits;
+  // Where rounding defeats one clustering scale the sweep runs again at the
+  // next (engine::Tolerances::retry_relative): the scale it closed at,
+  // relative to the footprint's extent, and how many it tried before.
+  double tolerance_relative = 0.0;
+  int retries = 0;
 };
 
 }  // namespace procex

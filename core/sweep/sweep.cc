@@ -4,6 +4,7 @@
 #include "core/sweep/sweep.h"
 
 #include <algorithm>
+#include <atomic>
 #include <optional>
 #include <cmath>
 #include <sstream>
@@ -130,7 +131,11 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   return surface;
 }
 
+std::atomic<std::uint64_t> retried{0};
+
 }  // namespace
+
+std::uint64_t sweeps_retried() { return retried.load(std::memory_order_relaxed); }
 
 Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const LocalFrame frame = local_frame(footprint);
@@ -138,16 +143,21 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   engine::Tolerances tol{frame.extent};
   engine::Budget budget(options.budget);
   std::optional<SweepError> first;
+  int retries = 0;
   for (double relative : engine::Tolerances::retry_relative) {
     tol.relative = relative;
     try {
       Surface s = sweep_with(local, options, tol, budget);
       move(s, frame.centre);
+      s.tolerance_relative = relative;
+      s.retries = retries;
+      if (retries > 0) retried.fetch_add(1, std::memory_order_relaxed);
       return s;
     } catch (const SweepBudgetError&) {
       throw;  // a runaway runs away at any tolerance
     } catch (const SweepError& e) {
       if (!first) first = e;
+      ++retries;
     }
   }
   throw *first;

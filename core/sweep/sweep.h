@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -49,5 +50,10 @@ struct SweepOptions {
 // be resolved and SweepBudgetError past the budget; never returns a surface
 // that is not closed.
 Surface sweep(const Footprint& footprint, const SweepOptions& options = {});
+
+// How many sweeps in this process closed only after a retry at a looser
+// clustering scale (Surface::retries > 0): what a hand-made case must never
+// need, counted where no caller can forget to look.
+std::uint64_t sweeps_retried();
 
 }  // namespace procex
