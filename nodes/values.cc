@@ -100,7 +100,7 @@ void hash_mesh(const Mesh& m, Hasher& h) {
 
 void hash_anchor(const ResolvedAnchor& a, Hasher& h) {
   hash_str(a.name, h);
-  h.u64(a.anchor).i64(a.edge_id).u64(a.present ? 1 : 0);
+  h.u64(a.anchor).i64(a.edge_id).u64(a.present ? 1 : 0).u64(static_cast<std::uint64_t>(a.absence));
   hash_str(a.reason, h);
   for (const glm::dvec3& v : {a.frame.origin, a.frame.along, a.frame.up, a.frame.normal, a.span_from, a.span_to})
     hash_vec3(v, h);

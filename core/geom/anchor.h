@@ -46,11 +46,25 @@ struct Frame {
   glm::dvec3 normal{0.0, -1.0, 0.0};
 };
 
+// Why an anchor or a plan edit is absent: a closed set, so reports and tests
+// count and check absences by kind (`reason` says it in words, with numbers).
+enum class Absence : std::uint8_t {
+  None,        // present
+  AboveSweep,  // the sweep (the roof) ends below its height
+  EdgeGone,    // its edge no longer exists at its height
+  OffEdge,     // its point lies beyond the ends of the edge there
+  NoRoom,      // a plan edit's step reaches past the end of the face it is on
+  TooShort,    // a segment of a plan edit's shape is below the sweep's resolution
+  Crossing,    // a plan edit's shape crosses the outline or itself
+  Unselected,  // its selection names no edge of this footprint
+};
+
 struct ResolvedAnchor {
   std::string name;           // Anchor::name
   std::size_t anchor = 0;     // index into the anchors the sweep was given
   std::int32_t edge_id = -1;  // the footprint edge (EdgeSpec::id) it resolved on
   bool present = false;       // false: the edge no longer exists there (see `reason`)
+  Absence absence = Absence::None;  // why it is absent, by kind
   std::string reason;         // why it is absent, for reports
   Frame frame;                // valid when present
   // The part of the edge's face at the anchor's height that contains the

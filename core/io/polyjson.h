@@ -1,4 +1,4 @@
-// Reading the synthetic benchmark format of shared/data/synthetic/ (see its
+// Reading the synthetic benchmark format of data/synthetic/ (see its
 // README): a shape {"loops": [[[x, y], ...], ...], "weights": [[w, ...], ...]}
 // or a collection {"polygons": [shape, ...]}. Loops are implicitly closed.
 #pragma once

@@ -45,13 +45,14 @@ void check_anchor(const Anchor& a, const std::string& what) {
     throw InputError(what + ": fraction " + std::to_string(a.plan.value) + " is outside [0, 1]");
 }
 
-std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, std::string& reason,
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, ResolvedAnchor& r,
                                 double shift) {
   const Source& src = st.sources[source];
   const Edge& edge = st.edges[src.edge];
   const auto& spans = st.spans(src.edge);
   if (spans.empty()) {
-    reason = "edge " + std::to_string(src.id) + " no longer exists at height " + std::to_string(z);
+    r.absence = Absence::EdgeGone;
+    r.reason = "edge " + std::to_string(src.id) + " no longer exists at height " + std::to_string(z);
     return std::nullopt;
   }
   double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -67,7 +68,8 @@ std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, d
     if (glm::dot(a, edge.dir) - margin > u || glm::dot(b, edge.dir) + margin < u) continue;
     return EdgePoint{s, on_line + edge.dir * (u - glm::dot(on_line, edge.dir)), u};
   }
-  reason = "it lies beyond the ends of edge " + std::to_string(src.id) + " at height " + std::to_string(z);
+  r.absence = Absence::OffEdge;
+  r.reason = "it lies beyond the ends of edge " + std::to_string(src.id) + " at height " + std::to_string(z);
   return std::nullopt;
 }
 
@@ -92,7 +94,10 @@ AnchorEvents::AnchorEvents(const State& st, const std::vector<Anchor>& anchors) 
   std::iota(order_.begin(), order_.end(), 0);
   std::stable_sort(order_.begin(), order_.end(),
                    [&](std::size_t x, std::size_t y) { return requests_[x].height < requests_[y].height; });
-  for (ResolvedAnchor& r : out_) r.reason = "the sweep ends below its height";
+  for (ResolvedAnchor& r : out_) {
+    r.absence = Absence::AboveSweep;
+    r.reason = "the sweep ends below its height";
+  }
 }
 
 void AnchorEvents::resolve_up_to(State& st, double height) {
@@ -100,11 +105,12 @@ void AnchorEvents::resolve_up_to(State& st, double height) {
     const std::size_t i = order_[next_++];
     const Request& q = requests_[i];
     ResolvedAnchor& r = out_[i];
-    const std::optional<EdgePoint> hit = locate(st, q.source, q.plan, q.height, r.reason);
+    const std::optional<EdgePoint> hit = locate(st, q.source, q.plan, q.height, r);
     if (!hit) continue;
     const Edge& edge = st.edges[st.sources[q.source].edge];
     const FaceGroup& face = st.faces[edge.face];
     r.present = true;
+    r.absence = Absence::None;
     r.reason.clear();
     r.frame.origin = {hit->point, q.height};
     r.frame.along = {edge.dir, 0.0};

@@ -25,9 +25,9 @@ struct EdgePoint {
   glm::dvec2 point{0.0};  // on the edge's line
   double u = 0.0;         // the point along the edge's direction
 };
-// The point, moved `shift` along the edge, or nothing (with `reason` saying
-// why) when the edge is gone or the point lies beyond its ends.
-std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, std::string& reason,
+// The point, moved `shift` along the edge, or nothing (with r's absence and
+// reason saying why) when the edge is gone or the point lies beyond its ends.
+std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, double z, ResolvedAnchor& r,
                                 double shift = 0.0);
 
 class AnchorEvents {

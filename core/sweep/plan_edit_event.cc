@@ -168,6 +168,7 @@ PlanEditEvents::PlanEditEvents(const State& st, const std::vector<Profile>& prof
       r.name = e.name;
       r.anchor = i;
       r.edge_id = st.sources[s].id;
+      r.absence = Absence::AboveSweep;
       r.reason = "the sweep ends below its height";
       out_.push_back(std::move(r));
     }
@@ -201,7 +202,7 @@ void PlanEditEvents::apply_next(State& st, EventQueue& queue, ProfileEvents& pro
 void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batch& batch) {
   const PlanEdit& edit = st.options().plan_edits[q.edit];
   const double z = st.height;
-  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, z, r.reason, edit.offset);
+  const std::optional<EdgePoint> hit = locate(st, q.source, edit.at.plan, z, r, edit.offset);
   if (!hit) return;
   const int e = st.sources[q.source].edge;
   const Edge edge = st.edges[e];
@@ -224,6 +225,7 @@ void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batc
   const double u0 = hit->u + shape.front().x, u1 = hit->u + shape.back().x;
   const double room = 4.0 * st.tol().position();
   if (u0 < ua + room || u1 > ub - room) {
+    r.absence = Absence::NoRoom;
     r.reason = "it does not fit on edge " + std::to_string(st.sources[q.source].id) + " at height " +
                std::to_string(z) + ": the step spans " + std::to_string(u1 - u0) + " but the face is " +
                std::to_string(ub - ua) + " long there and the step reaches past its end";
@@ -236,11 +238,13 @@ void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batc
   for (glm::dvec2 p : shape) corners.push_back(world(p));
   for (std::size_t j = 0; j + 1 < corners.size(); ++j)
     if (glm::length(corners[j + 1] - corners[j]) <= near) {
+      r.absence = Absence::TooShort;
       r.reason = "its segment " + std::to_string(j) + " is shorter than the sweep's resolution";
       return;
     }
 
   if (const std::string where = crossing(st, c, corners); !where.empty()) {
+    r.absence = Absence::Crossing;
     r.reason = "its shape " + where + " at height " + std::to_string(z) +
                (natural ? "" : "; a natural step grows round what it meets");
     return;
@@ -309,6 +313,7 @@ void PlanEditEvents::splice(State& st, const Request& q, ResolvedAnchor& r, Batc
   }
 
   r.present = true;
+  r.absence = Absence::None;
   r.reason.clear();
   r.frame.origin = {hit->point, z};
   r.frame.along = {edge.dir, 0.0};

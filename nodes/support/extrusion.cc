@@ -110,6 +110,7 @@ EngineAnchors engine_anchors(const Footprint& fp, const std::vector<AnchorSpec>&
     ResolvedAnchor& r = out.unselected.emplace_back();
     r.name = specs[i].anchor.name;
     r.anchor = i;
+    r.absence = Absence::Unselected;
     r.reason = std::move(why);
   }
   return out;
