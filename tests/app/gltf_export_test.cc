@@ -1,7 +1,7 @@
 // The .glb files procex writes pass the Khronos glTF validator with no errors
 // and load in three.js's GLTFLoader, with tags and building ids where they
 // belong. Both run under Node.js from tools/node_modules (scripts/install-deps.sh
-// installs them); the tests skip only when node itself is missing.
+// installs them); a missing node or module fails the tests.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,7 +47,8 @@ ProcessRun run(const std::string& command) {
 class GltfExport : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (run("node --version").code != 0) GTEST_SKIP() << "node (Node.js) is not installed: the glTF validator and three.js tests need it";
+    ASSERT_EQ(run("node --version").code, 0) << "node (Node.js) is not installed: the glTF validator and three.js "
+                                                    "tests need it (scripts/install-deps.sh)";
     ASSERT_TRUE(fs::exists(kTools / "node_modules" / "gltf-validator") && fs::exists(kTools / "node_modules" / "three"))
         << "run scripts/install-deps.sh (or: cd tools && npm ci) to install the glTF validator and three.js";
     dir_ = fs::temp_directory_path() / ("procex_gltf_" + std::to_string(::getpid()));

@@ -1,8 +1,7 @@
 // Every sample recipe (but city.pxg, which needs footprints bound: see
 // tests/app/batch_command_test.cc) evaluates, and its summary matches the one
 // stored in samples/expected/<name>.json within the stored tolerance.
-// PROCEX_UPDATE_EXPECTED=1 rewrites the stored summaries instead.
-#include <cstdlib>
+// scripts/update-expected.sh rewrites the stored summaries (never ctest).
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
 #include "nodes/support/mesh_summary.h"
+#include "tests/expected/sample_summaries.h"
 #include "tests/nodes/node_runner.h"
 
 namespace procex {
@@ -28,18 +28,6 @@ std::string read_text(const fs::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// Placed meshes (instances per mesh name) only where a recipe places some.
-json summary_json(const MeshSummary& s) {
-  json j = {{"meshes", s.meshes},
-            {"faces", s.faces},
-            {"faces_per_tag", s.faces_per_tag},
-            {"bounds", {{"min", {s.min.x, s.min.y, s.min.z}}, {"max", {s.max.x, s.max.y, s.max.z}}}},
-            {"volume", s.volume}};
-  if (!s.placed.empty()) j["placed"] = s.placed;
-  j["tolerance"] = {{"length", 1e-6}, {"volume_relative", 1e-6}};
-  return j;
 }
 
 void expect_close(const json& want, const json& got, const std::string& what) {
@@ -63,14 +51,9 @@ TEST_P(Sample, EvaluatesToItsStoredSummary) {
   const EvalResult r = test::evaluate_mesh(g, kSamples);
   for (const Diagnostic& d : r.diagnostics) EXPECT_NE(d.severity, Severity::kError) << d.to_string();
   ASSERT_TRUE(r.ok());
-  const json got = summary_json(summarize(r.output("mesh")->get<MeshSet>()));
+  const json got = test::summary_json(summarize(r.output("mesh")->get<MeshSet>()));
   const fs::path expected = kSamples / "expected" / (GetParam() + ".json");
-  if (std::getenv("PROCEX_UPDATE_EXPECTED")) {
-    fs::create_directories(expected.parent_path());
-    std::ofstream(expected) << got.dump(1) << "\n";
-    GTEST_SKIP() << "rewrote " << expected;
-  }
-  ASSERT_TRUE(fs::exists(expected)) << expected << " is missing: run with PROCEX_UPDATE_EXPECTED=1 once";
+  ASSERT_TRUE(fs::exists(expected)) << expected << " is missing: run scripts/update-expected.sh and review it";
   expect_close(json::parse(read_text(expected)), got, GetParam());
 }
 
@@ -79,13 +62,7 @@ TEST_P(Sample, FileIsCanonical) {
   EXPECT_EQ(to_pxg(load_pxg(file)), read_text(file));
 }
 
-std::vector<std::string> sample_names() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(kSamples))
-    if (e.path().extension() == ".pxg" && e.path().stem() != "city") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::vector<std::string> sample_names() { return test::sample_recipe_names(kSamples); }
 
 INSTANTIATE_TEST_SUITE_P(Samples, Sample, ::testing::ValuesIn(sample_names()),
                          [](const auto& info) { return info.param; });

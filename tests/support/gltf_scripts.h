@@ -1,6 +1,7 @@
 // Runs the Node.js checks of tools/ on a .glb (as installed by
 // scripts/install-deps.sh) and hands back the JSON they print: the Khronos
 // glTF validator (validate_gltf.mjs) and three.js's loader (*_three.mjs).
+// A missing tool is a problem the caller fails on, never a skip.
 #pragma once
 
 #include <sys/wait.h>
@@ -14,7 +15,6 @@
 namespace procex::test {
 
 struct NodeScriptRun {
-  bool node_missing = false;  // Node.js is not installed: the caller skips
   std::string problem;        // why there is no report ("" when there is one)
   int exit_code = -1;         // 0 without errors, 1 with errors
   nlohmann::json report;      // what the script printed
@@ -34,8 +34,7 @@ inline NodeScriptRun run_gltf_script(const std::string& script, const std::files
   };
   std::string out;
   if (run("node --version", out) != 0) {
-    v.node_missing = true;
-    v.problem = "node (Node.js) is not installed";
+    v.problem = "node (Node.js) is not installed: run scripts/install-deps.sh";
     return v;
   }
   if (!std::filesystem::exists(tools / "node_modules" / "gltf-validator") ||
