@@ -381,7 +381,8 @@ Status Graph::set_exposed(std::string_view name, Value v) {
 Status Graph::set_preset(Preset p) {
   if (p.name.empty()) return Status::error("a preset needs a name");
   for (const auto& [name, v] : p.values) {
-    auto e = std::find_if(exposed_.begin(), exposed_.end(), [&](const ExposedParam& x) { return x.name == name; });
+    // An init-capture: Clang before 16 cannot capture a structured binding.
+    auto e = std::find_if(exposed_.begin(), exposed_.end(), [&key = name](const ExposedParam& x) { return x.name == key; });
     if (e == exposed_.end()) return Status::error("preset " + q(p.name) + ": no exposed parameter " + q(name));
     const ValueType* want = nodes_.at(e->node).decl().params()[e->param].type;
     if (v.type() != want)

@@ -444,7 +444,8 @@ struct Loader {
       const json& values = member(e, "values", c, json::value_t::object);
       for (const auto& [name, v] : values.items()) {
         Ctx vc{file, c.ptr + "/values/" + token(name)};
-        auto ex = std::find_if(g.exposed_params().begin(), g.exposed_params().end(), [&](const ExposedParam& x) { return x.name == name; });
+        auto ex = std::find_if(g.exposed_params().begin(), g.exposed_params().end(),
+                               [&key = name](const ExposedParam& x) { return x.name == key; });  // Clang < 16: no binding captures
         if (ex == g.exposed_params().end()) fail(file, vc.ptr, "no exposed parameter named '" + name + "'");
         p.values[name] = value_from(*g.node(ex->node)->decl().params()[ex->param].type, v, vc);
       }

@@ -77,7 +77,8 @@ json graph_json(const Graph& g) {
   for (const Preset& p : g.presets()) {
     json values = json::object();
     for (const auto& [name, v] : p.values)
-      if (std::any_of(g.exposed_params().begin(), g.exposed_params().end(), [&](const ExposedParam& e) { return e.name == name; }))
+      if (std::any_of(g.exposed_params().begin(), g.exposed_params().end(),
+                      [&key = name](const ExposedParam& e) { return e.name == key; }))  // Clang < 16: no binding captures
         values[name] = param_json(v);
     presets.push_back({{"name", p.name}, {"values", std::move(values)}});
   }
