@@ -160,6 +160,20 @@ struct Loader {
     return *it;
   }
 
+  // Calls read(entry, ctx) for each entry of obj's array `key` (absent reads
+  // as empty; at most `limit` entries), each of which must be an object; the
+  // message for one that is not says what the object holds.
+  template <class Read>
+  void for_each_object(const json& obj, const char* key, const Ctx& c, std::size_t limit, const char* expected,
+                       Read&& read) const {
+    const json& entries = array_member(obj, key, c, limit);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const Ctx at{c.file, c.ptr + "/" + key + "/" + std::to_string(i)};
+      if (!entries[i].is_object()) fail(c.file, at.ptr, expected);
+      read(entries[i], at);
+    }
+  }
+
   const ValueType& value_type_named(const std::string& name, const Ctx& c) const {
     const ValueType* t = ValueTypeRegistry::global().find(name);
     if (!t) {
@@ -211,11 +225,7 @@ struct Loader {
 
   void read_groups(Graph& g, const json& j, const std::string& base, const fs::path& path, std::size_t group_depth) {
     const std::string file = path.string();
-    const json& groups = array_member(j, "groups", Ctx{file, base}, options.limits.max_nodes);
-    for (std::size_t i = 0; i < groups.size(); ++i) {
-      Ctx c{file, base + "/groups/" + std::to_string(i)};
-      const json& e = groups[i];
-      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+    for_each_object(j, "groups", Ctx{file, base}, options.limits.max_nodes, "expected an object", [&](const json& e, const Ctx& c) {
       const std::string name = string_member(e, "name", c);
       if (group_depth + 1 > options.limits.max_group_depth)
         fail(file, c.ptr, "groups nested deeper than " + std::to_string(options.limits.max_group_depth) + " levels");
@@ -231,7 +241,7 @@ struct Loader {
         fail(file, c.ptr, "a group needs \"file\" (a library file) or \"graph\" (embedded)");
       }
       if (Status s = g.add_group(name, body, ref); !s) fail(file, c.ptr, s.message());
-    }
+    });
   }
 
   std::shared_ptr<const Graph> load_library(const std::string& ref, const std::string& file, const std::string& where,
@@ -260,7 +270,6 @@ struct Loader {
   // Name, type and doc of a graph input or output.
   template <class Port>
   Port read_port(const json& e, const Ctx& c) const {
-    if (!e.is_object()) fail(c.file, c.ptr, "expected an object");
     Port p;
     p.name = string_member(e, "name", c);
     p.type = &value_type_named(string_member(e, "type", c), Ctx{c.file, c.ptr + "/type"});
@@ -269,26 +278,18 @@ struct Loader {
   }
 
   void read_interface(Graph& g, const json& j, const std::string& base, const std::string& file) {
-    const json& inputs = array_member(j, "inputs", Ctx{file, base}, 4096);
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-      Ctx c{file, base + "/inputs/" + std::to_string(i)};
-      GraphInput in = read_port<GraphInput>(inputs[i], c);
-      if (auto d = inputs[i].find("default"); d != inputs[i].end()) in.default_value = value_from(*in.type, *d, Ctx{file, c.ptr + "/default"});
+    for_each_object(j, "inputs", Ctx{file, base}, 4096, "expected an object", [&](const json& e, const Ctx& c) {
+      GraphInput in = read_port<GraphInput>(e, c);
+      if (auto d = e.find("default"); d != e.end()) in.default_value = value_from(*in.type, *d, Ctx{file, c.ptr + "/default"});
       if (Status s = g.add_input(std::move(in)); !s) fail(file, c.ptr, s.message());
-    }
-    const json& outputs = array_member(j, "outputs", Ctx{file, base}, 4096);
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-      Ctx c{file, base + "/outputs/" + std::to_string(i)};
-      if (Status s = g.add_output(read_port<GraphOutput>(outputs[i], c)); !s) fail(file, c.ptr, s.message());
-    }
+    });
+    for_each_object(j, "outputs", Ctx{file, base}, 4096, "expected an object", [&](const json& e, const Ctx& c) {
+      if (Status s = g.add_output(read_port<GraphOutput>(e, c)); !s) fail(file, c.ptr, s.message());
+    });
   }
 
   void read_nodes(Graph& g, const json& j, const std::string& base, const std::string& file, std::map<NodeId, std::string>& seen) {
-    const json& nodes = array_member(j, "nodes", Ctx{file, base}, options.limits.max_nodes);
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      Ctx c{file, base + "/nodes/" + std::to_string(i)};
-      const json& e = nodes[i];
-      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+    for_each_object(j, "nodes", Ctx{file, base}, options.limits.max_nodes, "expected an object", [&](const json& e, const Ctx& c) {
       auto id_it = e.find("id");
       if (id_it == e.end() || !id_it->is_number_unsigned() || id_it->get<std::uint64_t>() == 0 ||
           id_it->get<std::uint64_t>() > kMaxNodeId)
@@ -322,7 +323,7 @@ struct Loader {
         if (!added) fail(file, c.ptr, added.message());
       }
       read_params(g, id, e, c, saved_version);
-    }
+    });
   }
 
   void read_params(Graph& g, NodeId id, const json& e, const Ctx& c, int saved_version) {
@@ -393,23 +394,17 @@ struct Loader {
   }
 
   void read_links(Graph& g, const json& j, const std::string& base, const std::string& file) {
-    const json& links = array_member(j, "links", Ctx{file, base}, options.limits.max_links);
-    for (std::size_t i = 0; i < links.size(); ++i) {
-      Ctx c{file, base + "/links/" + std::to_string(i)};
-      const json& l = links[i];
-      if (!l.is_object() || !l.contains("from") || !l.contains("to")) fail(file, c.ptr, "expected {\"from\": ..., \"to\": ...}");
+    const char* const expected = "expected {\"from\": ..., \"to\": ...}";
+    for_each_object(j, "links", Ctx{file, base}, options.limits.max_links, expected, [&](const json& l, const Ctx& c) {
+      if (!l.contains("from") || !l.contains("to")) fail(file, c.ptr, expected);
       const PortRef from = parse_end(g, l["from"], Ctx{file, c.ptr + "/from"}, true);
       const PortRef to = parse_end(g, l["to"], Ctx{file, c.ptr + "/to"}, false);
       if (Status s = g.connect(from, to); !s) fail(file, c.ptr, s.message());
-    }
+    });
   }
 
   void read_exposed(Graph& g, const json& j, const std::string& base, const std::string& file) {
-    const json& exposed = array_member(j, "exposed", Ctx{file, base}, 4096);
-    for (std::size_t i = 0; i < exposed.size(); ++i) {
-      Ctx c{file, base + "/exposed/" + std::to_string(i)};
-      const json& e = exposed[i];
-      if (!e.is_object()) fail(file, c.ptr, "expected an object");
+    for_each_object(j, "exposed", Ctx{file, base}, 4096, "expected an object", [&](const json& e, const Ctx& c) {
       ExposedParam p;
       p.name = string_member(e, "name", c);
       const json& node = member(e, "node", c, json::value_t::number_integer);
@@ -430,15 +425,12 @@ struct Loader {
         *bound = it->get<double>();
       }
       if (Status s = g.expose_param(std::move(p)); !s) fail(file, c.ptr, s.message());
-    }
+    });
   }
 
   void read_presets(Graph& g, const json& j, const std::string& base, const std::string& file) {
-    const json& presets = array_member(j, "presets", Ctx{file, base}, 4096);
-    for (std::size_t i = 0; i < presets.size(); ++i) {
-      Ctx c{file, base + "/presets/" + std::to_string(i)};
-      const json& e = presets[i];
-      if (!e.is_object()) fail(file, c.ptr, "expected {\"name\": ..., \"values\": {...}}");
+    const char* const expected = "expected {\"name\": ..., \"values\": {...}}";
+    for_each_object(j, "presets", Ctx{file, base}, 4096, expected, [&](const json& e, const Ctx& c) {
       Preset p;
       p.name = string_member(e, "name", c);
       const json& values = member(e, "values", c, json::value_t::object);
@@ -452,7 +444,7 @@ struct Loader {
       for (const Preset& earlier : g.presets())
         if (earlier.name == p.name) fail(file, c.ptr + "/name", "a second preset named '" + p.name + "'");
       if (Status s = g.set_preset(std::move(p)); !s) fail(file, c.ptr, s.message());
-    }
+    });
   }
 
   void read_editor(Graph& g, const json& j, const std::string& base, const std::string& file) {
