@@ -1,16 +1,20 @@
 // procex.Mesh: one tagged mesh seen from Python as NumPy arrays. Vertex
 // positions, per-face tags, source edges and face kinds are views of the C++
 // mesh's own storage (read-only, no copy; the array keeps the mesh alive);
-// faces as offsets and indices are laid out once when the mesh is wrapped.
+// faces as offsets and indices are laid out once when the mesh is wrapped;
+// UVs and normals (core's surface_attributes) are made on first read and
+// then seen as views too.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <pybind11/pybind11.h>
 
+#include "core/mesh/uv_frames.h"
 #include "nodes/values.h"
 
 namespace procex::python {
@@ -35,6 +39,8 @@ struct MeshArrays {
   std::vector<std::int32_t> face_offsets;  // n_faces + 1
   std::vector<std::int32_t> face_indices;  // vertex indices, face after face
   std::vector<Placement> placed;
+  // UVs and normals as the OBJ writer has them, made on first use (most callers never read them).
+  std::optional<SurfaceAttributes> surface;
 };
 
 // The part as Python sees it; its placed meshes are wrapped once each, shared by their instances.

@@ -111,4 +111,22 @@ std::vector<UvFrame> face_uv_frames(const Mesh& mesh, const glm::dvec3& origin) 
   return frames;
 }
 
+SurfaceAttributes surface_attributes(const Mesh& mesh, const glm::dvec3& origin) {
+  const std::vector<UvFrame> frames = face_uv_frames(mesh, origin);
+  SurfaceAttributes out;
+  out.corner_uvs.reserve(mesh.n_halfedges() / 2);
+  out.face_normals.reserve(mesh.n_faces());
+  std::vector<glm::dvec3> pts;
+  for (const auto f : mesh.faces()) {
+    pts.clear();
+    for (const auto v : mesh.fv_range(f)) pts.push_back(point(mesh, v, origin));
+    const glm::dvec3 n = newell_normal(pts);
+    const double len = glm::length(n);
+    out.face_normals.push_back(len > 0 ? n / len : glm::dvec3(0, 0, 1));
+    const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
+    for (const glm::dvec3& p : pts) out.corner_uvs.push_back(frame.at(p));
+  }
+  return out;
+}
+
 }  // namespace procex

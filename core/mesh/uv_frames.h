@@ -37,4 +37,14 @@ struct UvFrame {
 // coordinates stay small enough for float32 texture coordinates).
 std::vector<UvFrame> face_uv_frames(const Mesh& mesh, const glm::dvec3& origin = {0, 0, 0});
 
+// What a flat-shaded, textured export carries beside the positions: each
+// face corner's texture coordinates (corners in face order, each face's as
+// fv_range walks them) and each face's outward unit normal ((0, 0, 1) for a
+// face with no area). The OBJ writer and the Python module hand on these.
+struct SurfaceAttributes {
+  std::vector<glm::dvec2> corner_uvs;
+  std::vector<glm::dvec3> face_normals;
+};
+SurfaceAttributes surface_attributes(const Mesh& mesh, const glm::dvec3& origin = {0, 0, 0});
+
 }  // namespace procex

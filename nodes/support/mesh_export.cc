@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "base/atomic_file_set.h"
-#include "core/geom/polygon3.h"
 #include "core/io/geopackage_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
@@ -52,7 +51,6 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
                     "\nmtllib " + mtl.filename().string() + "\n";
   std::vector<std::string> materials;
   std::size_t base = 1, normals = 1, uvs = 1;  // OBJ numbers each kind from 1 across the file
-  std::vector<glm::dvec3> pts;
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
     const Mesh& mesh = *part.mesh;
@@ -61,28 +59,24 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
       const Mesh::Point& p = mesh.point(v);
       append_triple(obj, "v", to_file_axes(glm::dvec3(p[0], p[1], p[2]), up));
     }
-    const std::vector<UvFrame> frames = face_uv_frames(mesh);
+    const SurfaceAttributes surface = surface_attributes(mesh);
+    // Where each face's corners start in surface.corner_uvs (faces are written grouped by tag).
+    std::vector<std::size_t> first_corner(mesh.n_faces() + 1, 0);
+    for (const auto f : mesh.faces())
+      first_corner[static_cast<std::size_t>(f.idx()) + 1] = first_corner[static_cast<std::size_t>(f.idx())] + mesh.valence(f);
     for (std::uint32_t t = 0; t < part.tags.size(); ++t) {
       const std::string name = obj_name(part.tags[t], "untagged");
       bool used = false;
       for (const auto f : mesh.faces()) {
-        if (part.face_tags[static_cast<std::size_t>(f.idx())] != t) continue;
+        const auto fi = static_cast<std::size_t>(f.idx());
+        if (part.face_tags[fi] != t) continue;
         if (!used) obj += "usemtl " + name + "\n", used = true;
-        pts.clear();
-        for (const auto v : mesh.fv_range(f)) {
-          const Mesh::Point& p = mesh.point(v);
-          pts.push_back({p[0], p[1], p[2]});
-        }
-        const glm::dvec3 n = newell_normal(pts);
-        const double len = glm::length(n);
-        append_triple(obj, "vn", to_file_axes(len > 0 ? n / len : glm::dvec3(0, 0, 1), up));
-        const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
-        for (const glm::dvec3& p : pts) {
-          const glm::dvec2 uv = frame.at(p);
+        append_triple(obj, "vn", to_file_axes(surface.face_normals[fi], up));
+        for (std::size_t c = first_corner[fi]; c < first_corner[fi + 1]; ++c) {
           obj += "vt ";
-          append_number(obj, uv.x);
+          append_number(obj, surface.corner_uvs[c].x);
           obj += ' ';
-          append_number(obj, uv.y);
+          append_number(obj, surface.corner_uvs[c].y);
           obj += '\n';
         }
         obj += 'f';
@@ -91,7 +85,7 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
           obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx())) + '/' + std::to_string(uvs + corner++) + '/' +
                  std::to_string(normals);
         obj += '\n';
-        uvs += pts.size();
+        uvs += corner;
         ++normals;
       }
       if (used && std::find(materials.begin(), materials.end(), name) == materials.end()) materials.push_back(name);
