@@ -14,7 +14,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest blender
   nodejs
   libgdal-dev gdal-bin python3-gdal
-  blender
+  rsync
 )
 
 # The Node.js tools the tests run (glTF validator, three.js), pinned by tools/package-lock.json.

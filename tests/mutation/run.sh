@@ -22,7 +22,8 @@ export CCACHE_BASEDIR="$work/src"
 cmake -S "$work/src" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROCEX_STUDIO=OFF -DPROCEX_BENCH=OFF >/dev/null
 tests="$work/build/tests/procex_core_tests"
 build() { cmake --build "$work/build" --target procex_core_tests -j "$jobs" >"$work/build.log" 2>&1; }
-run_tests() { timeout "$limit" "$tests" --gtest_filter="$filter" --gtest_brief=1 >"$work/test.log" 2>&1; }
+# A mutant is caught by its first failing test: the rest need not run (the unmutated run goes whole).
+run_tests() { timeout "$limit" "$tests" --gtest_filter="$filter" --gtest_brief=1 "$@" >"$work/test.log" 2>&1; }
 
 build || { echo "the unmutated tree does not build (see $work/build.log)"; exit 2; }
 run_tests || { echo "the unmutated tests fail (see $work/test.log)"; exit 2; }
@@ -49,7 +50,7 @@ PY
   if ! build; then
     result="CAUGHT    $id (does not compile)"
     caught=$((caught + 1))
-  elif run_tests; then
+  elif run_tests --gtest_fail_fast; then
     result="SURVIVED  $id: $what"
     survived=$((survived + 1))
   else
