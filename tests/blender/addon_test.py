@@ -2,13 +2,17 @@
 installs and enables it from the zip the build makes, imports the house
 recipe, changes exposed parameters and checks the mesh changed in place as the
 procex module says it should (vertex count, bounds and volume through bmesh),
-then imports the 18 sample-block buildings as a batch.
+then imports the 18 sample-block buildings as a batch. Every mesh carries
+procex's UV map (metres: a wall's u spans its edge, v is its height) and its
+flat normals, checked against Blender's own geometry.
 
     blender -b --factory-startup --python-exit-code 1 --python addon_test.py -- ADDON.zip SAMPLES_DIR
 """
+import collections
 import json
 import os
 import sys
+import tempfile
 
 import bmesh
 import bpy
@@ -65,6 +69,37 @@ def same(got, want, what):
     close(got["volume"], want["volume"], 1e-5 * abs(want["volume"]), f"{what} volume")
 
 
+def check_surface(obj, what):
+    """One UV map, "UVMap", laying each face flat in metres (distances between
+    corners kept); on walls v is the height and u spans the wall's bottom edge;
+    each corner's normal is its face's (flat shading), as Blender computes it
+    from the vertices."""
+    me = obj.data
+    check([uv.name for uv in me.uv_layers] == ["UVMap"], f"{what}: UV maps {[uv.name for uv in me.uv_layers]}")
+    me.calc_normals_split()  # before taking the UV layer's data: it reallocates the corners' layers
+    uv = me.uv_layers["UVMap"].data
+    walls = 0
+    for poly in me.polygons:
+        loops = list(poly.loop_indices)
+        co = [me.vertices[me.loops[k].vertex_index].co for k in loops]
+        tex = [uv[k].uv for k in loops]
+        for a, b in zip(range(len(loops)), list(range(1, len(loops))) + [0]):
+            close((tex[b] - tex[a]).length, (co[b] - co[a]).length, 1e-3, f"{what} face {poly.index}: UV edge length")
+        for k in loops:
+            # Blender's own normal, from float32 corners: within what float32 keeps on a small face
+            close((me.loops[k].normal - poly.normal).length, 0.0, 1e-3, f"{what} face {poly.index}: corner normal")
+        material = me.materials[poly.material_index].name if me.materials else ""
+        if material == "procex wall":
+            walls += 1
+            for t, c in zip(tex, co):
+                close(t.y, c.z, 1e-3, f"{what} wall {poly.index}: v is the height")
+            low = min(c.z for c in co)
+            bottom = [c for c in co if abs(c.z - low) < 1e-4]
+            edge = max((p.xy - q.xy).length for p in bottom for q in bottom)
+            close(max(t.x for t in tex) - min(t.x for t in tex), edge, 1e-3, f"{what} wall {poly.index}: u span")
+    return walls
+
+
 # ---- install and enable, as a user would from Preferences > Add-ons > Install
 bpy.ops.preferences.addon_install(filepath=addon, overwrite=True)
 bpy.ops.preferences.addon_enable(module="procex_blender")
@@ -88,6 +123,9 @@ for end in ("min", "max"):
         close(got[end][i], stored["bounds"][end][i], 1e-4, f"house {end}[{i}]")
 materials = {m.name for m in obj.data.materials}
 check(materials == {"procex " + t for t in stored["faces_per_tag"]}, f"materials per tag: {materials}")
+check(check_surface(obj, "house") == stored["faces_per_tag"]["wall"], "house: not every wall checked")
+per_material = collections.Counter(obj.data.materials[p.material_index].name for p in obj.data.polygons)
+check(per_material == {"procex " + t: n for t, n in stored["faces_per_tag"].items()}, f"faces per material: {per_material}")
 
 # the panel's parameters are the recipe's exposed ones, with ranges and units
 params = obj.procex.params
@@ -113,6 +151,7 @@ check(after["volume"] > before["volume"], "the volume did not grow")
 reference = procex.Recipe.load(house)
 reference.set("pitch", pitch.float_value)
 same(after, module_summary(reference.evaluate()), "house at the new pitch")
+check_surface(obj, "house at the new pitch")  # replaced in place: still one UV map
 print(f"procex add-on: house re-mesh after a pitch change {obj.procex.last_ms:.1f} ms")
 
 params["shape"].enum_value = "rectangle"
@@ -126,6 +165,19 @@ check(obj.procex.error == "", obj.procex.error)
 reference.set("pitch", highest)
 same(measure(obj), module_summary(reference.evaluate()), "house at the largest pitch")
 
+# ---- a recipe procex refuses: the operator reports procex's diagnostic and leaves no object behind
+broken = os.path.join(tempfile.mkdtemp(), "broken.pxg")
+with open(broken, "w") as f:
+    f.write('{"procex": 1, "nodes": [')
+objects = len(bpy.data.objects)
+try:
+    bpy.ops.import_scene.procex_recipe(filepath=broken)
+    message = ""
+except RuntimeError as e:  # an operator's ERROR report, as a headless Blender raises it
+    message = str(e)
+check("broken.pxg" in message, f"the error does not name the file: {message!r}")
+check(len(bpy.data.objects) == objects, "a refused import left an object behind")
+
 # ---- placed meshes are linked duplicates
 grid = os.path.join(samples, "windows_grid.pxg")
 check(bpy.ops.import_scene.procex_recipe(filepath=grid) == {"FINISHED"}, "importing windows_grid.pxg failed")
@@ -135,6 +187,8 @@ check(len(placed) == 28, f"{len(placed)} placed objects, want 28")
 shared = {c.data.name for c in placed}
 check(len(shared) == 2, f"placed meshes are not shared: {len(shared)} meshes")
 check(sum(bpy.data.meshes[n].users for n in shared) == 28, "each placed mesh is used by its placements")
+for c in placed[:1] + placed[-1:]:
+    check_surface(c, c.name)
 params = building.procex.params
 params["spacing"].float_value = params["spacing"].float_value * 2  # wider spacing: fewer windows
 again = [c for c in building.children if c.get("procex_placed")]
@@ -162,5 +216,6 @@ for o in buildings:
         if value is not None:
             check(o[key] == value, f"{o.name}: custom property {key} = {o.get(key)!r}, want {value!r}")
     check(o.procex.recipe == city and o.procex.feature, f"{o.name} does not remember its recipe and feature")
+    check(check_surface(o, o.name) == want["faces_per_tag"].get("wall", 0), f"{o.name}: not every wall checked")
 print(f"procex add-on: {len(buildings)} buildings imported")
 print("procex add-on test: ok")

@@ -4,9 +4,9 @@ import json
 import os
 
 import bpy
-from bpy_extras.io_utils import ImportHelper
 
 from . import engine, mesh_data, parameters
+from .importer import ProcexImporter
 
 
 def _property(value):
@@ -45,24 +45,19 @@ def import_batch(context, geojson, recipe_path, jobs=0):
     return collection, buildings
 
 
-class PROCEX_OT_import_batch(bpy.types.Operator, ImportHelper):
+class PROCEX_OT_import_batch(bpy.types.Operator, ProcexImporter):
     """Evaluate a procex recipe for every footprint of a GeoJSON file: one object per building"""
 
     bl_idname = "import_scene.procex_batch"
     bl_label = "Import procex batch"
-    bl_options = {"REGISTER", "UNDO"}
     filename_ext = ".geojson"
     filter_glob: bpy.props.StringProperty(default="*.geojson;*.json", options={"HIDDEN"})
     recipe: bpy.props.StringProperty(name="Recipe", subtype="FILE_PATH",
                                      description="The .pxg recipe evaluated for every footprint")
     jobs: bpy.props.IntProperty(name="Threads", default=0, min=0, description="0: one per core")
 
-    def execute(self, context):
-        try:
-            _, buildings = import_batch(context, self.filepath, bpy.path.abspath(self.recipe), self.jobs)
-        except (engine.procex.Error, OSError, ValueError) as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
+    def run(self, context):
+        _, buildings = import_batch(context, self.filepath, bpy.path.abspath(self.recipe), self.jobs)
         failed = [b for b in buildings if b.status != "ok"]
         for b in failed:
             self.report({"WARNING"}, f"{b.id}: {b.status}: {b.reason}")

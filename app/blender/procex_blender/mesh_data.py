@@ -1,6 +1,8 @@
 """procex meshes into Blender data: one Blender mesh from the parts of a
-building (NumPy arrays straight into foreach_set), one material per face tag,
-placed meshes as linked duplicates (objects sharing one mesh datablock)."""
+building (NumPy arrays straight into foreach_set) with procex's texture
+coordinates (metres) as its UV map and procex's flat face normals as its
+custom normals, one material per face tag, placed meshes as linked duplicates
+(objects sharing one mesh datablock)."""
 import zlib
 
 import bpy
@@ -8,6 +10,7 @@ from mathutils import Matrix
 import numpy as np
 
 PLACED_KEY = "procex_placed"  # marks the objects the add-on placed (replaced on re-evaluation)
+UV_MAP = "UVMap"  # Blender's default name, which its texture nodes and exporters take first
 
 
 def material(tag):
@@ -26,13 +29,15 @@ def fill(me, parts):
     """Replaces the geometry of Blender mesh me with the parts (procex.Mesh list), in place."""
     tags = []
     slot = {}
-    vertices, starts, totals, indices, materials, edges = [], [], [], [], [], []
+    vertices, starts, totals, indices, materials, edges, uvs, normals = [], [], [], [], [], [], [], []
     vertex_base = loop_base = 0
     for part in parts:
         offsets = part.face_offsets
         vertices.append(part.vertices)
         starts.append(offsets[:-1] + loop_base)
         totals.append(np.diff(offsets))
+        uvs.append(part.uvs)
+        normals.append(np.repeat(part.normals, totals[-1], axis=0))  # each face's, at each of its corners
         indices.append(part.face_indices + vertex_base)
         for t in part.tags:
             slot.setdefault(t, len(slot))
@@ -54,13 +59,18 @@ def fill(me, parts):
     me.polygons.add(len(loop_start))
     me.polygons.foreach_set("loop_start", loop_start)
     me.polygons.foreach_set("loop_total", loop_total)
-    me.polygons.foreach_set("material_index", cat(materials, np.int32))
+    # Slots first: clearing them resets every face's material index to 0.
     me.materials.clear()
     for t in tags:
         me.materials.append(material(t))
+    me.polygons.foreach_set("material_index", cat(materials, np.int32))
     attribute = me.attributes.get("procex_source_edge") or me.attributes.new("procex_source_edge", "INT", "FACE")
     attribute.data.foreach_set("value", cat(edges, np.int32))
+    me.uv_layers.new(name=UV_MAP, do_init=False).data.foreach_set("uv", cat(uvs, np.float32).ravel())
     me.update(calc_edges=True)
+    # Custom normals are only shown with auto smooth on; each corner has its face's normal: flat shading.
+    me.use_auto_smooth = True
+    me.normals_split_custom_set(cat(normals, np.float32).reshape(-1, 3))
     return me
 
 

@@ -2,31 +2,29 @@
 import os
 
 import bpy
-from bpy_extras.io_utils import ImportHelper
 
-from . import engine, parameters
+from . import parameters
+from .importer import ProcexImporter
 
 
-class PROCEX_OT_import_recipe(bpy.types.Operator, ImportHelper):
+class PROCEX_OT_import_recipe(bpy.types.Operator, ProcexImporter):
     """Evaluate a procex recipe into a mesh object whose exposed parameters are in the sidebar"""
 
     bl_idname = "import_scene.procex_recipe"
     bl_label = "Import procex recipe"
-    bl_options = {"REGISTER", "UNDO"}
     filename_ext = ".pxg"
     filter_glob: bpy.props.StringProperty(default="*.pxg", options={"HIDDEN"})
 
-    def execute(self, context):
+    def run(self, context):
         name = os.path.splitext(os.path.basename(self.filepath))[0]
         obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
         context.collection.objects.link(obj)
         try:
             parameters.load(obj, self.filepath)
             parameters.evaluate(obj)
-        except engine.procex.Error as e:
-            bpy.data.objects.remove(obj)
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
+        except BaseException:
+            bpy.data.objects.remove(obj)  # no half-made object left behind
+            raise
         for o in context.view_layer.objects:
             o.select_set(False)
         obj.select_set(True)
