@@ -96,11 +96,12 @@ class Disconnect final : public Command {
   PortRef to_, from_;
 };
 
-class SetParam final : public Command {
+// A parameter's value or expression replaced: undo puts back both the value
+// and the expression it had (a value set over an expression removes it).
+class ParamCommand : public Command {
  public:
-  SetParam(NodeId id, std::string param, Value v) : id_(id), param_(std::move(param)), value_(std::move(v)) {}
-  std::string label() const override { return "set " + param_; }
-  Status apply(Graph& g) override {
+  ParamCommand(NodeId id, std::string param) : id_(id), param_(std::move(param)) {}
+  Status apply(Graph& g) final {
     const Node* n = g.node(id_);
     if (!n) return Status::error("no node " + std::to_string(id_));
     auto i = n->decl().param_index(param_);
@@ -109,19 +110,43 @@ class SetParam final : public Command {
     previous_ = n->params[index_];
     const auto e = n->expressions.find(static_cast<std::uint32_t>(index_));
     previous_expression_ = e == n->expressions.end() ? nullptr : e->second;
-    return g.set_param(id_, index_, value_);
+    return set(g, id_, index_);
   }
   void revert(Graph& g) override {
     (void)g.set_param(id_, index_, previous_);
     if (previous_expression_) (void)g.set_expression(id_, index_, previous_expression_->text());
   }
 
+ protected:
+  virtual Status set(Graph& g, NodeId id, std::size_t index) = 0;
+  const std::string& param() const { return param_; }
+
  private:
   NodeId id_;
   std::string param_;
-  Value value_, previous_;
-  std::shared_ptr<const Expression> previous_expression_;  // the value replaced it; undo brings it back
+  Value previous_;
+  std::shared_ptr<const Expression> previous_expression_;
   std::size_t index_ = 0;
+};
+
+class SetParam final : public ParamCommand {
+ public:
+  SetParam(NodeId id, std::string param, Value v) : ParamCommand(id, std::move(param)), value_(std::move(v)) {}
+  std::string label() const override { return "set " + param(); }
+
+ private:
+  Status set(Graph& g, NodeId id, std::size_t index) override { return g.set_param(id, index, value_); }
+  Value value_;
+};
+
+class SetExpression final : public ParamCommand {
+ public:
+  SetExpression(NodeId id, std::string param, std::string text) : ParamCommand(id, std::move(param)), text_(std::move(text)) {}
+  std::string label() const override { return "set " + param() + " to " + text_; }
+
+ private:
+  Status set(Graph& g, NodeId id, std::size_t index) override { return g.set_expression(id, index, text_); }
+  std::string text_;
 };
 
 class SetEditorState final : public Command {
@@ -470,6 +495,10 @@ Status UndoStack::set_param(NodeId id, std::string_view param, Value v) {
   return push(set_param_command(id, std::string(param), std::move(v)));
 }
 
+Status UndoStack::set_expression(NodeId id, std::string_view param, std::string_view text) {
+  return push(set_expression_command(id, std::string(param), std::string(text)));
+}
+
 Status UndoStack::move(NodeId id, double x, double y) {
   const Node* n = graph_.node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
@@ -507,6 +536,10 @@ std::unique_ptr<Command> connect_command(PortRef from, PortRef to) { return std:
 std::unique_ptr<Command> disconnect_command(PortRef to) { return std::make_unique<Disconnect>(to); }
 std::unique_ptr<Command> set_param_command(NodeId id, std::string param, Value v) {
   return std::make_unique<SetParam>(id, std::move(param), std::move(v));
+}
+
+std::unique_ptr<Command> set_expression_command(NodeId id, std::string param, std::string text) {
+  return std::make_unique<SetExpression>(id, std::move(param), std::move(text));
 }
 std::unique_ptr<Command> editor_state_command(NodeId id, EditorState s, std::string label) {
   return std::make_unique<SetEditorState>(id, std::move(s), std::move(label));

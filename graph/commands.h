@@ -68,6 +68,9 @@ class UndoStack {
   Status connect(PortRef from, PortRef to);
   Status disconnect(PortRef to);
   Status set_param(NodeId id, std::string_view param, Value v);
+  // Gives the parameter an expression (Graph::set_expression); undo brings
+  // back what it held, a value or another expression.
+  Status set_expression(NodeId id, std::string_view param, std::string_view text);
   // Editor-only: changes no hash. Consecutive moves of one node merge.
   Status move(NodeId id, double x, double y);
   Status set_editor_state(NodeId id, EditorState s);
@@ -97,6 +100,7 @@ std::unique_ptr<Command> remove_node_command(NodeId id);
 std::unique_ptr<Command> connect_command(PortRef from, PortRef to);
 std::unique_ptr<Command> disconnect_command(PortRef to);
 std::unique_ptr<Command> set_param_command(NodeId id, std::string param, Value v);
+std::unique_ptr<Command> set_expression_command(NodeId id, std::string param, std::string text);
 std::unique_ptr<Command> editor_state_command(NodeId id, EditorState s, std::string label);
 std::unique_ptr<Command> group_command(std::vector<NodeId> nodes, std::string group_name);
 std::unique_ptr<Command> ungroup_command(NodeId instance);

@@ -429,7 +429,7 @@ class Run {
     }
     if (outs > 0 && std::all_of(n.passes.begin(), n.passes.end(), [](const auto& p) { return p.has_value(); })) {
       // Never evaluated: consumers read straight from its inputs.
-      pass_through_stats_.push_back(NodeStats{n.path, node->type->name(), NodeOutcome::kPassThrough, n.key, 0, 0});
+      pass_through_stats_.push_back(NodeStats{n.path, node->type->name(), NodeOutcome::kPassThrough, n.key, 0, 0, n.overridden});
     }
     f.plan_index.emplace(id, plan_.size());
     plan_.push_back(std::move(pn));
@@ -587,7 +587,7 @@ class Run {
     std::size_t memory = 0;
     for (const Value& v : n.outputs) memory += v.memory_size();
     const std::string& type = n.node->type->name();
-    result_.stats.nodes.push_back(NodeStats{n.path, type, outcome, n.key, n.time_ns, memory});
+    result_.stats.nodes.push_back(NodeStats{n.path, type, outcome, n.key, n.time_ns, memory, n.overridden});
     for (const std::string& w : n.warnings) result_.diagnostics.push_back({Severity::kWarning, n.path, type, w});
     if (outcome == NodeOutcome::kFailed || outcome == NodeOutcome::kInputFailed)
       result_.diagnostics.push_back({Severity::kError, n.path, type, n.static_error});

@@ -1,5 +1,6 @@
 #include "graph/expression_value.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -32,6 +33,21 @@ Result<Value> from_expr_value(const ExprValue& v, const ValueType& t) {
   if (&t == &value_type<bool>()) return Value::make(std::get<bool>(v));
   if (&t == &value_type<EnumValue>()) return Value::make(EnumValue{std::get<std::string>(v)});
   return Value::make(std::get<std::string>(v));
+}
+
+std::string expression_literal(const ExprValue& v) {
+  if (const double* d = std::get_if<double>(&v)) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, *d);  // shortest text that reads back the same
+    return std::string(buf, r.ptr);
+  }
+  if (const bool* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
+  std::string text = "\"";
+  for (const char c : std::get<std::string>(v)) {
+    if (c == '"' || c == '\\') text += '\\';
+    text += c;
+  }
+  return text + "\"";
 }
 
 }  // namespace procex

@@ -9,6 +9,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/hash.h"
+#include "graph/value.h"
 
 namespace procex {
 
@@ -29,6 +30,10 @@ struct NodeStats {
   Hash128 key;                 // the node's cache key
   std::uint64_t time_ns = 0;   // evaluate only (0 for hits)
   std::size_t memory = 0;      // bytes of the node's outputs
+  // The parameter values it ran with where they are not its own (expressions
+  // evaluated, a group's exposed values applied), in declaration order; empty
+  // when they are its own. An editor shows an expression's value from here.
+  std::vector<Value> params;
 };
 
 struct EvalStats {

@@ -1,9 +1,12 @@
 // Parameters that hold expressions: one exposed parameter driving several
 // nodes, graph inputs and attributes read by name, refusals that name the
-// node, the parameter and the column, the .pxg form, and exact caching.
+// node, the parameter and the column, the .pxg form, exact caching, the values
+// an editor shows, and undo.
 #include <gtest/gtest.h>
 
+#include "graph/commands.h"
 #include "graph/evaluator.h"
+#include "graph/expression_value.h"
 #include "graph/pxg.h"
 #include "tests/graph/test_graphs.h"
 #include "tests/graph/test_nodes.h"
@@ -198,6 +201,57 @@ TEST(ExpressionParam, PxgKeepsTheTextAndNamesTheColumnOfMistakes) {
     FAIL() << "accepted";
   } catch (const PxgError& e) {
     EXPECT_EQ(e.where(), "/nodes/1/params/value");
+  }
+}
+
+// An editor shows what an expression gave: the node's statistics carry the
+// parameters it ran with, for nodes whose parameters are not their own.
+TEST(ExpressionParam, StatisticsCarryTheValuesExpressionsGave) {
+  Shared s = shared_width();
+  ResultCache cache(1 << 20);
+  Evaluator ev(cache, "test");
+  const EvalResult r = ev.evaluate(s.g, {});
+  ASSERT_TRUE(r.ok());
+  const NodeStats* c2 = r.stats.find(NodePath{s.c2});
+  ASSERT_TRUE(c2);
+  ASSERT_EQ(c2->params.size(), 1u);
+  EXPECT_DOUBLE_EQ(c2->params[0].get<double>(), 8);
+  const NodeStats* c1 = r.stats.find(NodePath{s.c1});
+  ASSERT_TRUE(c1);
+  EXPECT_TRUE(c1->params.empty()) << "its own values";
+  // A cache hit too: the values are known before anything runs.
+  const EvalResult again = ev.evaluate(s.g, {});
+  ASSERT_TRUE(again.stats.find(NodePath{s.c2}));
+  EXPECT_DOUBLE_EQ(again.stats.find(NodePath{s.c2})->params[0].get<double>(), 8);
+}
+
+// Each change is one undo step, and undo brings back what the parameter held:
+// a value, or another expression. A refusal records nothing.
+TEST(ExpressionParam, UndoBringsBackTheValueOrTheExpressionBefore) {
+  Shared s = shared_width();
+  const std::string start = to_pxg(s.g);
+  UndoStack stack(s.g);
+  ASSERT_TRUE(stack.set_expression(s.c1, "value", "levels * 2"));  // a value before
+  ASSERT_TRUE(stack.set_expression(s.c2, "value", "width * 3"));   // an expression before
+  ASSERT_TRUE(stack.set_param(s.c3, "value", Value::make(1.0)));   // a value over an expression
+  EXPECT_TRUE(s.g.node(s.c1)->expressions.count(0));
+  EXPECT_FALSE(s.g.node(s.c3)->expressions.count(0));
+  EXPECT_FALSE(stack.set_expression(s.c2, "value", "width +"));
+  EXPECT_EQ(s.g.node(s.c2)->expressions.at(0)->text(), "width * 3");
+  int undone = 0;
+  while (stack.undo()) ++undone;
+  EXPECT_EQ(undone, 3);
+  EXPECT_EQ(to_pxg(s.g), start);
+}
+
+// The text an editor starts an expression from gives the value back.
+TEST(ExpressionParam, LiteralsReadBackAsTheirValues) {
+  for (const ExprValue& v : {ExprValue(4.5), ExprValue(-0.1), ExprValue(1e20), ExprValue(1.0 / 3), ExprValue(true), ExprValue(false),
+                             ExprValue(std::string("a \"b\" \\ 'c'"))}) {
+    const std::string text = expression_literal(v);
+    auto e = Expression::parse(text);
+    ASSERT_TRUE(e) << text << ": " << e.message();
+    EXPECT_EQ((*e)->evaluate({}), v) << text;
   }
 }
 

@@ -85,6 +85,29 @@ TEST(Document, GestureIsOneUndoStep) {
   EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 1.0);  // the default
 }
 
+// The inspector's expression edits: each one undo step; the same value set
+// over an expression replaces it (the inspector's "Use value"); a refusal
+// changes nothing, not even the revision.
+TEST(Document, ExpressionsAndBackToAValueAreOneUndoStepEach) {
+  Small s;
+  const std::string before = to_pxg(s.doc.graph());
+  const double value = s.doc.graph().node(s.c1)->params[0].get<double>();
+  ASSERT_TRUE(s.doc.set_expression(s.c1, 0, "2 + 3"));
+  EXPECT_TRUE(s.doc.graph().node(s.c1)->expressions.count(0));
+  const std::uint64_t rev = s.doc.revision();
+  EXPECT_FALSE(s.doc.set_expression(s.c1, 0, "2 +"));
+  EXPECT_FALSE(s.doc.set_expression(s.c1, 0, "true"));  // a bool for a float
+  EXPECT_EQ(s.doc.revision(), rev);
+  ASSERT_TRUE(s.doc.set_expression(s.c1, 0, "2 + 3"));  // the same text: no step
+  EXPECT_EQ(s.doc.revision(), rev);
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(value)));
+  EXPECT_FALSE(s.doc.graph().node(s.c1)->expressions.count(0));
+  ASSERT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.graph().node(s.c1)->expressions.at(0)->text(), "2 + 3");
+  ASSERT_TRUE(s.doc.undo());
+  EXPECT_EQ(to_pxg(s.doc.graph()), before);
+}
+
 TEST(Document, MoveOfSelectionIsOneStepAndChangesNoValue) {
   Small s;
   s.doc.select({s.c1, s.c2}, false);

@@ -129,8 +129,19 @@ Status Document::set_param(NodeId id, std::size_t param, Value v) {
   const Node* n = graph_.node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
   if (param >= n->decl().params().size()) return Status::error("node " + std::to_string(id) + " has no parameter " + std::to_string(param));
-  if (n->params[param].same_content(v)) return Status::ok();  // keeps drags that end where they began out of the history
+  // Keeps drags that end where they began out of the history; the same value over an expression replaces it.
+  if (n->params[param].same_content(v) && !n->expressions.count(static_cast<std::uint32_t>(param))) return Status::ok();
   return changed(stack_.set_param(id, n->decl().params()[param].name, std::move(v)));
+}
+
+Status Document::set_expression(NodeId id, std::size_t param, std::string_view text) {
+  const Node* n = graph_.node(id);
+  if (!n) return Status::error("no node " + std::to_string(id));
+  if (param >= n->decl().params().size()) return Status::error("node " + std::to_string(id) + " has no parameter " + std::to_string(param));
+  const auto now = n->expressions.find(static_cast<std::uint32_t>(param));
+  if (now != n->expressions.end() && now->second->text() == text) return Status::ok();
+  end_gesture();
+  return changed(stack_.set_expression(id, n->decl().params()[param].name, text));
 }
 
 Status Document::set_port_count(NodeId id, std::size_t param, std::size_t count) {

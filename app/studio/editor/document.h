@@ -55,7 +55,11 @@ class Document {
   Result<NodeId> add_node_wired(std::string_view name, bool group, double x, double y, NodeId from);
   Status connect(PortRef from, PortRef to);
   Status disconnect(PortRef to);
+  // A value replaces the parameter's expression, if it has one.
   Status set_param(NodeId id, std::size_t param, Value v);
+  // Gives the parameter an expression (docs/expressions.md); a refusal names
+  // the node, the parameter and the column, and changes nothing.
+  Status set_expression(NodeId id, std::size_t param, std::string_view text);
   // Variadic ports: sets the count asked for by port-count parameter `param`
   // (an int to `count`; a list of strings cut at the end, or padded with empty
   // entries). Refused, naming the port, when a connected port would go.

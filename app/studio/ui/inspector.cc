@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "graph/expression_value.h"
+
 namespace procex::studio {
 
 namespace {
@@ -26,6 +28,24 @@ std::string json_text(const Value& v) {
   v.type()->to_json(v.raw(), j);
   return j.dump();
 }
+
+// The value as the inspector writes it: "4.500 m", "true", "gable".
+std::string shown_value(const Value& v, const ParamDecl& p) {
+  if (v.empty()) return "?";
+  std::string text;
+  if (v.is<double>()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v.get<double>());
+    text = buf;
+  } else if (v.is<EnumValue>()) {
+    text = v.get<EnumValue>().choice;
+  } else {
+    text = json_text(v);
+  }
+  return p.unit.empty() ? text : text + " " + p.unit;
+}
+
+std::string key_of(NodeId id, const ParamDecl& p) { return std::to_string(id) + "." + p.name; }
 
 }  // namespace
 
@@ -52,7 +72,7 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
   // Text is edited in a buffer and committed when the field loses focus.
   auto edit_text = [&](std::size_t i, const std::string& current, bool multiline, auto parse) {
     const ParamDecl& p = decl.params()[i];
-    const std::string key = std::to_string(id) + "." + p.name;
+    const std::string key = key_of(id, p);
     std::string& text = editing_.try_emplace(key, current).first->second;
     if (multiline) ImGui::InputTextMultiline(p.name.c_str(), &text, ImVec2(-80, ImGui::GetTextLineHeight() * 3));
     else ImGui::InputText(p.name.c_str(), &text);
@@ -91,7 +111,14 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
         continue;
       }
     }
-    if (!p.choices.empty()) {
+    const auto held = n.expressions.find(static_cast<std::uint32_t>(i));
+    const bool has_expression = held != n.expressions.end();
+    // An edit begun on what the recipe no longer holds (undone, redone, set back to a value) is dropped.
+    if (auto e = expressions_.find(key_of(id, p)); e != expressions_.end() && e->second.held != (has_expression ? held->second->text() : ""))
+      expressions_.erase(e);
+    if (has_expression || expressions_.count(key_of(id, p))) {
+      expression_field(doc, eval, id, i, status);
+    } else if (!p.choices.empty()) {
       const std::string& cur = v.get<EnumValue>().choice;
       if (ImGui::BeginCombo(label, cur.c_str())) {
         for (const std::string& c : p.choices)
@@ -164,8 +191,21 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
         if (expose_.numeric && !p.min && !p.max) expose_.max = expose_.min = expose_.value;
       }
       record("expose_menu");
+      if (has_expression) {
+        // Back to a value: the one the expression gave in the last evaluation, so the result stays as it is.
+        const NodeStats* s = eval ? eval->result.stats.find(NodePath{id}) : nullptr;
+        if (ImGui::MenuItem("Use value")) apply(i, s && i < s->params.size() ? s->params[i] : v);
+        record("value_menu");
+      } else if (expression_type(*p.type) && !p.sets_port_count && !expressions_.count(key_of(id, p))) {
+        if (ImGui::MenuItem("Expression...")) {
+          const std::string literal = expression_literal(to_expr_value(v));
+          expressions_[key_of(id, p)] = {literal, "", literal, "", true};
+        }
+        record("expression_menu");
+      }
       ImGui::EndPopup();
     }
+    expression_error(id, p);
     ImGui::PopID();
   }
   expose_dialog(doc, status);
@@ -181,6 +221,61 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
     ImGui::TextWrapped("%s", d.to_string().c_str());
     ImGui::PopStyleColor();
   }
+}
+
+void Inspector::expression_field(Document& doc, const EvalSnapshot* eval, NodeId id, std::size_t i, std::string& status) {
+  const Node& n = *doc.graph().node(id);
+  const ParamDecl& p = n.decl().params()[i];
+  const std::string key = key_of(id, p);
+  const auto held_it = n.expressions.find(static_cast<std::uint32_t>(i));
+  const std::string held = held_it == n.expressions.end() ? "" : held_it->second->text();
+  auto found = expressions_.find(key);
+  ExpressionEdit& edit = found != expressions_.end() ? found->second : expressions_[key];
+  if (found == expressions_.end()) edit = {held, held, held, "", false};
+  // The value beside the text: what the expression gave in the last evaluation of this node.
+  std::string label = p.name;
+  if (!held.empty()) {
+    const NodeStats* s = eval ? eval->result.stats.find(NodePath{id}) : nullptr;
+    label += s && i < s->params.size() ? " = " + shown_value(s->params[i], p) : " = (not evaluated)";
+  } else {
+    label += " (new expression)";
+  }
+  label += "###expression";
+  if (edit.focus) {
+    ImGui::SetKeyboardFocusHere();
+    edit.focus = false;
+  }
+  ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.30f, 0.20f, 0.45f, 1.0f));
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+  ImGui::InputText(label.c_str(), &edit.text, ImGuiInputTextFlags_AutoSelectAll);
+  ImGui::PopStyleColor();
+  record(p.name + ".expression");
+  const bool active = ImGui::IsItemActive();
+  if (ImGui::IsItemDeactivated()) {
+    // Escape leaves the recipe as it is: the field shows its expression again, or its value widget.
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)) || (held.empty() && edit.text == edit.initial)) {
+      expressions_.erase(key);
+      return;
+    }
+    if (Status s = doc.set_expression(id, i, edit.text); !s) {
+      edit.error = s.message();
+      status = s.message();
+      return;
+    }
+    expressions_.erase(key);
+    return;
+  }
+  if (edit.error.empty() && !active && !held.empty() && !edit.focus)
+    expressions_.erase(key);  // nothing being edited: the next frame shows the recipe's text again
+}
+
+void Inspector::expression_error(NodeId id, const ParamDecl& p) {
+  auto e = expressions_.find(key_of(id, p));
+  if (e == expressions_.end() || e->second.error.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
+  ImGui::TextWrapped("%s", e->second.error.c_str());
+  ImGui::PopStyleColor();
+  record(p.name + ".error");
 }
 
 void Inspector::record(const std::string& name) {

@@ -5,7 +5,10 @@
 // (Merge inputs, Switch cases) gets - and + buttons. Also shows the node's documentation,
 // its diagnostics and its last evaluation outcome. Right click on a parameter
 // exposes it on the recipe's interface (name, label, range, default, unit) or
-// unexposes it.
+// unexposes it, and turns it into an expression (docs/expressions.md) or back
+// into a value. An expression shows as its text in a tinted field with the
+// value it gave in the last evaluation beside it; a refused one stays in the
+// field with the reason under it, and the recipe keeps what it had.
 #pragma once
 
 #include <array>
@@ -29,6 +32,17 @@ class Inspector {
   std::map<std::string, std::string> editing_;
   std::map<std::string, std::array<float, 4>> widgets_;
   void record(const std::string& name);  // the last item's rectangle into widgets_
+  void expression_field(Document& doc, const EvalSnapshot* eval, NodeId id, std::size_t param, std::string& status);
+  void expression_error(NodeId id, const ParamDecl& p);  // under the field, when the last edit was refused
+  // Expression fields being edited, refused, or asked for but not yet set, by "node.param".
+  struct ExpressionEdit {
+    std::string text;
+    std::string held;      // the node's expression when the edit began ("" for none): undo or redo drop the edit
+    std::string initial;   // the text the field opened with
+    std::string error;     // the last refusal, shown under the field
+    bool focus = false;    // take the keyboard in the next frame
+  };
+  std::map<std::string, ExpressionEdit> expressions_;
   void expose_dialog(Document& doc, std::string& status);
   // The Expose dialog's fields, while it is open.
   struct Expose {

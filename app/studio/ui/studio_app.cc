@@ -558,6 +558,8 @@ class App {
     const PreviewMesh* shown_mesh = shown_ && shown_->preview ? shown_->preview.get() : nullptr;
     j["preview_anchors"] = shown_mesh ? shown_mesh->anchors.size() - shown_mesh->absent_anchors() : 0;  // present ones, with markers
     j["preview_instances"] = shown_mesh ? shown_mesh->instances : 0;
+    if (shown_mesh && !shown_mesh->empty())
+      j["preview_bounds"] = {shown_mesh->min.x, shown_mesh->min.y, shown_mesh->min.z, shown_mesh->max.x, shown_mesh->max.y, shown_mesh->max.z};
     j["preview"] = {preview_->image_x, preview_->image_y, preview_->image_w, preview_->image_h};
     std::size_t errors = 0;
     if (shown_)

@@ -1,0 +1,200 @@
+#include "tests/studio/interaction/studio_driver.h"
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <thread>
+
+extern char** environ;
+
+namespace procex::studio::driver {
+
+using namespace std::chrono_literals;
+
+Studio::Studio(const fs::path& recipe, const fs::path& dir, std::vector<std::string> extra) : map_(dir / "ui_map.json") {
+  setenv("PROCEX_STUDIO_HOME", (dir / "home").c_str(), 1);
+  fs::remove(map_);
+  std::vector<std::string> args = {PROCEX_STUDIO_EXE, recipe.string(), "--ui-map", map_.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  EXPECT_EQ(posix_spawn(&pid_, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+}
+
+Studio::~Studio() {
+  if (pid_ > 0) {
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+  }
+}
+
+json Studio::wait(const std::string& what, const std::function<bool(const json&)>& ready, std::chrono::seconds timeout, bool required) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  json last;
+  while (std::chrono::steady_clock::now() < end) {
+    std::ifstream in(map_);
+    json j = json::parse(in, nullptr, false);
+    if (!j.is_discarded()) {
+      last = j;
+      if (ready(j)) return j;
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  if (required) ADD_FAILURE() << "timed out waiting for: " << what << "\nlast ui map: " << last.dump().substr(0, 2000);
+  return last;
+}
+
+int Studio::wait_exit(std::chrono::seconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  return -1;
+}
+
+void xdo(const std::string& args) {
+  const std::string cmd = "xdotool " + args;
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+}
+
+void press(const std::string& keys) {
+  std::string down, up;
+  for (std::size_t start = 0; start <= keys.size();) {
+    const std::size_t plus = std::min(keys.find('+', start), keys.size());
+    const std::string k = keys.substr(start, plus - start);
+    down += " keydown " + k;
+    up = " keyup " + k + up;
+    start = plus + 1;
+  }
+  xdo(down.substr(1) + " sleep 0.15" + up + " sleep 0.1");
+}
+
+std::pair<int, int> pin(const json& map, std::uint64_t node, int port, bool output) {
+  for (const json& p : map["pins"])
+    if (p["node"] == node && p["port"] == port && p["output"] == output)
+      return {map["window"][0].get<int>() + static_cast<int>(p["x"].get<double>()), map["window"][1].get<int>() + static_cast<int>(p["y"].get<double>())};
+  ADD_FAILURE() << "no pin " << node << "." << port << (output ? " out" : " in") << " on screen";
+  return {0, 0};
+}
+
+std::pair<int, int> widget_centre(const json& map, const std::string& param) {
+  const json& r = map["params"][param];
+  return {map["window"][0].get<int>() + static_cast<int>(r[0].get<double>() + r[2].get<double>() / 2),
+          map["window"][1].get<int>() + static_cast<int>(r[1].get<double>() + r[3].get<double>() / 2)};
+}
+
+void drag(std::pair<int, int> from, std::pair<int, int> to) {
+  const std::string a = std::to_string(from.first) + " " + std::to_string(from.second);
+  const std::string mid = std::to_string((from.first + to.first) / 2) + " " + std::to_string((from.second + to.second) / 2 + 20);
+  const std::string b = std::to_string(to.first) + " " + std::to_string(to.second);
+  xdo("sleep 0.3 mousemove " + a + " sleep 0.3 mousedown 1 sleep 0.2 mousemove " + mid + " sleep 0.2 mousemove " + b + " sleep 0.2 mouseup 1 sleep 0.2");
+}
+
+void type_into_slider(std::pair<int, int> at, const std::string& value) {
+  xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) +
+      " sleep 0.2 keydown ctrl sleep 0.15 click 1 sleep 0.15 keyup ctrl sleep 0.3");
+  press("ctrl+a");
+  xdo("type " + value);
+  press("Return");
+}
+
+std::pair<int, int> button_centre(const json& map, const std::string& name) {
+  const json& r = map["buttons"][name];
+  return {map["window"][0].get<int>() + static_cast<int>(r[0].get<double>() + r[2].get<double>() / 2),
+          map["window"][1].get<int>() + static_cast<int>(r[1].get<double>() + r[3].get<double>() / 2)};
+}
+
+void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) + " sleep 0.3 click 1 sleep 0.2"); }
+
+std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
+
+json click_until(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at,
+                 const std::string& what, const std::function<bool(const json&)>& done) {
+  const std::uint64_t rev = revision(map);
+  const auto changed = [&](const json& j) { return revision(j) > rev; };
+  json now = map;
+  for (int attempt = 0; attempt < 4 && !changed(now); ++attempt) {
+    click(at(now));
+    now = studio.wait(what + " (any change)", changed, 8s, attempt == 3);
+  }
+  return studio.wait(what, [&](const json& j) { return changed(j) && done(j); });
+}
+
+long Screen::count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const {
+  const long x0 = origin.first + static_cast<long>(r[0].get<double>()), y0 = origin.second + static_cast<long>(r[1].get<double>());
+  const long x1 = x0 + static_cast<long>(r[2].get<double>()), y1 = y0 + static_cast<long>(r[3].get<double>());
+  long n = 0;
+  for (long y = std::max(0L, y0); y < std::min(h, y1); ++y)
+    for (long x = std::max(0L, x0); x < std::min(w, x1); ++x) {
+      const std::size_t i = at + static_cast<std::size_t>((y * w + x) * 3);
+      if (i + 2 >= ppm.size()) break;
+      n += is(static_cast<unsigned char>(ppm[i]), static_cast<unsigned char>(ppm[i + 1]), static_cast<unsigned char>(ppm[i + 2]));
+    }
+  return n;
+}
+
+Screen capture_screen() {
+  Screen s;
+  FILE* pipe = popen("xwd -root -silent | xwdtopnm 2>/dev/null", "r");
+  if (!pipe) {
+    ADD_FAILURE() << "cannot run xwd";
+    return s;
+  }
+  char buf[65536];
+  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) s.ppm.append(buf, n);
+  pclose(pipe);
+  // P6 <width> <height> <maxval>, whitespace-separated, then RGB bytes.
+  std::vector<long> header;
+  while (header.size() < 4 && s.at < s.ppm.size()) {
+    while (s.at < s.ppm.size() && std::isspace(static_cast<unsigned char>(s.ppm[s.at]))) ++s.at;
+    const std::size_t start = s.at;
+    while (s.at < s.ppm.size() && !std::isspace(static_cast<unsigned char>(s.ppm[s.at]))) ++s.at;
+    const std::string token = s.ppm.substr(start, s.at - start);
+    header.push_back(header.empty() ? (token == "P6" ? 6 : -1) : std::atol(token.c_str()));
+  }
+  ++s.at;
+  if (header.size() < 4 || header[0] != 6 || header[3] != 255) {
+    ADD_FAILURE() << "xwd | xwdtopnm gave no 8-bit P6 image";
+    return {};
+  }
+  s.w = header[1];
+  s.h = header[2];
+  return s;
+}
+
+std::pair<long, long> window_origin(const json& map) { return {map["window"][0].get<long>(), map["window"][1].get<long>()}; }
+
+void save_and_quit(Studio& studio) {
+  press("ctrl+s");
+  studio.wait("saved", [](const json& j) { return !j["dirty"].get<bool>(); });
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_studio_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path copy_test_recipe(const std::string& name, const fs::path& dir) {
+  const fs::path recipe = dir / name;
+  fs::copy_file(fs::path(PROCEX_TEST_DATA) / name, recipe);
+  return recipe;
+}
+
+}  // namespace procex::studio::driver

@@ -1,0 +1,84 @@
+// studio_driver.h -- drives a real procex-studio window under Xvfb, for the
+// window tests: the studio started on a recipe with --ui-map, real X input
+// through xdotool, and the screen read back with xwd.
+//
+// The studio's --ui-map file says where pins and widgets are on screen, and
+// how far the studio has got (revision, settled, dirty); tests wait on it
+// rather than on time, so a loaded machine makes them slower, not flaky.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace procex::studio::driver {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// A studio process on `recipe`, its home and ui map in `dir`; killed when destroyed.
+class Studio {
+ public:
+  Studio(const fs::path& recipe, const fs::path& dir, std::vector<std::string> extra = {"--autosave", "0"});
+  ~Studio();
+  Studio(const Studio&) = delete;
+  Studio& operator=(const Studio&) = delete;
+  // The newest map that satisfies `ready`; fails the test after a timeout (unless not `required`:
+  // then the last map, for a gesture to try again).
+  json wait(const std::string& what, const std::function<bool(const json&)>& ready, std::chrono::seconds timeout = std::chrono::seconds(30),
+            bool required = true);
+  // Exit code, or -1 when it did not exit in time.
+  int wait_exit(std::chrono::seconds timeout);
+
+ private:
+  fs::path map_;
+  pid_t pid_ = -1;
+};
+
+void xdo(const std::string& args);
+// Holds the keys for a moment: ImGui 1.86 polls key state once per frame, so
+// a press and release between two frames would go unseen (people hold keys longer).
+void press(const std::string& keys);
+// Screen position of a pin, from the map.
+std::pair<int, int> pin(const json& map, std::uint64_t node, int port, bool output);
+// Screen centre of an inspector widget (map "params") or another widget (map "buttons").
+std::pair<int, int> widget_centre(const json& map, const std::string& param);
+std::pair<int, int> button_centre(const json& map, const std::string& name);
+void drag(std::pair<int, int> from, std::pair<int, int> to);
+// Ctrl+click turns an ImGui slider into a text field; type the value and Enter.
+void type_into_slider(std::pair<int, int> at, const std::string& value);
+void click(std::pair<int, int> at);
+std::uint64_t revision(const json& j);
+// Clicks `at` (a widget on `map`, the studio's newest map) and waits until
+// `done`. A click that a loaded machine lost between two frames changes
+// nothing (the revision stays), so it is given again; one that changed the
+// recipe is never repeated.
+json click_until(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+                 const std::function<bool(const json&)>& done);
+
+// The screen now (xwd | xwdtopnm), so a test sees what a person would.
+struct Screen {
+  long w = 0, h = 0;
+  std::string ppm;
+  std::size_t at = 0;  // the first RGB byte
+  // Pixels of window rectangle [x, y, w, h] (window `origin` on screen) whose colour passes `is`.
+  long count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const;
+};
+Screen capture_screen();
+std::pair<long, long> window_origin(const json& map);
+
+// Ctrl+S, then Ctrl+Q: saved, and a clean exit.
+void save_and_quit(Studio& studio);
+// An empty folder for one test's files (removed by the test when it passes).
+fs::path fresh_dir(const std::string& name);
+// A copy of one of tests/studio/data's recipes in `dir`, to edit and save.
+fs::path copy_test_recipe(const std::string& name, const fs::path& dir);
+
+}  // namespace procex::studio::driver
