@@ -14,28 +14,17 @@ namespace {
 
 // Collinear neighbouring edges with different slopes are the ambiguous case
 // (paper 4.5) from the start: the whole run takes the slope the volume rule
-// picks, so each edge keeps its own (coplanar) face. A corner is straight when
-// it lies within the clustering distance of its neighbours' line (the sine of
-// its turn times the shorter edge): a plan drawn straight keeps that rule
-// wherever it is, though far from the origin its coordinates' rounding turns
-// it by far more than a fixed sine.
+// picks, so each edge keeps its own (coplanar) face.
 void unify_collinear_slopes(const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,
                             std::vector<double>& slopes, Ambiguity rule, double position) {
   const std::size_t n = dirs.size();
-  auto straight = [&](std::size_t j) {  // the corner at the start of edge j
-    const glm::dvec2 a = dirs[(j + n - 1) % n], b = dirs[j];
-    const double shorter = std::min(glm::distance(points[(j + n - 1) % n], points[j]),
-                                    glm::distance(points[j], points[(j + 1) % n]));
-    return glm::dot(a, b) > 0.0 &&
-           (std::abs(cross(a, b)) <= Tolerances::parallel_sin || std::abs(cross(a, b)) * shorter <= position);
-  };
   std::size_t start = 0;
-  while (start < n && straight(start)) ++start;
+  while (start < n && runs_straight(points, dirs, start, position)) ++start;
   if (start == n) return;  // no corner at all: not a polygon, refused elsewhere
   for (std::size_t i = 0; i < n;) {
     const std::size_t first = (start + i) % n;
     std::size_t len = 1;
-    while (i + len < n && straight((first + len) % n)) ++len;
+    while (i + len < n && runs_straight(points, dirs, (first + len) % n, position)) ++len;
     double pick = slopes[first];
     for (std::size_t m = 0; m < len; ++m) {
       const double k = slopes[(first + m) % n];
@@ -47,6 +36,33 @@ void unify_collinear_slopes(const std::vector<glm::dvec2>& points, const std::ve
 }
 
 }  // namespace
+
+// A corner is straight when it lies within the clustering distance of its
+// neighbours' line (the sine of its turn times the shorter edge): a plan drawn
+// straight keeps that rule wherever it is, though far from the origin its
+// coordinates' rounding turns it by far more than a fixed sine.
+bool runs_straight(const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs, std::size_t j,
+                   double position) {
+  const std::size_t n = dirs.size();
+  const glm::dvec2 a = dirs[(j + n - 1) % n], b = dirs[j];
+  const double shorter = std::min(glm::distance(points[(j + n - 1) % n], points[j]),
+                                  glm::distance(points[j], points[(j + 1) % n]));
+  return glm::dot(a, b) > 0.0 &&
+         (std::abs(cross(a, b)) <= Tolerances::parallel_sin || std::abs(cross(a, b)) * shorter <= position);
+}
+
+std::vector<glm::dvec2> edge_directions(const std::vector<glm::dvec2>& points, int loop) {
+  const std::size_t n = points.size();
+  if (n < 3) throw InputError("loop needs at least 3 vertices and one edge spec per vertex", loop);
+  std::vector<glm::dvec2> dirs(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const glm::dvec2 d = points[(j + 1) % n] - points[j];
+    const double len = glm::length(d);
+    if (!(len > 0.0)) throw InputError("zero-length edge", loop, static_cast<int>(j));
+    dirs[j] = d / len;
+  }
+  return dirs;
+}
 
 double slope_of(double angle_deg) {
   if (!(angle_deg >= -90.0 && angle_deg <= 90.0)) throw InputError("edge angle outside [-90, 90] degrees");
@@ -73,19 +89,17 @@ FirstPlane add_source(State& st, const std::vector<Profile>& profiles, const Edg
 
 void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<double> slopes,
                const std::vector<std::string>& tags, int first_source, int loop) {
+  const std::vector<glm::dvec2> dirs = edge_directions(points, loop);
+  unify_collinear_slopes(points, dirs, slopes, st.options().ambiguity, st.tol().position());
+  load_edges(st, points, dirs, slopes, tags, first_source);
+}
+
+void load_edges(State& st, const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,
+                const std::vector<double>& slopes, const std::vector<std::string>& tags, int first_source) {
   const std::size_t n = points.size();
-  if (n < 3) throw InputError("loop needs at least 3 vertices and one edge spec per vertex", loop);
   const auto v0 = static_cast<std::uint32_t>(st.vertices.size());
   for (glm::dvec2 p : points) st.add_vertex({p, st.height});
   const int e0 = static_cast<int>(st.edges.size());
-  std::vector<glm::dvec2> dirs(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const glm::dvec2 d = points[(j + 1) % n] - points[j];
-    const double len = glm::length(d);
-    if (!(len > 0.0)) throw InputError("zero-length edge", loop, static_cast<int>(j));
-    dirs[j] = d / len;
-  }
-  unify_collinear_slopes(points, dirs, slopes, st.options().ambiguity, st.tol().position());
   for (std::size_t j = 0; j < n; ++j) {
     Source& src = st.sources[static_cast<std::size_t>(first_source) + j];
     src.start = points[j];

@@ -27,12 +27,27 @@ struct FirstPlane {
 // valid and rises first) and returns its first plane.
 FirstPlane add_source(State& st, const std::vector<Profile>& profiles, const EdgeSpec& spec, double base);
 
+// Whether the corner at the start of edge j (of the loop through `points`,
+// edges along unit `dirs`) runs straight on: its neighbours point the same way
+// and it lies within `position` of their line.
+bool runs_straight(const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs, std::size_t j,
+                   double position);
+
+// The unit direction of each edge of the loop through `points`. Throws
+// InputError for fewer than 3 points or a zero-length edge (`loop` names it).
+std::vector<glm::dvec2> edge_directions(const std::vector<glm::dvec2>& points, int loop);
+
 // Adds one closed loop: edge j runs from points[j] to points[j + 1] with
 // slope slopes[j] and face tag tags[j], and belongs to source first_source + j
 // (already in st.sources). Collinear neighbours with different slopes take the
 // one the ambiguity rule picks. `loop` names the loop in errors.
 void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<double> slopes,
                const std::vector<std::string>& tags, int first_source, int loop);
+
+// Adds one closed loop as given: edge j runs from points[j] along dirs[j]
+// (which a zero-length edge needs) with slope slopes[j]; nothing is unified.
+void load_edges(State& st, const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,
+                const std::vector<double>& slopes, const std::vector<std::string>& tags, int first_source);
 
 // Queues every live corner's potential events.
 void schedule_all(State& st, EventQueue& queue);

@@ -34,17 +34,82 @@ std::vector<std::vector<int>> live_loops(const State& st) {
   return loops;
 }
 
+// Where straight-on neighbours step by different amounts, the nested sweep
+// puts a joint between them: an edge of no length at their shared vertex,
+// across their line, that does not step. Rising, it stays put while they move
+// apart, and its top is the jog between their new lines. Without it the two
+// would be one ambiguous run (paper 4.5) taking one step, or, nearly straight,
+// a corner racing along their line, and the jog would be lost or a sliver.
+struct Joint {
+  int prev = kNone, next = kNone;   // the nested sources it joins
+  glm::dvec2 point{0.0}, dir{0.0};  // its line (dir: from prev's new line to next's)
+};
+
 // The nested sweep of the cross-section and how its parts map back.
 struct Nested {
   State st;
-  std::vector<int> span_edge;                // nested source j -> the outer edge it offsets
-  std::vector<std::uint32_t> base_vertex;    // nested vertex i < size -> outer vertex
-  std::vector<std::uint32_t> top;            // nested corner -> its vertex at the top
-  double reach = 0.0;                        // the nested sweep's height: the largest step
+  std::vector<int> span_edge;              // nested source j -> the outer edge it offsets (kNone: a joint)
+  std::map<int, Joint> joints;             // nested source -> the joint it is
+  std::vector<std::uint32_t> base_vertex;  // nested vertex i < size -> outer vertex
+  std::vector<std::uint32_t> top;          // nested corner -> its vertex at the top
+  double reach = 0.0;                      // the nested sweep's height: the largest step
 
   // Nested source j's slope: its step over the reach (0: the edge does not step).
   double slope(int j) const { return st.edges[st.sources[j].edge].plane.k; }
 };
+
+// Loads one loop of the cross-section into the nested sweep, a joint at each
+// straight corner whose edges step differently. Steps closer than the
+// clustering distance are one step: the jog between them would be no wider.
+void load_nested_loop(Nested& n, const State& st, const std::vector<int>& loop, const std::vector<std::uint32_t>& at,
+                      const std::map<int, SourceStep>& steps, int li) {
+  std::vector<glm::dvec2> points;
+  std::vector<double> slopes;
+  for (int c : loop) {
+    const auto step = steps.find(st.edges[st.corners[c].next_edge].source);
+    points.emplace_back(st.vertices[at[c]]);
+    // Rising `reach`, an edge with slope step / reach moves inward by its step.
+    slopes.push_back(step == steps.end() ? 0.0 : step->second.inward / n.reach);
+  }
+  const std::vector<glm::dvec2> dirs = edge_directions(points, li);
+  const double near = st.tol().position();
+  const std::size_t m = loop.size();
+  std::vector<glm::dvec2> all_points, all_dirs;
+  std::vector<double> all_slopes;
+  const int s0 = static_cast<int>(n.st.sources.size());
+  auto add = [&](glm::dvec2 p, glm::dvec2 d, double k, int edge, std::uint32_t v) {
+    all_points.push_back(p);
+    all_dirs.push_back(d);
+    all_slopes.push_back(k);
+    Source src;
+    src.id = static_cast<std::int32_t>(n.span_edge.size());
+    n.st.sources.push_back(src);
+    n.span_edge.push_back(edge);
+    n.base_vertex.push_back(v);
+  };
+  auto differ = [&](std::size_t a, std::size_t b) { return std::abs(slopes[a] - slopes[b]) * n.reach > near; };
+  // Entered at a corner that is not straight, each run of straight corners is seen in order.
+  std::size_t start = 0;
+  while (start < m && runs_straight(points, dirs, start, near)) ++start;
+  if (start == m) throw SweepError("sweep: a loop of the cross-section has no corner", st.height, {});
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = (start + i) % m, before = (j + m - 1) % m;
+    const int c = loop[j];
+    if (i > 0 && runs_straight(points, dirs, j, near)) {
+      if (!differ(j, before)) {
+        slopes[j] = slopes[before];
+      } else {
+        const glm::dvec2 across =
+            glm::normalize(glm::dvec2(-dirs[before].y, dirs[before].x) + glm::dvec2(-dirs[j].y, dirs[j].x));
+        const int joint = s0 + static_cast<int>(all_points.size());
+        n.joints[joint] = {joint - 1, joint + 1, points[j], slopes[j] > slopes[before] ? across : -across};
+        add(points[j], n.joints[joint].dir, 0.0, kNone, at[c]);
+      }
+    }
+    add(points[j], dirs[j], slopes[j], st.corners[c].next_edge, at[c]);
+  }
+  load_edges(n.st, all_points, all_dirs, all_slopes, std::vector<std::string>(all_points.size()), s0);
+}
 
 void sweep_nested(Nested& n, State& st, const std::vector<std::vector<int>>& loops,
                   const std::vector<std::uint32_t>& at, const std::map<int, SourceStep>& steps) {
@@ -53,30 +118,25 @@ void sweep_nested(Nested& n, State& st, const std::vector<std::vector<int>>& loo
   n.st.base_face = 0;
   n.st.faces.push_back(base);
   for (std::size_t li = 0; li < loops.size(); ++li) {
-    std::vector<glm::dvec2> points;
-    std::vector<double> slopes;
-    const int s0 = static_cast<int>(n.st.sources.size());
-    for (int c : loops[li]) {
-      const int e = st.corners[c].next_edge;
-      const auto step = steps.find(st.edges[e].source);
-      points.emplace_back(st.vertices[at[c]]);
-      // Rising `reach`, an edge with slope step / reach moves inward by its step.
-      slopes.push_back(step == steps.end() ? 0.0 : step->second.inward / n.reach);
-      Source src;
-      src.id = static_cast<std::int32_t>(n.span_edge.size());
-      n.st.sources.push_back(src);
-      n.span_edge.push_back(e);
-      n.base_vertex.push_back(at[c]);
-    }
     try {
-      load_loop(n.st, points, std::move(slopes), std::vector<std::string>(points.size()), s0, static_cast<int>(li));
+      load_nested_loop(n, st, loops[li], at, steps, static_cast<int>(li));
     } catch (const InputError&) {
       throw SweepError("sweep: corners coincide where profiles step sideways at height " + std::to_string(st.height),
                        st.height, {});
     }
   }
+  // A corner at a joint starts on the line of the edge across the joint, and
+  // leaves it rising: it does not run into that edge where it starts.
   EventQueue queue;
-  schedule_all(n.st, queue);
+  for (int c = 0; c < static_cast<int>(n.st.corners.size()); ++c) {
+    const Corner& k = n.st.corners[c];
+    std::vector<int> resolved;
+    if (auto j = n.joints.find(n.st.edges[k.prev_edge].source); j != n.joints.end())
+      resolved.push_back(n.st.sources[j->second.prev].edge);
+    if (auto j = n.joints.find(n.st.edges[k.next_edge].source); j != n.joints.end())
+      resolved.push_back(n.st.sources[j->second.next].edge);
+    queue.schedule(n.st, c, resolved);
+  }
   ProfileEvents none;
   run_events(n.st, queue, none);
   n.st.height = n.reach;
@@ -101,6 +161,7 @@ std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z
   for (const FaceGroup& f : n.st.faces) {
     if (f.kind != FaceKind::Side || n.slope(f.source_edge) != 0.0) continue;
     const int e = n.span_edge[f.source_edge];
+    if (e == kNone) continue;  // a joint's vertices are its neighbours'
     for (const HalfEdge& h : f.half_edges)
       for (std::uint32_t v : {h.from, h.to}) line[v] = line[v] == kNone || line[v] == e ? e : kMany;
   }
@@ -310,7 +371,8 @@ std::vector<SectionLoop> new_cross_section(const AtHeight& h, const std::vector<
 
 }  // namespace
 
-void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps) {
+void apply_horizontal_run(State& st, EventQueue& queue, ProfileEvents& profile_events,
+                          const std::map<int, SourceStep>& steps) {
   const double z = st.height;
   const std::vector<std::vector<int>> loops = live_loops(st);
   std::vector<std::uint32_t> at(st.corners.size(), 0);
@@ -320,7 +382,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
   SweepOptions options;
   for (const auto& [s, step] : steps) options.max_height = std::max(options.max_height.value_or(0.0), std::abs(step.inward));
   options.ambiguity = st.options().ambiguity;
-  Nested n{State(st.tol(), options, st.budget()), {}, {}, {}, *options.max_height};
+  Nested n{State(st.tol(), options, st.budget()), {}, {}, {}, {}, *options.max_height};
   sweep_nested(n, st, loops, at, steps);
   const std::vector<std::uint32_t> vertex = flatten_vertices(n, st, z);
 
@@ -331,7 +393,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
   // The planes above: each edge's line moved by its step, with the slope its
   // profile continues with. An edge that neither steps nor turns goes on.
   std::map<int, int> above;  // outer edge -> its plane above the run
-  auto plane_above = [&](int j) {
+  auto edge_above = [&](int j) {
     const int e = n.span_edge[j];
     auto [it, fresh] = above.try_emplace(e, e);
     if (!fresh) return it->second;
@@ -345,6 +407,30 @@ void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, Sour
       const glm::dvec2 on_line = old.plane.n * (old.plane.offset_at(z) + moved);
       it->second = st.add_edge(on_line, z, old.dir, k, old.source, tag);
     }
+    return it->second;
+  };
+  // A joint's jog is the end of the part that stands out: of the two
+  // neighbours, the one whose line stepped further out (a soffit's eaves, a
+  // fascia, the wall beside a ledge). It turns round that end as it would
+  // round a corner: on that neighbour's plane above, turned across the line,
+  // as a source of its own that follows the rest of that edge's profile, and
+  // its face is that edge's. The paper's rule for a straight run (4.5: one
+  // plane takes the run, the one the volume rule picks) does not apply: the
+  // jog is not on the run's line, and where both neighbours rise at one
+  // slope (walls above a ledge and a fascia) it could not choose.
+  std::map<int, int> joint_above;  // nested joint -> its plane above the run
+  auto plane_above = [&](int j) {
+    const auto joint = n.joints.find(j);
+    if (joint == n.joints.end()) return edge_above(j);
+    auto [it, fresh] = joint_above.try_emplace(j, kNone);
+    if (!fresh) return it->second;
+    const int pick = n.slope(joint->second.prev) < n.slope(joint->second.next) ? edge_above(joint->second.prev)
+                                                                               : edge_above(joint->second.next);
+    const int s = static_cast<int>(st.sources.size());
+    st.sources.push_back(st.sources[st.edges[pick].source]);
+    it->second = st.add_edge(joint->second.point, z, joint->second.dir, st.edges[pick].plane.k, s,
+                             st.faces[st.edges[pick].face].tag);
+    profile_events.schedule(st, s);
     return it->second;
   };
 

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/sweep/event_queue.h"
+#include "core/sweep/profile_event.h"
 
 namespace procex::engine {
 
@@ -30,6 +31,9 @@ struct SourceStep {
 // has unchanged (made below this height) keep their events and are scheduled
 // only against the planes made at this height; the others are replaced and
 // scheduled in full.
-void apply_horizontal_run(State& st, EventQueue& queue, const std::map<int, SourceStep>& steps);
+// A jog made between straight-on neighbours that step differently is a
+// source of its own, whose profile events go into `profile_events`.
+void apply_horizontal_run(State& st, EventQueue& queue, ProfileEvents& profile_events,
+                          const std::map<int, SourceStep>& steps);
 
 }  // namespace procex::engine

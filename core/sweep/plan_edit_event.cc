@@ -346,12 +346,13 @@ void PlanEditEvents::finish_batch(State& st, EventQueue& queue, ProfileEvents& p
     // One nested sweep grows every natural step at this height; it remakes
     // and schedules every corner, the forced steps' too.
     const std::size_t before = st.faces.size();
-    apply_horizontal_run(st, queue, batch.steps);
+    apply_horizontal_run(st, queue, profile_events, batch.steps);
     // At the footprint the grown floors (or the recesses' ceilings) are part
     // of the base; above it each sliver joins the floor grown from its front.
     for (std::size_t f = before; f < st.faces.size(); ++f) {
       auto& hs = st.faces[f].half_edges;
-      if (st.faces[f].outward.z == 0.0) continue;
+      // Only the horizontal faces (the planes above the run, a jog's too, lean).
+      if (std::abs(st.faces[f].outward.z) != 1.0) continue;
       if (z <= st.tol().height()) {
         auto& base = st.faces[st.base_face].half_edges;
         base.insert(base.end(), hs.begin(), hs.end());

@@ -67,7 +67,7 @@ void apply_profile_events(State& st, EventQueue& queue, ProfileEvents& events, c
     events.schedule(st, s);
   }
   if (sideways) {
-    apply_horizontal_run(st, queue, steps);
+    apply_horizontal_run(st, queue, events, steps);
     return;
   }
   // New planes through each changing edge's current line.

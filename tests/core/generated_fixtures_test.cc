@@ -1,6 +1,7 @@
 // Every failure the generators found, minimised (tests/support/generators/
-// shrink.h) and kept as tests/data/generated_<class>_<seed>.geojson: each must
-// now pass every property its class checks.
+// shrink.h) and kept as tests/data/generated_<class>_<seed>.geojson, and
+// corpus footprints that failed, minimised the same way (generated_<kind>_<OSM
+// id>.geojson): each must now pass every property its class checks.
 #include <algorithm>
 #include <filesystem>
 #include <string>

@@ -20,7 +20,6 @@
 #include <optional>
 #include <ostream>
 #include <random>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -121,17 +120,6 @@ Outcome run_one(const GeoJsonFeature& f, Angles angles, bool check_self_intersec
   }
 }
 
-// Footprints whose per-edge profiles do not yet sweep to a valid mesh:
-// collinear or nearly collinear neighbours that step differently at one
-// height (the horizontal run's nested sweep has a corner racing along the
-// near-straight line, or none where the line is straight, and leaves slivers
-// or an unclosed step). Open engine bugs, listed so they stay visible.
-const std::set<std::string> kEdgeProfileKnownFailures = {"w189382923", "w250490613", "w143210026", "w143230857"};
-
-bool known_failure(const CorpusCase& c, const std::string& id) {
-  return c.angles == Angles::EdgeProfiles && kEdgeProfileKnownFailures.contains(id);
-}
-
 class SweepCorpus : public ::testing::TestWithParam<CorpusCase> {};
 
 TEST_P(SweepCorpus, EveryFootprintValidatesOrIsRefused) {
@@ -153,7 +141,6 @@ TEST_P(SweepCorpus, EveryFootprintValidatesOrIsRefused) {
     switch (o.kind) {
       case Outcome::Ok:
         ++ok;
-        if (known_failure(c, f.id)) std::cout << "listed as a known failure but validates: " << f.id << "\n";
         EXPECT_FALSE(flagged_invalid) << f.id << " is flagged invalid in OSM but was accepted";
         break;
       case Outcome::Refused:
@@ -163,10 +150,6 @@ TEST_P(SweepCorpus, EveryFootprintValidatesOrIsRefused) {
         break;
       case Outcome::Failed:
         ++failed;
-        if (known_failure(c, f.id)) {
-          std::cout << "known failure " << f.id << ": " << o.detail << "\n";
-          break;
-        }
         ADD_FAILURE() << f.id << " (feature " << f.index << ", " << vertices << " vertices, " << f.loops.size()
                       << " loops): " << o.detail;
         break;

@@ -51,10 +51,13 @@ std::vector<Profile> step_profiles() {
 // and prepare_footprint refuses it), else what went wrong.
 enum class Mix { OutOrNone, InOrNone, All };
 
-// Footprints whose mixes do not yet sweep to a valid mesh (self-intersecting
-// near a soffit's corner): open engine bugs, listed so they stay visible in
-// the output.
-const char* const kKnownFailures[] = {"w37054313", "w250270018"};
+// Footprints whose mixes do not yet sweep to a valid mesh: w37054313 has an
+// edge stepping out between two that do not, all three turning by 0.02
+// degrees (beyond the clustering distance, so no jog): the corners between
+// them race along the line in the nested sweep and leave a sliver of soffit,
+// and the mesh self-intersects there. An open engine bug, listed so it stays
+// visible in the output.
+const char* const kKnownFailures[] = {"w37054313"};
 
 std::string sweep_mixed(const GeoJsonFeature& f, Mix mix) {
   PreparedFootprint prepared;

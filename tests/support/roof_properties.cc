@@ -207,10 +207,37 @@ std::vector<std::string> check_valid_mesh(const Surface& surface) {
   }
 }
 
+namespace {
+
+// Where a profiled edge and a straight-on neighbour step by different amounts
+// at one height, the jog between their new lines is the end of the one that
+// stepped further out (core/sweep/horizontal_event.cc): a plane across the
+// edge's line, leaning at one of its profile's slopes. Where along the line
+// it stands depends on the neighbour, so only its direction and slope are checked.
+bool on_a_jog(const EdgeLine& e, const Profile& profile, const PlanFace& face) {
+  const double length = glm::length(face.normal);
+  if (!(length > 0.0)) return false;
+  const glm::dvec3 n = face.normal / length;
+  const double across = std::hypot(n.x, n.y);
+  if (across == 0.0) return false;
+  const glm::dvec2 d = glm::normalize(e.b - e.a);
+  if (std::abs(n.x * d.y - n.y * d.x) / across > 1e-6) return false;
+  const double slope = std::abs(n.z) / across;
+  for (std::size_t i = 0; i + 1 < profile.points.size(); ++i) {
+    const glm::dvec2 p = profile.points[i], q = profile.points[i + 1];
+    if (q.y == p.y) continue;
+    if (std::abs(slope - std::abs((q.x - p.x) / (q.y - p.y))) <= 1e-6 * (1.0 + slope)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const SweepOptions& options,
                                                const Surface& surface, double tol) {
   Problems problems;
   const auto edges = edges_by_id(footprint, options.ambiguity);
+  const glm::dvec3 origin(footprint.loops.at(0).points.at(0), 0.0);
   for (std::size_t fi = 0; fi < surface.faces.size(); ++fi) {
     const SurfaceFace& f = surface.faces[fi];
     // Largest distance of the face's vertices from a plane given as a signed
@@ -254,6 +281,9 @@ std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const
     } else {
       best = off_by(segment_plane({0.0, 0.0}, {-std::tan(e.spec.angle_deg * kDegree), 1.0}));
     }
+    if (best > tol && e.spec.profile >= 0 && on_a_jog(e, footprint.profiles.at(static_cast<std::size_t>(e.spec.profile)),
+                                                      plan_face(surface, f, origin)))
+      continue;
     if (best > tol)
       problems.add("faces off their edge's plane", face_name(surface, fi) + " is " + std::to_string(best) +
                                                        " off every plane of its edge (tolerance " + std::to_string(tol) + ")");
