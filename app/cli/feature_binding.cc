@@ -111,6 +111,7 @@ FeatureEvaluation evaluate_feature(const MeshRecipe& recipe, Evaluator& evaluato
   EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
   out.ok = r.ok();
   out.diagnostics = std::move(r.diagnostics);
+  out.stats = std::move(r.stats);
   if (out.ok) {
     out.meshes = gather_meshes(r);
     label_parts(out.meshes, f);

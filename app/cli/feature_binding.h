@@ -52,6 +52,7 @@ struct FeatureEvaluation {
   std::vector<std::string> binding_problems;  // why bind_feature refused the feature (then not evaluated)
   std::vector<Diagnostic> diagnostics;       // the evaluation's
   MeshSet meshes;                            // when ok: labelled with the feature's id and index
+  EvalStats stats;                           // what the evaluation did per node (empty when not evaluated)
 
   // The warning diagnostics (Diagnostic::to_string).
   std::vector<std::string> warnings() const;

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
@@ -89,6 +90,7 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
       py::gil_scoped_release release;
       result = evaluator_.evaluate(r.graph, r.bindings, r.outputs, r.options);
     }
+    last_stats_ = std::move(result.stats);
     warn(file_.string(), result.diagnostics);
     if (!result.ok()) raise_evaluation(file_, std::move(result.diagnostics));
     return wrap_all(gather_meshes(result));
@@ -99,6 +101,7 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
     py::gil_scoped_release release;
     e = evaluate_feature(r, evaluator_, feature, /*parallel=*/true);
   }
+  last_stats_ = std::move(e.stats);
   if (!e.binding_problems.empty()) raise(ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason());
   warn(file_.string() + ": feature " + feature.id, e.diagnostics);
   if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
@@ -166,6 +169,16 @@ void bind_recipe(py::module_& m) {
            "the parameters of the same name). attributes: {name: value} set for this evaluation only, before the "
            "feature's properties. The GIL is released while it runs. Raises EvaluationError (node diagnostics), "
            "FootprintError, ParameterError; warnings become Python UserWarnings.")
+      .def_property_readonly(
+          "last_evaluation",
+          [](const Recipe& r) {
+            std::vector<std::tuple<std::string, std::string, std::string>> out;
+            for (const NodeStats& n : r.last_stats().nodes) out.emplace_back(to_string(n.path), n.type, to_string(n.outcome));
+            return out;
+          },
+          "What the last evaluate() did, per node it visited: (node path, node type, outcome), the outcome one of "
+          "'computed', 'cache hit', 'pass-through', 'FAILED', 'input failed', 'cancelled'. After a set(), only the "
+          "nodes the change reaches are computed; a cache hit's inputs are not visited.")
       .def("__repr__", [](const Recipe& r) { return "<procex.Recipe " + r.file().string() + ">"; });
 }
 

@@ -31,12 +31,15 @@ class Recipe {
   MeshRecipe with(pybind11::handle attributes) const;
   // The recipe's meshes; raises EvaluationError with the diagnostics.
   pybind11::list evaluate(pybind11::handle footprint, pybind11::handle attributes);
+  // What the last evaluate() did per node (computed, cache hit, ...).
+  const EvalStats& last_stats() const { return last_stats_; }
 
  private:
   std::filesystem::path file_;
   MeshRecipe recipe_;
   ResultCache cache_;
   Evaluator evaluator_;
+  EvalStats last_stats_;
 };
 
 // Registers procex.Recipe, procex.Parameter and procex.Input on m.

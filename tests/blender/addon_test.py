@@ -132,7 +132,8 @@ params = obj.procex.params
 check([p.name for p in params] == ["shape", "pitch"], f"parameters: {[p.name for p in params]}")
 pitch = params["pitch"]
 lowest, highest = pitch.range()
-declared = {p.name: p for p in procex.Recipe.load(house).exposed}["pitch"]
+declared_all = procex.Recipe.load(house).exposed
+declared = {p.name: p for p in declared_all}["pitch"]
 check(pitch.kind == "FLOAT" and pitch.unit == "deg" and (lowest, highest) == (declared.min, declared.max),
       f"pitch range or unit: {pitch.range_text()}")
 check(lowest < pitch.float_value < highest, "pitch outside its range")
@@ -152,6 +153,11 @@ reference = procex.Recipe.load(house)
 reference.set("pitch", pitch.float_value)
 same(after, module_summary(reference.evaluate()), "house at the new pitch")
 check_surface(obj, "house at the new pitch")  # replaced in place: still one UV map
+# through the recipe's cache: only the branch the pitch reaches was computed again
+outcomes = {path: outcome for path, _, outcome in engine.recipe(house).last_evaluation}
+nodes = {p.name: p.node for p in declared_all}
+check(outcomes[nodes["pitch"]] == "computed" and outcomes[nodes["shape"]] == "cache hit",
+      f"the pitch change did not go through the cache: {outcomes}")
 print(f"procex add-on: house re-mesh after a pitch change {obj.procex.last_ms:.1f} ms")
 
 params["shape"].enum_value = "rectangle"

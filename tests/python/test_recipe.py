@@ -162,3 +162,20 @@ def test_node_types_document_their_declarations():
         for p in t.params:
             if p.min is not None:
                 assert p.value is None or p.min <= p.value
+
+
+def test_a_change_recomputes_only_the_nodes_it_reaches():
+    r = procex.Recipe.load(SAMPLES / "house.pxg")
+    node = {p.name: p.node for p in r.exposed}
+    r.evaluate()
+    first = {path: outcome for path, _, outcome in r.last_evaluation}
+    assert set(first.values()) == {"computed"} and {node["pitch"], node["shape"]} <= set(first)
+    r.evaluate()
+    assert [o for _, _, o in r.last_evaluation] == ["cache hit"]  # nothing changed: the output node's result is reused
+    r.set("pitch", r.get("pitch") - 10)
+    r.evaluate()
+    after = {path: outcome for path, _, outcome in r.last_evaluation}
+    assert after[node["pitch"]] == "computed"
+    assert after[node["shape"]] == "cache hit"  # the footprint branch is not recomputed
+    computed = {p for p, o in after.items() if o == "computed"}
+    assert computed < set(first)
