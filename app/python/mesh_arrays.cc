@@ -55,6 +55,13 @@ py::array view(const std::vector<T>& v, py::handle owner) {
   return view(v.data(), {static_cast<py::ssize_t>(v.size())}, owner);
 }
 
+// (n, N) float64 over n glm vectors of N doubles.
+template <glm::length_t N>
+py::array rows(const std::vector<glm::vec<N, double>>& v, py::handle owner) {
+  static_assert(sizeof(glm::vec<N, double>) == N * sizeof(double));
+  return view(reinterpret_cast<const double*>(v.data()), {static_cast<py::ssize_t>(v.size()), N}, owner);
+}
+
 py::array matrix(const glm::dmat4& t) {
   py::array_t<double> a({4, 4});
   auto r = a.mutable_unchecked<2>();
@@ -135,23 +142,13 @@ void bind_mesh(py::module_& m) {
           "(n_faces,) uint32: index into tags of each face's tag.")
       .def_property_readonly("tags", [](const MeshArrays& a) { return a.tags; }, "The distinct tag names.")
       .def_property_readonly(
-          "uvs",
-          [](py::object self) {
-            const std::vector<glm::dvec2>& uvs = surface_of(self).corner_uvs;
-            static_assert(sizeof(glm::dvec2) == 2 * sizeof(double));
-            return view(reinterpret_cast<const double*>(uvs.data()), {static_cast<py::ssize_t>(uvs.size()), 2}, self);
-          },
+          "uvs", [](py::object self) { return rows(surface_of(self).corner_uvs, self); },
           "(len(face_indices), 2) float64: each face corner's texture coordinates in metres, in face_indices' order "
           "(as OBJ vt): on a face swept by a footprint edge u runs along the edge round the footprint and v up the "
           "face from its lowest point (on a wall, the height); horizontal faces take plan coordinates (mirrored on "
           "faces seen from below). Made on first read, then a view.")
       .def_property_readonly(
-          "normals",
-          [](py::object self) {
-            const std::vector<glm::dvec3>& normals = surface_of(self).face_normals;
-            static_assert(sizeof(glm::dvec3) == 3 * sizeof(double));
-            return view(reinterpret_cast<const double*>(normals.data()), {static_cast<py::ssize_t>(normals.size()), 3}, self);
-          },
+          "normals", [](py::object self) { return rows(surface_of(self).face_normals, self); },
           "(n_faces, 3) float64: each face's outward unit normal (flat shading, as OBJ vn); (0, 0, 1) for a face "
           "without area. Made on first read, then a view.")
       .def_property_readonly(

@@ -68,8 +68,9 @@ def fill(me, parts):
     attribute.data.foreach_set("value", cat(edges, np.int32))
     me.uv_layers.new(name=UV_MAP, do_init=False).data.foreach_set("uv", cat(uvs, np.float32).ravel())
     me.update(calc_edges=True)
-    # Custom normals are only shown with auto smooth on; each corner has its face's normal: flat shading.
-    me.use_auto_smooth = True
+    # Each corner has its face's normal: flat shading. Before Blender 4.1 custom normals show only with auto smooth.
+    if hasattr(me, "use_auto_smooth"):
+        me.use_auto_smooth = True
     me.normals_split_custom_set(cat(normals, np.float32).reshape(-1, 3))
     return me
 
