@@ -663,6 +663,18 @@ EvalResult Evaluator::run_outputs(const Graph& g, const Bindings& bindings, cons
   std::vector<Diagnostic> problems;
   graph_output_ports(g, outputs, ports, names, problems);
   EvalResult r = run(g, bindings, ports, std::move(names), options, compute);
+  // An any-typed output (a Switch) hands on whatever its chosen input carries:
+  // a graph output gets only values of its own type, as node inputs do.
+  for (OutputResult& out : r.outputs) {
+    const auto i = static_cast<std::uint32_t>(*g.output_index(out.name));
+    const ValueType* want = g.outputs()[i].type;
+    if (out.value.empty() || want->is_any() || out.value.type() == want) continue;
+    const PortRef from = *g.source(PortRef{kGraphOutputs, i});
+    problems.push_back({Severity::kError, {}, {}, "output '" + out.name + "' takes " + want->name() + " but " +
+                                                      g.port_name(from, true) + " handed on " + out.value.type()->name() +
+                                                      ": feed that node's chosen input a " + want->name()});
+    out.value = {};
+  }
   r.diagnostics.insert(r.diagnostics.begin(), problems.begin(), problems.end());
   return r;
 }

@@ -222,6 +222,25 @@ std::string Graph::port_name(PortRef p, bool is_output) const {
   return std::to_string(p.node) + ".#" + std::to_string(p.port);
 }
 
+const Graph::CarriedTypes& Graph::carried_types(PortRef from, std::map<PortRef, CarriedTypes>& known) const {
+  if (const auto k = known.find(from); k != known.end()) return k->second;
+  CarriedTypes out;
+  const ValueType* type = output_type(from);
+  const Node* n = from.node == kGraphInputs ? nullptr : node(from.node);
+  if (type && !type->is_any()) {
+    out.emplace_back(type, from);
+  } else if (n && n->decl().pass_through()) {
+    const auto& inputs = n->decl().inputs();
+    for (std::uint32_t i = 0; i < inputs.size(); ++i) {
+      const auto link = links_.find(PortRef{from.node, i});
+      if (!inputs[i].type->is_any() || link == links_.end()) continue;
+      for (const auto& c : carried_types(link->second, known))  // the graph has no cycles: this ends
+        if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+    }
+  }
+  return known[from] = std::move(out);
+}
+
 bool Graph::reaches(NodeId from, NodeId to) const {
   // Walks upstream from `to`: inputs of a node are contiguous in links_.
   std::vector<NodeId> stack{to};
@@ -449,6 +468,19 @@ std::vector<Diagnostic> Graph::validate() const {
   for (std::size_t i = 0; i < outputs_.size(); ++i)
     if (!links_.count(PortRef{kGraphOutputs, static_cast<std::uint32_t>(i)}))
       out.push_back({Severity::kError, {}, {}, "graph output " + q(outputs_[i].name) + " is not connected"});
+  std::map<PortRef, CarriedTypes> carried;
+  for (const auto& [to, from] : links_) {
+    const ValueType* want = input_type(to);
+    if (!want || want->is_any() || !output_type(from) || !output_type(from)->is_any()) continue;  // add_link checked the rest
+    for (const auto& [type, origin] : carried_types(from, carried)) {
+      if (type == want) continue;
+      const std::string message = "input " + q(port_name(to, false)) + " takes " + want->name() + " but " +
+                                  port_name(from, true) + " may hand on " + type->name() + " from " +
+                                  port_name(origin, true) + ": connect a " + want->name() + " there";
+      if (to.node == kGraphOutputs) out.push_back({Severity::kError, {}, {}, message});
+      else out.push_back({Severity::kError, {to.node}, node(to.node)->type->name(), message});
+    }
+  }
   for (const auto& [name, g] : groups_) {
     for (Diagnostic d : g.type->body->validate()) {
       d.message = "in group " + q(name) + ": " + d.message;

@@ -201,10 +201,19 @@ class Graph {
 
   // Every structural problem at once (for `procex validate` and the loader):
   // unbound required inputs are not problems here, they are evaluation errors.
+  // Types are checked through any-typed outputs too: a pass-through node (a
+  // Switch) may hand on any of its linked any-typed inputs, so each of the
+  // types they may carry must fit wherever its output goes.
   std::vector<Diagnostic> validate() const;
 
  private:
   bool reaches(NodeId from, NodeId to) const;  // is `to` downstream of (or equal to) `from`?
+  // The concrete types the output `from` may carry, each with the output it
+  // comes from ("1.profile"); none known for an any-typed output that is no
+  // pass-through. `known` keeps each output's answer: chained Switches fed
+  // twice by the same node would otherwise be walked 2^depth times.
+  using CarriedTypes = std::vector<std::pair<const ValueType*, PortRef>>;
+  const CarriedTypes& carried_types(PortRef from, std::map<PortRef, CarriedTypes>& known) const;
   // The links of node `id` with its ports renumbered for `next` (its
   // declaration once `param` asks for `count` ports): a port keeps its links
   // where `next` has one of the same name and type (a node with two variadic

@@ -8,7 +8,10 @@
 #include <ostream>
 
 #include "app/cli/recipe_session.h"
+#include "core/geom/error.h"
+#include "core/geom/prepare.h"
 #include "core/io/io_error.h"
+#include "nodes/support/errors.h"
 
 namespace procex {
 namespace {
@@ -55,7 +58,13 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
   options.attributes.clear();
   for (const auto& [name, json_text] : f.properties)
     if (json_text != "null") options.attributes.emplace(name, *f.property_text(name));
-  bindings["footprint"] = Value::make(to_footprint(f, 45.0));
+  const Footprint plan = to_footprint(f, 45.0);
+  try {
+    prepare_footprint(plan);  // as procex roof checks it: a plan no recipe can use is refused, not failed
+  } catch (const InputError& e) {
+    problems.push_back(describe(e));
+  }
+  bindings["footprint"] = Value::make(plan);
   if (graph.input_index("building_id")) bindings["building_id"] = Value::make(f.id);
   std::map<std::string, std::string> property_of;  // setting -> the property that set it
   for (const auto& [name, json_text] : f.properties) {

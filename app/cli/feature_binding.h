@@ -33,10 +33,11 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 
 // Binds f to graph (a copy of the recipe) and bindings, and its properties
 // (by their own names) to the attributes expressions read with attr(). Returns
-// why the feature cannot be evaluated as given, one line per problem: a
-// property that names a parameter but whose value does not fit it (read
-// strictly: "3,5", "3 storeys" or "0x3" are not 3), or two properties that
-// name the same one (max_height and MAX_HEIGHT). The caller refuses such a
+// why the feature cannot be evaluated as given, one line per problem: a plan
+// that prepare_footprint refuses (a bow-tie, fewer than 3 distinct vertices;
+// in the words procex roof uses), a property that names a parameter but whose
+// value does not fit it (read strictly: "3,5", "3 storeys" or "0x3" are not
+// 3), or two properties that name the same one (max_height and MAX_HEIGHT). The caller refuses such a
 // feature rather than evaluate it with the recipe's defaults. Properties that
 // name nothing in the recipe are ignored.
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);

@@ -21,6 +21,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
+#include "nodes/support/errors.h"
 
 namespace procex {
 namespace {
@@ -55,20 +56,6 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
-std::string located(const InputError& e) {
-  std::string where;
-  if (e.loop() >= 0) where += " (loop " + std::to_string(e.loop());
-  if (e.vertex() >= 0) where += (where.empty() ? " (" : ", ") + std::string("vertex ") + std::to_string(e.vertex());
-  if (!where.empty()) where += ")";
-  return e.what() + where;
-}
-
-std::string located(const SweepError& e) {
-  std::string ids;
-  for (int id : e.edge_ids()) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-  return std::string(e.what()) + " (height " + std::to_string(e.height()) + ", edges [" + ids + "])";
-}
-
 std::string first_problems(const ValidationReport& v) {
   constexpr std::size_t kShown = 3;
   std::string s = "mesh does not validate:";
@@ -99,9 +86,9 @@ void extrude(const GeoJsonFeature& feature, const RoofOptions& options, FeatureR
     r.validate_ms = elapsed_ms(validate_start);
     if (!r.validation.ok()) r.status = Status::Failed, r.reason = first_problems(r.validation);
   } catch (const InputError& e) {
-    r.status = Status::Refused, r.reason = located(e);
+    r.status = Status::Refused, r.reason = describe(e);
   } catch (const SweepError& e) {
-    r.status = Status::Failed, r.reason = "sweep: " + located(e);
+    r.status = Status::Failed, r.reason = describe(e);  // its message names the sweep
   } catch (const MeshError& e) {
     r.status = Status::Failed, r.reason = std::string("mesh: ") + e.what();
   } catch (const std::exception& e) {

@@ -15,6 +15,12 @@ namespace procex {
 
 namespace {
 
+// Footprints are metres in a projected CRS, whose coordinates stay within
+// about 2e7 m; beyond this a coordinate is a mistake (degrees scaled wrong, a
+// corrupt file), and at 1e308 the bounding box overflows and every tolerance
+// with it.
+constexpr double kMaxCoordinate = 1e10;
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(12);
@@ -41,6 +47,11 @@ void check_values(const Footprint& fp) {
       const glm::dvec2& p = loop.points[k];
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw InputError(where(li, k) + " has a coordinate that is not a finite number " + fmt(p), l, static_cast<int>(k));
+      if (std::max(std::abs(p.x), std::abs(p.y)) > kMaxCoordinate)
+        throw InputError(where(li, k) + " at " + fmt(p) + " lies farther than " + fmt(kMaxCoordinate) +
+                             " m from the origin: footprints are read as metres in a projected CRS; reproject the "
+                             "file or fix the coordinate",
+                         l, static_cast<int>(k));
       const double a = loop.edges[k].angle_deg;
       if (!(a >= -90.0 && a <= 90.0))
         throw InputError("loop " + std::to_string(li) + " edge " + std::to_string(k) + " (id " +
@@ -136,7 +147,8 @@ PreparedFootprint prepare_footprint(const Footprint& footprint) {
     Loop loop = merge_close_vertices(in, li, merge, out.notes, kept);
     if (loop.points.size() < 3)
       throw InputError("loop " + std::to_string(li) + " has " + std::to_string(loop.points.size()) +
-                           " distinct vertices, fewer than 3",
+                           " distinct vertices (points closer than " + fmt(merge) +
+                           " m count as one), fewer than 3: it encloses nothing to build on; fix or remove it",
                        static_cast<int>(li), 0);
     out.footprint.loops.push_back(std::move(loop));
     original.push_back(std::move(kept));

@@ -17,7 +17,7 @@ struct PreparedFootprint {
 };
 
 // Refuses (InputError): a loop whose points and edges differ in count, NaN or
-// infinite coordinates, angles that are NaN or outside [-90, 90], a loop with
+// infinite coordinates, coordinates beyond kMaxCoordinate, angles that are NaN or outside [-90, 90], a loop with
 // fewer than 3 distinct vertices or zero area, a self-intersecting or
 // self-touching loop, two loops that cross or touch.
 // Repairs: consecutive vertices closer than merge_distance() are merged (the

@@ -25,6 +25,35 @@ std::string line_column(std::string_view text, std::size_t byte) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
+// Where the parse stopped: nlohmann's exceptions for a number beyond double
+// range (out_of_range.406) carry no position, but its SAX interface hands one,
+// with the token, to parse_error. Only run once the parse has failed.
+struct ErrorLocator : nlohmann::json_sax<nlohmann::json> {
+  std::size_t byte = 0;
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::json::exception&) override {
+    byte = position >= last_token.size() ? position - last_token.size() : 0;  // the token's first byte
+    return false;
+  }
+};
+
+std::size_t failing_byte(std::string_view text) {
+  ErrorLocator locator;
+  nlohmann::json::sax_parse(text, &locator);
+  return locator.byte;
+}
+
 }  // namespace
 
 std::string read_text_file(const std::filesystem::path& path) { return read_file(path, kMaxDataFileBytes); }
@@ -40,8 +69,10 @@ Json parse_json(std::string_view text, const std::string& source) {
   } catch (const nlohmann::json::parse_error& e) {
     throw IoError(source + ":" + line_column(text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON (" + e.what() + ")",
                   source);
-  } catch (const nlohmann::json::exception& e) {  // out_of_range.406: a number beyond double range
-    throw IoError(source + ": unreadable JSON (" + std::string(e.what()) + "); numbers must fit a double", source);
+  } catch (const nlohmann::json::out_of_range& e) {  // 406: a number beyond double range
+    throw IoError(source + ":" + line_column(text, failing_byte(text)) + ": a number beyond double range (" +
+                      std::string(e.what()) + "): numbers must lie within about 1.8e308; fix the value in the file",
+                  source);
   }
 }
 

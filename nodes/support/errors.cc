@@ -12,7 +12,8 @@ std::string describe(const std::exception& e) {
       out.append(in->loop() >= 0 ? ", vertex " : " (vertex ").append(std::to_string(in->vertex()));
     if (in->loop() >= 0 || in->vertex() >= 0) out += ")";
   } else if (const auto* sw = dynamic_cast<const SweepError*>(&e)) {
-    out.append(" (height ").append(std::to_string(sw->height())).append(", edges");
+    out.append(" (height ").append(std::to_string(sw->height()));
+    if (!sw->edge_ids().empty()) out.append(", edges");
     for (int id : sw->edge_ids()) out.append(" ").append(std::to_string(id));
     out += ")";
   }

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -99,15 +100,35 @@ TEST_F(DataLoss, AReportThatCannotBeWrittenLeavesTheMeshAlone) {
   EXPECT_FALSE(fs::exists(o.output));
 }
 
+// A plan no recipe can use is "refused", with the same reason, by roof and by
+// batch; a run that produced nothing exits non-zero.
 TEST_F(DataLoss, NothingProducedIsNoSuccess) {
-  const fs::path bowtie = write("bowtie.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature",
-      "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,10],[10,0],[0,10],[0,0]]]}}]})");
-  RoofOptions roof;
-  roof.input = bowtie;
-  roof.output = dir_ / "roofs.obj";
-  roof.report = dir_ / "roofs.json";
-  EXPECT_EQ(run_roof(roof, out_, err_), kExitFeatureFailed);
-  EXPECT_NE(run_batch(batch(bowtie, "city.glb"), out_, err_), 0);
+  struct Case {
+    std::string name, ring, reason;
+  };
+  const std::vector<Case> cases = {
+      {"bowtie", "[0,0],[10,10],[10,0],[0,10],[0,0]", "loop 0 intersects itself"},
+      {"needle", "[0,0],[1000,0],[1000,1e-9],[0,0]", "loop 0 has 2 distinct vertices (points closer than"},
+      {"far", "[-1e308,-1e308],[1e308,-1e308],[1e308,1e308],[-1e308,1e308],[-1e308,-1e308]", "m from the origin"},
+  };
+  for (const Case& c : cases) {
+    const fs::path in = write(c.name + ".geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+        "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[)" + c.ring + "]]}}]}");
+    RoofOptions roof;
+    roof.input = in;
+    roof.output = dir_ / (c.name + ".obj");
+    roof.report = dir_ / (c.name + "_roof.json");
+    EXPECT_EQ(run_roof(roof, out_, err_), kExitFeatureFailed) << c.name;
+    BatchCommandOptions b = batch(in, c.name + ".glb");
+    b.report = dir_ / (c.name + "_batch.json");
+    EXPECT_EQ(run_batch(b, out_, err_), kExitEvaluationFailed) << c.name;
+    const nlohmann::json by_roof = nlohmann::json::parse(read_text(roof.report))["features"][0];
+    const nlohmann::json by_batch = nlohmann::json::parse(read_text(b.report))["buildings"][0];
+    EXPECT_EQ(by_roof["status"], "refused") << c.name;
+    EXPECT_EQ(by_batch["status"], "refused") << c.name;
+    EXPECT_EQ(by_roof["reason"], by_batch["reason"]) << c.name;
+    EXPECT_NE(by_batch["reason"].get<std::string>().find(c.reason), std::string::npos) << by_batch;
+  }
 }
 
 // merge gets the shards of one run, each once, or refuses: the same shard

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -113,6 +115,62 @@ TEST_F(RecipeCommands, ValidateReportsUnboundInputsWithoutEvaluating) {
   text.replace(text.find("\"12.mesh\""), 9, "\"13.mesh\"");
   EXPECT_EQ(run_validate({write("dangling.pxg", text), {}}, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("dangling.pxg"), std::string::npos) << err_.str();
+}
+
+// validate type-checks what evaluation will: a Switch's output is any-typed,
+// but each value it may hand on must fit where it goes. Each recipe here
+// evaluated to "0 meshes" (exit 0) or failed only for some buildings, while
+// validate said 0 errors.
+TEST_F(RecipeCommands, ValidateTypeChecksThroughSwitches) {
+  const std::string profile = R"({"id": 1, "type": "Profile", "version": 1, "params": {"name": "p", "points": [[0.0,0.0],[0.0,6.0]], "tags": ["wall"]}})";
+  // (Strings built with append: g++ 12 warns falsely on literal + std::to_string.)
+  auto switch_node = [](int id) {
+    return std::string(R"({"id": )").append(std::to_string(id)).append(
+        R"(, "type": "Switch", "version": 2, "params": {"cases": ["a", ""], "value": ""}})");
+  };
+  auto recipe = [](const std::string& nodes, const std::string& links) {
+    return std::string(R"({"format": "procex-graph", "version": 2, "groups": [], "exposed": [], "inputs": [], "nodes": [)")
+        .append(nodes).append(R"(], "links": [)").append(links)
+        .append(R"(], "outputs": [{"doc": "", "name": "mesh", "type": "mesh"}]})");
+  };
+  // Forty Switches in a row, each fed twice by the one before: 2^40 paths, one answer each.
+  std::string chain_nodes = profile, chain_links = R"({"from": "1.profile", "to": "2.default"})";
+  for (int id = 2; id <= 41; ++id) {
+    chain_nodes.append(",").append(switch_node(id));
+    for (const char* port : {"default", "case_1"})
+      if (id > 2)
+        chain_links.append(R"(, {"from": ")").append(std::to_string(id - 1)).append(R"(.out", "to": ")")
+            .append(std::to_string(id)).append(".").append(port).append("\"}");
+  }
+  chain_links += R"(, {"from": "41.out", "to": "@mesh"})";
+  std::string city = read_text(kSamples / "city.pxg");  // a garage case handing on a profile
+  auto replace = [&city](const std::string& from, const std::string& to) { city.replace(city.find(from), from.size(), to); };
+  replace(R"({"from": "5.mesh", "to": "6.case_4"})", R"({"from": "7.profile", "to": "6.case_4"})");
+  replace("\"nodes\": [\n    {\n      \"group\"", "\"nodes\": [" + profile + ",\n    {\n      \"group\"");
+  replace(R"({"id": 1, "type": "Profile")", R"({"id": 7, "type": "Profile")");
+  struct Case {
+    std::string name, text, validate_said;
+    std::string eval_said;  // empty: evaluated per building only (its footprint is bound by batch)
+  };
+  const std::vector<Case> cases = {
+      {"any_to_mesh", recipe(profile + "," + switch_node(2), R"({"from": "1.profile", "to": "2.default"}, {"from": "2.out", "to": "@mesh"})"),
+       "input '@mesh' takes mesh but 2.out may hand on profile from 1.profile",
+       "output 'mesh' takes mesh but 2.out handed on profile"},
+      {"chain", recipe(chain_nodes, chain_links), "input '@mesh' takes mesh but 41.out may hand on profile from 1.profile",
+       "output 'mesh' takes mesh but 41.out handed on profile"},
+      {"one_case", city, "input '@mesh' takes mesh but 6.out may hand on profile from 7.profile", ""},
+  };
+  for (const Case& c : cases) {
+    const fs::path file = write(c.name + ".pxg", c.text);
+    err_.str("");
+    EXPECT_EQ(run_validate({file, {}}, out_, err_), kExitEvaluationFailed) << c.name << ": " << err_.str();
+    EXPECT_NE(err_.str().find(c.validate_said), std::string::npos) << c.name << ": " << err_.str();
+    if (c.eval_said.empty()) continue;
+    err_.str("");
+    EXPECT_EQ(run_eval({file, dir_ / (c.name + ".obj"), {}, {}, {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed) << c.name;
+    EXPECT_NE(err_.str().find(c.eval_said), std::string::npos) << c.name << ": " << err_.str();
+    EXPECT_FALSE(fs::exists(dir_ / (c.name + ".obj"))) << c.name;
+  }
 }
 
 TEST_F(RecipeCommands, StatsShowsNodesAndCacheHits) {
