@@ -21,6 +21,7 @@
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "app/cli/report_text.h"
+#include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "base/read_file.h"
 #include "core/io/geojson.h"
@@ -273,14 +274,13 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason << "\n";
   }
   if (per_building) assign_file_names(buildings, format);
-  std::string recipe_hash, footprints_hash;  // read when a report is asked for
+  ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
     j["footprints"] = options.footprints.string();
     j["output"] = options.output.string();
-    j["shard"] = {{"index", options.shard}, {"count", options.shards}, {"recipe", recipe_hash},
-                  {"footprints", footprints_hash}};
+    j["shard"] = to_json(stamp);
     j["buildings"] = nlohmann::ordered_json::array();
     for (const Building& b : buildings) j["buildings"].push_back(building_json(b));
     auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
@@ -297,10 +297,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     // run before any mesh is replaced; it is put in place with its final
     // numbers once the meshes are.
     AtomicFileSet report_file;
-    if (!options.report.empty()) {
-      recipe_hash = file_hash(options.recipe), footprints_hash = file_hash(options.footprints);
-      report_file.add(options.report, report(evaluated));
-    }
+    if (!options.report.empty() || one_glb)
+      stamp.recipe = file_hash(options.recipe), stamp.footprints = file_hash(options.footprints);
+    if (!options.report.empty()) report_file.add(options.report, report(evaluated));
+    if (one_glb) all_gltf.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
     if (per_building) std::filesystem::create_directories(options.output);
     for (Building& b : buildings) {
       if (b.status != "ok") continue;

@@ -8,6 +8,7 @@
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "app/cli/report_text.h"
+#include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
@@ -17,6 +18,9 @@ namespace procex {
 namespace {
 
 using json = nlohmann::ordered_json;
+
+// What the merged parts are together: the one shard of an unsharded run.
+ShardStamp whole(const ShardStamp& part) { return {0, 1, part.recipe, part.footprints}; }
 
 [[noreturn]] void not_a_report(const std::filesystem::path& file, const std::string& pointer, const std::string& what) {
   throw IoError(file.string() + ": " + pointer + ": " + what + " (not a procex batch report)", file.string(), pointer);
@@ -31,67 +35,17 @@ std::string text_member(const json& object, const char* key, const std::filesyst
   return it->get<std::string>();
 }
 
-// A report's shard: which of how many, of which recipe and footprints (by
-// the hashes of their bytes).
-struct ShardId {
-  std::size_t index = 0, count = 0;
-  std::string recipe, footprints;
-};
-
-ShardId shard_of(const json& report, const std::filesystem::path& file) {
-  const auto shard = report.find("shard");
-  if (shard == report.end() || !shard->is_object()) not_a_report(file, "/shard", "expected the shard's index and count");
-  ShardId id;
-  for (auto [key, to] : {std::pair{"index", &id.index}, std::pair{"count", &id.count}}) {
-    const auto it = shard->find(key);
-    if (it == shard->end() || !it->is_number_unsigned()) not_a_report(file, std::string("/shard/") + key, "expected a whole number");
-    *to = it->get<std::size_t>();
-  }
-  id.recipe = text_member(*shard, "recipe", file, "/shard");
-  id.footprints = text_member(*shard, "footprints", file, "/shard");
-  if (id.count == 0 || id.index >= id.count) not_a_report(file, "/shard", "the index must be below the count");
-  return id;
-}
-
-// The shards must be exactly one whole: one of each index of the same count,
-// from the same recipe and footprints. Anything else (a shard twice, one
-// missing, shards of two different splits or runs) would merge into a file
-// that looks complete and is not.
-void check_whole(const std::vector<std::pair<ShardId, std::filesystem::path>>& shards) {
-  if (shards.empty()) return;
-  const auto& [first, first_file] = shards.front();
-  std::vector<const std::filesystem::path*> seen(first.count, nullptr);
-  for (const auto& [id, file] : shards) {
-    auto refuse = [&](const std::string& why) {
-      throw IoError(file.string() + ": " + why + ", so the parts are not one whole batch: merge the reports of one run, "
-                                                 "each of its shards once",
-                    file.string(), "/shard");
-    };
-    if (id.count != first.count)
-      refuse("shard " + std::to_string(id.index) + " of " + std::to_string(id.count) + ", but " + first_file.string() +
-             " is one of " + std::to_string(first.count));
-    if (id.recipe != first.recipe || id.footprints != first.footprints)
-      refuse("made from another recipe or footprint file than " + first_file.string());
-    if (seen[id.index]) refuse("shard " + std::to_string(id.index) + " again (also " + seen[id.index]->string() + ")");
-    seen[id.index] = &file;
-  }
-  for (std::size_t i = 0; i < seen.size(); ++i)
-    if (!seen[i])
-      throw IoError("shard " + std::to_string(i) + " of " + std::to_string(first.count) +
-                        " is missing: merge needs the report of every shard",
-                    first_file.string(), "/shard");
-}
-
 // Reports: checked to be one whole batch, buildings joined and sorted by
 // feature index, the summary recounted.
 json merge_reports(const std::vector<std::filesystem::path>& files) {
   json merged;
   json buildings = json::array();
-  std::vector<std::pair<ShardId, std::filesystem::path>> shards;
+  std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
   for (const auto& file : files) {
     json part = read_json_file(file);
     if (!part.is_object()) not_a_report(file, "", "expected an object");
-    shards.emplace_back(shard_of(part, file), file);
+    const auto stamp = part.find("shard");
+    shards.emplace_back(read_shard_stamp(stamp == part.end() ? json() : *stamp, file, "/shard"), file);
     const auto list = part.find("buildings");
     if (list == part.end() || !list->is_array()) not_a_report(file, "/buildings", "expected an array");
     if (merged.empty())
@@ -113,8 +67,7 @@ json merge_reports(const std::vector<std::filesystem::path>& files) {
     const std::string s = b.value("status", "");
     ++counts[s == "ok" ? 0 : s == "refused" ? 1 : 2];
   }
-  merged["shard"] = {{"index", 0}, {"count", 1}};
-  if (!shards.empty()) merged["shard"].update({{"recipe", shards[0].first.recipe}, {"footprints", shards[0].first.footprints}});
+  if (!shards.empty()) merged["shard"] = to_json(whole(shards.front().first));
   merged["buildings"] = std::move(buildings);
   merged["summary"] = {{"buildings", merged["buildings"].size()}, {"ok", counts[0]}, {"refused", counts[1]}, {"failed", counts[2]}};
   return merged;
@@ -141,10 +94,20 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     // Each part's placed meshes come along (renumbered); write_glb keeps one
     // of equal ones, so the bytes are those of an unsharded run.
     GltfScene all;
+    std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
     for (const auto& p : meshes) {
       if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
-      append_scene(all, read_glb_scene(p));
+      GltfScene part = read_glb_scene(p);
+      const auto stamp = part.extras.find("shard");
+      if (stamp == part.extras.end())
+        throw IoError(p.string() + ": its scene has no extras.shard, so it is no shard of procex batch: merge joins "
+                                   "the .glb parts of one batch run",
+                      p.string());
+      shards.emplace_back(read_shard_stamp(json::parse(stamp->second), p, "/scenes/0/extras/shard"), p);
+      append_scene(all, std::move(part));
     }
+    check_whole(shards);
+    if (!shards.empty()) all.extras["shard"] = to_json(whole(shards.front().first)).dump();
     std::stable_sort(all.meshes.begin(), all.meshes.end(),
                      [](const GltfMeshData& a, const GltfMeshData& b) { return a.feature < b.feature; });
     // A feature in two parts: the same shard given twice, or parts of different splits.
@@ -160,7 +123,14 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     // Both or neither: the report is read, merged and written beside its
     // target before the mesh, and put in place once the mesh is.
     AtomicFileSet report_file;
-    if (!options.report.empty()) report_file.add(options.report, report_text(merge_reports(reports)));
+    if (!options.report.empty()) {
+      const json merged = merge_reports(reports);
+      if (!shards.empty() && merged.contains("shard") && merged["shard"].dump() != all.extras["shard"])
+        throw IoError("the reports and the .glb parts come from different runs: give the mesh and the report of "
+                      "every shard of one run",
+                      options.output.string());
+      report_file.add(options.report, report_text(merged));
+    }
     write_glb(options.output, all);
     report_file.commit();
     out << "procex merge: " << meshes.size() << " parts, " << all.meshes.size() << " meshes -> " << options.output.string() << "\n";

@@ -86,6 +86,20 @@ void put_string(std::string& out, std::string_view s) {
   out += '"';
 }
 
+// {"name":value,...} from values held as JSON text (checked by are_json_members).
+void put_members(std::string& out, const std::map<std::string, std::string>& values) {
+  out += '{';
+  bool first = true;
+  for (const auto& [name, json] : values) {
+    if (!first) out += ',';
+    first = false;
+    put_string(out, name);
+    out += ':';
+    out += json;
+  }
+  out += '}';
+}
+
 void put_matrix(std::string& out, const glm::dmat4& t) {
   out += '[';
   for (int c = 0; c < 4; ++c)
@@ -102,6 +116,12 @@ bool has_triangles(const GltfMeshData& mesh) {
 }
 
 // What write_glb needs of a building (or placed mesh) to be written as procex
+// Whether each name is UTF-8 and each value JSON text: what put_members writes.
+bool are_json_members(const std::map<std::string, std::string>& values) {
+  return std::all_of(values.begin(), values.end(),
+                     [](const auto& v) { return is_utf8(v.first) && nlohmann::json::accept(v.second); });
+}
+
 // reads it: names that JSON can hold, as many normals as positions, whole
 // vertices, indices that name one of them. Throws IoError naming the building.
 void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
@@ -112,9 +132,7 @@ void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
   if (!std::all_of(mesh.origin.begin(), mesh.origin.end(), [](double x) { return std::isfinite(x); }))
     refuse("has an origin that is not finite");
   for (const auto* values : {&mesh.properties, &mesh.parameters})
-    for (const auto& [name, json] : *values)
-      if (!is_utf8(name) || !nlohmann::json::accept(json))
-        refuse("has an attribute '" + name + "' whose name is not UTF-8 or whose value is not JSON");
+    if (!are_json_members(*values)) refuse("has an attribute whose name is not UTF-8 or whose value is not JSON");
   for (const GltfPrimitiveData& p : mesh.primitives) {
     if (!is_utf8(p.tag)) refuse("has a tag that is not UTF-8");
     if (p.positions.size() % 3 != 0 || p.normals.size() != p.positions.size())
@@ -345,18 +363,10 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
     }
     out += ']';
   }
-  for (const auto& [key, values] : {std::pair{",\"properties\":{", &d.properties}, std::pair{",\"parameters\":{", &d.parameters}}) {
+  for (const auto& [key, values] : {std::pair{",\"properties\":", &d.properties}, std::pair{",\"parameters\":", &d.parameters}}) {
     if (values->empty()) continue;
     out += key;
-    bool first_value = true;
-    for (const auto& [name, json] : *values) {
-      if (!first_value) out += ',';
-      first_value = false;
-      put_string(out, name);
-      out += ':';
-      out += json;
-    }
-    out += '}';
+    put_members(out, *values);
   }
   out += "}}";
 
@@ -449,7 +459,10 @@ void append_u32(std::string& out, std::uint32_t v) {
 }
 
 void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
-                 const std::vector<GltfMeshData>& prototypes) {
+                 const std::vector<GltfMeshData>& prototypes, const std::map<std::string, std::string>& extras) {
+  if (!are_json_members(extras))
+    throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
+                  path.string());
   for (const GltfMeshData& data : meshes) check_instances(path, data, prototypes);
   const WrittenPrototypes written = written_prototypes(meshes, prototypes);
   std::vector<Item> items;
@@ -484,7 +497,12 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     put_index(scene, item.node);
     first = false;
   }
-  scene += first ? "}]" : "]}]";
+  if (!first) scene += ']';
+  if (!extras.empty()) {
+    scene += first ? "\"extras\":" : ",\"extras\":";
+    put_members(scene, extras);
+  }
+  scene += "}]";
   json.add(scene);
   json.add_array("nodes", items, &Item::nodes_json);
   json.add_array("meshes", items, &Item::mesh_json);
@@ -728,11 +746,11 @@ GltfMeshData to_gltf_mesh(const TaggedMeshView& view, const glm::dvec3& origin) 
 }
 
 void write_glb(const std::filesystem::path& path, const GltfScene& scene) {
-  write_scene(path, scene.meshes, scene.prototypes);
+  write_scene(path, scene.meshes, scene.prototypes, scene.extras);
 }
 
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
-  write_scene(path, meshes, {});
+  write_scene(path, meshes, {}, {});
 }
 
 namespace {
@@ -807,6 +825,12 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
     p.primitives = read_primitives(m, static_cast<int>(i), path);
   }
   if (m.scenes.empty()) return out;
+  if (const auto scenes = raw.find("scenes"); scenes != raw.end() && scenes->is_array() && !scenes->empty()) {
+    if (const auto extras = (*scenes)[0].find("extras"); extras != (*scenes)[0].end()) {
+      if (!extras->is_object()) bad(path, "scene 0's extras is not an object");
+      for (const auto& [name, value] : extras->items()) out.extras[name] = value.dump();
+    }
+  }
   for (int ni : m.scenes[0].nodes) {
     const tinygltf::Node& node = node_at(m, ni, path);
     if (node.mesh < 0 && node.children.empty()) bad(path, "node " + std::to_string(ni) + " has no mesh");

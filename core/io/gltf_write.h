@@ -85,11 +85,15 @@ struct GltfMeshData {
 struct GltfScene {
   std::vector<GltfMeshData> meshes;
   std::vector<GltfMeshData> prototypes;
+  // The scene's extras, each value as compact JSON text (procex batch: which
+  // shard of which run the file is).
+  std::map<std::string, std::string> extras;
 };
 
 // Adds part's buildings after into's, and its placed meshes after into's
 // (its instances renumbered): how shard files join before they are sorted
-// and written again. Placed meshes both hold are written once.
+// and written again. Placed meshes both hold are written once. The extras
+// are into's: what the parts are together is the caller's to say.
 void append_scene(GltfScene& into, GltfScene part);
 
 // Display colour (linear RGB) of a face tag: fixed for the usual tags, a grey

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <optional>
 #include <cmath>
 #include <sstream>
@@ -103,6 +104,19 @@ void load(engine::State& st, const Footprint& fp) {
   }
 }
 
+// Whether some edge ends vertical or leaning outward (its last plane never
+// meets the others above), so that an open roof is the recipe's, not rounding's.
+bool can_rise_forever(const Footprint& fp) {
+  for (const Loop& loop : fp.loops)
+    for (const EdgeSpec& e : loop.edges) {
+      const bool own = e.profile < 0 || static_cast<std::size_t>(e.profile) >= fp.profiles.size();
+      const Profile* p = own ? nullptr : &fp.profiles[static_cast<std::size_t>(e.profile)];
+      const double last = own || p->segments() == 0 ? e.angle_deg : p->angle_deg(p->segments() - 1);
+      if (last <= 0.0) return true;
+    }
+  return false;
+}
+
 Surface sweep_with(const Footprint& footprint, const SweepOptions& options, const engine::Tolerances& tol,
                    engine::Budget& budget) {
   budget.start_attempt();
@@ -117,10 +131,18 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   engine::run_events(st, queue, profile_events, &anchors, &plan_edits);
   const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
   if (open) {
-    if (!options.max_height) {
+    if (!options.max_height && can_rise_forever(footprint))
       throw SweepError(
           "sweep: the roof does not close (vertical or outward-leaning edges rise forever); give a maximum height",
           st.height, {});
+    if (!options.max_height) {
+      char width[32];
+      std::snprintf(width, sizeof width, "%.3g", tol.position());
+      throw SweepError(std::string("sweep: the roof does not close although every edge leans inward, so rounding lost "
+                                   "the events that close it: the plan is likely too thin somewhere for the sweep "
+                                   "(sides closer than about ") +
+                           width + " m); widen it, or give a maximum height",
+                       st.height, {});
     }
     engine::cap_at(st, std::max(st.height, *options.max_height));
   }

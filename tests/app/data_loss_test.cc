@@ -162,8 +162,28 @@ TEST_F(DataLoss, MergeRefusesASetThatIsNotOneWhole) {
   EXPECT_EQ(merge({a, c}), kExitUnusableInput);
   EXPECT_EQ(merge({a, d}), kExitUnusableInput);
   EXPECT_NE(err_.str().find("another recipe or footprint file"), std::string::npos) << err_.str();
-  EXPECT_EQ(merge({{a[0], a[0]}}), kExitUnusableInput);  // meshes only: a feature twice
+  // The .glb parts carry the same stamp in their scene's extras: without
+  // reports the set is checked as strictly.
+  auto meshes_only = [&](std::vector<std::vector<fs::path>> parts) {
+    MergeCommandOptions m;
+    for (const auto& p : parts) m.parts.push_back(p[0]);
+    m.output = dir_ / "merged.glb";
+    err_.str("");
+    return run_merge(m, out_, err_);
+  };
+  for (const auto& [parts, said] : std::vector<std::pair<std::vector<std::vector<fs::path>>, std::string>>{
+           {{a, a}, "shard 0 again"},
+           {{a}, "shard 1 of 2 is missing"},
+           {{a, c}, "but " + a[0].string() + " is one of 2"},
+           {{a, d}, "another recipe or footprint file"}}) {
+    EXPECT_EQ(meshes_only(parts), kExitUnusableInput) << said;
+    EXPECT_NE(err_.str().find(said), std::string::npos) << err_.str();
+  }
+  const auto e = shard(0, 2, other);
+  EXPECT_EQ(merge({{a[0], b[0], e[1], d[1]}}), kExitUnusableInput);  // the meshes of one run, the reports of another
+  EXPECT_NE(err_.str().find("come from different runs"), std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "merged.glb"));
+  EXPECT_EQ(meshes_only({a, b}), 0) << err_.str();
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -149,6 +150,31 @@ TEST_F(HostileInput, PropertiesAreReadStrictly) {
   }
   EXPECT_NE(report["buildings"][3]["reason"].get<std::string>().find("both set 'pitch'"), std::string::npos);
   EXPECT_EQ(report["buildings"][4]["status"], "ok");
+}
+
+// An open roof is blamed on what caused it: vertical walls rise forever
+// (the recipe's doing), a needle whose edges all lean inward is too thin for
+// the sweep (rounding's). It said "edges rise forever" for both.
+TEST_F(HostileInput, AnOpenRoofNamesItsCause) {
+  struct Case {
+    std::string ring;
+    double angle;
+    std::string said;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"[0,0],[10,0],[5,1e-7],[0,0]", 45.0, "although every edge leans inward"},
+           {"[0,0],[10,0],[10,10],[0,10],[0,0]", 0.0, "vertical or outward-leaning edges rise forever"}}) {
+    RoofOptions roof;
+    roof.input = write("open.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+        "geometry": {"type": "Polygon", "coordinates": [[)" + c.ring + "]]}}]}");
+    roof.output = dir_ / "open.obj";
+    roof.report = dir_ / "open.json";
+    roof.angle_deg = c.angle;
+    EXPECT_EQ(run_roof(roof, out_, err_), kExitFeatureFailed) << c.ring;
+    const std::string reason = nlohmann::json::parse(read_text(roof.report))["features"][0]["reason"];
+    EXPECT_EQ(reason.rfind("sweep: the roof does not close", 0), 0u) << reason;
+    EXPECT_NE(reason.find(c.said), std::string::npos) << reason;
+  }
 }
 
 }  // namespace

@@ -40,19 +40,25 @@ class MergeShards : public test::CommandTest {
   // (Built with append: g++ 12 warns falsely on "b" + std::to_string.)
   static std::string name(int b) { return std::string("b").append(std::to_string(b)); }
   void add(GltfSceneBuilder& to, int b) { to.add(building(b), name(b), b); }
+  // What procex batch writes in a shard's scene: shard i of n of one run.
+  static GltfScene stamped(GltfScene scene, int i, int n) {
+    scene.extras["shard"] = std::string(R"({"index":)").append(std::to_string(i)).append(R"(,"count":)")
+                                .append(std::to_string(n)).append(R"(,"recipe":"r","footprints":"f"})");
+    return scene;
+  }
 };
 
 TEST_F(MergeShards, PlacedMeshesMergeIntoTheBytesOfOneRun) {
   GltfSceneBuilder one;
   for (int b = 0; b < 5; ++b) add(one, b);
-  write_glb(dir_ / "one.glb", one.scene());
+  write_glb(dir_ / "one.glb", stamped(one.scene(), 0, 1));
 
   MergeCommandOptions merge;
   for (int shard = 0; shard < 2; ++shard) {  // buildings 0, 2, 4 and 1, 3
     GltfSceneBuilder part;
     for (int b = shard; b < 5; b += 2) add(part, b);
     merge.parts.push_back(dir_ / std::string("part").append(std::to_string(shard)).append(".glb"));
-    write_glb(merge.parts.back(), part.scene());
+    write_glb(merge.parts.back(), stamped(part.scene(), shard, 2));
   }
   std::swap(merge.parts[0], merge.parts[1]);  // parts come in any order
   merge.output = dir_ / "merged.glb";
@@ -72,7 +78,7 @@ TEST_F(MergeShards, PlacedMeshesMergeIntoTheBytesOfOneRun) {
 TEST_F(MergeShards, UnreadablePartIsNamed) {
   GltfSceneBuilder part;
   add(part, 0);
-  write_glb(dir_ / "part.glb", part.scene());
+  write_glb(dir_ / "part.glb", stamped(part.scene(), 0, 2));
   std::string bytes = read_text(dir_ / "part.glb");
   bytes.resize(bytes.size() / 2);
   std::ofstream(dir_ / "cut.glb", std::ios::binary) << bytes;
