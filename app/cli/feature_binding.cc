@@ -88,11 +88,6 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
   return problems;
 }
 
-void label_parts(MeshSet& meshes, const GeoJsonFeature& f) {
-  for (TaggedMesh& part : meshes.parts)
-    part.building = f.id, part.feature = static_cast<std::int64_t>(f.index), part.properties = f.properties;
-}
-
 std::vector<std::string> FeatureEvaluation::warnings() const {
   std::vector<std::string> out;
   for (const Diagnostic& d : diagnostics)

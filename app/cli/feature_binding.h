@@ -16,6 +16,7 @@
 #include "graph/evaluator.h"
 #include "graph/graph.h"
 #include "graph/status.h"
+#include "nodes/support/mesh_labels.h"  // label_parts
 #include "nodes/values.h"
 
 namespace procex {
@@ -41,9 +42,6 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 // feature rather than evaluate it with the recipe's defaults. Properties that
 // name nothing in the recipe are ignored.
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);
-
-// Marks every part with f's id, index and properties (written to .glb extras).
-void label_parts(MeshSet& meshes, const GeoJsonFeature& f);
 
 struct MeshRecipe;
 

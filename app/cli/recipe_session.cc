@@ -2,8 +2,6 @@
 
 #include <ostream>
 
-#include <nlohmann/json.hpp>
-
 #include "graph/pxg.h"
 
 namespace procex {
@@ -94,18 +92,6 @@ MeshSet gather_meshes(const EvalResult& r) {
   for (const OutputResult& o : r.outputs)
     if (const MeshSet* m = o.value.get_if<MeshSet>()) out.parts.insert(out.parts.end(), m->parts.begin(), m->parts.end());
   return out;
-}
-
-void label_parameters(MeshSet& meshes, const Graph& graph) {
-  std::map<std::string, std::string> values;
-  for (const ExposedParam& p : graph.exposed_params()) {
-    const Value& v = graph.node(p.node)->params[p.param];
-    if (!v || !v.type()->has_json()) continue;
-    nlohmann::json j;
-    v.type()->to_json(v.raw(), j);
-    values[p.name] = j.dump();
-  }
-  for (TaggedMesh& part : meshes.parts) part.parameters = values;
 }
 
 void print_diagnostics(const EvalResult& r, const std::filesystem::path& file, std::ostream& err) {

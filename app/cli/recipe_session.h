@@ -11,6 +11,7 @@
 
 #include "graph/evaluator.h"
 #include "graph/graph.h"
+#include "nodes/support/mesh_labels.h"  // label_parameters
 #include "nodes/values.h"
 
 namespace procex {
@@ -56,10 +57,6 @@ std::vector<std::string> mesh_outputs(const Graph& graph);
 
 // The parts of every mesh output of r, in output order.
 MeshSet gather_meshes(const EvalResult& r);
-
-// Records the recipe's exposed parameter values on every part (JSON text per
-// name; written to .glb extras), so a building says what made it.
-void label_parameters(MeshSet& meshes, const Graph& graph);
 
 // Writes every diagnostic of r to err as "file: error: node 3 (Extrude): ...".
 void print_diagnostics(const EvalResult& r, const std::filesystem::path& file, std::ostream& err);

@@ -183,6 +183,11 @@ bool is_mesh_file(const std::filesystem::path& path) {
 
 bool is_gis_file(const std::filesystem::path& path) { return lower_extension(path) == ".gpkg"; }
 
+const std::vector<std::string>& export_extensions() {
+  static const std::vector<std::string> extensions = {".glb", ".obj", ".ply", ".gpkg"};
+  return extensions;
+}
+
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".glb") return write_glb(path, to_gltf(set));

@@ -42,5 +42,8 @@ TaggedMesh flattened(const TaggedMesh& part);
 // writes, or its GIS format (which needs ExportOptions::crs).
 bool is_mesh_file(const std::filesystem::path& path);
 bool is_gis_file(const std::filesystem::path& path);
+// Every extension write_mesh_set writes, lower case with the dot, for a menu
+// or a file chooser: the mesh formats, then the GIS one.
+const std::vector<std::string>& export_extensions();
 
 }  // namespace procex

@@ -23,6 +23,7 @@
 
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
+#include "app/studio/editor/export_meshes.h"
 #include "app/studio/editor/session_files.h"
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
@@ -33,7 +34,6 @@
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
 #include "core/io/geojson.h"
-#include "core/io/mesh_write.h"
 #include "graph/pxg.h"
 
 namespace procex::studio {
@@ -51,6 +51,15 @@ struct PathPrompt {
   std::string path;
   bool open_requested = false;
 };
+
+// The formats File > Export writes, as the buttons under its path name them.
+const char* format_label(const std::string& extension) {
+  if (extension == ".glb") return "glTF (.glb)";
+  if (extension == ".obj") return "OBJ + MTL (.obj)";
+  if (extension == ".ply") return "PLY (.ply)";
+  if (extension == ".gpkg") return "GeoPackage (.gpkg)";
+  return extension.c_str();
+}
 
 }  // namespace
 
@@ -102,6 +111,7 @@ class App {
       preview_->set_mesh(shown_->preview);
     }
     autosave();
+    buttons_.clear();
     shortcuts();
     menu_bar();
     layout_windows();
@@ -128,6 +138,7 @@ class App {
         return;
       }
       preview_footprint_ = to_footprint(c.features.front(), 45.0);
+      preview_feature_ = c.features.front();
       preview_footprint_source_ = file.string() + "#" + c.features.front().id;
       submitted_ = 0;  // evaluate again with the new plan
       status_ = "footprint input: feature " + c.features.front().id + " of " + file.string();
@@ -190,23 +201,18 @@ class App {
     }
   }
 
-  void export_mesh(const fs::path& file) {
-    std::vector<NamedMesh> meshes;
-    if (shown_)
-      for (const PortRef& p : preview_ports(doc_->graph()))
-        if (auto it = shown_->values.find(p); it != shown_->values.end())
-          for (const TaggedMesh* m : meshes_in(it->second))
-            meshes.push_back({m->building.empty() ? "building" + std::to_string(meshes.size()) : m->building, m->mesh.get()});
-    if (meshes.empty()) {
-      status_ = "nothing to export: the recipe has no evaluated mesh yet";
+  void export_meshes(const fs::path& file) {
+    if (!settled() || !shown_) {
+      status_ = "the recipe is still evaluating: export when the preview is up to date";
       return;
     }
-    try {
-      write_mesh_file(file, meshes);
-      status_ = "exported " + std::to_string(meshes.size()) + " meshes to " + file.string();
-    } catch (const std::exception& e) {
-      status_ = e.what();
-    }
+    Result<std::size_t> written = studio::export_meshes(doc_->graph(), *shown_, file, export_options_, preview_feature_ ? &*preview_feature_ : nullptr);
+    status_ = written ? "exported " + std::to_string(*written) + (*written == 1 ? " mesh to " : " meshes to ") + file.string() : written.message();
+  }
+
+  void open_export_prompt() {
+    const fs::path p = doc_->path().empty() ? fs::path("untitled") : fs::path(doc_->path());
+    prompt_ = {PathPrompt::Kind::kExport, fs::path(p).replace_extension(export_extension_).string(), true};
   }
 
   void autosave() {
@@ -234,6 +240,7 @@ class App {
     if (ImGui::IsKeyPressed('O')) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
     if (ImGui::IsKeyPressed('N')) confirm_discard([this] { new_document(); });
     if (ImGui::IsKeyPressed('Q')) request_quit();
+    if (ImGui::IsKeyPressed('E')) open_export_prompt();
   }
 
   fs::path folder() const { return doc_->path().empty() ? fs::current_path() : fs::absolute(doc_->path()).parent_path(); }
@@ -246,7 +253,9 @@ class App {
 
   void menu_bar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
+    const bool file_menu = ImGui::BeginMenu("File");
+    record_button("menu_file");
+    if (file_menu) {
       if (ImGui::MenuItem("New", "Ctrl+N")) confirm_discard([this] { new_document(); });
       if (ImGui::MenuItem("Open...", "Ctrl+O")) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
       if (ImGui::BeginMenu("Open recent", !recent_.list().empty())) {
@@ -256,10 +265,8 @@ class App {
       }
       if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
       if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) save(true);
-      if (ImGui::MenuItem("Export mesh...")) {
-        fs::path p = doc_->path().empty() ? fs::path("untitled.obj") : fs::path(doc_->path()).replace_extension(".obj");
-        prompt_ = {PathPrompt::Kind::kExport, p.string(), true};
-      }
+      if (ImGui::MenuItem("Export...", "Ctrl+E")) open_export_prompt();
+      record_button("menu_export");
       ImGui::Separator();
       if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
       ImGui::EndMenu();
@@ -421,7 +428,6 @@ class App {
   }
 
   void modals() {
-    buttons_.clear();
     if (confirm_requested_) {
       ImGui::OpenPopup("Unsaved changes");
       confirm_requested_ = false;
@@ -473,7 +479,7 @@ class App {
   }
 
   void path_prompt() {
-    static const char* kTitles[] = {"", "Open recipe", "Save recipe as", "Export mesh"};
+    static const char* kTitles[] = {"", "Open recipe", "Save recipe as", "Export"};
     const char* title = kTitles[static_cast<int>(prompt_.kind)];
     if (prompt_.open_requested) {
       ImGui::OpenPopup(title);
@@ -483,18 +489,23 @@ class App {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(520);
     bool go = ImGui::InputText("##path", &prompt_.path, ImGuiInputTextFlags_EnterReturnsTrue);
-    // The folder's recipes (or meshes), to pick from.
+    record_button("prompt_path");
+    const bool exporting = prompt_.kind == PathPrompt::Kind::kExport;
+    if (exporting) export_options();
+    // The folder's recipes (or exported files), to pick from.
     const fs::path dir = fs::path(prompt_.path).has_parent_path() ? fs::path(prompt_.path).parent_path() : fs::current_path();
     ImGui::BeginChild("files", ImVec2(520, 160), true);
     std::error_code ec;
     std::vector<fs::path> files;
+    const std::vector<std::string>& listed = exporting ? export_extensions() : std::vector<std::string>{".pxg"};
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().extension() == (prompt_.kind == PathPrompt::Kind::kExport ? ".obj" : ".pxg")) files.push_back(it->path());
+      if (std::count(listed.begin(), listed.end(), it->path().extension().string())) files.push_back(it->path());
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files)
       if (ImGui::Selectable(f.filename().string().c_str())) prompt_.path = f.string();
     ImGui::EndChild();
-    go |= ImGui::Button(prompt_.kind == PathPrompt::Kind::kOpen ? "Open" : "Save");
+    go |= ImGui::Button(prompt_.kind == PathPrompt::Kind::kOpen ? "Open" : exporting ? "Export" : "Save");
+    record_button("prompt_ok");
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) {
       prompt_.kind = PathPrompt::Kind::kNone;
@@ -514,13 +525,40 @@ class App {
             status_ = e.what();
           }
           break;
-        case PathPrompt::Kind::kExport: export_mesh(p); break;
+        case PathPrompt::Kind::kExport: export_meshes(p); break;
         case PathPrompt::Kind::kNone: break;
       }
       prompt_.kind = PathPrompt::Kind::kNone;
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
+  }
+
+  // Under the export path: the format (it sets the path's extension), the up
+  // axis for OBJ and PLY, the CRS for a GeoPackage: procex eval's -o, --up and --crs.
+  void export_options() {
+    const std::string now = fs::path(prompt_.path).extension().string();
+    for (const std::string& ext : export_extensions()) {
+      if (&ext != &export_extensions().front()) ImGui::SameLine();
+      if (ImGui::RadioButton(format_label(ext), now == ext)) {
+        prompt_.path = fs::path(prompt_.path).replace_extension(ext).string();
+        export_extension_ = ext;
+      }
+      record_button("export_format" + ext);
+    }
+    if (now == ".obj" || now == ".ply") {
+      ImGui::TextUnformatted("up axis:");
+      ImGui::SameLine();
+      if (ImGui::RadioButton("+Y (Blender, Maya, Houdini)", export_options_.up == UpAxis::Y)) export_options_.up = UpAxis::Y;
+      ImGui::SameLine();
+      if (ImGui::RadioButton("+Z (GIS)", export_options_.up == UpAxis::Z)) export_options_.up = UpAxis::Z;
+      record_button("export_up_z");
+    }
+    if (now == ".gpkg") {
+      ImGui::SetNextItemWidth(260);
+      ImGui::InputTextWithHint("CRS", "EPSG:32632 (projected, in metres)", &export_options_.crs);
+      record_button("export_crs");
+    }
   }
 
   // Pins, parameter widgets and state in window pixels, rewritten when they change.
@@ -567,6 +605,7 @@ class App {
     j["errors"] = errors;
     j["status"] = status_;
     j["preview_footprint"] = preview_footprint_source_;
+    if (prompt_.kind != PathPrompt::Kind::kNone) j["prompt"] = {{"path", prompt_.path}, {"crs", export_options_.crs}, {"up_z", export_options_.up == UpAxis::Z}};
     std::string text = j.dump();
     if (text == ui_map_text_) return;
     try {
@@ -598,6 +637,9 @@ class App {
   EvalWorker worker_;
   Footprint preview_footprint_ = preview_footprint();
   std::string preview_footprint_source_;  // the dropped GeoJSON and feature, or empty for the stand-in
+  std::optional<GeoJsonFeature> preview_feature_;  // that feature: its id and properties label exported buildings
+  ExportOptions export_options_;                   // kept between exports, as the format
+  std::string export_extension_ = ".glb";
   std::shared_ptr<const EvalSnapshot> shown_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
   NodeId submitted_node_ = 0;
