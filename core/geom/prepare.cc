@@ -94,11 +94,15 @@ Loop merge_close_vertices(const Loop& loop, std::size_t li, double merge, std::v
   return out;
 }
 
-void check_crossings(const Footprint& fp, const std::vector<std::vector<std::size_t>>& original) {
+// Edges that meet, or that are apart only by the rounding of their
+// coordinates (`within`): a loop whose sides are no further apart than that
+// has no width there for the sweep to resolve. (Farther apart, a near touch is
+// a shape: tests/data/synthetic's e_near_touch cases, 7e-10 of their size.)
+void check_crossings(const Footprint& fp, const std::vector<std::vector<std::size_t>>& original, double within) {
   std::vector<std::vector<glm::dvec2>> loops;
   for (const Loop& loop : fp.loops) loops.push_back(loop.points);
   const LoopSegments segs = loop_segments(loops);
-  const auto pairs = intersecting_segment_pairs(segs.segments, segs.next, 1);
+  const auto pairs = intersecting_segment_pairs(segs.segments, segs.next, 1, within);
   if (pairs.empty()) return;
   auto locate = [&](std::size_t s) {
     const std::size_t li = static_cast<std::size_t>(std::upper_bound(segs.first.begin(), segs.first.end(), s) -
@@ -153,7 +157,7 @@ PreparedFootprint prepare_footprint(const Footprint& footprint) {
     out.footprint.loops.push_back(std::move(loop));
     original.push_back(std::move(kept));
   }
-  check_crossings(out.footprint, original);
+  check_crossings(out.footprint, original, rounding_distance(out.footprint));
   // Only now: a bow-tie also has no area, but is better called self-intersecting.
   for (std::size_t li = 0; li < out.footprint.loops.size(); ++li)
     if (std::abs(0.5 * twice_signed_area(out.footprint.loops[li].points)) <= kLoopAreaRelative * scale * scale)

@@ -21,6 +21,26 @@ bool consecutive_overlap(const Segment2& i, const Segment2& j) {
   return orient2d(i.a, i.b, j.b) == 0 && glm::dot(i.b - i.a, j.b - j.a) < 0.0;
 }
 
+double distance_to_segment(const glm::dvec2& p, const Segment2& s) {
+  const glm::dvec2 d = s.b - s.a;
+  const double len2 = glm::dot(d, d);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - s.a, d) / len2, 0.0, 1.0) : 0.0;
+  return glm::distance(p, s.a + t * d);
+}
+
+// Closest approach of two segments that do not cross: at an endpoint of one.
+double segment_gap(const Segment2& i, const Segment2& j) {
+  return std::min({distance_to_segment(i.a, j), distance_to_segment(i.b, j), distance_to_segment(j.a, i),
+                   distance_to_segment(j.b, i)});
+}
+
+// Consecutive segments i -> j fold back within `within` when j's far end lies
+// that near i, or i's start that near j.
+bool consecutive_fold(const Segment2& i, const Segment2& j, double within) {
+  return consecutive_overlap(i, j) ||
+         (within > 0.0 && (distance_to_segment(j.b, i) <= within || distance_to_segment(i.a, j) <= within));
+}
+
 }  // namespace
 
 void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit) {
@@ -88,24 +108,25 @@ void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(
 
 std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
                                                                             const std::vector<std::size_t>& next,
-                                                                            std::size_t max_pairs) {
+                                                                            std::size_t max_pairs, double within) {
   std::vector<std::pair<std::size_t, std::size_t>> out;
   std::vector<Box2> boxes;
   boxes.reserve(segments.size());
-  for (const Segment2& s : segments) boxes.push_back({glm::min(s.a, s.b), glm::max(s.a, s.b)});
+  const glm::dvec2 margin(within, within);
+  for (const Segment2& s : segments) boxes.push_back({glm::min(s.a, s.b) - margin, glm::max(s.a, s.b) + margin});
   for_each_box_pair(boxes, [&](std::size_t i, std::size_t j) {
     const Segment2 &si = segments[i], &sj = segments[j];
     const bool i_then_j = !next.empty() && next[i] == j;
     const bool j_then_i = !next.empty() && next[j] == i;
     bool hit;
     if (i_then_j && j_then_i) {
-      hit = consecutive_overlap(si, sj) || consecutive_overlap(sj, si);  // a two-edge loop
+      hit = consecutive_fold(si, sj, within) || consecutive_fold(sj, si, within);  // a two-edge loop
     } else if (i_then_j) {
-      hit = consecutive_overlap(si, sj);
+      hit = consecutive_fold(si, sj, within);
     } else if (j_then_i) {
-      hit = consecutive_overlap(sj, si);
+      hit = consecutive_fold(sj, si, within);
     } else {
-      hit = segments_intersect(si.a, si.b, sj.a, sj.b);
+      hit = segments_intersect(si.a, si.b, sj.a, sj.b) || (within > 0.0 && segment_gap(si, sj) <= within);
     }
     if (hit) out.push_back({i, j});
     return out.size() < max_pairs;

@@ -31,10 +31,14 @@ void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(
 // a loop) share that endpoint by design and are reported only if they also
 // overlap (the loop doubles back on itself). next may be empty (no chains);
 // otherwise next[i] is the segment following i, or SIZE_MAX for none.
-// Stops after max_pairs pairs.
+// Stops after max_pairs pairs. With within > 0, segments that come within
+// that distance of each other count as touching too (consecutive ones when
+// the far end of one lies that near the other: they fold back): what is
+// apart by less than a tolerance is not apart at that tolerance.
 std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(const std::vector<Segment2>& segments,
                                                                             const std::vector<std::size_t>& next,
-                                                                            std::size_t max_pairs = 64);
+                                                                            std::size_t max_pairs = 64,
+                                                                            double within = 0.0);
 
 // The segments of closed loops, with next[] linking each loop's edges in a
 // cycle; first[k] is the index of loop k's first edge.

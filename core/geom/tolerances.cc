@@ -29,13 +29,16 @@ double length_scale(const Footprint& footprint) {
   return std::hypot(hi_x - lo_x, hi_y - lo_y);
 }
 
-double merge_distance(const Footprint& footprint) {
+double rounding_distance(const Footprint& footprint) {
   double magnitude = 0.0;
   for (const Loop& loop : footprint.loops)
     for (const glm::dvec2& p : loop.points)
       if (std::isfinite(p.x) && std::isfinite(p.y)) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
-  return std::max(kVertexMergeRelative * length_scale(footprint),
-                  kCoordinateUlps * std::numeric_limits<double>::epsilon() * magnitude);
+  return kCoordinateUlps * std::numeric_limits<double>::epsilon() * magnitude;
+}
+
+double merge_distance(const Footprint& footprint) {
+  return std::max(kVertexMergeRelative * length_scale(footprint), rounding_distance(footprint));
 }
 
 }  // namespace procex

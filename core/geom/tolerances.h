@@ -81,6 +81,10 @@ inline constexpr double kTrsColumnCosine = 1e-9;
 // of its finite points (0 if it has none).
 double length_scale(const Footprint& footprint);
 
+// A few ulps of the footprint's largest coordinate: points closer than this
+// may differ only by the rounding of their coordinates.
+double rounding_distance(const Footprint& footprint);
+
 // The distance below which two footprint points count as the same point:
 // kVertexMergeRelative * length_scale, but never below a few ulps of the
 // largest coordinate (a small footprint far from the origin).
