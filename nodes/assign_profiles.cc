@@ -12,6 +12,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t rules, selection, seed, draw, short_below, long_above, street, street_direction;
+};
+Params par;
+
 void declare(NodeDecl& d) {
   d.doc("Gives each footprint edge a profile. `rules` are tried in order, the first whose labels all match an edge "
         "wins: `street = gable; back long = hip:0.7, mansard:0.3; #4 = 2; * = hip`. Labels: short / medium / long "
@@ -24,18 +30,18 @@ void declare(NodeDecl& d) {
   d.input<Footprint>("footprint");
   d.input<std::vector<Profile>>("profiles");
   d.input<std::string>("building_id").optional().doc("seeds the random picks (the CLI's batch binds it per feature)");
-  d.param<std::string>("rules").default_value(std::string("* = 0")).doc("see above");
-  d.param<std::vector<std::int64_t>>("selection").default_value(std::vector<std::int64_t>{})
-      .doc("edge ids the label `selected` matches");
-  d.param<std::int64_t>("seed").default_value<std::int64_t>(1).doc("random seed");
-  d.param_enum("draw", {"per_building", "per_edge"})
-      .doc("per_building: one pick per rule and building (symmetric buildings); per_edge: one per edge");
-  d.param<double>("short_below").default_value(4.0).range(0, 1000).unit("m").doc("edges shorter than this are short");
-  d.param<double>("long_above").default_value(12.0).range(0, 1000).unit("m").doc("edges longer than this are long");
-  d.param_enum("street", {"longest_edge", "direction"})
-      .doc("where the street is: beyond the longest outer edge, or in `street_direction`");
-  d.param<double>("street_direction").default_value(-90.0).range(-360, 360).unit("deg")
-      .doc("direction from the building to the street, counter-clockwise from +x (-90: south)");
+  par.rules = d.param<std::string>("rules").default_value(std::string("* = 0")).doc("see above").index();
+  par.selection = d.param<std::vector<std::int64_t>>("selection").default_value(std::vector<std::int64_t>{})
+      .doc("edge ids the label `selected` matches").index();
+  par.seed = d.param<std::int64_t>("seed").default_value<std::int64_t>(1).doc("random seed").index();
+  par.draw = d.param_enum("draw", {"per_building", "per_edge"})
+      .doc("per_building: one pick per rule and building (symmetric buildings); per_edge: one per edge").index();
+  par.short_below = d.param<double>("short_below").default_value(4.0).range(0, 1000).unit("m").doc("edges shorter than this are short").index();
+  par.long_above = d.param<double>("long_above").default_value(12.0).range(0, 1000).unit("m").doc("edges longer than this are long").index();
+  par.street = d.param_enum("street", {"longest_edge", "direction"})
+      .doc("where the street is: beyond the longest outer edge, or in `street_direction`").index();
+  par.street_direction = d.param<double>("street_direction").default_value(-90.0).range(-360, 360).unit("deg")
+      .doc("direction from the building to the street, counter-clockwise from +x (-90: south)").index();
   d.output<Footprint>("footprint");
 }
 
@@ -52,17 +58,17 @@ void evaluate(EvalContext& ctx) {
   const std::string building = ctx.has_input(2) ? ctx.input<std::string>(2) : std::string();
   std::vector<ProfileRule> rules;
   try {
-    rules = parse_profile_rules(ctx.param<std::string>(0), profiles);
+    rules = parse_profile_rules(ctx.param<std::string>(par.rules), profiles);
   } catch (const std::invalid_argument& e) {
     return ctx.error(std::string("rules: ") + e.what());
   }
-  const auto& selection = ctx.param<std::vector<std::int64_t>>(1);
-  const std::int64_t seed = ctx.param<std::int64_t>(2);
-  const bool per_edge = ctx.choice(3) == "per_edge";
+  const auto& selection = ctx.param<std::vector<std::int64_t>>(par.selection);
+  const std::int64_t seed = ctx.param<std::int64_t>(par.seed);
+  const bool per_edge = ctx.choice(par.draw) == "per_edge";
   LabelOptions label_options;
-  label_options.short_below = ctx.param<double>(4);
-  label_options.long_above = ctx.param<double>(5);
-  if (ctx.choice(6) == "direction") label_options.street_deg = ctx.param<double>(7);
+  label_options.short_below = ctx.param<double>(par.short_below);
+  label_options.long_above = ctx.param<double>(par.long_above);
+  if (ctx.choice(par.street) == "direction") label_options.street_deg = ctx.param<double>(par.street_direction);
 
   fp.profiles = profiles;
   std::size_t unmatched = 0;

@@ -7,6 +7,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t file;
+};
+Params par;
+
 void declare(NodeDecl& d) {
   d.doc("Writes the mesh to `file` (relative to the recipe's folder) when the node is evaluated, atomically: "
         ".obj with a group per mesh and a material per face tag (plus a .mtl), .ply, or .glb (glTF binary, a "
@@ -14,12 +20,12 @@ void declare(NodeDecl& d) {
         "writes graph outputs without this node.")
       .category("Output");
   d.input<MeshSet>("mesh");
-  d.param<std::string>("file").default_value(std::string("out/model.glb")).doc(".obj, .ply or .glb");
+  par.file = d.param<std::string>("file").default_value(std::string("out/model.glb")).doc(".obj, .ply or .glb").index();
   d.output<std::string>("written");
 }
 
 void evaluate(EvalContext& ctx) {
-  const std::string& file = ctx.param<std::string>(0);
+  const std::string& file = ctx.param<std::string>(par.file);
   if (!is_mesh_file(file)) return ctx.error("file: '" + file + "' does not end in .obj, .ply or .glb");
   std::filesystem::path path;
   try {

@@ -8,6 +8,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t max_height, ambiguity, validate;
+};
+Params par;
+
 void declare(NodeDecl& d) {
   d.doc("Sweeps a plane up from the footprint: every edge's face follows its profile (or leans at its angle), "
         "meeting faces are resolved into a closed 2-manifold. Faces are tagged by their profile segment's tag, "
@@ -18,12 +24,12 @@ void declare(NodeDecl& d) {
         "are inserted into the cross-section at their heights; one that does not fit is skipped with a warning.")
       .category("Geometry");
   d.input<Footprint>("footprint");
-  d.param<double>("max_height").default_value(0.0).range(0, 10000).unit("m")
-      .doc("caps the sweep with flat faces at this height (0: no cap beyond the profiles' tops)");
-  d.param_enum("ambiguity", {"maximize_volume", "minimize_volume"})
-      .doc("how parallel edges that meet are resolved (paper 4.5)");
-  d.param<bool>("validate").default_value(false)
-      .doc("check the mesh (closed, manifold, oriented, planar, no self-intersection) and fail if it is not");
+  par.max_height = d.param<double>("max_height").default_value(0.0).range(0, 10000).unit("m")
+      .doc("caps the sweep with flat faces at this height (0: no cap beyond the profiles' tops)").index();
+  par.ambiguity = d.param_enum("ambiguity", {"maximize_volume", "minimize_volume"})
+      .doc("how parallel edges that meet are resolved (paper 4.5)").index();
+  par.validate = d.param<bool>("validate").default_value(false)
+      .doc("check the mesh (closed, manifold, oriented, planar, no self-intersection) and fail if it is not").index();
   d.param<std::int64_t>("anchors").default_value<std::int64_t>(0).range(0, static_cast<double>(kMaxPortCount))
       .sets_port_count().doc("how many anchor inputs the node has");
   for (std::size_t i = 1; i <= d.count_of("anchors"); ++i)
@@ -37,8 +43,8 @@ void declare(NodeDecl& d) {
 
 void evaluate(EvalContext& ctx) {
   SweepOptions options;
-  if (const double h = ctx.param<double>(0); h > 0) options.max_height = h;
-  options.ambiguity = ctx.choice(1) == "minimize_volume" ? Ambiguity::MinimizeVolume : Ambiguity::MaximizeVolume;
+  if (const double h = ctx.param<double>(par.max_height); h > 0) options.max_height = h;
+  options.ambiguity = ctx.choice(par.ambiguity) == "minimize_volume" ? Ambiguity::MinimizeVolume : Ambiguity::MaximizeVolume;
   std::vector<AnchorSpec> anchors;
   std::vector<PlanEditSpec> edits;
   for (std::size_t i = 1; i < ctx.decl().inputs().size(); ++i) {
@@ -55,7 +61,7 @@ void evaluate(EvalContext& ctx) {
     return ctx.error(describe(e));
   }
   for (const std::string& note : result.notes) ctx.warning(note);
-  if (ctx.param<bool>(2)) {
+  if (ctx.param<bool>(par.validate)) {
     const ValidationReport v = validate(*result.mesh.mesh);
     if (!v.ok()) {
       std::string first = v.problems.empty() ? "no details" : v.problems.front();

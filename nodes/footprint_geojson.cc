@@ -7,9 +7,15 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t file, id, index, angle;
+};
+Params par;
+
 // An edited file is read again.
 void hash_file(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
-  hash_file_stamp(folder / params[0].get<std::string>(), h);
+  hash_file_stamp(folder / params[par.file].get<std::string>(), h);
 }
 
 void declare(NodeDecl& d) {
@@ -17,20 +23,20 @@ void declare(NodeDecl& d) {
         "or, when the id is empty, by position. Edge ids run 0, 1, 2... over the rings in file order. "
         "(For whole files use `procex batch`, which binds each feature to the graph input `footprint`.)")
       .category("Footprint");
-  d.param<std::string>("file").default_value(std::string("footprints/sample_block.geojson"))
-      .doc("path, relative to the recipe's folder");
-  d.param<std::string>("id").default_value(std::string()).doc("the feature's id (empty: use index)");
-  d.param<std::int64_t>("index").default_value<std::int64_t>(0).min(0).doc("position in the features array");
-  d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
-      .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)");
+  par.file = d.param<std::string>("file").default_value(std::string("footprints/sample_block.geojson"))
+      .doc("path, relative to the recipe's folder").index();
+  par.id = d.param<std::string>("id").default_value(std::string()).doc("the feature's id (empty: use index)").index();
+  par.index = d.param<std::int64_t>("index").default_value<std::int64_t>(0).min(0).doc("position in the features array").index();
+  par.angle = d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
+      .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)").index();
   d.output<Footprint>("footprint");
   d.hash_extra(hash_file);
 }
 
 void evaluate(EvalContext& ctx) {
-  const std::string& file = ctx.param<std::string>(0);
-  const std::string& id = ctx.param<std::string>(1);
-  const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(2));
+  const std::string& file = ctx.param<std::string>(par.file);
+  const std::string& id = ctx.param<std::string>(par.id);
+  const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(par.index));
   GeoJsonCollection collection;
   try {
     collection = read_geojson_file(ctx.file(file));
@@ -40,7 +46,7 @@ void evaluate(EvalContext& ctx) {
   for (const GeoJsonFeatureError& e : collection.errors)
     if (id.empty() ? e.index == index : e.id == id) return ctx.error(file + ": " + e.message);
   for (const GeoJsonFeature& f : collection.features)
-    if (id.empty() ? f.index == index : f.id == id) return ctx.set_output(0, to_footprint(f, ctx.param<double>(3)));
+    if (id.empty() ? f.index == index : f.id == id) return ctx.set_output(0, to_footprint(f, ctx.param<double>(par.angle)));
   ctx.error(file + ": no feature " + (id.empty() ? "at index " + std::to_string(index) : "with id '" + id + "'") +
             " (" + std::to_string(collection.features.size() + collection.errors.size()) + " features)");
 }

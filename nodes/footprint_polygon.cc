@@ -7,6 +7,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t points, holes, angle;
+};
+Params par;
+
 using Loops = std::vector<std::vector<Vec2>>;
 
 // Version 1 had one hole, `hole` (empty: none).
@@ -25,14 +31,14 @@ void declare(NodeDecl& d) {
         "Orientation mistakes are repaired by Extrude. Edge ids run 0, 1, 2... along the outer loop, then round "
         "each hole in turn.")
       .category("Footprint");
-  d.param<std::vector<Vec2>>("points")
+  par.points = d.param<std::vector<Vec2>>("points")
       .default_value(std::vector<Vec2>{{0, 0}, {10, 0}, {10, 8}, {0, 8}})
       .unit("m")
-      .doc("corners of the outer loop, x and y in metres");
-  d.param<Loops>("holes").default_value(Loops{}).unit("m")
-      .doc("the holes (courtyards), each a list of corners, e.g. [[[2, 2], [2, 4], [4, 4], [4, 2]]] (empty: none)");
-  d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
-      .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)");
+      .doc("corners of the outer loop, x and y in metres").index();
+  par.holes = d.param<Loops>("holes").default_value(Loops{}).unit("m")
+      .doc("the holes (courtyards), each a list of corners, e.g. [[[2, 2], [2, 4], [4, 4], [4, 2]]] (empty: none)").index();
+  par.angle = d.param<double>("angle").default_value(45.0).range(-90, 90).unit("deg")
+      .doc("every edge's slope from the vertical, for edges that get no profile (0 = wall)").index();
   d.output<Footprint>("footprint");
   d.upgrade(upgrade);
 }
@@ -45,8 +51,8 @@ std::vector<glm::dvec2> to_points(const std::vector<Vec2>& v) {
 }
 
 void evaluate(EvalContext& ctx) {
-  const auto& outer = ctx.param<std::vector<Vec2>>(0);
-  const auto& holes = ctx.param<Loops>(1);
+  const auto& outer = ctx.param<std::vector<Vec2>>(par.points);
+  const auto& holes = ctx.param<Loops>(par.holes);
   if (outer.size() < 3) return ctx.error("points: a plan needs at least 3 corners, got " + std::to_string(outer.size()));
   std::vector<std::vector<glm::dvec2>> loops = {to_points(outer)};
   for (std::size_t i = 0; i < holes.size(); ++i) {
@@ -54,7 +60,7 @@ void evaluate(EvalContext& ctx) {
       return ctx.error("holes: hole " + std::to_string(i + 1) + " needs at least 3 corners, got " + std::to_string(holes[i].size()));
     loops.push_back(to_points(holes[i]));
   }
-  ctx.set_output(0, make_footprint(loops, ctx.param<double>(2)));
+  ctx.set_output(0, make_footprint(loops, ctx.param<double>(par.angle)));
 }
 
 }  // namespace

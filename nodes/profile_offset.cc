@@ -15,6 +15,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t height, distance, tag, overrides;
+};
+Params par;
+
 void declare(NodeDecl& d) {
   d.doc("Steps every edge sideways at one height (outward positive: soffits; inward: ledges) and carries each "
         "profile on from the end of the step, so one handle sets where every roof starts. `overrides` gives "
@@ -24,10 +30,10 @@ void declare(NodeDecl& d) {
         "drop (no step). A later rule wins. Edges without a profile follow their angle.")
       .category("Profile");
   d.input<Footprint>("footprint");
-  d.param<double>("height").default_value(3.0).range(0, 100).unit("m").doc("where the step is, above the footprint");
-  d.param<double>("distance").default_value(0.5).range(-10, 10).unit("m").doc("the step, outward positive");
-  d.param<std::string>("tag").default_value(std::string()).doc("tag of the step's faces (empty: soffit / ledge)");
-  d.param<std::string>("overrides").default_value(std::string()).doc("see above");
+  par.height = d.param<double>("height").default_value(3.0).range(0, 100).unit("m").doc("where the step is, above the footprint").index();
+  par.distance = d.param<double>("distance").default_value(0.5).range(-10, 10).unit("m").doc("the step, outward positive").index();
+  par.tag = d.param<std::string>("tag").default_value(std::string()).doc("tag of the step's faces (empty: soffit / ledge)").index();
+  par.overrides = d.param<std::string>("overrides").default_value(std::string()).doc("see above").index();
   d.output<Footprint>("footprint");
 }
 
@@ -108,14 +114,14 @@ std::vector<OffsetOverride> parse_overrides(std::string_view text) {
 
 void evaluate(EvalContext& ctx) {
   ProfileOffset offset;
-  offset.height = ctx.param<double>(0);
-  offset.distance = ctx.param<double>(1);
-  offset.tag = ctx.param<std::string>(2);
+  offset.height = ctx.param<double>(par.height);
+  offset.distance = ctx.param<double>(par.distance);
+  offset.tag = ctx.param<std::string>(par.tag);
   std::ostringstream name;
   name << "at " << offset.height << " m";
   offset.name = name.str();
   try {
-    offset.overrides = parse_overrides(ctx.param<std::string>(3));
+    offset.overrides = parse_overrides(ctx.param<std::string>(par.overrides));
     ctx.set_output(0, apply_profile_offsets(ctx.input<Footprint>(0), {offset}));
   } catch (const std::invalid_argument& e) {
     ctx.error(e.what());

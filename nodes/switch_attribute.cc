@@ -8,6 +8,12 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t value, cases;
+};
+Params par;
+
 // Version 1 had five fixed cases, each its own parameter case_1..case_5.
 void upgrade(int saved_version, nlohmann::json& params) {
   if (saved_version >= 2) return;
@@ -22,8 +28,8 @@ void upgrade(int saved_version, nlohmann::json& params) {
 
 // The input `value` chooses: k for the k-th case listing it, 0 (default) for none.
 std::size_t chosen(const std::vector<Value>& params) {
-  const std::string& value = params[0].get<std::string>();
-  const auto& cases = params[1].get<std::vector<std::string>>();
+  const std::string& value = params[par.value].get<std::string>();
+  const auto& cases = params[par.cases].get<std::vector<std::string>>();
   for (std::size_t k = 0; k < cases.size(); ++k) {
     std::istringstream list(cases[k]);
     for (std::string item; std::getline(list, item, ',');) {
@@ -42,9 +48,9 @@ void declare(NodeDecl& d) {
         "that choose input `case_k`; any other value (or an unconnected case) chooses `default`. One input per "
         "entry. Only the chosen branch is evaluated.")
       .category("Flow");
-  d.param<std::string>("value").default_value(std::string()).doc("the attribute's value for this building");
-  d.param<std::vector<std::string>>("cases").default_value(std::vector<std::string>{"", ""}).sets_port_count()
-      .doc("per case input, the values choosing it, comma-separated");
+  par.value = d.param<std::string>("value").default_value(std::string()).doc("the attribute's value for this building").index();
+  par.cases = d.param<std::vector<std::string>>("cases").default_value(std::vector<std::string>{"", ""}).sets_port_count()
+      .doc("per case input, the values choosing it, comma-separated").index();
   d.input<Value>("default");
   for (std::size_t k = 1; k <= d.count_of("cases"); ++k) d.input<Value>("case_" + std::to_string(k)).optional();
   d.output<Value>("out");
@@ -54,7 +60,7 @@ void declare(NodeDecl& d) {
 
 // Reached only when the chosen case is not connected: fall back to default.
 void evaluate(EvalContext& ctx) {
-  const std::size_t k = chosen({ctx.param_value(0), ctx.param_value(1)});
+  const std::size_t k = chosen({ctx.param_value(par.value), ctx.param_value(par.cases)});
   ctx.set_output_value(0, ctx.has_input(k) ? ctx.input_value(k) : ctx.input_value(0));
 }
 

@@ -10,9 +10,15 @@
 namespace procex {
 namespace {
 
+// Parameter handles, from the declaration.
+struct Params {
+  std::size_t translate, rotate, scale;
+};
+Params par;
+
 bool is_identity(const std::vector<Value>& params) {
-  const Vec3& t = params[0].get<Vec3>();
-  return t == Vec3{} && params[1].get<double>() == 0.0 && params[2].get<double>() == 1.0;
+  const Vec3& t = params[par.translate].get<Vec3>();
+  return t == Vec3{} && params[par.rotate].get<double>() == 0.0 && params[par.scale].get<double>() == 1.0;
 }
 
 std::optional<std::size_t> pass(const std::vector<Value>& params, std::size_t) {
@@ -24,16 +30,16 @@ void declare(NodeDecl& d) {
         "the meshes placed on it and its resolved anchors. The identity hands the input on untouched.")
       .category("Geometry");
   d.input<MeshSet>("mesh");
-  d.param<Vec3>("translate").default_value(Vec3{}).unit("m").doc("x, y, z offset");
-  d.param<double>("rotate").default_value(0.0).range(-360, 360).unit("deg").doc("counter-clockwise about +z");
-  d.param<double>("scale").default_value(1.0).range(0.001, 1000).doc("uniform scale factor");
+  par.translate = d.param<Vec3>("translate").default_value(Vec3{}).unit("m").doc("x, y, z offset").index();
+  par.rotate = d.param<double>("rotate").default_value(0.0).range(-360, 360).unit("deg").doc("counter-clockwise about +z").index();
+  par.scale = d.param<double>("scale").default_value(1.0).range(0.001, 1000).doc("uniform scale factor").index();
   d.output<MeshSet>("mesh");
   d.pass_through(pass);
 }
 
 void evaluate(EvalContext& ctx) {
-  const Vec3& t = ctx.param<Vec3>(0);
-  const double a = ctx.param<double>(1) * M_PI / 180.0, s = ctx.param<double>(2);
+  const Vec3& t = ctx.param<Vec3>(par.translate);
+  const double a = ctx.param<double>(par.rotate) * M_PI / 180.0, s = ctx.param<double>(par.scale);
   // Column-major: x' = c x - n y + t.x, y' = n x + c y + t.y, z' = s z + t.z.
   const double c = std::cos(a) * s, n = std::sin(a) * s;
   const glm::dmat4 m(c, n, 0, 0, -n, c, 0, 0, 0, 0, s, 0, t.x, t.y, t.z, 1);
