@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cassert>
 #include <chrono>
+#include <new>
 #include <unordered_map>
 #include <utility>
 
@@ -535,6 +536,8 @@ class Run {
       n.node->type->evaluate(ctx);
     } catch (const Cancelled&) {
       n.state = State::kCancelled;
+    } catch (const std::bad_alloc&) {  // its what() says nothing a user can act on
+      ctx.error(kOutOfMemory);
     } catch (const std::exception& e) {
       ctx.error(e.what());
     } catch (...) {

@@ -30,6 +30,12 @@
 
 namespace procex {
 
+// What a node that ran out of memory reports (std::bad_alloc's own text names
+// no cause and no remedy).
+inline constexpr const char* kOutOfMemory =
+    "ran out of memory: this node needs more than the machine has; lower the counts and sizes it works on "
+    "(a placement's rows and columns, a profile's segments, the footprint's vertices), or run fewer --jobs";
+
 // Values for graph inputs, by name. Unbound inputs use their default.
 using Bindings = std::map<std::string, Value, std::less<>>;
 

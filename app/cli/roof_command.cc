@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -91,6 +92,8 @@ void extrude(const GeoJsonFeature& feature, const RoofOptions& options, FeatureR
     r.status = Status::Failed, r.reason = describe(e);  // its message names the sweep
   } catch (const MeshError& e) {
     r.status = Status::Failed, r.reason = std::string("mesh: ") + e.what();
+  } catch (const std::bad_alloc&) {
+    r.status = Status::Failed, r.reason = "ran out of memory sweeping this footprint; run fewer --jobs";
   } catch (const std::exception& e) {
     r.status = Status::Failed, r.reason = std::string("internal error: ") + e.what();
   }

@@ -106,6 +106,12 @@ TEST_F(EvaluatorTest, FailuresStayOnTheirBranch) {
   ASSERT_TRUE(g.set_param(f, "how", Value::make(EnumValue{"throw"})));
   EvalResult thrown = ev.evaluate(g, {}, {"bad"});
   EXPECT_EQ(thrown.diagnostics[0].to_string(), "error: node 2 (test.Fail): thrown on purpose");
+
+  // Running out of memory is said in words, with what to do.
+  ASSERT_TRUE(g.set_param(f, "how", Value::make(EnumValue{"out_of_memory"})));
+  EvalResult oom = ev.evaluate(g, {}, {"bad"});
+  EXPECT_EQ(oom.diagnostics[0].to_string(), std::string("error: node 2 (test.Fail): ") + kOutOfMemory);
+  EXPECT_EQ(oom.diagnostics[0].to_string().find("bad_alloc"), std::string::npos);
 }
 
 TEST_F(EvaluatorTest, WarningsSurviveTheCache) {

@@ -214,7 +214,7 @@ TEST(Pxg, UntrustedInputGetsLocatedErrors) {
       {"param name", R"("nodes": [{"id": 1, "type": "test.Add", "version": 2, "params": {"scal": 1}}]})",
        "/nodes/0/params/scal: 'test.Add' has no parameter 'scal'; did you mean 'scale'?"},
       {"enum choice", R"("nodes": [{"id": 1, "type": "test.Fail", "version": 1, "params": {"how": "explode"}}]})",
-       "/nodes/0/params/how: parameter 'how' has no choice 'explode' (choices: error, throw)"},
+       "/nodes/0/params/how: parameter 'how' has no choice 'explode' (choices: error, throw, out_of_memory)"},
       {"duplicate id",
        R"("nodes": [{"id": 4, "type": "test.Const", "version": 1}, {"id": 4, "type": "test.Const", "version": 1}]})",
        "/nodes/1/id: duplicate node id 4 (also at /nodes/0)"},

@@ -73,7 +73,7 @@ void declare_fail(NodeDecl& d) {
   d.doc("Fails on request, or on negative input.").category("Test");
   d.input<double>("x");
   d.param<bool>("fail").default_value(false);
-  d.param_enum("how", {"error", "throw"});
+  d.param_enum("how", {"error", "throw", "out_of_memory"});
   d.output<double>("out");
 }
 void eval_fail(EvalContext& ctx) {
@@ -81,6 +81,7 @@ void eval_fail(EvalContext& ctx) {
   const double x = ctx.input<double>(0);
   if (ctx.param<bool>(0) || x < 0) {
     if (ctx.choice(1) == "throw") throw std::runtime_error("thrown on purpose");
+    if (ctx.choice(1) == "out_of_memory") throw std::bad_alloc();
     ctx.error("failed on purpose");
     return;
   }
