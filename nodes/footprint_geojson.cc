@@ -1,5 +1,5 @@
-// Footprint GeoJSON: one feature of a GeoJSON file.
-#include "core/io/geojson.h"
+// Footprint GeoJSON: one feature of a footprint file (core/io/footprint_read.h).
+#include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
 #include "graph/registry.h"
 #include "nodes/values.h"
@@ -19,8 +19,9 @@ void hash_file(const std::vector<Value>& params, const std::filesystem::path& fo
 }
 
 void declare(NodeDecl& d) {
-  d.doc("One Polygon or MultiPolygon feature of a GeoJSON FeatureCollection (coordinates in metres), chosen by id "
-        "or, when the id is empty, by position. Edge ids run 0, 1, 2... over the rings in file order. "
+  d.doc("One Polygon or MultiPolygon feature of a footprint file (GeoJSON, Shapefile, GeoPackage, FlatGeobuf, "
+        "OSM buildings), chosen by id or, when the id is empty, by position. Coordinates in metres, or longitude/"
+        "latitude projected to a transverse Mercator centred on the file's data (as `procex batch` does). Edge ids run 0, 1, 2... over the rings in file order. "
         "(For whole files use `procex batch`, which binds each feature to the graph input `footprint`.)")
       .category("Footprint");
   par.file = d.param<std::string>("file").default_value(std::string("footprints/sample_block.geojson"))
@@ -39,7 +40,7 @@ void evaluate(EvalContext& ctx) {
   const auto index = static_cast<std::size_t>(ctx.param<std::int64_t>(par.index));
   GeoJsonCollection collection;
   try {
-    collection = read_geojson_file(ctx.file(file));
+    collection = read_footprints(ctx.file(file));
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }

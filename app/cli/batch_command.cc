@@ -217,8 +217,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   }
   const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err);
   if (!recipe) return kExitUnusableInput;
+  FootprintReadOptions read;
+  read.crs = options.export_options.crs, read.target_crs = options.target_crs;
   const std::optional<GeoJsonCollection> opened =
-      open_footprints(recipe->graph, options.recipe, options.footprints, "batch", err);
+      open_footprints(recipe->graph, options.recipe, options.footprints, read, "batch", err);
   if (!opened) return kExitUnusableInput;
   const GeoJsonCollection& collection = *opened;
   ExportOptions export_options = options.export_options;

@@ -36,7 +36,8 @@ struct BatchCommandOptions {
   // meshes' faces; placed meshes): more is refused, exit 2, nothing written.
   std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
-  ExportOptions export_options;       // --up, --crs
+  ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
+  std::string target_crs;             // --target-crs
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

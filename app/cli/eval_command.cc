@@ -26,7 +26,9 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
   std::optional<GeoJsonCollection> collection;
   const GeoJsonFeature* feature = nullptr;
   if (!options.footprints.empty()) {
-    collection = open_footprints(recipe->graph, options.recipe, options.footprints, "eval", err);
+    FootprintReadOptions read;
+    read.crs = options.export_options.crs, read.target_crs = options.target_crs;
+    collection = open_footprints(recipe->graph, options.recipe, options.footprints, read, "eval", err);
     if (!collection) return kExitUnusableInput;
     const Result<const GeoJsonFeature*> found = find_feature(*collection, options.feature, options.footprints.string());
     if (!found) {

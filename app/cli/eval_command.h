@@ -22,7 +22,8 @@ struct EvalCommandOptions {
   std::string feature;                // the feature's id, or its index in the file
   std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
   std::string preset;                 // a preset of the recipe, applied before the settings
-  ExportOptions export_options;       // --up, --crs
+  ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
+  std::string target_crs;             // --target-crs
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

@@ -39,14 +39,15 @@ Status check_footprint_input(const Graph& recipe, const std::filesystem::path& r
 }
 
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
-                                                 const std::filesystem::path& footprints, const std::string& command,
+                                                 const std::filesystem::path& footprints,
+                                                 const FootprintReadOptions& read, const std::string& command,
                                                  std::ostream& err) {
   if (const Status s = check_footprint_input(recipe, recipe_file); !s) {
     err << s.message() << "\n";
     return std::nullopt;
   }
   try {
-    return read_geojson_file(footprints);
+    return read_footprints(footprints, read);
   } catch (const IoError& e) {
     err << "procex " << command << ": " << e.what() << "\n";
     return std::nullopt;

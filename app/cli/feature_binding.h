@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/geojson.h"
+#include "core/io/footprint_read.h"
 #include "graph/evaluator.h"
 #include "graph/graph.h"
 #include "graph/status.h"
@@ -27,9 +27,11 @@ Status check_footprint_input(const Graph& recipe, const std::filesystem::path& r
 
 // The features a recipe loaded from recipe_file is to be evaluated for: checks
 // that it has a graph input named `footprint` of type footprint, then reads
-// `footprints`. nullopt after writing the problem to err ("procex <command>: ...").
+// `footprints` (any file read_footprints reads, in the CRS `read` says).
+// nullopt after writing the problem to err ("procex <command>: ...").
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
-                                                 const std::filesystem::path& footprints, const std::string& command,
+                                                 const std::filesystem::path& footprints,
+                                                 const FootprintReadOptions& read, const std::string& command,
                                                  std::ostream& err);
 
 // Binds f to graph (a copy of the recipe) and bindings, and its properties

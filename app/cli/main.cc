@@ -42,17 +42,32 @@ void add_allow_path(CLI::App* cmd, std::vector<std::filesystem::path>& folders) 
       ->check(CLI::ExistingDirectory);
 }
 
+// --crs and --target-crs for the commands that read footprints (core/io/footprint_read.h).
+void add_crs_options(CLI::App* cmd, std::string& crs, std::string& target_crs) {
+  cmd->add_option("--crs", crs,
+                  "The footprints' coordinate reference system (EPSG:4326, EPSG:32632, a WKT or a PROJ string), "
+                  "replacing the file's own (.prj, GeoPackage srs, GeoJSON \"crs\"). A projected CRS in metres is "
+                  "built in as it is and a .gpkg output is written in it; longitude/latitude (or feet) is projected "
+                  "to a transverse Mercator centred on the data, true to size there. A file declaring no CRS is taken "
+                  "in metres, but refused if all its coordinates are longitude/latitude and every footprint would be "
+                  "under 5 cm across: give --crs then. Without footprints (eval): the .gpkg output's CRS");
+  cmd->add_option("--target-crs", target_crs,
+                  "The projected CRS in metres to build in (and write a .gpkg in) instead, e.g. the UTM zone "
+                  "(EPSG:32632); needs the footprints' CRS");
+}
+
 Runner add_roof(CLI::App& app) {
   auto options = std::make_shared<RoofOptions>();
   CLI::App* cmd = app.add_subcommand("roof", "Extrude every footprint of a GeoJSON file into a roof, validate it, "
                                              "write one mesh file and a JSON report");
-  cmd->add_option("footprints", options->input, "GeoJSON FeatureCollection of Polygon/MultiPolygon features")
+  cmd->add_option("footprints", options->input, "Footprints: GeoJSON, Shapefile, GeoPackage, FlatGeobuf or OSM (.osm, .pbf: its buildings)")
       ->required();
   cmd->add_option("--angle", options->angle_deg, "Angle of every edge, degrees from the vertical (0 = wall)")
       ->check(kFinite & CLI::Range(-90.0, 90.0))
       ->capture_default_str();
   cmd->add_option("--angles-property", options->angles_property,
                   "Feature property with per-edge angles: one list per ring, one angle per edge");
+  add_crs_options(cmd, options->crs, options->target_crs);
   cmd->add_option_function<double>(
          "--max-height", [options](double h) { options->max_height = h; }, "Cap the roofs with flat faces at this height")
       ->check(kFinite & CLI::PositiveNumber);
@@ -74,13 +89,6 @@ void add_up_option(CLI::App* cmd, ExportOptions& options) {
       ->check(CLI::IsMember({"y", "z"}));
 }
 
-// --crs for the commands that write a GeoPackage.
-void add_crs_option(CLI::App* cmd, ExportOptions& options) {
-  cmd->add_option("--crs", options.crs,
-                  "The footprints' coordinate reference system, for a .gpkg: an EPSG code (EPSG:32632), WKT or a PROJ "
-                  "string, projected and in metres (procex computes in metres; longitude/latitude is refused). "
-                  "batch takes it from the GeoJSON's \"crs\" member when not given");
-}
 
 Runner add_eval(CLI::App& app) {
   auto options = std::make_shared<EvalCommandOptions>();
@@ -92,12 +100,12 @@ Runner add_eval(CLI::App& app) {
   cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
   cmd->add_option("--preset", options->preset, "A named set of exposed values stored in the recipe, applied before --set");
   CLI::Option* footprints = cmd->add_option("--footprints", options->footprints,
-                                            "GeoJSON FeatureCollection: bind one feature as `procex batch` does");
+                                            "Footprint file (GeoJSON, Shapefile, GeoPackage, FlatGeobuf, OSM): bind one feature as `procex batch` does");
   cmd->add_option("--feature", options->feature, "The feature's id, or its index in --footprints")->needs(footprints);
   footprints->needs("--feature");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
-  add_crs_option(cmd, options->export_options);
+  add_crs_options(cmd, options->export_options.crs, options->target_crs);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -130,7 +138,9 @@ Runner add_batch(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("batch", "Evaluate a recipe once per GeoJSON feature (bound to the input "
                                               "'footprint'; properties set exposed parameters of the same name)");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg) with a graph input 'footprint'")->required();
-  cmd->add_option("--footprints", options->footprints, "GeoJSON FeatureCollection")->required();
+  cmd->add_option("--footprints", options->footprints,
+                  "Footprint file: GeoJSON, Shapefile, GeoPackage, FlatGeobuf or OSM (.osm, .pbf: its buildings)")
+      ->required();
   cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb) or GeoPackage (.gpkg, "
                                                   "each building a feature), or a folder (ending in /) for one file "
                                                   "per building")->required();
@@ -156,7 +166,7 @@ Runner add_batch(CLI::App& app) {
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
-  add_crs_option(cmd, options->export_options);
+  add_crs_options(cmd, options->export_options.crs, options->target_crs);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

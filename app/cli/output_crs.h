@@ -1,9 +1,8 @@
-// The coordinate reference system a GeoPackage output is written in: --crs,
-// else the footprints' GeoJSON "crs" member (the 2008 GeoJSON form, e.g.
-// {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32632"}},
-// which GDAL writes for projected data; RFC 7946 itself allows only
-// longitude/latitude, which procex cannot take as metres). Checked before
-// any building is evaluated, so a long batch does not fail at its end.
+// The coordinate reference system a GeoPackage output is written in: the one
+// the buildings were made in (GeoJsonCollection::crs: the footprints' own
+// metric CRS, or the frame procex projected longitude/latitude footprints to;
+// core/io/footprint_read.h), else --crs when no footprints are read. Checked
+// before any building is evaluated, so a long batch does not fail at its end.
 #pragma once
 
 #include <filesystem>
@@ -15,8 +14,8 @@
 
 namespace procex {
 
-// Fills options.crs from the footprints (may be null) when it is empty; if
-// `output` is a GIS file, returns why the CRS cannot georeference it.
+// Sets options.crs to the footprints' (may be null); if `output` is a GIS
+// file, returns why that CRS cannot georeference it.
 std::optional<std::string> settle_output_crs(const std::filesystem::path& output, const GeoJsonCollection* footprints,
                                              ExportOptions& options);
 

@@ -16,7 +16,7 @@
 #include "core/geom/error.h"
 #include "core/geom/prepare.h"
 #include "base/atomic_file_set.h"
-#include "core/io/geojson.h"
+#include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
 #include "core/mesh/mesh.h"
@@ -140,7 +140,10 @@ int run_roof(const RoofOptions& options, std::ostream& out, std::ostream& err) {
   }
   GeoJsonCollection collection;
   try {
-    collection = read_geojson_file(options.input, {options.angles_property, /*require_angles=*/false});
+    FootprintReadOptions read;
+    read.geojson = {options.angles_property, /*require_angles=*/false};
+    read.crs = options.crs, read.target_crs = options.target_crs;
+    collection = read_footprints(options.input, read);
   } catch (const IoError& e) {
     err << "procex roof: " << e.what() << "\n";
     return kExitUnusableFile;

@@ -15,6 +15,7 @@ struct RoofOptions {
   std::filesystem::path input;   // GeoJSON FeatureCollection of Polygon / MultiPolygon features
   double angle_deg = 45.0;       // every edge, unless angles_property gives per-edge angles
   std::string angles_property;   // feature property: one list of angles per ring, one per edge
+  std::string crs, target_crs;   // --crs, --target-crs (core/io/footprint_read.h)
   std::optional<double> max_height;
   std::filesystem::path output;  // .obj or .ply
   std::filesystem::path report;  // JSON

@@ -67,6 +67,9 @@ struct GeoJsonCollection {
   // Top-level members other than "type" and "features" (e.g. "name", "stats"),
   // each as compact JSON text.
   std::map<std::string, std::string> members;
+  // The CRS the loops' coordinates are in (EPSG code, WKT or PROJ string), set
+  // by read_footprints (core/io/footprint_read.h); empty when none is known.
+  std::string crs;
 };
 
 // Throws IoError if the file cannot be read, is not JSON or is not a

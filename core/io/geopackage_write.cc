@@ -5,7 +5,6 @@
 #include <cctype>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <string_view>
 
@@ -19,6 +18,7 @@
 #include <ogrsf_frmts.h>
 
 #include "base/atomic_write.h"
+#include "core/io/gdal_support.h"
 #include "core/io/io_error.h"
 
 namespace procex {
@@ -26,33 +26,14 @@ namespace {
 
 using json = nlohmann::json;
 
-// GDAL reports through a global handler that prints to stderr; while this
-// thread writes, its messages are kept for the IoError instead.
-class QuietGdal {
+// gpkg_contents.last_change: a fixed date keeps the bytes a function of the buildings.
+class FixedDate {
  public:
-  QuietGdal() {
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-    // gpkg_contents.last_change: a fixed date keeps the bytes a function of the buildings.
-    CPLSetThreadLocalConfigOption("OGR_CURRENT_DATE", "2000-01-01T00:00:00.000Z");
-  }
-  ~QuietGdal() {
-    CPLSetThreadLocalConfigOption("OGR_CURRENT_DATE", nullptr);
-    CPLPopErrorHandler();
-  }
-  QuietGdal(const QuietGdal&) = delete;
-  QuietGdal& operator=(const QuietGdal&) = delete;
+  FixedDate() { CPLSetThreadLocalConfigOption("OGR_CURRENT_DATE", "2000-01-01T00:00:00.000Z"); }
+  ~FixedDate() { CPLSetThreadLocalConfigOption("OGR_CURRENT_DATE", nullptr); }
+  FixedDate(const FixedDate&) = delete;
+  FixedDate& operator=(const FixedDate&) = delete;
 };
-
-std::string gdal_reason() {
-  const std::string m = CPLGetLastErrorMsg();
-  return m.empty() ? "GDAL gave no reason" : m;
-}
-
-void register_drivers() {
-  static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
-}
 
 struct ParsedCrs {
   OGRSpatialReference srs;
@@ -66,12 +47,11 @@ ParsedCrs parse_crs(const std::string& crs) {
                   "PROJ string; projected, in metres)";
     return out;
   }
-  out.srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x east, y north, whatever the CRS's own axis order
-  if (out.srs.SetFromUserInput(crs.c_str(), OGRSpatialReference::SET_FROM_USER_INPUT_LIMITATIONS) != OGRERR_NONE)
-    out.problem = "PROJ does not know the CRS '" + crs + "' (" + gdal_reason() + ")";
-  else if (out.srs.IsGeographic())
-    out.problem = "the CRS '" + crs + "' is geographic (longitude/latitude in degrees); procex computes in metres: " +
-                  "project the footprints first and give their projected CRS";
+  out.problem = read_crs(crs, out.srs);
+  if (out.problem) return out;
+  if (out.srs.IsGeographic())
+    out.problem = "the CRS '" + crs + "' is geographic (longitude/latitude in degrees); procex builds in metres: " +
+                  "give a projected CRS in metres (procex projects longitude/latitude footprints itself)";
   else if (const double metres = out.srs.GetLinearUnits(); metres != 1.0)
     out.problem = "the CRS '" + crs + "' measures in units of " + std::to_string(metres) +
                   " m; procex writes metres: give a CRS in metres";
@@ -195,8 +175,9 @@ std::optional<std::string> crs_problem(const std::string& crs) {
 }
 
 void write_geopackage(const std::filesystem::path& path, const std::string& crs, const std::vector<GisBuilding>& buildings) {
-  register_drivers();
+  register_gdal_drivers();
   const QuietGdal quiet;
+  const FixedDate date;
   ParsedCrs parsed = parse_crs(crs);
   auto refuse = [&](const std::string& why) { throw IoError("cannot write '" + path.string() + "': " + why, path.string()); };
   if (parsed.problem) refuse(*parsed.problem);

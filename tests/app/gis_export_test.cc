@@ -29,7 +29,8 @@ const fs::path kBlock = kRoot / "samples" / "footprints" / "sample_block.geojson
 
 class GisExport : public test::CommandTest {
  protected:
-  int batch(const fs::path& footprints, const std::string& crs, const std::string& output = "city.gpkg") {
+  int batch(const fs::path& footprints, const std::string& crs, const std::string& output = "city.gpkg",
+            const std::string& target_crs = "") {
     BatchCommandOptions o;
     o.recipe = kRoot / "samples" / "city.pxg";
     o.footprints = footprints;
@@ -37,6 +38,7 @@ class GisExport : public test::CommandTest {
     o.report = dir_ / "city.json";
     o.progress = false;
     o.export_options.crs = crs;
+    o.target_crs = target_crs;
     return run_batch(o, out_, err_);
   }
   // What GDAL reads in `file`, the layers compared with `crs`.
@@ -118,16 +120,18 @@ TEST_F(GisExport, TheFootprintsCrsMemberIsUsedWhenNoneIsGiven) {
 }
 
 TEST_F(GisExport, CrsThatCannotHoldMetresAreRefusedBeforeAnyWork) {
-  const std::map<std::string, std::string> refused = {
-      {"", "--crs"},
-      {"EPSG:4326", "geographic"},
-      {"EPSG:2263", "units of 0.3048"},  // New York Long Island, US feet
-      {"EPSG:999999", "PROJ does not know"},
+  // The footprints' CRS (--crs) and the one to build and write in (--target-crs).
+  const std::map<std::pair<std::string, std::string>, std::string> refused = {
+      {{"", ""}, "--crs"},
+      {{"EPSG:4326", ""}, "geographic but its coordinates are not"},  // metres are no degrees
+      {{block_crs(), "EPSG:4326"}, "geographic"},
+      {{block_crs(), "EPSG:2263"}, "units of 0.3048"},  // New York Long Island, US feet
+      {{"EPSG:999999", ""}, "PROJ does not know"},
   };
   for (const auto& [crs, why] : refused) {
-    SCOPED_TRACE(crs);
+    SCOPED_TRACE(crs.first + " -> " + crs.second);
     err_.str("");
-    EXPECT_EQ(batch(kBlock, crs), 2);
+    EXPECT_EQ(batch(kBlock, crs.first, "city.gpkg", crs.second), 2);
     EXPECT_NE(err_.str().find(why), std::string::npos) << err_.str();
     EXPECT_FALSE(fs::exists(dir_ / "city.gpkg"));
     EXPECT_FALSE(fs::exists(dir_ / "city.json"));

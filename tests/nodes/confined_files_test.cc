@@ -70,6 +70,9 @@ class ConfinedFiles : public ::testing::Test {
 TEST_F(ConfinedFiles, FootprintGeoJsonReadsOnlyInside) {
   expect_refused("Footprint GeoJSON", "../secret.geojson");
   expect_refused("Footprint GeoJSON", "/etc/passwd");
+  // GIS files GDAL reads (core/io/footprint_read.h) are confined the same way, /vsi paths included.
+  expect_refused("Footprint GeoJSON", "../secret.gpkg");
+  expect_refused("Footprint GeoJSON", "/vsicurl/https://example.com/buildings.shp");
   fs::create_symlink(base_ / "secret.geojson", recipe_ / "plan.geojson");
   expect_refused("Footprint GeoJSON", "plan.geojson");
   EXPECT_TRUE(evaluate("Footprint GeoJSON", "../secret.geojson", {base_}).ok());

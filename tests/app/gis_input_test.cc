@@ -1,0 +1,220 @@
+// Footprints from GIS files (core/io/footprint_read.h), made here by GDAL's
+// ogr2ogr (Debian gdal-bin) from the metric sample block taken back to
+// longitude/latitude with the local frame its "projection" member states: the
+// same footprints as RFC 7946 GeoJSON, a Shapefile, a GeoPackage and a
+// FlatGeobuf make the same buildings, as big as the metric sample's, placed
+// where they are on the Earth in the GeoPackage output's CRS. A lon/lat file
+// that declares no CRS is refused rather than taken as metres; only the listed
+// GDAL drivers open a file; OSM gives its buildings with their tags.
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "app/cli/batch_command.h"
+#include "core/io/footprint_read.h"
+#include "core/io/io_error.h"
+#include "tests/app/command_test.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
+const fs::path kBlock = kRoot / "samples" / "footprints" / "sample_block.geojson";
+
+std::string block_crs() { return json::parse(test::read_text(kBlock))["projection"]["proj"].get<std::string>(); }
+
+class GisInput : public test::CommandTest {
+ protected:
+  // Runs a shell command, failing the test with its output if it fails.
+  void run(const std::string& command) {
+    const fs::path log = dir_ / "command.log";
+    const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command << "\n" << test::read_text(log);
+  }
+  // The sample block in longitude/latitude as `name` (its format by its extension).
+  fs::path lon_lat(const std::string& name) {
+    const fs::path geojson = dir_ / "block_lonlat.geojson";
+    if (!fs::exists(geojson))  // RFC 7946: WGS84 longitude/latitude, no "crs" member
+      run("ogr2ogr -f GeoJSON -lco RFC7946=YES -lco COORDINATE_PRECISION=12 -s_srs '" + block_crs() +
+          "' -t_srs EPSG:4326 " + geojson.string() + " " + kBlock.string());
+    if (name == geojson.filename()) return geojson;
+    run("ogr2ogr " + (dir_ / name).string() + " " + geojson.string());
+    return dir_ / name;
+  }
+  int batch(const fs::path& footprints, const std::string& crs, const std::string& name, const std::string& target = "") {
+    BatchCommandOptions o;
+    o.recipe = kRoot / "samples" / "city.pxg";
+    o.footprints = footprints;
+    o.output = dir_ / (name + ".gpkg");
+    o.report = dir_ / (name + ".json");
+    o.progress = false;
+    o.export_options.crs = crs;
+    o.target_crs = target;
+    return run_batch(o, out_, err_);
+  }
+  json report(const std::string& name) { return json::parse(test::read_text(dir_ / (name + ".json"))); }
+  // The batch's GeoPackage as GDAL's Python bindings read it (tools/read_geopackage.py).
+  json read_back(const std::string& name, const std::string& crs) {
+    const fs::path result = dir_ / (name + ".read.json");
+    run(std::string(PROCEX_PYTHON) + " " + (kRoot / "tools" / "read_geopackage.py").string() + " " +
+        (dir_ / (name + ".gpkg")).string() + " '" + crs + "' " + result.string());
+    return json::parse(test::read_text(result));
+  }
+  static std::map<std::string, json> by_id(const json& report) {
+    std::map<std::string, json> out;
+    for (const json& b : report["buildings"]) out[b["id"]] = b;
+    return out;
+  }
+};
+
+TEST_F(GisInput, EveryFormatMakesTheMetricSamplesBuildings) {
+  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
+  const auto metric = by_id(report("metric"));
+  ASSERT_EQ(metric.size(), 18u);
+  std::map<std::string, std::map<std::string, json>> made;
+  for (const std::string file : {"block_lonlat.geojson", "block.shp", "block.gpkg", "block.fgb"}) {
+    SCOPED_TRACE(file);
+    const fs::path input = lon_lat(file);
+    // The GeoJSON is RFC 7946 (no "crs"): --crs says so; the others carry their CRS.
+    ASSERT_EQ(batch(input, file == "block_lonlat.geojson" ? "EPSG:4326" : "", file), 0) << err_.str();
+    made[file] = by_id(report(file));
+    ASSERT_EQ(made[file].size(), metric.size());
+    for (const auto& [id, b] : made[file]) {
+      SCOPED_TRACE(id);
+      ASSERT_TRUE(metric.count(id));
+      const json& m = metric.at(id);
+      ASSERT_EQ(b["status"], "ok") << b["reason"];
+      const double volume = b["volume"], metric_volume = m["volume"];
+      EXPECT_NEAR(volume, metric_volume, 1e-6 * metric_volume);
+      EXPECT_NEAR(volume, made.begin()->second.at(id)["volume"].get<double>(), 1e-6 * volume);
+      EXPECT_NEAR(b["bounds"]["max"][2].get<double>(), m["bounds"]["max"][2].get<double>(), 1e-3);  // height
+      EXPECT_EQ(b["faces_per_tag"], m["faces_per_tag"]);
+    }
+  }
+}
+
+TEST_F(GisInput, LonLatIsBuiltInALocalFrameTheGeoPackageCarries) {
+  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
+  const json metric = read_back("metric", block_crs());
+  ASSERT_EQ(batch(lon_lat("block.gpkg"), "", "lonlat"), 0) << err_.str();
+  const GeoJsonCollection read = read_footprints(lon_lat("block.gpkg"));
+  EXPECT_NE(read.crs.find("procex local transverse Mercator"), std::string::npos) << read.crs;
+  const json gis = read_back("lonlat", read.crs);
+  for (const char* layer : {"buildings", "surfaces"}) EXPECT_TRUE(gis["layers"][layer]["crs_same"]) << layer;
+
+  // The frame's origin is the data's centre (to 1e-6 degree, ~0.1 m)...
+  double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+  for (const auto& [id, b] : gis["buildings"].items())
+    for (int k = 0; k < 2; ++k)
+      low[k] = std::min(low[k], b["min"][k].get<double>()), high[k] = std::max(high[k], b["max"][k].get<double>());
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(low[k] + high[k], 0.0, 0.5) << "axis " << k;
+  // ...and PROJ takes every building back to where the metric sample's is on the Earth (1e-8 degree: ~1 mm).
+  ASSERT_EQ(gis["buildings"].size(), 18u);
+  for (const auto& [id, b] : gis["buildings"].items()) {
+    SCOPED_TRACE(id);
+    for (int k = 0; k < 2; ++k)
+      EXPECT_NEAR(b["lonlat"][k].get<double>(), metric["buildings"][id]["lonlat"][k].get<double>(), 1e-8);
+    EXPECT_NEAR(b["volume"].get<double>(), metric["buildings"][id]["volume"].get<double>(),
+                1e-6 * b["volume"].get<double>());
+  }
+}
+
+TEST_F(GisInput, TargetCrsBuildsInTheFrameAsked) {
+  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
+  const auto metric = by_id(report("metric"));
+  ASSERT_EQ(batch(lon_lat("block.shp"), "", "shp", block_crs()), 0) << err_.str();
+  for (const auto& [id, b] : by_id(report("shp")))
+    for (const char* end : {"min", "max"})
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(b["bounds"][end][k].get<double>(), metric.at(id)["bounds"][end][k].get<double>(), 1e-3) << id;
+  EXPECT_TRUE(read_back("shp", block_crs())["layers"]["buildings"]["crs_same"]);
+}
+
+TEST_F(GisInput, LonLatThatDeclaresNoCrsIsRefusedNotTakenAsMetres) {
+  const fs::path lonlat = lon_lat("block_lonlat.geojson");
+  EXPECT_EQ(batch(lonlat, "", "refused"), 2);
+  EXPECT_NE(err_.str().find(lonlat.string()), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("--crs EPSG:4326"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "refused.json"));
+  // A metric file whose coordinates happen to lie in longitude/latitude range is read as metres.
+  const fs::path small = dir_ / "small.geojson";
+  std::ofstream(small) << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+      "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [12, 0], [12, 8], [0, 8], [0, 0]]]}}]})";
+  const GeoJsonCollection read = read_footprints(small);
+  ASSERT_EQ(read.features.size(), 1u);
+  EXPECT_EQ(read.features[0].loops[0][2], glm::dvec2(12, 8));
+  EXPECT_TRUE(read.crs.empty());
+  // Coordinates that are no longitude/latitude under a geographic --crs are refused.
+  EXPECT_EQ(batch(kBlock, "EPSG:4326", "wrong"), 2);
+  EXPECT_NE(err_.str().find("geographic but its coordinates are not"), std::string::npos) << err_.str();
+}
+
+TEST_F(GisInput, OnlyTheListedDriversOpenAFile) {
+  const fs::path shp = lon_lat("block.shp");
+  const fs::path vrt = dir_ / "block.vrt";
+  std::ofstream(vrt) << "<OGRVRTDataSource><OGRVRTLayer name=\"block\"><SrcDataSource>" << shp.string()
+                     << "</SrcDataSource></OGRVRTLayer></OGRVRTDataSource>";
+  for (const fs::path& refused : {vrt, fs::path("/vsicurl/https://example.com/block.shp"), fs::path("/vsizip/" + shp.string())}) {
+    SCOPED_TRACE(refused);
+    try {
+      read_footprints(refused);
+      ADD_FAILURE() << "read";
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find(refused.string()), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(GisInput, ABadFeatureIsReportedAndSkipped) {
+  const fs::path geojson = dir_ / "mixed.geojson", gpkg = dir_ / "mixed_in.gpkg";
+  std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"id": "a"}, "geometry": {"type": "Polygon",
+     "coordinates": [[[7.4251, 43.7371], [7.4253, 43.7371], [7.4253, 43.7372], [7.4251, 43.7372], [7.4251, 43.7371]]]}},
+    {"type": "Feature", "properties": {"id": "road"}, "geometry": {"type": "LineString",
+     "coordinates": [[7.4251, 43.7371], [7.4253, 43.7372]]}}]})";
+  run("ogr2ogr -nlt GEOMETRY " + gpkg.string() + " " + geojson.string());
+  EXPECT_EQ(batch(gpkg, "", "mixed"), 0) << err_.str();  // as for a GeoJSON feature: reported, the batch goes on
+  const auto made = by_id(report("mixed"));
+  EXPECT_EQ(made.at("a")["status"], "ok") << made.at("a")["reason"];
+  EXPECT_EQ(made.at("road")["status"], "refused");
+  EXPECT_NE(made.at("road")["reason"].get<std::string>().find("layer 'mixed' (FID 2)"), std::string::npos);
+  EXPECT_NE(made.at("road")["reason"].get<std::string>().find("'Line String' is not a Polygon"), std::string::npos);
+}
+
+TEST_F(GisInput, OsmBuildingsWithTheirTags) {
+  const fs::path osm = dir_ / "block.osm";
+  std::ofstream(osm) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<osm version="0.6" generator="gis_input_test">
+  <node id="1" lat="43.7371" lon="7.4251" version="1"/><node id="2" lat="43.7371" lon="7.4253" version="1"/>
+  <node id="3" lat="43.7372" lon="7.4253" version="1"/><node id="4" lat="43.7372" lon="7.4251" version="1"/>
+  <node id="5" lat="43.7373" lon="7.4251" version="1"/><node id="6" lat="43.7374" lon="7.4252" version="1"/>
+  <way id="10" version="1"><nd ref="1"/><nd ref="2"/><nd ref="3"/><nd ref="4"/><nd ref="1"/>
+    <tag k="building" v="house"/><tag k="height" v="9 m"/><tag k="building:levels" v="3"/><tag k="roof:shape" v="gabled"/></way>
+  <way id="11" version="1"><nd ref="4"/><nd ref="5"/><nd ref="6"/><nd ref="4"/><tag k="landuse" v="grass"/></way>
+</osm>)";
+  const GeoJsonCollection read = read_footprints(osm);
+  ASSERT_EQ(read.features.size(), 1u);  // the grass is no building
+  const GeoJsonFeature& f = read.features[0];
+  EXPECT_EQ(f.id, "w10");
+  EXPECT_EQ(f.property_number("height"), 9.0);
+  EXPECT_EQ(f.property_number("building:levels"), 3.0);
+  EXPECT_EQ(f.property_text("roof:shape"), "gabled");
+  // On WGS84 at 43.737 N, 0.0002 degree of longitude is 16.112 m and 0.0001 degree of latitude 11.111 m.
+  double low = 1e300, high = -1e300, south = 1e300, north = -1e300;
+  for (const glm::dvec2& p : f.loops[0])
+    low = std::min(low, p.x), high = std::max(high, p.x), south = std::min(south, p.y), north = std::max(north, p.y);
+  EXPECT_NEAR(high - low, 16.112, 0.002);
+  EXPECT_NEAR(north - south, 11.111, 0.002);
+}
+
+}  // namespace
+}  // namespace procex
