@@ -17,6 +17,7 @@
 
 #include "app/cli/batch_command.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -24,8 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
-const fs::path kBlock = kRoot / "samples" / "footprints" / "sample_block.geojson";
+const fs::path& kRoot = test::kRepository;
+const fs::path& kBlock = test::kSampleBlock;
 
 class GisExport : public test::CommandTest {
  protected:
@@ -54,13 +55,9 @@ class GisExport : public test::CommandTest {
   }
 };
 
-// The sample block's own frame, as its "projection" member states it.
-std::string block_crs() {
-  return json::parse(test::read_text(kBlock))["projection"]["proj"].get<std::string>();
-}
 
 TEST_F(GisExport, EachBuildingIsAFeatureWhereTheReportPutsItInItsCrs) {
-  const std::string crs = block_crs();
+  const std::string crs = test::sample_block_crs();
   ASSERT_EQ(batch(kBlock, crs), 0) << err_.str();
   const json gis = read_back(dir_ / "city.gpkg", crs);
   const json report = json::parse(test::read_text(dir_ / "city.json"));
@@ -124,8 +121,8 @@ TEST_F(GisExport, CrsThatCannotHoldMetresAreRefusedBeforeAnyWork) {
   const std::map<std::pair<std::string, std::string>, std::string> refused = {
       {{"", ""}, "--crs"},
       {{"EPSG:4326", ""}, "geographic but its coordinates are not"},  // metres are no degrees
-      {{block_crs(), "EPSG:4326"}, "geographic"},
-      {{block_crs(), "EPSG:2263"}, "units of 0.3048"},  // New York Long Island, US feet
+      {{test::sample_block_crs(), "EPSG:4326"}, "geographic"},
+      {{test::sample_block_crs(), "EPSG:2263"}, "units of 0.3048"},  // New York Long Island, US feet
       {{"EPSG:999999", ""}, "PROJ does not know"},
   };
   for (const auto& [crs, why] : refused) {
@@ -145,7 +142,7 @@ TEST_F(GisExport, OneGeoPackagePerBuildingInAFolder) {
   o.output = dir_ / "per_building/";
   o.format = "gpkg";
   o.progress = false;
-  o.export_options.crs = block_crs();
+  o.export_options.crs = test::sample_block_crs();
   ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
   std::size_t files = 0;
   for (const auto& entry : fs::directory_iterator(dir_ / "per_building")) {
@@ -159,7 +156,7 @@ TEST_F(GisExport, OneGeoPackagePerBuildingInAFolder) {
 }
 
 TEST_F(GisExport, TheSameBuildingsWriteTheSameBytes) {
-  const std::string crs = block_crs();
+  const std::string crs = test::sample_block_crs();
   ASSERT_EQ(batch(kBlock, crs, "a.gpkg"), 0) << err_.str();
   ASSERT_EQ(batch(kBlock, crs, "b.gpkg"), 0) << err_.str();
   EXPECT_EQ(test::read_text(dir_ / "a.gpkg"), test::read_text(dir_ / "b.gpkg"));

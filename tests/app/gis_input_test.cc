@@ -20,6 +20,7 @@
 #include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -27,10 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
-const fs::path kBlock = kRoot / "samples" / "footprints" / "sample_block.geojson";
-
-std::string block_crs() { return json::parse(test::read_text(kBlock))["projection"]["proj"].get<std::string>(); }
+const fs::path& kRoot = test::kRepository;
+const fs::path& kBlock = test::kSampleBlock;
 
 class GisInput : public test::CommandTest {
  protected:
@@ -44,7 +43,7 @@ class GisInput : public test::CommandTest {
   fs::path lon_lat(const std::string& name) {
     const fs::path geojson = dir_ / "block_lonlat.geojson";
     if (!fs::exists(geojson))  // RFC 7946: WGS84 longitude/latitude, no "crs" member
-      run("ogr2ogr -f GeoJSON -lco RFC7946=YES -lco COORDINATE_PRECISION=12 -s_srs '" + block_crs() +
+      run("ogr2ogr -f GeoJSON -lco RFC7946=YES -lco COORDINATE_PRECISION=12 -s_srs '" + test::sample_block_crs() +
           "' -t_srs EPSG:4326 " + geojson.string() + " " + kBlock.string());
     if (name == geojson.filename()) return geojson;
     run("ogr2ogr " + (dir_ / name).string() + " " + geojson.string());
@@ -77,7 +76,7 @@ class GisInput : public test::CommandTest {
 };
 
 TEST_F(GisInput, EveryFormatMakesTheMetricSamplesBuildings) {
-  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
+  ASSERT_EQ(batch(kBlock, test::sample_block_crs(), "metric"), 0) << err_.str();
   const auto metric = by_id(report("metric"));
   ASSERT_EQ(metric.size(), 18u);
   std::map<std::string, std::map<std::string, json>> made;
@@ -103,8 +102,8 @@ TEST_F(GisInput, EveryFormatMakesTheMetricSamplesBuildings) {
 }
 
 TEST_F(GisInput, LonLatIsBuiltInALocalFrameTheGeoPackageCarries) {
-  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
-  const json metric = read_back("metric", block_crs());
+  ASSERT_EQ(batch(kBlock, test::sample_block_crs(), "metric"), 0) << err_.str();
+  const json metric = read_back("metric", test::sample_block_crs());
   ASSERT_EQ(batch(lon_lat("block.gpkg"), "", "lonlat"), 0) << err_.str();
   const GeoJsonCollection read = read_footprints(lon_lat("block.gpkg"));
   EXPECT_NE(read.crs.find("procex local transverse Mercator"), std::string::npos) << read.crs;
@@ -129,14 +128,14 @@ TEST_F(GisInput, LonLatIsBuiltInALocalFrameTheGeoPackageCarries) {
 }
 
 TEST_F(GisInput, TargetCrsBuildsInTheFrameAsked) {
-  ASSERT_EQ(batch(kBlock, block_crs(), "metric"), 0) << err_.str();
+  ASSERT_EQ(batch(kBlock, test::sample_block_crs(), "metric"), 0) << err_.str();
   const auto metric = by_id(report("metric"));
-  ASSERT_EQ(batch(lon_lat("block.shp"), "", "shp", block_crs()), 0) << err_.str();
+  ASSERT_EQ(batch(lon_lat("block.shp"), "", "shp", test::sample_block_crs()), 0) << err_.str();
   for (const auto& [id, b] : by_id(report("shp")))
     for (const char* end : {"min", "max"})
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(b["bounds"][end][k].get<double>(), metric.at(id)["bounds"][end][k].get<double>(), 1e-3) << id;
-  EXPECT_TRUE(read_back("shp", block_crs())["layers"]["buildings"]["crs_same"]);
+  EXPECT_TRUE(read_back("shp", test::sample_block_crs())["layers"]["buildings"]["crs_same"]);
 }
 
 TEST_F(GisInput, LonLatThatDeclaresNoCrsIsRefusedNotTakenAsMetres) {
