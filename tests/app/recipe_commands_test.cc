@@ -167,7 +167,7 @@ TEST_F(RecipeCommands, ValidateTypeChecksThroughSwitches) {
     EXPECT_NE(err_.str().find(c.validate_said), std::string::npos) << c.name << ": " << err_.str();
     if (c.eval_said.empty()) continue;
     err_.str("");
-    EXPECT_EQ(run_eval({file, dir_ / (c.name + ".obj"), {}, {}, {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed) << c.name;
+    EXPECT_EQ(run_eval({file, dir_ / (c.name + ".obj"), {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed) << c.name;
     EXPECT_NE(err_.str().find(c.eval_said), std::string::npos) << c.name << ": " << err_.str();
     EXPECT_FALSE(fs::exists(dir_ / (c.name + ".obj"))) << c.name;
   }
