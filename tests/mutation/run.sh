@@ -17,7 +17,9 @@ limit=${PROCEX_MUTATION_TIMEOUT:-900}
 filter='-Osm/*:Synthetic/*'
 
 mkdir -p "$work"
-rsync -a --delete --exclude '/build*' --exclude '/.git' --exclude '/out' "$root/" "$work/src/"
+# Contents compared, times not kept: a file that changed gets a new time, so the build sees it
+# (kept times can be older than the objects of an earlier run, which ninja then takes as current).
+rsync -rlpc --delete --exclude '/build*' --exclude '/.git' --exclude '/out' "$root/" "$work/src/"
 export CCACHE_BASEDIR="$work/src"
 cmake -S "$work/src" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROCEX_STUDIO=OFF -DPROCEX_BENCH=OFF >/dev/null
 tests="$work/build/tests/procex_core_tests"
