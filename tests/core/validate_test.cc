@@ -176,6 +176,21 @@ TEST(Validate, VertexJoiningTwoFansIsNotManifold) {
   EXPECT_THROW(build_mesh(s), MeshError);
 }
 
+// Three triangles hinged on one edge (a book of three pages). OpenMesh cannot
+// link a third face to an edge, so the third page has its own copies of the
+// hinge; welded, the edge has three faces.
+TEST(Validate, AnEdgeOfThreeFacesIsNotManifold) {
+  Mesh mesh;
+  const auto add = [&](const Mesh::Point& p) { return mesh.add_vertex(p); };
+  const auto a = add({0, 0, 0}), b = add({0, 0, 1}), c = a, d = b;
+  ASSERT_TRUE(mesh.add_face(a, b, add({1, 0, 0})).is_valid());
+  ASSERT_TRUE(mesh.add_face(d, c, add({0, 1, 0})).is_valid());
+  ASSERT_TRUE(mesh.add_face(add({0, 0, 0}), add({0, 0, 1}), add({-1, -1, 0})).is_valid());
+  const ValidationReport r = validate(mesh);
+  EXPECT_FALSE(r.manifold);
+  EXPECT_TRUE(mentions(r, "has 3 faces")) << ::testing::PrintToString(r.problems);
+}
+
 // A 4096-sided prism: 4098 faces, one of them with 4096 vertices.
 TEST(Validate, LargeRegularPrismIsValid) {
   std::vector<glm::dvec2> circle;
