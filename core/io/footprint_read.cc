@@ -39,6 +39,17 @@ constexpr double kLargestLonLatFootprint = 0.05;
   throw IoError(path.string() + ": " + why, path.string());
 }
 
+// A CRS as WKT2, the form GeoJsonCollection::crs and the outputs carry;
+// nullopt if GDAL cannot write it.
+std::optional<std::string> wkt2(const OGRSpatialReference& srs) {
+  char* wkt = nullptr;
+  const char* options[] = {"FORMAT=WKT2_2019", nullptr};
+  std::optional<std::string> out;
+  if (srs.exportToWkt(&wkt, options) == OGRERR_NONE && wkt) out = wkt;
+  CPLFree(wkt);
+  return out;
+}
+
 struct CloseDataset {
   void operator()(GDALDataset* d) const { GDALClose(d); }
 };
@@ -162,12 +173,8 @@ GeoJsonCollection read_with_gdal(const fs::path& path, std::string& crs) {
   if (osm && layer->SetAttributeFilter("building IS NOT NULL") != OGRERR_NONE)
     refuse(path, "cannot select the buildings: " + gdal_reason());
   if (crs.empty())
-    if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
-      char* wkt = nullptr;
-      const char* options[] = {"FORMAT=WKT2_2019", nullptr};
-      if (srs->exportToWkt(&wkt, options) == OGRERR_NONE) crs = wkt;
-      CPLFree(wkt);
-    }
+    if (const OGRSpatialReference* srs = layer->GetSpatialRef())
+      if (const auto wkt = wkt2(*srs)) crs = *wkt;
 
   GeoJsonCollection out;
   const std::string layer_name = layer->GetName();
@@ -252,12 +259,9 @@ std::string local_frame(const OGRSpatialReference& from, glm::dvec2 centre, cons
   frame.SetProjCS("procex local transverse Mercator");
   frame.SetTM(rounded(centre.y), rounded(centre.x), 1.0, 0.0, 0.0);
   frame.SetLinearUnits(SRS_UL_METER, 1.0);
-  char* wkt = nullptr;
-  const char* options[] = {"FORMAT=WKT2_2019", nullptr};
-  if (frame.exportToWkt(&wkt, options) != OGRERR_NONE) refuse(path, "PROJ cannot write the local frame: " + gdal_reason());
-  const std::string out = wkt;
-  CPLFree(wkt);
-  return out;
+  const auto wkt = wkt2(frame);
+  if (!wkt) refuse(path, "PROJ cannot write the local frame: " + gdal_reason());
+  return *wkt;
 }
 
 // Projects c from `source` to the frame its buildings are made in (footprint_read.h).
