@@ -27,6 +27,7 @@
 #include "app/studio/editor/session_files.h"
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
+#include "app/studio/ui/layout_settings.h"
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/partial_redraw.h"
 #include "app/studio/ui/preview_view.h"
@@ -68,6 +69,8 @@ class App {
   App(GLFWwindow* window, const Options& options) : window_(window), options_(options), home_(studio_home()), recent_(home_ / "recent.txt") {
     const bool interactive = options_.screenshot.empty() && options_.bench_edits == 0;
     canvas_.show_times(options_.screenshot.empty());
+    // Screenshots and benchmarks show the default layout, whatever this user made of theirs.
+    keep_layout_ = interactive;
     if (!options_.recipe.empty()) {
       load(options_.recipe, interactive);
       if (doc_->graph().node(options_.select)) doc_->select_only(options_.select);
@@ -75,6 +78,8 @@ class App {
       doc_ = std::make_unique<Document>();
       if (interactive && find_recovery(home_, {})) recovery_ = fs::path();
     }
+    if (keep_layout_)
+      if (std::string failed = layout_.load(); !failed.empty()) status_ = std::move(failed);
   }
 
   // Whether the last finished evaluation is of the current revision and its preview is on screen.
@@ -111,6 +116,8 @@ class App {
       preview_->set_mesh(shown_->preview);
     }
     autosave();
+    if (keep_layout_ && ImGui::GetIO().WantSaveIniSettings)
+      if (std::string failed = layout_.save(); !failed.empty()) status_ = std::move(failed);
     buttons_.clear();
     shortcuts();
     menu_bar();
@@ -156,6 +163,7 @@ class App {
   void leave() {
     // A clean exit leaves no autosave behind unless edits are unsaved.
     if (!doc_->dirty()) remove_autosave(home_, doc_->path());
+    if (keep_layout_) (void)layout_.save();  // nowhere left to say that it failed
   }
 
  private:
@@ -288,45 +296,88 @@ class App {
         if (Status s = doc_->tidy_layout(); !s) status_ = s.message();
       ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
+    const bool view_menu = ImGui::BeginMenu("View");
+    record_button("menu_view");
+    if (view_menu) {
       ImGui::MenuItem("Wireframe", nullptr, &preview_->wireframe);
       ImGui::MenuItem("Anchors", nullptr, &preview_->anchors);
       if (ImGui::MenuItem("Frame preview")) preview_->frame_all();
       if (ImGui::MenuItem("Frame nodes", "F")) canvas_.request_frame();
+      ImGui::Separator();
+      if (ImGui::MenuItem("Reset layout", nullptr, false, keep_layout_)) {
+        const std::string failed = layout_.reset();
+        status_ = failed.empty() ? "panel layout reset (" + layout_.file().string() + ")" : failed;
+      }
+      record_button("menu_reset_layout");
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
   }
 
+  // The four panels meet at the layout's two splits; dragging a panel's inner
+  // edge moves its split (its outer edges snap back the next frame).
   void layout_windows() {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     const float top = vp->WorkPos.y, status_h = ImGui::GetFrameHeight() + 4.0f;
     const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
-    const float left_w = std::floor(w * 0.5f), upper_h = std::floor(h * 0.62f);
+    PanelLayout& layout = layout_.layout();
+    const PanelLayout before = layout;
+    const float left_w = std::floor(w * static_cast<float>(layout.split_x)), upper_h = std::floor(h * static_cast<float>(layout.split_y));
     // With nothing selected the inspector has one line to say: the canvas takes its room.
-    const float canvas_h = doc_->selection().empty() ? h - std::floor(ImGui::GetFrameHeight() * 2.5f + 8.0f) : upper_h;
-    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    const bool inspector_empty = doc_->selection().empty();
+    const float canvas_h = inspector_empty ? h - std::floor(ImGui::GetFrameHeight() * 2.5f + 8.0f) : upper_h;
+    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    // Places a panel at (x, y, ww, hh); after its Begin, `moved` reads which edges the user dragged.
+    struct Edges {
+      float left, top, right, bottom;
+    };
+    Edges placed{};
     auto place = [&](float x, float y, float ww, float hh) {
-      ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + x, top + y));
+      placed = {vp->WorkPos.x + x, top + y, vp->WorkPos.x + x + ww, top + y + hh};
+      ImGui::SetNextWindowPos(ImVec2(placed.left, placed.top));
       ImGui::SetNextWindowSize(ImVec2(ww, hh));
     };
+    auto moved = [&](const char* panel) {
+      const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+      buttons_[std::string("panel_") + panel] = {p.x, p.y, s.x, s.y};
+      return Edges{p.x - placed.left, p.y - placed.top, p.x + s.x - placed.right, p.y + s.y - placed.bottom};
+    };
+    auto set_x = [&](float edge) { layout.split_x = (edge - vp->WorkPos.x) / w; };
+    auto set_y = [&](float edge) { layout.split_y = (edge - top) / h; };
+    auto dragged = [](float d) { return d > 0.5f || d < -0.5f; };
     place(0, 0, left_w, canvas_h);
-    if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+    if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+      if (const Edges m = moved("nodes"); dragged(m.right)) set_x(placed.right + m.right);
+      else if (!inspector_empty && dragged(m.bottom)) set_y(placed.bottom + m.bottom);
       canvas_.draw(*doc_, shown_.get(), status_);
+    }
     ImGui::End();
     place(0, canvas_h, left_w, h - canvas_h);
-    if (ImGui::Begin("Inspector", nullptr, fixed)) inspector_.draw(*doc_, shown_.get(), status_);
+    if (ImGui::Begin("Inspector", nullptr, fixed)) {
+      if (const Edges m = moved("inspector"); dragged(m.right)) set_x(placed.right + m.right);
+      else if (!inspector_empty && dragged(m.top)) set_y(placed.top + m.top);
+      inspector_.draw(*doc_, shown_.get(), status_);
+    }
     ImGui::End();
     place(left_w, 0, w - left_w, upper_h);
-    if (ImGui::Begin("Preview", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) preview_->draw();
+    if (ImGui::Begin("Preview", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+      if (const Edges m = moved("preview"); dragged(m.left)) set_x(placed.left + m.left);
+      else if (dragged(m.bottom)) set_y(placed.bottom + m.bottom);
+      preview_->draw();
+    }
     ImGui::End();
     place(left_w, upper_h, w - left_w, h - upper_h);
-    if (ImGui::Begin("Evaluation", nullptr, fixed | ImGuiWindowFlags_NoScrollbar)) evaluation_panel();
+    if (ImGui::Begin("Evaluation", nullptr, fixed | ImGuiWindowFlags_NoScrollbar)) {
+      if (const Edges m = moved("evaluation"); dragged(m.left)) set_x(placed.left + m.left);
+      else if (dragged(m.top)) set_y(placed.top + m.top);
+      evaluation_panel();
+    }
     ImGui::End();
     place(0, h, w, status_h);
-    if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) status_bar();
+    if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) status_bar();
     ImGui::End();
+    layout = layout.clamped();
+    if (!(layout == before)) layout_.mark_changed();
   }
 
   void evaluation_panel() {
@@ -574,6 +625,7 @@ class App {
     const Rect c = canvas_.screen_rect();
     j["canvas"] = {c.min.x, c.min.y, c.max.x - c.min.x, c.max.y - c.min.y};
     j["canvas_zoom"] = canvas_.zoom();
+    j["layout"] = {layout_.layout().split_x, layout_.layout().split_y};
     j["canvas_min_text_px"] = canvas_.min_text_px();
     j["node_positions"] = nlohmann::json::object();
     for (const auto& [id, n] : doc_->graph().nodes()) j["node_positions"][std::to_string(id)] = {n.editor.x, n.editor.y};
@@ -648,6 +700,8 @@ class App {
   NodeCanvas canvas_;
   Inspector inspector_;
   RecipePanel recipe_panel_;
+  LayoutSettings layout_{layout_settings_path()};
+  bool keep_layout_ = false;
   std::string status_, title_, ui_map_text_;
   std::uint64_t title_revision_ = 0;
   Clock::time_point title_checked_;
@@ -747,7 +801,7 @@ int run_studio(const Options& options) {
   glfwSwapInterval(automated ? 0 : 1);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // a fixed layout; no imgui.ini in the working folder
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder: LayoutSettings keeps it per user
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");

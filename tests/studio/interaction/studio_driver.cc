@@ -20,6 +20,7 @@ using namespace std::chrono_literals;
 
 Studio::Studio(const fs::path& recipe, const fs::path& dir, std::vector<std::string> extra) : map_(dir / "ui_map.json") {
   setenv("PROCEX_STUDIO_HOME", (dir / "home").c_str(), 1);
+  setenv("XDG_CONFIG_HOME", (dir / "config").c_str(), 1);  // the panel layout: this test's, not the user's
   fs::remove(map_);
   std::vector<std::string> args = {PROCEX_STUDIO_EXE, recipe.string(), "--ui-map", map_.string()};
   args.insert(args.end(), extra.begin(), extra.end());
