@@ -10,7 +10,7 @@ namespace {
 
 // Parameter handles, from the declaration.
 struct Params {
-  std::size_t max_height, ambiguity, validate;
+  std::size_t max_height, ambiguity, validate, max_vertices, max_events, max_seconds;
 };
 Params par;
 
@@ -38,6 +38,17 @@ void declare(NodeDecl& d) {
       .sets_port_count().doc("how many plan edit inputs the node has");
   for (std::size_t i = 1; i <= d.count_of("plan_edits"); ++i)
     d.input<PlanEditSpec>("edit_" + std::to_string(i)).optional();
+  // The budget: a footprint that makes the sweep run away fails with the
+  // limit it passed instead of hanging the evaluation or exhausting memory.
+  const SweepBudget budget;
+  par.max_vertices = d.param<std::int64_t>("max_vertices")
+      .default_value(static_cast<std::int64_t>(budget.max_vertices)).range(0, 1e12)
+      .doc("refuse a footprint whose sweep makes more vertices than this (it runs away; 0: no limit)").index();
+  par.max_events = d.param<std::int64_t>("max_events")
+      .default_value(static_cast<std::int64_t>(budget.max_events)).range(0, 1e15)
+      .doc("refuse a footprint whose sweep queues more potential events than this (0: no limit)").index();
+  par.max_seconds = d.param<double>("max_seconds").default_value(budget.max_seconds).range(0, 1e6).unit("s")
+      .doc("refuse a footprint whose sweep takes longer than this (0: no limit)").index();
   d.output<MeshSet>("mesh");
 }
 
@@ -45,6 +56,9 @@ void evaluate(EvalContext& ctx) {
   SweepOptions options;
   if (const double h = ctx.param<double>(par.max_height); h > 0) options.max_height = h;
   options.ambiguity = ctx.choice(par.ambiguity) == "minimize_volume" ? Ambiguity::MinimizeVolume : Ambiguity::MaximizeVolume;
+  options.budget.max_vertices = static_cast<std::size_t>(ctx.param<std::int64_t>(par.max_vertices));
+  options.budget.max_events = static_cast<std::size_t>(ctx.param<std::int64_t>(par.max_events));
+  options.budget.max_seconds = ctx.param<double>(par.max_seconds);
   std::vector<AnchorSpec> anchors;
   std::vector<PlanEditSpec> edits;
   for (std::size_t i = 1; i < ctx.decl().inputs().size(); ++i) {

@@ -215,7 +215,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     err << "procex batch: " << *clash << "\n";
     return kExitUnusableInput;
   }
-  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err);
+  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, {},
+                                                                options.budget);
   if (!recipe) return kExitUnusableInput;
   FootprintReadOptions read;
   read.crs = options.export_options.crs, read.target_crs = options.target_crs;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "nodes/support/mesh_export.h"
+#include "app/cli/budget_settings.h"
 
 namespace procex {
 
@@ -38,6 +39,7 @@ struct BatchCommandOptions {
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
   ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
   std::string target_crs;             // --target-crs
+  BudgetSettings budget;              // set on every Extrude node
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

@@ -21,7 +21,8 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << *clash << "\n";
     return kExitUnusableInput;
   }
-  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, options.preset);
+  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, options.preset,
+                                                        options.budget);
   if (!recipe) return kExitUnusableInput;
   std::optional<GeoJsonCollection> collection;
   const GeoJsonFeature* feature = nullptr;

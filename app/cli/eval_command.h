@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "nodes/support/mesh_export.h"
+#include "app/cli/budget_settings.h"
 
 namespace procex {
 
@@ -24,6 +25,7 @@ struct EvalCommandOptions {
   std::string preset;                 // a preset of the recipe, applied before the settings
   ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
   std::string target_crs;             // --target-crs
+  BudgetSettings budget;              // set on every Extrude node
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

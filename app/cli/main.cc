@@ -2,8 +2,10 @@
 // per translation unit); each subcommand is a plain options struct and a run
 // function in its own <name>_command.{h,cc}, bound here by one add_* function.
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -56,6 +58,26 @@ void add_crs_options(CLI::App* cmd, std::string& crs, std::string& target_crs) {
                   "(EPSG:32632); needs the footprints' CRS");
 }
 
+// The sweep budget's options, the same on roof, eval and batch.
+void add_budget_options(CLI::App* cmd, BudgetSettings& budget) {
+  const SweepBudget defaults;
+  cmd->add_option_function<std::int64_t>(
+         "--max-vertices", [&budget](std::int64_t n) { budget.max_vertices = n; },
+         "Refuse a footprint whose sweep makes more vertices (0: no limit; default " +
+             std::to_string(defaults.max_vertices) + ")")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1'000'000'000'000}));
+  cmd->add_option_function<std::int64_t>(
+         "--max-events", [&budget](std::int64_t n) { budget.max_events = n; },
+         "Refuse a footprint whose sweep queues more potential events (0: no limit; default " +
+             std::to_string(defaults.max_events) + ")")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1'000'000'000'000'000}));
+  cmd->add_option_function<double>(
+         "--max-seconds", [&budget](double s) { budget.max_seconds = s; },
+         "Refuse a footprint whose sweep takes longer (0: no limit; default " +
+             std::to_string(static_cast<int>(defaults.max_seconds)) + ")")
+      ->check(kFinite & CLI::Range(0.0, 1e6));
+}
+
 Runner add_roof(CLI::App& app) {
   auto options = std::make_shared<RoofOptions>();
   CLI::App* cmd = app.add_subcommand("roof", "Extrude every footprint of a GeoJSON file into a roof, validate it, "
@@ -76,6 +98,7 @@ Runner add_roof(CLI::App& app) {
   cmd->add_option("-j,--jobs", options->jobs, "Worker threads (0 = one per hardware thread)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  add_budget_options(cmd, options->budget);
   return [cmd, options] { return *cmd ? run_roof(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -106,6 +129,7 @@ Runner add_eval(CLI::App& app) {
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
   add_crs_options(cmd, options->export_options.crs, options->target_crs);
+  add_budget_options(cmd, options->budget);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -167,6 +191,7 @@ Runner add_batch(CLI::App& app) {
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
   add_crs_options(cmd, options->export_options.crs, options->target_crs);
+  add_budget_options(cmd, options->budget);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

@@ -67,9 +67,23 @@ std::vector<std::string> mesh_outputs(const Graph& graph) {
   return names;
 }
 
+Status set_on_extrude_nodes(Graph& graph, const BudgetSettings& settings) {
+  std::vector<NodeId> extrudes;
+  for (const auto& [id, node] : graph.nodes())
+    if (!node.type->is_group() && node.decl().type_name() == "Extrude") extrudes.push_back(id);
+  for (NodeId id : extrudes) {
+    Status s = Status::ok();
+    if (settings.max_vertices && s) s = graph.set_param(id, "max_vertices", Value::make(*settings.max_vertices));
+    if (settings.max_events && s) s = graph.set_param(id, "max_events", Value::make(*settings.max_events));
+    if (settings.max_seconds && s) s = graph.set_param(id, "max_seconds", Value::make(*settings.max_seconds));
+    if (!s) return Status::error("Extrude node " + std::to_string(id) + ": " + s.message());
+  }
+  return Status::ok();
+}
+
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
                                            const AllowedFolders& allowed, std::ostream& err,
-                                           const std::string& preset) {
+                                           const std::string& preset, const BudgetSettings& budget) {
   std::optional<Graph> graph = load_recipe(file, allowed, err);
   if (!graph) return std::nullopt;
   MeshRecipe r{std::move(*graph), {}, {}, recipe_eval_options(file, allowed)};
@@ -79,6 +93,10 @@ std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, co
       return std::nullopt;
     }
   if (!apply_settings(r.graph, r.bindings, settings, err)) return std::nullopt;
+  if (const Status s = set_on_extrude_nodes(r.graph, budget); !s) {
+    err << file.string() << ": " << s.message() << "\n";
+    return std::nullopt;
+  }
   r.outputs = mesh_outputs(r.graph);
   if (r.outputs.empty()) {
     err << file.string() << ": the recipe has no graph output of type mesh\n";

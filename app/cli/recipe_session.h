@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/budget_settings.h"
 #include "graph/evaluator.h"
 #include "graph/graph.h"
 #include "nodes/support/mesh_labels.h"  // label_parameters
@@ -47,10 +48,17 @@ struct MeshRecipe {
   std::vector<std::string> outputs;  // graph outputs of type mesh, never empty
   EvalOptions options;               // recipe_eval_options
 };
-// nullopt after writing the problem to err (load error, bad setting, no mesh output).
+// Sets the given limits on every Extrude node at the graph's top level (the
+// nodes inside a group keep the group's own values). Refused values (out of
+// the parameter's range) say which node refused.
+Status set_on_extrude_nodes(Graph& graph, const BudgetSettings& settings);
+
+// nullopt after writing the problem to err (load error, bad setting, no mesh
+// output, a budget limit an Extrude node refuses). `budget`'s limits go on
+// every top-level Extrude node.
 std::optional<MeshRecipe> open_mesh_recipe(const std::filesystem::path& file, const std::vector<std::string>& settings,
                                            const AllowedFolders& allowed, std::ostream& err,
-                                           const std::string& preset = {});
+                                           const std::string& preset = {}, const BudgetSettings& budget = {});
 
 // Names of the graph outputs whose type is "mesh", in order; empty if none.
 std::vector<std::string> mesh_outputs(const Graph& graph);

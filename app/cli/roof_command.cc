@@ -77,6 +77,7 @@ void extrude(const GeoJsonFeature& feature, const RoofOptions& options, FeatureR
     r.notes.insert(r.notes.end(), prepared.notes.begin(), prepared.notes.end());
     SweepOptions sweep_options;
     sweep_options.max_height = options.max_height;
+    sweep_options.budget = with_settings(sweep_options.budget, options.budget);
     r.mesh = build_mesh(sweep(prepared.footprint, sweep_options));
     r.ms = elapsed_ms(start);
     for (const auto v : r.mesh.vertices()) r.max_height = std::max(r.max_height, r.mesh.point(v)[2]);

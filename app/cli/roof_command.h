@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "app/cli/budget_settings.h"
+
 namespace procex {
 
 struct RoofOptions {
@@ -20,6 +22,7 @@ struct RoofOptions {
   std::filesystem::path output;  // .obj or .ply
   std::filesystem::path report;  // JSON
   int jobs = 0;                  // worker threads; 0 = one per hardware thread
+  BudgetSettings budget;         // per footprint; unset limits keep SweepBudget's defaults
 };
 
 // Exit codes: 0 when no feature failed (refused inputs are not failures) and

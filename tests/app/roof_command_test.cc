@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -149,6 +150,27 @@ TEST_F(RoofCommand, MaxHeightCapsTheRoof) {
   EXPECT_NEAR(f["max_height"].get<double>(), 2.0, 1e-9);
   EXPECT_NEAR(f["volume"].get<double>(), 392.0 / 3.0, 1e-6);
   EXPECT_EQ(report()["options"]["max_height"], 2.0);
+}
+
+// A footprint past the budget fails on its own with the limit it passed; the
+// others in the file still run.
+TEST_F(RoofCommand, BudgetRefusesAFootprintWithTheReason) {
+  std::ostringstream ring_text;
+  ring_text << "[";
+  for (int k = 0; k < 200; ++k)
+    ring_text << "[" << 10.0 * std::cos(2 * M_PI * k / 200) << "," << 10.0 * std::sin(2 * M_PI * k / 200) << "],";
+  ring_text << "[10,0]]";
+  const std::string ring = ring_text.str();
+  RoofOptions o = options_for(write("two.geojson", collection({feature("sq", kSquare10),
+                                                               feature("round", R"({"type":"Polygon","coordinates":[)" +
+                                                                                    ring + "]}")})));
+  o.budget.max_vertices = 100;
+  EXPECT_EQ(run(o), kExitFeatureFailed);
+  const nlohmann::json r = report();
+  EXPECT_EQ(r["features"][0]["status"], "ok");
+  EXPECT_EQ(r["features"][1]["status"], "failed");
+  EXPECT_NE(r["features"][1]["reason"].get<std::string>().find("vertex budget"), std::string::npos)
+      << r["features"][1]["reason"];
 }
 
 //   +-------------------+   a 10 x 6 gable: long sides at 45 degrees meet in a
