@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
 #include "graph/pxg.h"
 #include "tests/studio/studio_test_util.h"
@@ -55,6 +56,44 @@ TEST(ExportMeshes, RefusalsSayWhyAndWriteNothing) {
   const Result<std::size_t> nothing = export_meshes(g, EvalSnapshot{}, dir / "house.obj", {}, nullptr);
   ASSERT_FALSE(nothing);
   EXPECT_NE(nothing.message().find("nothing to export"), std::string::npos);
+}
+
+// Opening a .glb in the studio: the file procex wrote previews as the recipe
+// did, face for face and tag for tag, in procex's frame, placed meshes instanced.
+TEST(ExportMeshes, AWrittenGlbPreviewsAsTheRecipeDid) {
+  const auto dir = test::temp_dir();
+  for (const char* name : {"house.pxg", "windows.pxg"}) {
+    SCOPED_TRACE(name);
+    const std::filesystem::path recipe = std::filesystem::path(PROCEX_TEST_DATA) / name;
+    const Graph g = load_pxg(recipe);
+    EvalWorker worker;
+    worker.submit(1, g, {}, {}, recipe.parent_path());
+    ASSERT_TRUE(worker.wait_idle(60s));
+    const auto shown = worker.latest();
+    ASSERT_TRUE(shown && shown->preview && !shown->preview->empty());
+    const std::filesystem::path glb = dir / (std::string(name) + ".glb");
+    ASSERT_TRUE(export_meshes(g, *shown, glb, {}, nullptr));
+    const PreviewMesh& want = *shown->preview;
+    if (std::string(name) == "windows.pxg") EXPECT_GT(want.instances, 0u) << "the placed windows are instanced";
+    const PreviewMesh got = make_preview(read_glb_scene(glb));
+    EXPECT_EQ(got.meshes, want.meshes);
+    EXPECT_EQ(got.faces, want.faces);
+    EXPECT_EQ(got.instances, want.instances);
+    EXPECT_EQ(got.placed.size(), want.placed.size());
+    EXPECT_EQ(got.vertex_count(), want.vertex_count());
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(got.min[k], want.min[k], 1e-4);
+      EXPECT_NEAR(got.max[k], want.max[k], 1e-4);
+    }
+    ASSERT_EQ(got.tags.size(), want.tags.size());
+    for (std::size_t i = 0; i < want.tags.size(); ++i) {
+      EXPECT_EQ(got.tags[i].name, want.tags[i].name);
+      EXPECT_EQ(got.tags[i].faces, want.tags[i].faces) << want.tags[i].name;
+      EXPECT_NEAR(got.tags[i].area, want.tags[i].area, 1e-5 * want.tags[i].area) << want.tags[i].name;
+    }
+    // Outlines only: the triangulation's diagonals are not edges.
+    EXPECT_EQ(got.edge_points.size() / 6, 2 * want.edge_points.size() / 6) << "each face draws its own outline, where the mesh shares an edge between two faces";
+  }
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 namespace procex::studio {
 
 std::string usage() {
-  return "usage: procex-studio [RECIPE.pxg] [options]\n"
+  return "usage: procex-studio [RECIPE.pxg | FILE.glb] [options]\n"
          "  --screenshot OUT.png        render the window once the recipe is evaluated, save it, exit\n"
          "  --screenshot-info OUT.json  with --screenshot: also describe the preview (area, tags)\n"
          "  --size WxH                  window size in pixels (default 1280x800)\n"

@@ -1,6 +1,6 @@
 // options.h -- procex-studio's command line.
 //
-//   procex-studio [RECIPE.pxg] [--screenshot OUT.png [--screenshot-info OUT.json]]
+//   procex-studio [RECIPE.pxg | FILE.glb] [--screenshot OUT.png [--screenshot-info OUT.json]]
 //                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
 //                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE] [--select NODE]
 //                 [--view YAW,PITCH] [--full-redraw]

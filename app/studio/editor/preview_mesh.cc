@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <tuple>
 #include <typeindex>
 
@@ -13,6 +14,8 @@
 #include <glm/vec2.hpp>
 
 #include "core/geom/convex_partition.h"
+#include "core/io/up_axis.h"
+#include "core/placement/placement.h"
 
 namespace procex::studio {
 
@@ -184,6 +187,30 @@ class Builder {
     for (const ResolvedAnchor& a : part.anchors) out_.anchors.push_back({part.building, a});
   }
 
+  // A building of a .glb: its primitives' triangles, joined into the faces
+  // they came from, back in procex's frame; then its placed meshes.
+  void add_glb_building(const GltfScene& scene, const GltfMeshData& building) {
+    ++out_.meshes;
+    const glm::dvec3 origin(building.origin[0], building.origin[1], building.origin[2]);
+    for (const GltfPrimitiveData& prim : building.primitives) {
+      TagSummary& t = tag(prim.tag.empty() ? "face" : prim.tag);
+      for_each_glb_face(prim, origin, [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n) {
+        count_face(t, n);
+        append_triangles(out_.vertices, corners, n, t.color);
+        for (const glm::dvec3& p : corners) extend(p);
+      }, out_.edge_points);
+    }
+    // Instance transforms are in glTF's frame, from the building's origin: R^-1 T(origin) M R in procex's.
+    const glm::dmat4 r = file_axes_matrix(UpAxis::Y);
+    glm::dmat4 at_origin(1.0);
+    at_origin[3] = glm::dvec4(origin, 1.0);
+    for (const GltfInstanceData& in : building.instances) {
+      const glm::dmat4 m = glm::transpose(r) * at_origin * in.transform * r;
+      if (in.prototype >= scene.prototypes.size() || !transform_problem(m).empty()) continue;  // the reader refuses these
+      place(glb_prototype(scene.prototypes[in.prototype], in.prototype, in.tag), m);
+    }
+  }
+
   // After every building: the sizes of the markers follow the scene's.
   void finish() {
     const glm::dvec3 extent = out_.max - out_.min;
@@ -203,8 +230,11 @@ class Builder {
 
   void add_instance(const PlaceableMesh& placed, const Instance& in) {
     if (!transform_problem(in.transform).empty()) return;  // Mesh Placement refuses these; never drawn
-    Prototype& proto = prototype(placed, in.tag);
-    const glm::dmat4& m = in.transform;
+    place(prototype(placed, in.tag), in.transform);
+  }
+
+  // One placement of a prototype: its faces counted where they land, its matrices for the instanced draw.
+  void place(Prototype& proto, const glm::dmat4& m) {
     const glm::dmat3 linear(m);
     // Faces map by the cofactor matrix: det * inverse transpose (area and orientation).
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
@@ -250,6 +280,83 @@ class Builder {
     return proto;
   }
 
+  // The triangles of one primitive grouped into the faces they were cut from
+  // (the writer gives each face its own vertices, so triangles sharing a
+  // vertex are one face), each with its corners' triangles (three points
+  // each, procex's frame) and its area vector; the faces' outlines (edges of
+  // one triangle only) go to `edges`.
+  template <class Fn>
+  static void for_each_glb_face(const GltfPrimitiveData& prim, const glm::dvec3& origin, Fn&& fn, std::vector<float>& edges) {
+    const std::size_t n_vertices = prim.positions.size() / 3;
+    std::vector<std::size_t> root(n_vertices);
+    std::iota(root.begin(), root.end(), std::size_t{0});
+    const auto find = [&](std::size_t v) {
+      while (root[v] != v) v = root[v] = root[root[v]];
+      return v;
+    };
+    std::map<std::size_t, std::vector<std::size_t>> faces;  // root vertex -> its triangles' first index
+    for (std::size_t i = 0; i + 2 < prim.indices.size(); i += 3) {
+      const std::uint32_t a = prim.indices[i], b = prim.indices[i + 1], c = prim.indices[i + 2];
+      if (a >= n_vertices || b >= n_vertices || c >= n_vertices) continue;  // the reader refuses these
+      root[find(b)] = find(a);
+      root[find(c)] = find(a);
+    }
+    for (std::size_t i = 0; i + 2 < prim.indices.size(); i += 3)
+      if (prim.indices[i] < n_vertices && prim.indices[i + 1] < n_vertices && prim.indices[i + 2] < n_vertices) faces[find(prim.indices[i])].push_back(i);
+    const auto at = [&](std::uint32_t v) {
+      return from_file_axes(origin + glm::dvec3(prim.positions[3 * v], prim.positions[3 * v + 1], prim.positions[3 * v + 2]), UpAxis::Y);
+    };
+    for (const auto& [face_root, tris] : faces) {
+      std::vector<glm::dvec3> corners;
+      glm::dvec3 n(0.0);
+      std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+      for (std::size_t i : tris) {
+        const std::uint32_t v[3] = {prim.indices[i], prim.indices[i + 1], prim.indices[i + 2]};
+        for (int k = 0; k < 3; ++k) {
+          corners.push_back(at(v[k]));
+          ++uses[std::minmax(v[k], v[(k + 1) % 3])];
+        }
+        n += glm::cross(corners[corners.size() - 2] - corners[corners.size() - 3], corners.back() - corners[corners.size() - 3]);
+      }
+      for (const auto& [edge, count] : uses)
+        if (count == 1) {
+          push(edges, at(edge.first));
+          push(edges, at(edge.second));
+        }
+      fn(corners, n);
+    }
+  }
+
+  // Triangles given as corners, three by three, under one face's normal.
+  static void append_triangles(std::vector<float>& out, const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const glm::vec3& color) {
+    const glm::dvec3 unit = unit_or_up(n);
+    for (const glm::dvec3& p : corners) push_vertex(out, p, unit, color);
+  }
+
+  // A .glb's placed mesh under an instance tag, made on first use.
+  Prototype& glb_prototype(const GltfMeshData& placed, std::size_t index, const std::string& instance_tag) {
+    auto [it, fresh] = glb_prototypes_.try_emplace({index, instance_tag});
+    Prototype& proto = it->second;
+    if (!fresh) return proto;
+    proto.group = out_.placed.size();
+    PreviewInstances& group = out_.placed.emplace_back();
+    std::vector<float> unused_edges;
+    bool first = true;
+    for (const GltfPrimitiveData& prim : placed.primitives) {
+      TagSummary& t = tag(!instance_tag.empty() ? instance_tag : !prim.tag.empty() ? prim.tag : placed.building);
+      for_each_glb_face(prim, glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n) {
+        proto.faces.emplace_back(&t, n);
+        append_triangles(group.vertices, corners, n, t.color);
+        for (const glm::dvec3& p : corners) {
+          proto.lo = first ? p : glm::min(proto.lo, p);
+          proto.hi = first ? p : glm::max(proto.hi, p);
+          first = false;
+        }
+      }, unused_edges);
+    }
+    return proto;
+  }
+
   void add_marker(const Frame& fr, double size) {
     const glm::dvec3 o = fr.origin + 0.02 * size * fr.normal;  // just off the face
     const glm::dvec3 a = 0.5 * size * fr.along, u = 0.5 * size * fr.up;
@@ -265,6 +372,7 @@ class Builder {
   PreviewMesh& out_;
   std::map<std::string, TagSummary> tags_;  // std::map: references stay valid as tags are added
   std::map<std::tuple<const Mesh*, std::string, std::string>, Prototype> prototypes_;
+  std::map<std::pair<std::size_t, std::string>, Prototype> glb_prototypes_;
   bool first_ = true;
 };
 
@@ -278,6 +386,14 @@ PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes) {
   PreviewMesh out;
   Builder builder(out);
   for (const TaggedMesh* part : meshes) builder.add_building(*part);
+  builder.finish();
+  return out;
+}
+
+PreviewMesh make_preview(const GltfScene& scene) {
+  PreviewMesh out;
+  Builder builder(out);
+  for (const GltfMeshData& building : scene.meshes) builder.add_glb_building(scene, building);
   builder.finish();
   return out;
 }

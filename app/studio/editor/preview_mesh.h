@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/io/gltf_write.h"
 #include "core/mesh/mesh.h"
 #include "graph/value.h"
 #include "nodes/values.h"
@@ -76,6 +77,10 @@ std::vector<const TaggedMesh*> meshes_in(const Value& v);
 // Triangulates every face (non-convex faces through core's convex partition),
 // groups the placed instances by mesh and builds the anchor markers.
 PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes);
+// The same for a .glb procex wrote (read by core/io's reader, which refuses
+// anything else): its triangles joined back into the faces they were cut
+// from, in procex's frame (z up), its placed meshes instanced.
+PreviewMesh make_preview(const GltfScene& scene);
 
 // The tag a face shows: its tag, or its face kind ("base", "side", "cap")
 // when the mesh carries no tags.

@@ -25,6 +25,8 @@ class PreviewView {
   // Draws into the current ImGui window, filling its content region.
   void draw();
   void frame_all();
+  // The next mesh set is framed as the first one was (another scene: a viewed file).
+  void frame_next_mesh() { framed_ = false; }
   // Turns the camera to yaw and pitch (degrees), keeping its target and distance.
   void look_from(float yaw_deg, float pitch_deg);
 

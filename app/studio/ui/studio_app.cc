@@ -35,6 +35,7 @@
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
 #include "core/io/geojson.h"
+#include "core/io/gltf_write.h"
 #include "graph/pxg.h"
 
 namespace procex::studio {
@@ -71,7 +72,10 @@ class App {
     canvas_.show_times(options_.screenshot.empty());
     // Screenshots and benchmarks show the default layout, whatever this user made of theirs.
     keep_layout_ = interactive;
-    if (!options_.recipe.empty()) {
+    if (options_.recipe.extension() == ".glb") {
+      doc_ = std::make_unique<Document>();
+      view_glb(options_.recipe);
+    } else if (!options_.recipe.empty()) {
       load(options_.recipe, interactive);
       if (doc_->graph().node(options_.select)) doc_->select_only(options_.select);
     } else {
@@ -91,6 +95,8 @@ class App {
     return worker_.wait_idle(timeout);
   }
   bool load_failed() const { return load_failed_; }
+  // What the preview shows: a viewed .glb, else the recipe's last evaluation.
+  const PreviewMesh* on_screen() const { return viewed_ ? viewed_->mesh.get() : shown_ && shown_->preview ? shown_->preview.get() : nullptr; }
   Document& doc() { return *doc_; }
   const EvalSnapshot* shown() const { return shown_.get(); }
   const PreviewView& preview() const { return *preview_; }
@@ -111,10 +117,13 @@ class App {
       worker_.submit(submitted_, doc_->graph(), extra, preview_bindings(doc_->graph(), preview_footprint_),
                      doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path());
     }
+    // An edit of the recipe brings its preview back in place of a viewed .glb.
+    if (viewed_ && viewed_->revision != doc_->revision()) close_glb();
     if (auto latest = worker_.latest(); latest && latest != shown_) {
       shown_ = std::move(latest);
-      preview_->set_mesh(shown_->preview);
+      if (!viewed_) preview_->set_mesh(shown_->preview);
     }
+    if (viewed_) preview_->set_mesh(viewed_->mesh);
     autosave();
     if (keep_layout_ && ImGui::GetIO().WantSaveIniSettings)
       if (std::string failed = layout_.save(); !failed.empty()) status_ = std::move(failed);
@@ -130,12 +139,16 @@ class App {
   // Files dropped onto the window: a recipe opens (after asking about unsaved
   // changes); a GeoJSON's first feature becomes the preview's footprint.
   void open_dropped(const fs::path& file) {
+    if (file.extension() == ".glb") {
+      view_glb(file);
+      return;
+    }
     if (file.extension() == ".pxg") {
       confirm_discard([this, file] { load(file, true); });
       return;
     }
     if (file.extension() != ".geojson" && file.extension() != ".json") {
-      status_ = file.string() + ": drop a recipe (.pxg) to open it, or footprints (.geojson) to preview the first";
+      status_ = file.string() + ": drop a recipe (.pxg) to open it, a .glb to view it, or footprints (.geojson) to preview the first";
       return;
     }
     try {
@@ -167,6 +180,37 @@ class App {
   }
 
  private:
+  // A .glb procex wrote, shown in the preview in place of the recipe's (read
+  // only) until the recipe is edited or View > Recipe preview. The recipe
+  // stays open. A file the reader refuses changes nothing; the status says why.
+  void view_glb(const fs::path& file) {
+    try {
+      const GltfScene scene = read_glb_scene(file);
+      auto mesh = std::make_shared<const PreviewMesh>(make_preview(scene));
+      status_ = "viewing " + file.string() + ": " + std::to_string(mesh->meshes) + (mesh->meshes == 1 ? " building, " : " buildings, ") +
+                std::to_string(mesh->faces) + " faces (read only; View > Recipe preview or an edit shows the recipe again)";
+      viewed_ = ViewedGlb{file, std::move(mesh), doc_->revision()};
+      if (preview_) preview_->frame_next_mesh();
+      load_failed_ = false;
+    } catch (const std::exception& e) {
+      status_ = e.what();
+      std::fprintf(stderr, "procex-studio: %s\n", e.what());
+      load_failed_ = !viewed_ && options_.recipe == file;
+    }
+  }
+
+  void close_glb() {
+    viewed_.reset();
+    if (!preview_) return;
+    preview_->frame_next_mesh();
+    preview_->set_mesh(shown_ ? shown_->preview : nullptr);
+  }
+
+  void open_file(const fs::path& file) {
+    if (file.extension() == ".glb") view_glb(file);
+    else load(file, true);
+  }
+
   void load(const fs::path& file, bool interactive) {
     try {
       doc_ = Document::open(file);
@@ -303,6 +347,8 @@ class App {
       ImGui::MenuItem("Anchors", nullptr, &preview_->anchors);
       if (ImGui::MenuItem("Frame preview")) preview_->frame_all();
       if (ImGui::MenuItem("Frame nodes", "F")) canvas_.request_frame();
+      if (ImGui::MenuItem("Recipe preview", nullptr, false, viewed_.has_value())) close_glb();
+      record_button("menu_recipe_preview");
       ImGui::Separator();
       if (ImGui::MenuItem("Reset layout", nullptr, false, keep_layout_)) {
         const std::string failed = layout_.reset();
@@ -548,7 +594,7 @@ class App {
     ImGui::BeginChild("files", ImVec2(520, 160), true);
     std::error_code ec;
     std::vector<fs::path> files;
-    const std::vector<std::string>& listed = exporting ? export_extensions() : std::vector<std::string>{".pxg"};
+    const std::vector<std::string>& listed = exporting ? export_extensions() : std::vector<std::string>{".pxg", ".glb"};
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
       if (std::count(listed.begin(), listed.end(), it->path().extension().string())) files.push_back(it->path());
     std::sort(files.begin(), files.end());
@@ -565,7 +611,7 @@ class App {
     if (go && !prompt_.path.empty()) {
       const fs::path p = prompt_.path;
       switch (prompt_.kind) {
-        case PathPrompt::Kind::kOpen: load(p, true); break;
+        case PathPrompt::Kind::kOpen: open_file(p); break;
         case PathPrompt::Kind::kSaveAs:
           try {
             remove_autosave(home_, doc_->path());
@@ -644,8 +690,9 @@ class App {
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
     for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
-    j["preview_faces"] = shown_ && shown_->preview ? shown_->preview->faces : 0;
-    const PreviewMesh* shown_mesh = shown_ && shown_->preview ? shown_->preview.get() : nullptr;
+    const PreviewMesh* shown_mesh = on_screen();
+    j["preview_faces"] = shown_mesh ? shown_mesh->faces : 0;
+    j["viewing"] = viewed_ ? viewed_->file.string() : "";
     j["preview_anchors"] = shown_mesh ? shown_mesh->anchors.size() - shown_mesh->absent_anchors() : 0;  // present ones, with markers
     j["preview_instances"] = shown_mesh ? shown_mesh->instances : 0;
     if (shown_mesh && !shown_mesh->empty())
@@ -693,6 +740,12 @@ class App {
   ExportOptions export_options_;                   // kept between exports, as the format
   std::string export_extension_ = ".glb";
   std::shared_ptr<const EvalSnapshot> shown_;
+  struct ViewedGlb {
+    fs::path file;
+    std::shared_ptr<const PreviewMesh> mesh;
+    std::uint64_t revision = 0;  // the recipe's when it was opened
+  };
+  std::optional<ViewedGlb> viewed_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
   NodeId submitted_node_ = 0;
   ShapeEditor shape_editor_;
@@ -724,19 +777,19 @@ void write_screenshot_info(const fs::path& file, App& app, int width, int height
   j["preview"] = {{"x", p.image_x}, {"y", p.image_y}, {"w", p.image_w}, {"h", p.image_h}};
   j["tags"] = nlohmann::json::array();
   std::size_t errors = 0;
-  if (const EvalSnapshot* s = app.shown()) {
+  if (const EvalSnapshot* s = app.shown())
     for (const Diagnostic& d : s->result.diagnostics) errors += d.severity == Severity::kError;
-    if (s->preview)
-      for (const TagSummary& t : s->preview->tags)
-        j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
-  }
+  const PreviewMesh* shown = app.on_screen();
+  if (shown)
+    for (const TagSummary& t : shown->tags)
+      j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
   j["errors"] = errors;
   // How readable the node canvas is: its zoom and the smallest text it drew.
   j["canvas"] = {{"zoom", app.canvas().zoom()}, {"min_text_px", app.canvas().min_text_px()}, {"legible_zoom", NodeCanvas::legible_zoom()}};
   const glm::vec3 marker = PreviewMesh::kAnchorColor;
   j["anchor_color"] = {marker.r, marker.g, marker.b};
-  j["anchors_present"] = app.shown() && app.shown()->preview ? app.shown()->preview->anchors.size() - app.shown()->preview->absent_anchors() : 0;
-  j["instances"] = app.shown() && app.shown()->preview ? app.shown()->preview->instances : 0;
+  j["anchors_present"] = shown ? shown->anchors.size() - shown->absent_anchors() : 0;
+  j["instances"] = shown ? shown->instances : 0;
   write_file_atomically(file, j.dump(2) + "\n");
 }
 
