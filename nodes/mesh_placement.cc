@@ -9,8 +9,11 @@
 #include <set>
 #include <tuple>
 
+#include "core/geom/error.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
+#include "core/mesh/validate.h"
+#include "core/placement/cut_openings.h"
 #include "core/placement/face_cover.h"
 #include "core/placement/frame_transform.h"
 #include "core/placement/place_mesh.h"
@@ -23,16 +26,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Parameter order, as declared.
-enum Param : std::size_t {
-  kFile, kName, kAnchor, kTopAnchor, kMode, kPivot, kScale, kOffset,
-  kColumns, kColumnSpacing, kRounding, kFill, kLayout, kMarginStart, kMarginEnd,
-  kRows, kRowSpacing, kZFrom, kZTo, kFit, kMargin, kTag, kUpright, kZToTop, kFloorFrom, kFloorTo,
+// Parameter and output handles, from the declaration.
+struct Params {
+  std::size_t file, name, anchor, top_anchor, mode, pivot, scale, offset, columns, column_spacing, rounding, fill, layout,
+      margin_start, margin_end, rows, row_spacing, z_from, z_to, fit, margin, tag, upright, z_to_top, floor_from, floor_to,
+      cut, cut_depth, reveal_tag;
+  std::size_t mesh_out, dropped_out, cut_out;
 };
+Params par;
 
 // An edited mesh file is read again.
 void hash_file(const std::vector<Value>& params, const fs::path& folder, Hasher& h) {
-  hash_file_stamp(folder / params[kFile].get<std::string>(), h);
+  hash_file_stamp(folder / params[par.file].get<std::string>(), h);
 }
 
 void declare(NodeDecl& d) {
@@ -48,43 +53,52 @@ void declare(NodeDecl& d) {
         "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
         "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot. The meshes "
         "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. Where an anchor "
-        "resolved as absent (its edge is gone at that height) nothing is placed and a warning says so.")
+        "resolved as absent (its edge is gone at that height) nothing is placed and a warning says so. With `cut`, each "
+        "placed mesh's outline becomes a hole in the face it stands on, lined by reveals `cut_depth` deep and closed "
+        "behind, so the building stays closed (offset z = -cut_depth sets the mesh back into it); an outline not "
+        "inside one face with wall around it, or whose recess would reach another face or recess, is not cut and a "
+        "warning says so.")
       .category("Geometry");
   d.input<MeshSet>("mesh").doc("buildings with resolved anchors (Extrude)");
-  d.param<std::string>("file").default_value(std::string()).doc("the mesh to place: an .obj, relative to the recipe's folder");
-  d.param<std::string>("name").default_value(std::string()).doc("tags the mesh's faces without a material (empty: the file's name)");
-  d.param<std::string>("anchor").default_value(std::string("window")).doc("the anchor to place at (for stretch: the bottom)");
-  d.param<std::string>("top_anchor").default_value(std::string()).doc("stretch: the anchor the mesh's top follows");
-  d.param_enum("mode", {"single", "row", "grid", "stretch", "tiles"}).doc("how many and where");
-  d.param<Vec3>("pivot").default_value(Vec3{0.5, 0.0, 0.0})
-      .doc("the point of the mesh's bounds put on the anchor, as fractions of its size (x along, y up, z out)");
-  d.param<Vec3>("scale").default_value(Vec3{1, 1, 1}).doc("the mesh's scale (single; row and grid without fit)");
-  d.param<Vec3>("offset").default_value(Vec3{}).unit("m").doc("moves each placed mesh along, up and out of the face");
-  d.param<std::int64_t>("columns").default_value<std::int64_t>(0).range(0, 10000)
-      .doc("row and grid: items along the face (0: as many as `column_spacing` allows)");
-  d.param<double>("column_spacing").default_value(2.0).range(0, 1000).unit("m").doc("row and grid: the pitch when columns is 0");
-  d.param_enum("rounding", {"down", "nearest", "up"})
-      .doc("a spacing's item count from the length: down never packs items closer than the spacing");
-  d.param<bool>("fill").default_value(true).doc("a spacing's items spread over the whole length (else exactly spaced, centred)");
-  d.param_enum("layout", {"cells", "ends"}).doc("items at the centres of equal cells, or from end to end");
-  d.param<double>("margin_start").default_value(0.0).range(0, 1000).unit("m").doc("length kept free at the start of each row and column");
-  d.param<double>("margin_end").default_value(0.0).range(0, 1000).unit("m").doc("length kept free at the end of each row and column");
-  d.param<std::int64_t>("rows").default_value<std::int64_t>(0).range(0, 10000)
-      .doc("grid: rows up the face (0: as many as `row_spacing` allows)");
-  d.param<double>("row_spacing").default_value(3.0).range(0, 1000).unit("m").doc("grid: the pitch when rows is 0");
-  d.param<double>("z_from").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows start");
-  d.param<double>("z_to").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows end");
-  d.param<bool>("fit").default_value(false)
-      .doc("row and grid: scale each mesh to fill its cell (less margin); single: to fill each Facade Split tile");
-  d.param<double>("margin").default_value(0.0).range(0, 1000).unit("m").doc("fit: the gap kept around each mesh in its cell");
-  d.param<std::string>("tag").default_value(std::string()).doc("tags every face of the placed meshes (empty: their own tags)");
-  d.param<bool>("upright").default_value(false)
-      .doc("stand the mesh upright: its up is the world's, not the face's (a chimney on a roof slope)");
-  d.param<bool>("z_to_top").default_value(false).doc("grid: the rows end at the top of each anchor's face (z_to is ignored)");
-  d.param<std::int64_t>("floor_from").default_value<std::int64_t>(0).range(0, 10000).doc("tiles: the lowest floor placed in");
-  d.param<std::int64_t>("floor_to").default_value<std::int64_t>(10000).range(0, 10000).doc("tiles: the highest floor placed in");
-  d.output<MeshSet>("mesh");
-  d.output<std::int64_t>("dropped").doc("row and grid items left out: not wholly on their face");
+  par.file = d.param<std::string>("file").default_value(std::string()).doc("the mesh to place: an .obj, relative to the recipe's folder").index();
+  par.name = d.param<std::string>("name").default_value(std::string()).doc("tags the mesh's faces without a material (empty: the file's name)").index();
+  par.anchor = d.param<std::string>("anchor").default_value(std::string("window")).doc("the anchor to place at (for stretch: the bottom)").index();
+  par.top_anchor = d.param<std::string>("top_anchor").default_value(std::string()).doc("stretch: the anchor the mesh's top follows").index();
+  par.mode = d.param_enum("mode", {"single", "row", "grid", "stretch", "tiles"}).doc("how many and where").index();
+  par.pivot = d.param<Vec3>("pivot").default_value(Vec3{0.5, 0.0, 0.0})
+      .doc("the point of the mesh's bounds put on the anchor, as fractions of its size (x along, y up, z out)").index();
+  par.scale = d.param<Vec3>("scale").default_value(Vec3{1, 1, 1}).doc("the mesh's scale (single; row and grid without fit)").index();
+  par.offset = d.param<Vec3>("offset").default_value(Vec3{}).unit("m").doc("moves each placed mesh along, up and out of the face").index();
+  par.columns = d.param<std::int64_t>("columns").default_value<std::int64_t>(0).range(0, 10000)
+      .doc("row and grid: items along the face (0: as many as `column_spacing` allows)").index();
+  par.column_spacing = d.param<double>("column_spacing").default_value(2.0).range(0, 1000).unit("m").doc("row and grid: the pitch when columns is 0").index();
+  par.rounding = d.param_enum("rounding", {"down", "nearest", "up"})
+      .doc("a spacing's item count from the length: down never packs items closer than the spacing").index();
+  par.fill = d.param<bool>("fill").default_value(true).doc("a spacing's items spread over the whole length (else exactly spaced, centred)").index();
+  par.layout = d.param_enum("layout", {"cells", "ends"}).doc("items at the centres of equal cells, or from end to end").index();
+  par.margin_start = d.param<double>("margin_start").default_value(0.0).range(0, 1000).unit("m").doc("length kept free at the start of each row and column").index();
+  par.margin_end = d.param<double>("margin_end").default_value(0.0).range(0, 1000).unit("m").doc("length kept free at the end of each row and column").index();
+  par.rows = d.param<std::int64_t>("rows").default_value<std::int64_t>(0).range(0, 10000)
+      .doc("grid: rows up the face (0: as many as `row_spacing` allows)").index();
+  par.row_spacing = d.param<double>("row_spacing").default_value(3.0).range(0, 1000).unit("m").doc("grid: the pitch when rows is 0").index();
+  par.z_from = d.param<double>("z_from").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows start").index();
+  par.z_to = d.param<double>("z_to").default_value(0.0).range(-1000, 10000).unit("m").doc("grid: the height its rows end").index();
+  par.fit = d.param<bool>("fit").default_value(false)
+      .doc("row and grid: scale each mesh to fill its cell (less margin); single: to fill each Facade Split tile").index();
+  par.margin = d.param<double>("margin").default_value(0.0).range(0, 1000).unit("m").doc("fit: the gap kept around each mesh in its cell").index();
+  par.tag = d.param<std::string>("tag").default_value(std::string()).doc("tags every face of the placed meshes (empty: their own tags)").index();
+  par.upright = d.param<bool>("upright").default_value(false)
+      .doc("stand the mesh upright: its up is the world's, not the face's (a chimney on a roof slope)").index();
+  par.z_to_top = d.param<bool>("z_to_top").default_value(false).doc("grid: the rows end at the top of each anchor's face (z_to is ignored)").index();
+  par.floor_from = d.param<std::int64_t>("floor_from").default_value<std::int64_t>(0).range(0, 10000).doc("tiles: the lowest floor placed in").index();
+  par.floor_to = d.param<std::int64_t>("floor_to").default_value<std::int64_t>(10000).range(0, 10000).doc("tiles: the highest floor placed in").index();
+  par.cut = d.param<bool>("cut").default_value(false)
+      .doc("cut each placed mesh's outline (its bounds seen along the face's normal) into the face as a hole lined with reveals").index();
+  par.cut_depth = d.param<double>("cut_depth").default_value(0.2).range(0.001, 100).unit("m").doc("cut: how deep the reveals run into the wall").index();
+  par.reveal_tag = d.param<std::string>("reveal_tag").default_value(std::string("reveal")).doc("cut: the tag of the reveal and back faces").index();
+  par.mesh_out = d.output<MeshSet>("mesh").index();
+  par.dropped_out = d.output<std::int64_t>("dropped").doc("row and grid items left out: not wholly on their face").index();
+  par.cut_out = d.output<std::int64_t>("cut").doc("openings cut into the walls, over every mesh").index();
   d.hash_extra(hash_file);
 }
 
@@ -124,34 +138,34 @@ Repeat::Rounding rounding(const std::string& choice) {
 
 MeshPlacementSpec spec_of(const EvalContext& ctx) {
   MeshPlacementSpec s;
-  s.anchor = ctx.param<std::string>(kAnchor);
-  s.top_anchor = ctx.param<std::string>(kTopAnchor);
+  s.anchor = ctx.param<std::string>(par.anchor);
+  s.top_anchor = ctx.param<std::string>(par.top_anchor);
   constexpr MeshPlacementSpec::Mode kModes[] = {MeshPlacementSpec::Mode::Single, MeshPlacementSpec::Mode::Row,
                                                 MeshPlacementSpec::Mode::Grid, MeshPlacementSpec::Mode::Stretch,
                                                 MeshPlacementSpec::Mode::Tiles};
-  s.mode = kModes[ctx.choice_index(kMode)];
-  s.pivot = vec(ctx.param<Vec3>(kPivot));
-  s.scale = vec(ctx.param<Vec3>(kScale));
-  s.offset = vec(ctx.param<Vec3>(kOffset));
+  s.mode = kModes[ctx.choice_index(par.mode)];
+  s.pivot = vec(ctx.param<Vec3>(par.pivot));
+  s.scale = vec(ctx.param<Vec3>(par.scale));
+  s.offset = vec(ctx.param<Vec3>(par.offset));
   Repeat line;
-  line.rounding = rounding(ctx.choice(kRounding));
-  line.fill = ctx.param<bool>(kFill);
-  line.layout = ctx.choice(kLayout) == "ends" ? Repeat::Layout::Ends : Repeat::Layout::Cells;
-  line.margin_start = ctx.param<double>(kMarginStart);
-  line.margin_end = ctx.param<double>(kMarginEnd);
+  line.rounding = rounding(ctx.choice(par.rounding));
+  line.fill = ctx.param<bool>(par.fill);
+  line.layout = ctx.choice(par.layout) == "ends" ? Repeat::Layout::Ends : Repeat::Layout::Cells;
+  line.margin_start = ctx.param<double>(par.margin_start);
+  line.margin_end = ctx.param<double>(par.margin_end);
   s.columns = s.rows = line;
-  s.columns.count = static_cast<int>(ctx.param<std::int64_t>(kColumns));
-  s.columns.spacing = ctx.param<double>(kColumnSpacing);
-  s.rows.count = static_cast<int>(ctx.param<std::int64_t>(kRows));
-  s.rows.spacing = ctx.param<double>(kRowSpacing);
-  s.z_from = ctx.param<double>(kZFrom);
-  s.z_to = ctx.param<double>(kZTo);
-  s.z_to_top = ctx.param<bool>(kZToTop);
-  s.floor_from = static_cast<int>(ctx.param<std::int64_t>(kFloorFrom));
-  s.floor_to = static_cast<int>(ctx.param<std::int64_t>(kFloorTo));
-  s.fit = ctx.param<bool>(kFit);
-  s.margin = ctx.param<double>(kMargin);
-  s.tag = ctx.param<std::string>(kTag);
+  s.columns.count = static_cast<int>(ctx.param<std::int64_t>(par.columns));
+  s.columns.spacing = ctx.param<double>(par.column_spacing);
+  s.rows.count = static_cast<int>(ctx.param<std::int64_t>(par.rows));
+  s.rows.spacing = ctx.param<double>(par.row_spacing);
+  s.z_from = ctx.param<double>(par.z_from);
+  s.z_to = ctx.param<double>(par.z_to);
+  s.z_to_top = ctx.param<bool>(par.z_to_top);
+  s.floor_from = static_cast<int>(ctx.param<std::int64_t>(par.floor_from));
+  s.floor_to = static_cast<int>(ctx.param<std::int64_t>(par.floor_to));
+  s.fit = ctx.param<bool>(par.fit);
+  s.margin = ctx.param<double>(par.margin);
+  s.tag = ctx.param<std::string>(par.tag);
   return s;
 }
 
@@ -168,8 +182,33 @@ bool carries(const TaggedMesh& part, const std::string& anchor, bool tiles) {
   return std::any_of(part.anchors.begin(), part.anchors.end(), [&](const ResolvedAnchor& a) { return a.name == anchor; });
 }
 
+// The part with `outlines` cut into its faces; its tags follow the new faces.
+CutReport cut_into(TaggedMesh& part, const std::vector<Opening>& outlines, const CutSpec& spec) {
+  CutReport report;
+  if (outlines.empty()) return report;
+  std::vector<std::string> tags;
+  tags.reserve(part.face_tags.size());
+  for (std::size_t f = 0; f < part.face_tags.size(); ++f) tags.push_back(face_tag(part, f));
+  auto mesh = std::make_shared<const Mesh>(cut_openings(*part.mesh, tags, outlines, spec, report));
+  // Validated as Extrude validates its sweep: a cut must leave a closed 2-manifold.
+  if (report.cut > 0)
+    if (const ValidationReport v = validate(*mesh); !v.ok())
+      throw MeshError("the mesh with its openings cut does not validate (" + std::to_string(v.problems.size()) +
+                      " problems): " + (v.problems.empty() ? "no details" : v.problems.front()));
+  const auto tag_prop = face_tag_property(*mesh);
+  part.face_tags.clear();
+  for (Mesh::FaceHandle f : mesh->faces()) {
+    const std::string& tag = mesh->property(tag_prop, f);
+    auto it = std::find(part.tags.begin(), part.tags.end(), tag);
+    if (it == part.tags.end()) it = part.tags.insert(part.tags.end(), tag);
+    part.face_tags.push_back(static_cast<std::uint32_t>(it - part.tags.begin()));
+  }
+  part.mesh = std::move(mesh);
+  return report;
+}
+
 void evaluate(EvalContext& ctx) {
-  const std::string& file = ctx.param<std::string>(kFile);
+  const std::string& file = ctx.param<std::string>(par.file);
   if (file.empty()) return ctx.error("file: no mesh file given (an .obj, relative to the recipe's folder)");
   fs::path path;
   SharedMesh read;
@@ -180,15 +219,17 @@ void evaluate(EvalContext& ctx) {
     return ctx.error(e.what());
   }
   for (const std::string& w : read.warnings) ctx.warning(w);
-  const std::string& name = ctx.param<std::string>(kName);
+  const std::string& name = ctx.param<std::string>(par.name);
   const PlaceableMesh mesh{name.empty() ? fs::path(file).stem().string() : name, read.mesh};
   const MeshPlacementSpec spec = spec_of(ctx);
 
   MeshSet out = ctx.input<MeshSet>(0);
   std::set<std::string> names;  // of all anchors there are, for the error below
-  const bool upright = ctx.param<bool>(kUpright);
+  const bool upright = ctx.param<bool>(par.upright);
   bool placed_any = false;
-  std::int64_t dropped = 0;
+  std::int64_t dropped = 0, cut = 0;
+  const bool cutting = ctx.param<bool>(par.cut);
+  const CutSpec cut_spec{ctx.param<double>(par.cut_depth), ctx.param<std::string>(par.reveal_tag)};
   const bool tiles = spec.mode == MeshPlacementSpec::Mode::Tiles;
   for (TaggedMesh& part : out.parts) {
     if (tiles)
@@ -197,20 +238,30 @@ void evaluate(EvalContext& ctx) {
       for (const ResolvedAnchor& a : part.anchors) names.insert(a.name);
     if (!carries(part, spec.anchor, tiles)) continue;  // another building type's mesh
     placed_any = true;
+    ctx.throw_if_cancelled();
+    const std::string building = part.building.empty() ? "" : "building " + part.building + ": ";
     try {
+      PlaceMeshReport report;
       if (tiles) {
-        place_in_tiles(part.placed, mesh, part.tiles, spec);
-        continue;
+        report = place_in_tiles(part.placed, mesh, part.tiles, spec);
+      } else {
+        const std::optional<FaceCover> cover =
+            (spec.mode != MeshPlacementSpec::Mode::Row && spec.mode != MeshPlacementSpec::Mode::Grid) || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);
+        report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors, spec,
+                            cover ? &*cover : nullptr);
       }
-      const std::optional<FaceCover> cover =
-          (spec.mode != MeshPlacementSpec::Mode::Row && spec.mode != MeshPlacementSpec::Mode::Grid) || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);
-      const PlaceMeshReport report = place_mesh(part.placed, mesh, upright ? stood_upright(part.anchors) : part.anchors,
-                                                spec, cover ? &*cover : nullptr);
       dropped += static_cast<std::int64_t>(report.dropped);
-      for (const std::string& absent : report.absent)
-        ctx.warning((part.building.empty() ? "" : "building " + part.building + ": ") + absent);
+      for (const std::string& absent : report.absent) ctx.warning(building + absent);
+      if (cutting && part.mesh) {
+        const CutReport cuts = cut_into(part, report.outlines, cut_spec);
+        cut += static_cast<std::int64_t>(cuts.cut);
+        if (!cuts.skipped.empty())
+          ctx.warning(building + std::to_string(cuts.skipped.size()) + " opening(s) not cut, the first: " + cuts.skipped[0]);
+      }
     } catch (const PlacementError& e) {
       return ctx.error(e.what());
+    } catch (const MeshError& e) {
+      return ctx.error(building + e.what());
     }
   }
   if (!placed_any) {
@@ -224,8 +275,9 @@ void evaluate(EvalContext& ctx) {
                        "' on the input (there are " + list + ")");
     }
   }
-  ctx.set_output(0, std::move(out));
-  ctx.set_output(1, dropped);
+  ctx.set_output(par.mesh_out, std::move(out));
+  ctx.set_output(par.dropped_out, dropped);
+  ctx.set_output(par.cut_out, cut);
 }
 
 }  // namespace

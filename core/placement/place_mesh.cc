@@ -79,16 +79,16 @@ double top_of(const std::vector<std::vector<glm::dvec2>>& faces, const ResolvedA
   return a.frame.origin.z + top * a.frame.up.z;
 }
 
-// Whether the box, placed by t, lies on `faces` (in a's frame coordinates) seen along a's normal.
-bool on_face(const Box3& box, const glm::dmat4& t, const ResolvedAnchor& a, const std::vector<std::vector<glm::dvec2>>& faces) {
-  glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
+// The box, placed by t, seen along the frame's normal: a rectangle in its (along, up) coordinates.
+Opening outline(const Box3& box, const glm::dmat4& t, std::int32_t edge, const Frame& frame) {
+  Opening o{edge, frame, glm::dvec2(HUGE_VAL), glm::dvec2(-HUGE_VAL)};
   for (int k = 0; k < 8; ++k) {
     const glm::dvec3 corner(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z);
-    const glm::dvec3 d = glm::dvec3(t * glm::dvec4(corner, 1.0)) - a.frame.origin;
-    const glm::dvec2 p(glm::dot(d, a.frame.along), glm::dot(d, a.frame.up));
-    lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const glm::dvec3 d = glm::dvec3(t * glm::dvec4(corner, 1.0)) - frame.origin;
+    const glm::dvec2 p(glm::dot(d, frame.along), glm::dot(d, frame.up));
+    o.lo = glm::min(o.lo, p), o.hi = glm::max(o.hi, p);
   }
-  return covered(faces, lo, hi);
+  return o;
 }
 
 }  // namespace
@@ -115,11 +115,13 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
         z_to = top_of(faces, *a);
       }
       for (const glm::dmat4& t : transforms(box, *a, anchors, spec, z_to, report)) {
-        if (clipped && !on_face(box, t, *a, faces)) {
+        const Opening o = outline(box, t, a->edge_id, a->frame);
+        if (clipped && !covered(faces, o.lo, o.hi)) {
           ++report.dropped;
           continue;
         }
         placed.push_back({0, t, spec.tag, a->edge_id});
+        report.outlines.push_back(o);
       }
     } catch (const PlacementError& e) {
       throw PlacementError(where(*a) + ": " + e.what());
@@ -140,6 +142,7 @@ PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mes
   const Box3 box = bounds(*mesh.mesh);
   const FramePlacement at{box.at(spec.pivot), spec.scale, spec.offset};
   std::vector<Instance> placed;
+  PlaceMeshReport report;
   for (const FacadeTile& t : tiles) {
     if (t.name != spec.anchor || t.floor < spec.floor_from || t.floor > spec.floor_to) continue;
     Cell cell{t.frame, t.width, t.height, t.bay, t.floor};
@@ -147,6 +150,7 @@ PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mes
     try {
       placed.push_back({0, spec.fit ? shift(cell.frame, spec.offset) * fit_to_cell(box, cell, spec.margin) : place_at(t.frame, at),
                         spec.tag, t.edge_id});
+      report.outlines.push_back(outline(box, placed.back().transform, t.edge_id, t.frame));
     } catch (const PlacementError& e) {
       throw PlacementError("tile '" + t.name + "' on edge " + std::to_string(t.edge_id) + ", floor " + std::to_string(t.floor) +
                            ", bay " + std::to_string(t.bay) + ": " + e.what());
@@ -157,7 +161,6 @@ PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mes
     in.mesh = index;
     result.add_instance(std::move(in));
   }
-  PlaceMeshReport report;
   report.instances = placed.size();
   return report;
 }

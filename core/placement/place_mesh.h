@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/geom/anchor.h"
+#include "core/placement/cut_openings.h"
 #include "core/placement/facade_split.h"
 #include "core/placement/placement.h"
 #include "core/placement/repeat.h"
@@ -45,6 +46,9 @@ struct PlaceMeshReport {
   std::size_t instances = 0;
   std::vector<std::string> absent;  // one line per resolution that placed nothing, with the reason
   std::size_t dropped = 0;          // Row and Grid items not wholly on their face (see `cover`)
+  // Per instance placed, in order: its mesh's bounds seen along its frame's
+  // normal (the anchor's, or the tile's), the opening it would cut.
+  std::vector<Opening> outlines;
 };
 
 class FaceCover;

@@ -58,7 +58,12 @@ TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
   const TaggedMesh& part = set.parts[0];
   EXPECT_TRUE(validate(*part.mesh).ok());
   EXPECT_NEAR(top_of(*part.mesh), 69, 1e-9);
-  const FaceCover cover(*part.mesh);
+  // The tiles are checked against the walls before the openings are cut into them.
+  Graph uncut = g;
+  ASSERT_TRUE(uncut.set_param(8, "cut", Value::make(false)));
+  const EvalResult whole = test::evaluate_mesh(uncut, kSamples);
+  const Mesh& walls = *mesh_of(whole).parts[0].mesh;
+  const FaceCover cover(walls);
   std::size_t tiles = 0;
   for (const FacadeTile& a : part.tiles) {
     ASSERT_EQ(a.name, "tile");
@@ -76,6 +81,14 @@ TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
   EXPECT_GT(tiles, 100u);
   // One window per tile, fitted into it.
   ASSERT_EQ(part.placed.instances.size(), tiles);
+  // Each window's opening (its tile less the 0.4 m margin) is cut 0.25 m deep: four reveals and a back each,
+  // and the tower loses exactly their volume against the same recipe without the cut.
+  std::size_t reveals = 0;
+  for (std::size_t f = 0; f < part.face_tags.size(); ++f) reveals += face_tag(part, f) == "reveal";
+  EXPECT_EQ(reveals, 5 * tiles);
+  double recesses = 0;
+  for (const FacadeTile& a : part.tiles) recesses += (a.width - 0.8) * (a.height - 0.8) * 0.25;
+  EXPECT_NEAR(validate(walls).volume - validate(*part.mesh).volume, recesses, 1e-6);
 }
 
 }  // namespace
