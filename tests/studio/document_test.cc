@@ -341,5 +341,51 @@ TEST(Document, APresetForAnUnknownParameterIsALoadError) {
   }
 }
 
+// The group library: a group saved beside the recipe as lib/NAME.pxg, then
+// placed from there (read from the file, named apart from the recipe's own
+// groups), one undo step; saved, the recipe names the file.
+TEST(Document, GroupLibrarySavesAGroupAndPlacesItFromItsFile) {
+  const auto dir = temp_dir();
+  std::filesystem::copy_file(std::filesystem::path(PROCEX_SAMPLES) / "city.pxg", dir / "city.pxg");
+  auto doc = Document::open(dir / "city.pxg");
+  doc->select_only(6);  // the Switch: not a group
+  EXPECT_FALSE(doc->save_group_to_library());
+  doc->select_only(1);
+  const Result<std::filesystem::path> saved = doc->save_group_to_library();
+  ASSERT_TRUE(saved) << saved.message();
+  EXPECT_EQ(*saved, std::filesystem::absolute(dir / "lib" / "building.pxg"));
+  EXPECT_FALSE(doc->dirty()) << "saving a group to the library leaves the recipe as it was";
+  EXPECT_EQ(to_pxg(load_pxg(*saved)), to_pxg(*doc->graph().node(1)->type->body));
+  std::ofstream(dir / "lib" / "broken.pxg") << "{\"version\": 2, \"nodes\": [";
+  EXPECT_EQ(library_files(dir), (std::vector<std::string>{"lib/broken.pxg", "lib/building.pxg"}));
+
+  const std::uint64_t rev = doc->revision();
+  const Result<NodeId> refused = doc->place_library_group("lib/broken.pxg", 0, 0);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.message().find("broken.pxg"), std::string::npos) << refused.message();
+  EXPECT_EQ(doc->revision(), rev) << "a refused file changes nothing";
+
+  const Result<NodeId> placed = doc->place_library_group("lib/building.pxg", 40, 60);
+  ASSERT_TRUE(placed) << placed.message();
+  const Node* n = doc->graph().node(*placed);
+  ASSERT_TRUE(n);
+  EXPECT_EQ(n->group, "building2") << "the recipe's own group keeps its name";
+  EXPECT_EQ(n->editor.x, 40);
+  EXPECT_EQ(doc->graph().groups().at("building2").file, "lib/building.pxg");
+  EXPECT_EQ(doc->selected(), *placed);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_FALSE(doc->graph().node(*placed));
+  EXPECT_FALSE(doc->graph().groups().count("building2"));
+  ASSERT_TRUE(doc->redo());
+  ASSERT_TRUE(doc->graph().node(*placed)) << "redo places the same node";
+  doc->save();
+  EXPECT_NE(read_text(dir / "city.pxg").find("\"file\": \"lib/building.pxg\""), std::string::npos);
+  const Graph reloaded = load_pxg(dir / "city.pxg");
+  EXPECT_EQ(reloaded.node(*placed)->group, "building2");
+
+  Document untitled;
+  EXPECT_NE(untitled.place_library_group("lib/building.pxg", 0, 0).message().find("save the recipe first"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace procex::studio

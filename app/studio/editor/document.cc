@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 #include "app/studio/editor/auto_layout.h"
 #include "graph/pxg.h"
@@ -190,14 +191,71 @@ Status Document::remove_selection() {
 
 Result<NodeId> Document::group_selection() {
   if (selection_.empty()) return Status::error("select the nodes to group first");
-  std::string name;
-  for (int i = 1;; ++i) {
-    name = "group" + std::to_string(i);
-    if (!graph_.groups().count(name) && !NodeRegistry::global().find(name)) break;
-  }
-  Result<NodeId> r = stack_.group(std::vector<NodeId>(selection_.begin(), selection_.end()), name);
+  Result<NodeId> r = stack_.group(std::vector<NodeId>(selection_.begin(), selection_.end()), free_group_name("group", 1));
   if (r) selection_ = {*r};
   return changed(std::move(r));
+}
+
+std::string Document::free_group_name(const std::string& base, int first_number) const {
+  const auto free = [&](const std::string& name) { return !graph_.groups().count(name) && !NodeRegistry::global().find(name); };
+  if (first_number > 1 && free(base)) return base;
+  for (int i = first_number;; ++i)
+    if (std::string name = base + std::to_string(i); free(name)) return name;
+}
+
+std::vector<std::string> library_files(const std::filesystem::path& folder) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder / "lib", ec), end; !ec && it != end; it.increment(ec))
+    // Links could lead out of the recipe's folder, which the loader refuses: only plain files are listed.
+    if (it->path().extension() == ".pxg" && it->symlink_status(ec).type() == std::filesystem::file_type::regular)
+      out.push_back("lib/" + it->path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Result<std::filesystem::path> Document::library_folder(const std::string& what) const {
+  if (path_.empty()) return Status::error("save the recipe first: " + what + " the lib folder beside it");
+  return std::filesystem::absolute(path_).parent_path();
+}
+
+Result<std::filesystem::path> Document::save_group_to_library() {
+  const Node* n = graph_.node(selected());
+  if (!n || n->group.empty()) return Status::error("select one group node to save its group to the library");
+  Result<std::filesystem::path> folder = library_folder("the library is");
+  if (!folder) return folder;
+  const std::filesystem::path file = *folder / "lib" / (n->group + ".pxg");
+  try {
+    std::filesystem::create_directories(file.parent_path());
+    save_pxg(*n->type->body, file);
+  } catch (const std::exception& e) {
+    return Status::error(e.what());
+  }
+  return file;
+}
+
+Result<NodeId> Document::place_library_group(const std::string& file, double x, double y) {
+  Result<std::filesystem::path> folder = library_folder("placing from the library reads");
+  if (!folder) return folder.status();
+  std::shared_ptr<const Graph> body;
+  try {
+    body = std::make_shared<const Graph>(load_pxg(*folder / file));
+  } catch (const std::exception& e) {
+    return Status::error(e.what());
+  }
+  const std::string name = free_group_name(std::filesystem::path(file).stem().string(), 2);
+  // Kept by the undo stack and run again by redo: everything by value, the node's id from the first run.
+  auto placed = std::make_shared<NodeId>(0);
+  Status s = edit_recipe("place " + name, [=](Graph& g) -> Status {
+    if (Status added = g.add_group(name, body, file); !added) return added;
+    Result<NodeId> r = g.add_group_node(name, *placed);
+    if (!r) return r.status();
+    *placed = *r;
+    return g.set_editor_state(*placed, editor_at(x, y));
+  });
+  if (!s) return s;
+  selection_ = {*placed};
+  return *placed;
 }
 
 Status Document::tidy_layout() {

@@ -22,6 +22,10 @@
 
 namespace procex::studio {
 
+// The group files of the library beside a recipe in `folder`: the regular
+// .pxg files of folder/lib, as "lib/NAME.pxg", sorted.
+std::vector<std::string> library_files(const std::filesystem::path& folder);
+
 class Document {
  public:
   Document();  // an untitled, empty recipe
@@ -68,6 +72,15 @@ class Document {
   Status move_selection(double dx, double dy);
   Status remove_selection();
   Result<NodeId> group_selection();
+  // ---- the group library: the recipe folder's lib/*.pxg ----
+  // Writes the selected group instance's group to lib/<group>.pxg beside the
+  // recipe (atomically; replaced if there); returns the path. The recipe is unchanged.
+  Result<std::filesystem::path> save_group_to_library();
+  // Adds library file `file` (as library_files lists it, e.g. "lib/facade.pxg")
+  // as a group named after it (a number added if the name is taken), read from
+  // that file when the recipe loads, and places an instance at (x, y): one
+  // undo step. A file that does not load is refused, naming the file.
+  Result<NodeId> place_library_group(const std::string& file, double x, double y);
   // Lays the whole graph out in layers from inputs to outputs (one undo step).
   Status tidy_layout();
   // Replaces the selected group instance by the group's nodes (selected after).
@@ -113,6 +126,10 @@ class Document {
 
  private:
   Document(Graph graph, std::filesystem::path path);
+  // `base`, else base followed by 2, 3...: the first name no group or node type has.
+  std::string free_group_name(const std::string& base, int first_number) const;
+  // The recipe's folder, refused while it has none (untitled).
+  Result<std::filesystem::path> library_folder(const std::string& what) const;
   // Every change ends here: bumps the revision and drops vanished nodes from the selection.
   template <class R>
   R changed(R r);

@@ -49,6 +49,8 @@ class NodeCanvas {
   };
   const std::vector<TimingOnScreen>& timings_on_screen() const { return timings_on_screen_; }
   float zoom() const { return view_.zoom; }
+  // The canvas point at the middle of the panel: where nodes placed from elsewhere (the library) go.
+  glm::vec2 view_centre() const { return view_.to_canvas((screen_rect_.min + screen_rect_.max) * 0.5f); }
   // The smallest text the last frame drew on the canvas, in pixels (0: none).
   float min_text_px() const { return min_text_px_; }
   // The zoom at which the canvas's text is kMinTextPx high.

@@ -323,7 +323,9 @@ class App {
       if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
       ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
+    const bool edit_menu = ImGui::BeginMenu("Edit");
+    record_button("menu_edit");
+    if (edit_menu) {
       if (ImGui::MenuItem(("Undo " + doc_->undo_label()).c_str(), "Ctrl+Z", false, doc_->can_undo())) doc_->undo();
       if (ImGui::MenuItem(("Redo " + doc_->redo_label()).c_str(), "Ctrl+Shift+Z", false, doc_->can_redo())) doc_->redo();
       ImGui::Separator();
@@ -335,6 +337,11 @@ class App {
         const Node* sel = doc_->graph().node(doc_->selected());
         if (ImGui::MenuItem("Ungroup", nullptr, false, sel && !sel->group.empty()))
           if (auto r = doc_->ungroup_selection(); !r) status_ = r.message();
+        if (ImGui::MenuItem("Save group to library", nullptr, false, sel && !sel->group.empty())) {
+          const Result<fs::path> saved = doc_->save_group_to_library();
+          status_ = saved ? "saved group '" + sel->group + "' to " + (*saved).string() : saved.message();
+        }
+        record_button("menu_save_group");
       }
       if (ImGui::MenuItem("Tidy layout", "L"))
         if (Status s = doc_->tidy_layout(); !s) status_ = s.message();
@@ -438,6 +445,12 @@ class App {
       });
       ImGui::EndTabItem();
     }
+    const bool library_tab = ImGui::BeginTabItem("Library");
+    record_button("tab_library");
+    if (library_tab) {
+      library_panel();
+      ImGui::EndTabItem();
+    }
     if (ImGui::BeginTabItem("Diagnostics")) {
       if (!shown_ || shown_->result.diagnostics.empty()) ImGui::TextDisabled("No errors or warnings.");
       if (shown_)
@@ -475,6 +488,29 @@ class App {
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+  }
+
+  // The groups saved beside the recipe (lib/*.pxg), each placed at the canvas's centre by its button.
+  void library_panel() {
+    if (doc_->path().empty()) {
+      ImGui::TextDisabled("Save the recipe first: its library is the lib folder beside it.");
+      return;
+    }
+    const std::vector<std::string> files = library_files(folder());
+    if (files.empty()) ImGui::TextDisabled("No groups in %s/lib: select a group node, Edit > Save group to library.", folder().string().c_str());
+    for (const std::string& file : files) {
+      ImGui::PushID(file.c_str());
+      const bool place = ImGui::Button("Place");
+      record_button("library_place_" + fs::path(file).stem().string());
+      ImGui::SameLine();
+      ImGui::TextUnformatted(file.c_str());
+      if (place) {
+        const glm::vec2 at = canvas_.view_centre();
+        const Result<NodeId> r = doc_->place_library_group(file, at.x, at.y);
+        status_ = r ? "placed " + file + " as node " + std::to_string(*r) : r.message();
+      }
+      ImGui::PopID();
+    }
   }
 
   // Every resolved anchor of the shown meshes; an absent one says why.

@@ -1,0 +1,69 @@
+// The group library driven by real X input: with one of the city's building
+// groups selected, Edit > Save group to library writes lib/building.pxg
+// beside the recipe; the Evaluation panel's Library tab lists it, and its
+// Place button adds an instance read from that file, which the saved recipe
+// names.
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
+
+#include "graph/pxg.h"
+#include "tests/studio/interaction/studio_driver.h"
+
+namespace procex::studio {
+namespace {
+
+using namespace driver;
+using namespace std::chrono_literals;
+
+// Opens menu `menu` and clicks its item `item` until `done`; a click a loaded machine lost is given again.
+json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {
+  const auto shown = [&](const json& j) { return j["buttons"].contains(item); };
+  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
+    click(button_centre(map, menu));
+    map = studio.wait(item + " shown", shown, 8s, attempt == 3);
+    if (!shown(map)) continue;
+    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
+    map = studio.wait(item + " shown", shown);
+    click(button_centre(map, item));
+    map = studio.wait(item, done, 8s, attempt == 3);
+  }
+  return map;
+}
+
+TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
+  const fs::path dir = fresh_dir("group_library");
+  const fs::path recipe = dir / "city.pxg";
+  fs::copy_file(fs::path(PROCEX_SAMPLES) / "city.pxg", recipe);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
+  json map = studio.wait("settled", [](const json& j) { return j["settled"].get<bool>() && j["selected"] == 1; });
+  const std::size_t nodes_before = map["node_positions"].size();
+
+  const auto saved = [](const json& j) { return j["status"].get<std::string>().find("saved group 'building' to ") != std::string::npos; };
+  map = menu_item_until(studio, map, "menu_edit", "menu_save_group", saved);
+  ASSERT_TRUE(saved(map)) << map["status"];
+  ASSERT_TRUE(fs::is_regular_file(dir / "lib" / "building.pxg"));
+  EXPECT_NO_THROW(load_pxg(dir / "lib" / "building.pxg")) << "a recipe of its own";
+  EXPECT_FALSE(map["dirty"].get<bool>()) << "the recipe itself is unchanged";
+
+  // The Library tab, then Place.
+  const auto listed = [](const json& j) { return j["buttons"].contains("library_place_building"); };
+  for (int attempt = 0; attempt < 4 && !listed(map); ++attempt) {
+    click(button_centre(map, "tab_library"));
+    map = studio.wait("the library listed", listed, 8s, attempt == 3);
+  }
+  map = click_until(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
+                    [&](const json& j) { return j["node_positions"].size() == nodes_before + 1; });
+  EXPECT_NE(map["status"].get<std::string>().find("placed lib/building.pxg"), std::string::npos) << map["status"];
+  save_and_quit(studio);
+
+  const Graph g = load_pxg(recipe);
+  ASSERT_TRUE(g.groups().count("building2"));
+  EXPECT_EQ(g.groups().at("building2").file, "lib/building.pxg");
+  EXPECT_EQ(g.nodes().size(), nodes_before + 1);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace procex::studio
