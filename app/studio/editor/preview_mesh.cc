@@ -226,6 +226,16 @@ class Builder {
     std::size_t group = 0;
     std::vector<std::pair<TagSummary*, glm::dvec3>> faces;
     glm::dvec3 lo{0.0}, hi{0.0};
+    bool empty = true;
+    // A face of tag `t`, area vector `n`, through points `pts` (its bounds).
+    void add_face(TagSummary& t, const glm::dvec3& n, const std::vector<glm::dvec3>& pts) {
+      faces.emplace_back(&t, n);
+      for (const glm::dvec3& p : pts) {
+        lo = empty ? p : glm::min(lo, p);
+        hi = empty ? p : glm::max(hi, p);
+        empty = false;
+      }
+    }
   };
 
   void add_instance(const PlaceableMesh& placed, const Instance& in) {
@@ -261,7 +271,6 @@ class Builder {
     PreviewInstances& group = out_.placed.emplace_back();
     const Mesh& mesh = *placed.mesh;
     const auto own_tags = face_tag_property(mesh);
-    bool first = true;
     for (Mesh::FaceHandle f : mesh.faces()) {
       const std::vector<glm::dvec3> pts = face_points(mesh, f);
       if (pts.size() < 3) continue;
@@ -269,13 +278,8 @@ class Builder {
       const std::string* own = own_tags.is_valid() ? &mesh.property(own_tags, f) : nullptr;
       TagSummary& t = tag(!instance_tag.empty() ? instance_tag : own && !own->empty() ? *own : placed.name);
       const glm::dvec3 n = newell(pts);
-      proto.faces.emplace_back(&t, n);
+      proto.add_face(t, n, pts);
       append_face(group.vertices, pts, n, t.color);
-      for (const glm::dvec3& p : pts) {
-        proto.lo = first ? p : glm::min(proto.lo, p);
-        proto.hi = first ? p : glm::max(proto.hi, p);
-        first = false;
-      }
     }
     return proto;
   }
@@ -341,17 +345,11 @@ class Builder {
     proto.group = out_.placed.size();
     PreviewInstances& group = out_.placed.emplace_back();
     std::vector<float> unused_edges;
-    bool first = true;
     for (const GltfPrimitiveData& prim : placed.primitives) {
       TagSummary& t = tag(!instance_tag.empty() ? instance_tag : !prim.tag.empty() ? prim.tag : placed.building);
       for_each_glb_face(prim, glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n) {
-        proto.faces.emplace_back(&t, n);
+        proto.add_face(t, n, corners);
         append_triangles(group.vertices, corners, n, t.color);
-        for (const glm::dvec3& p : corners) {
-          proto.lo = first ? p : glm::min(proto.lo, p);
-          proto.hi = first ? p : glm::max(proto.hi, p);
-          first = false;
-        }
       }, unused_edges);
     }
     return proto;

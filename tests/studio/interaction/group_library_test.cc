@@ -17,21 +17,6 @@ namespace {
 using namespace driver;
 using namespace std::chrono_literals;
 
-// Opens menu `menu` and clicks its item `item` until `done`; a click a loaded machine lost is given again.
-json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {
-  const auto shown = [&](const json& j) { return j["buttons"].contains(item); };
-  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
-    click(button_centre(map, menu));
-    map = studio.wait(item + " shown", shown, 8s, attempt == 3);
-    if (!shown(map)) continue;
-    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
-    map = studio.wait(item + " shown", shown);
-    click(button_centre(map, item));
-    map = studio.wait(item, done, 8s, attempt == 3);
-  }
-  return map;
-}
-
 TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   const fs::path dir = fresh_dir("group_library");
   const fs::path recipe = dir / "city.pxg";

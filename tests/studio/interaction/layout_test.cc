@@ -6,7 +6,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <thread>
 
 #include "tests/studio/interaction/studio_driver.h"
 
@@ -73,15 +72,7 @@ TEST(StudioLayout, DraggedSplitIsKeptForTheNextStartAndReset) {
     EXPECT_NEAR(panel(map, "nodes", 2), dragged_width, 1.5);
     // View > Reset layout.
     const auto is_default = [](const json& j) { return std::abs(split_x(j) - 0.5) < 1e-9; };
-    for (int attempt = 0; attempt < 4 && !is_default(map); ++attempt) {
-      click(button_centre(map, "menu_view"));
-      map = studio.wait("the View menu", [](const json& j) { return j["buttons"].contains("menu_reset_layout"); }, 8s, attempt == 3);
-      if (!map["buttons"].contains("menu_reset_layout")) continue;
-      std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
-      map = studio.wait("the View menu", [](const json& j) { return j["buttons"].contains("menu_reset_layout"); });
-      click(button_centre(map, "menu_reset_layout"));
-      map = studio.wait("the layout reset", is_default, 8s, attempt == 3);
-    }
+    map = menu_item_until(studio, map, "menu_view", "menu_reset_layout", is_default);
     map = studio.wait("the panels back", [&](const json& j) { return std::abs(panel(j, "nodes", 2) - default_width) < 1.5; });
     EXPECT_NE(map["status"].get<std::string>().find("panel layout reset"), std::string::npos) << map["status"];
     EXPECT_NE(read_text(ini).find("SplitX=0.5000"), std::string::npos) << read_text(ini);

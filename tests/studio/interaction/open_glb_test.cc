@@ -72,15 +72,7 @@ TEST(StudioOpenGlb, ShowsTheFileInThePreviewUntilAskedBack) {
 
   // View > Recipe preview: the house again.
   const auto back = [&](const json& j) { return j["viewing"] == "" && j["preview_faces"].get<long>() == house_faces; };
-  for (int attempt = 0; attempt < 4 && !back(map); ++attempt) {
-    click(button_centre(map, "menu_view"));
-    map = studio.wait("the View menu", [](const json& j) { return j["buttons"].contains("menu_recipe_preview"); }, 8s, attempt == 3);
-    if (!map["buttons"].contains("menu_recipe_preview")) continue;
-    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
-    map = studio.wait("the View menu", [](const json& j) { return j["buttons"].contains("menu_recipe_preview"); });
-    click(button_centre(map, "menu_recipe_preview"));
-    map = studio.wait("the recipe's preview", back, 8s, attempt == 3);
-  }
+  map = menu_item_until(studio, map, "menu_view", "menu_recipe_preview", back);
   map = studio.wait("the windows gone", [](const json& j) { return window_pixels(j) == 0; }, 20s);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "viewing a file does not change the recipe";
   press("ctrl+q");

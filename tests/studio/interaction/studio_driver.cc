@@ -134,6 +134,20 @@ json click_until(Studio& studio, const json& map, const std::function<std::pair<
   return studio.wait(what, [&](const json& j) { return changed(j) && done(j); });
 }
 
+json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {
+  const auto shown = [&](const json& j) { return j["buttons"].contains(item); };
+  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
+    click(button_centre(map, menu));
+    map = studio.wait(item + " shown", shown, 8s, attempt == 3);
+    if (!shown(map)) continue;
+    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
+    map = studio.wait(item + " shown", shown);
+    click(button_centre(map, item));
+    map = studio.wait(item, done, 8s, attempt == 3);
+  }
+  return map;
+}
+
 long Screen::count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const {
   const long x0 = origin.first + static_cast<long>(r[0].get<double>()), y0 = origin.second + static_cast<long>(r[1].get<double>());
   const long x1 = x0 + static_cast<long>(r[2].get<double>()), y1 = y0 + static_cast<long>(r[3].get<double>());
