@@ -379,7 +379,10 @@ class App {
     // With nothing selected the inspector has one line to say: the canvas takes its room.
     const bool inspector_empty = doc_->selection().empty();
     const float canvas_h = inspector_empty ? h - std::floor(ImGui::GetFrameHeight() * 2.5f + 8.0f) : upper_h;
-    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    // NoSavedSettings: the panels' places are the layout's splits, so ImGui's own window entries would only
+    // rewrite the .ini whenever a selection moves the inspector's edge.
+    const ImGuiWindowFlags fixed =
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
     // Places a panel at (x, y, ww, hh); after its Begin, `moved` reads which edges the user dragged.
     struct Edges {
       float left, top, right, bottom;
