@@ -11,6 +11,7 @@
 #include <ostream>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 #include <oneapi/tbb/parallel_for.h>
@@ -59,11 +60,12 @@ std::string file_hash(const std::filesystem::path& path) {
 // case, for file systems that fold it) with the feature's index after a '~',
 // which no cleaned id contains: ids that collide once cleaned ("a/b" and
 // "a_b", two ids in another script), repeat, or are too long for a file name
-// never overwrite each other.
-void assign_file_names(std::vector<Building>& buildings, const std::string& format) {
-  constexpr std::size_t kMaxStem = 100;
-  std::set<std::string> used;
-  for (Building& b : buildings) {
+// never overwrite each other. Named in input order, as buildings stream out.
+class FileNames {
+ public:
+  explicit FileNames(std::string format) : format_(std::move(format)) {}
+  std::string operator()(const Building& b) {
+    constexpr std::size_t kMaxStem = 100;
     std::string stem;
     for (unsigned char c : b.id) stem += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
     if (stem.empty() || stem[0] == '.') stem.insert(0, "_");
@@ -71,14 +73,19 @@ void assign_file_names(std::vector<Building>& buildings, const std::string& form
     stem.resize(std::min(stem.size(), kMaxStem));
     std::string key = stem;
     std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (cut || !used.insert(key).second) stem += "~" + std::to_string(b.index);
-    b.file = stem + format;
+    if (cut || !used_.insert(key).second) stem += "~" + std::to_string(b.index);
+    return stem + format_;
   }
-}
 
-// What the whole batch holds until it is written, counted as buildings finish:
-// a batch over its budget stops early and writes nothing, whatever the order
-// its buildings ran in, instead of running out of memory.
+ private:
+  std::string format_;
+  std::set<std::string> used_;
+};
+
+// What a batch into one file holds until it is written, counted as buildings
+// finish: a batch over its budget stops early and writes nothing, whatever the
+// order its buildings ran in, instead of running out of memory. (Per-building
+// files stream out as their window of buildings finishes: no budget.)
 struct BatchBudget {
   std::size_t max_faces, max_placed;
   std::atomic<std::size_t> faces{0}, placed{0};
@@ -249,35 +256,12 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   const bool one_glb = !per_building && options.output.extension() == ".glb";
   Evaluator evaluator(cache, kEngineSalt);
   Progress progress(err, buildings.size(), options.progress);
-  BatchBudget budget{options.max_faces, options.max_placed};
+  constexpr std::size_t kUnlimited = static_cast<std::size_t>(-1);
+  BatchBudget budget{per_building ? kUnlimited : options.max_faces, per_building ? kUnlimited : options.max_placed};
   tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
-      if (buildings[i].feature && !budget.exceeded) evaluate_building(*recipe, evaluator, one_glb, budget, buildings[i]);
-      progress.step();
-    });
-  });
-
-  if (budget.exceeded) {
-    err << "procex batch: refused: the buildings would hold more than " << options.max_faces << " faces or "
-        << options.max_placed << " placed meshes (" << budget.faces << " faces, " << budget.placed
-        << " placed meshes when it stopped), more than one run should hold in memory; nothing written. Split the "
-           "batch with --shard i/N and join the parts with procex merge, or raise --max-faces / --max-placed\n";
-    return kExitUnusableInput;
-  }
-  cache.clear();  // per-building results are never asked for again: free them before the write's peak
-  const auto evaluated = std::chrono::steady_clock::now();
   std::size_t ok = 0, refused = 0, failed = 0;
-  for (const Building& b : buildings) {
-    if (b.status == "ok") {
-      ++ok;
-      continue;
-    }
-    ++(b.status == "refused" ? refused : failed);
-    err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason << "\n";
-  }
-  if (per_building) assign_file_names(buildings, format);
   ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
+  std::chrono::steady_clock::time_point evaluated = start;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
@@ -294,23 +278,57 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   };
   MeshSet all;
   GltfScene all_gltf;
+  FileNames file_name(format);
   try {
-    // Meshes and report both or neither: the report is written (beside its
-    // target) before the meshes, so a report that cannot be written stops the
-    // run before any mesh is replaced; it is put in place with its final
-    // numbers once the meshes are.
+    // Meshes and report both or neither: the report is staged (beside its
+    // target) before any mesh is written, so a report that cannot be written
+    // stops the run before any mesh is replaced; it is put in place with its
+    // final numbers once the meshes are.
     AtomicFileSet report_file;
     if (!options.report.empty() || one_glb)
       stamp.recipe = file_hash(options.recipe), stamp.footprints = file_hash(options.footprints);
-    if (!options.report.empty()) report_file.add(options.report, report(evaluated));
+    if (!options.report.empty()) report_file.add(options.report, report(start));
     if (one_glb) all_gltf.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
     if (per_building) std::filesystem::create_directories(options.output);
-    for (Building& b : buildings) {
-      if (b.status != "ok") continue;
-      if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
-      else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
-      else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
+    // Buildings run a window at a time and leave it in input order: a
+    // building's meshes are written (per-building files) or converted to what
+    // the single output keeps, then freed, so the meshes in memory at once are
+    // a window's, however many buildings the batch has.
+    const std::size_t window = 64 * static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
+    for (std::size_t first = 0; first < buildings.size() && !budget.exceeded; first += window) {
+      const std::size_t last = std::min(buildings.size(), first + window);
+      arena.execute([&] {
+        tbb::parallel_for(first, last, [&](std::size_t i) {
+          if (buildings[i].feature && !budget.exceeded) evaluate_building(*recipe, evaluator, one_glb, budget, buildings[i]);
+          progress.step();
+        });
+      });
+      if (budget.exceeded) break;
+      for (std::size_t i = first; i < last; ++i) {
+        Building& b = buildings[i];
+        if (per_building) b.file = file_name(b);
+        if (b.status != "ok") {
+          ++(b.status == "refused" ? refused : failed);
+          err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason
+              << "\n";
+          continue;
+        }
+        ++ok;
+        if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
+        else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
+        else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
+        b.meshes = {}, b.gltf = {};
+      }
     }
+    if (budget.exceeded) {
+      err << "procex batch: refused: the buildings would hold more than " << options.max_faces << " faces or "
+          << options.max_placed << " placed meshes (" << budget.faces << " faces, " << budget.placed
+          << " placed meshes when it stopped), more than one run should hold in memory; nothing written. Split the "
+             "batch with --shard i/N and join the parts with procex merge, or raise --max-faces / --max-placed\n";
+      return kExitUnusableInput;
+    }
+    cache.clear();  // per-building results are never asked for again: free them before the write's peak
+    evaluated = std::chrono::steady_clock::now();
     if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
     else if (!per_building) write_mesh_set(options.output, all, export_options);
     if (!options.report.empty()) {

@@ -131,6 +131,27 @@ TEST_F(Batch, OneFilePerBuilding) {
 }
 
 // A self-intersecting footprint fails; the others are still written.
+// Per-building files stream out as their window of buildings finishes, so
+// the batch holds no building's faces past its window: the in-memory budget
+// that refuses a single output does not apply to them.
+TEST_F(Batch, PerBuildingFilesAreNotHeldForTheBudget) {
+  BatchCommandOptions one = options("city.glb");
+  one.max_faces = 10;
+  EXPECT_EQ(run_batch(one, out_, err_), kExitUnusableInput);
+  EXPECT_NE(err_.str().find("nothing written"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(one.output));
+  BatchCommandOptions folder = options("per_building/");
+  folder.max_faces = 10;
+  folder.report = dir_ / "report.json";
+  ASSERT_EQ(run_batch(folder, out_, err_), 0) << err_.str();
+  const nlohmann::json report = nlohmann::json::parse(read_text(folder.report));
+  ASSERT_GT(report["buildings"].size(), 1u);
+  for (const auto& b : report["buildings"]) {
+    ASSERT_EQ(b["status"], "ok") << b;
+    EXPECT_TRUE(fs::exists(folder.output / b["file"].get<std::string>())) << b;
+  }
+}
+
 TEST_F(Batch, FailuresAreReportedAndTheBatchGoesOn) {
   BatchCommandOptions o = options("bad.glb");
   o.footprints = fs::path(PROCEX_TEST_DATA) / "geojson_bad_features.geojson";
