@@ -15,6 +15,7 @@ namespace {
 // Parameter handles, from the declaration.
 struct Params {
   std::size_t rules, selection, seed, draw, short_below, long_above, street, street_direction;
+  std::size_t party_edges_in;
 };
 Params par;
 
@@ -22,7 +23,7 @@ void declare(NodeDecl& d) {
   d.doc("Gives each footprint edge a profile. `rules` are tried in order, the first whose labels all match an edge "
         "wins: `street = gable; back long = hip:0.7, mansard:0.3; #4 = 2; * = hip`. Labels: short / medium / long "
         "(edge length), street / side / back (outward normal against the street direction), outer / inner (hole), "
-        "selected (`selection`), #<edge id>, normal:<from>-<to> (compass degrees), * (any). Profiles are named by "
+        "selected (`selection`), party (edges on the `party_edges` input: shared with a neighbouring footprint), #<edge id>, normal:<from>-<to> (compass degrees), * (any). Profiles are named by "
         "name or list position, with optional weights; a random pick depends only on `seed`, the building id and "
         "(with draw = per_edge) the edge, so a building looks the same in every run. Edges no rule matches keep "
         "their angle.")
@@ -30,6 +31,9 @@ void declare(NodeDecl& d) {
   d.input<Footprint>("footprint");
   d.input<std::vector<Profile>>("profiles");
   d.input<std::string>("building_id").optional().doc("seeds the random picks (the CLI's batch binds it per feature)");
+  par.party_edges_in = d.input<std::vector<std::int64_t>>("party_edges").optional()
+      .doc("edge ids shared with a neighbouring footprint: the label `party`, never the street side (a graph input "
+           "party_edges is bound per feature by procex batch and eval --footprints)").index();
   par.rules = d.param<std::string>("rules").default_value(std::string("* = 0")).doc("see above").index();
   par.selection = d.param<std::vector<std::int64_t>>("selection").default_value(std::vector<std::int64_t>{})
       .doc("edge ids the label `selected` matches").index();
@@ -69,6 +73,9 @@ void evaluate(EvalContext& ctx) {
   label_options.short_below = ctx.param<double>(par.short_below);
   label_options.long_above = ctx.param<double>(par.long_above);
   if (ctx.choice(par.street) == "direction") label_options.street_deg = ctx.param<double>(par.street_direction);
+  if (ctx.has_input(par.party_edges_in))
+    for (const std::int64_t id : ctx.input<std::vector<std::int64_t>>(par.party_edges_in))
+      label_options.party.push_back(static_cast<std::int32_t>(id));
 
   fp.profiles = profiles;
   std::size_t unmatched = 0;

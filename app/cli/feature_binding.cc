@@ -9,6 +9,7 @@
 
 #include "app/cli/recipe_session.h"
 #include "core/geom/error.h"
+#include "core/geom/party_walls.h"
 #include "core/geom/prepare.h"
 #include "core/io/io_error.h"
 #include "nodes/support/errors.h"
@@ -29,6 +30,23 @@ bool names_setting(const Graph& graph, const std::string& key) {
                      [&](const ExposedParam& p) { return p.name == key; });
 }
 
+// Each feature's edges shared with another feature of the file, as the
+// property party_edges (a JSON list of edge ids), unless the file gives it.
+void add_party_edges(GeoJsonCollection& collection) {
+  std::vector<PlanLoops> plans;
+  for (const GeoJsonFeature& f : collection.features) plans.push_back(f.loops);
+  const std::vector<std::vector<std::int32_t>> party = party_edges(plans, kPartyWallDistance);
+  for (std::size_t i = 0; i < party.size(); ++i) {
+    std::string list = "[";
+    for (const std::int32_t id : party[i]) {
+      if (list.size() > 1) list += ',';
+      list += std::to_string(id);
+    }
+    list += ']';
+    collection.features[i].properties.try_emplace(std::string(kPartyEdgesProperty), list);
+  }
+}
+
 }  // namespace
 
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
@@ -47,7 +65,9 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
     return std::nullopt;
   }
   try {
-    return read_footprints(footprints, read);
+    GeoJsonCollection collection = read_footprints(footprints, read);
+    if (names_setting(recipe, std::string(kPartyEdgesProperty))) add_party_edges(collection);
+    return collection;
   } catch (const IoError& e) {
     err << "procex " << command << ": " << e.what() << "\n";
     return std::nullopt;

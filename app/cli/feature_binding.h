@@ -10,6 +10,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/io/footprint_read.h"
@@ -21,13 +22,21 @@
 
 namespace procex {
 
+// A recipe with a graph input (or an exposed parameter) named party_edges
+// gets, per feature, the ids of its edges that run along another footprint of the
+// same file (within kPartyWallDistance metres, at least half their length):
+// Assign Profiles' label `party`. A feature's own party_edges property wins.
+inline constexpr std::string_view kPartyEdgesProperty = "party_edges";
+inline constexpr double kPartyWallDistance = 0.3;
+
 // Ok, or why features cannot be bound to the recipe (no graph input named
 // `footprint` of type footprint), naming recipe_file.
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file);
 
 // The features a recipe loaded from recipe_file is to be evaluated for: checks
 // that it has a graph input named `footprint` of type footprint, then reads
-// `footprints` (any file read_footprints reads, in the CRS `read` says).
+// `footprints` (any file read_footprints reads, in the CRS `read` says), with
+// party_edges added when the recipe reads it.
 // nullopt after writing the problem to err ("procex <command>: ...").
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
                                                  const std::filesystem::path& footprints,

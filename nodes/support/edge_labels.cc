@@ -1,5 +1,6 @@
 #include "nodes/support/edge_labels.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -36,13 +37,14 @@ std::vector<EdgeLabels> label_edges(const Footprint& fp, const LabelOptions& opt
       const glm::dvec2 d = pts[(k + 1) % pts.size()] - pts[k];
       EdgeLabels e;
       e.loop = li, e.edge = k, e.id = fp.loops[li].edges[k].id, e.inner = inner;
+      e.party = std::find(options.party.begin(), options.party.end(), e.id) != options.party.end();
       e.length = glm::length(d);
       const glm::dvec2 n = e.length > 0 ? side * glm::dvec2(d.y, -d.x) / e.length : glm::dvec2(0);
       e.normal_deg = compass_deg(n);
       e.length_class = e.length < options.short_below ? LengthClass::Short
                        : e.length > options.long_above ? LengthClass::Long
                                                        : LengthClass::Medium;
-      if (!inner && e.length > longest) longest = e.length, street = n;
+      if (!inner && !e.party && e.length > longest) longest = e.length, street = n;
       normals.push_back(n);
       out.push_back(e);
     }

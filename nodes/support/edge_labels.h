@@ -1,7 +1,8 @@
 // Labels of footprint edges for assigning profiles by example (paper 3.7):
 // length (short / medium / long), orientation to the street (street / side /
 // back), the compass angle of the outward normal, and whether the edge bounds
-// a hole.
+// a hole, and whether it is a party wall (shared with a neighbouring
+// footprint).
 #pragma once
 
 #include <cstdint>
@@ -23,14 +24,18 @@ struct EdgeLabels {
   Orientation orientation = Orientation::Side;
   double normal_deg = 0;  // outward normal, degrees counter-clockwise from +x, in [0, 360)
   bool inner = false;     // bounds a hole (odd nesting depth)
+  bool party = false;     // its id is in LabelOptions::party
 };
 
 struct LabelOptions {
   double short_below = 4.0;  // metres
   double long_above = 12.0;  // metres
   // Direction from the building towards the street, degrees counter-clockwise
-  // from +x; nullopt: the outward normal of the longest outer edge.
+  // from +x; nullopt: the outward normal of the longest outer edge that is
+  // not a party wall (a lot's longest edge is often the one it shares).
   std::optional<double> street_deg;
+  // Ids of the edges shared with neighbouring footprints (core/geom/party_walls.h).
+  std::vector<std::int32_t> party;
 };
 
 // One entry per edge, loops in order. Outward normals follow the nesting

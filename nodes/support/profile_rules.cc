@@ -45,7 +45,7 @@ bool parse_normal_range(std::string_view label, double& from, double& to) {
 
 bool known_label(std::string_view l) {
   static const std::string_view kWords[] = {"*", "short", "medium", "long", "street", "side",
-                                            "back", "outer", "inner", "selected"};
+                                            "back", "outer", "inner", "selected", "party"};
   for (std::string_view w : kWords)
     if (l == w) return true;
   double a, b;
@@ -69,7 +69,7 @@ std::vector<ProfileRule> parse_profile_rules(std::string_view text, const std::v
       if (l.empty()) continue;
       if (!known_label(l))
         throw std::invalid_argument(where + ": unknown label '" + std::string(l) +
-                                    "' (use short, medium, long, street, side, back, outer, inner, selected, "
+                                    "' (use short, medium, long, street, side, back, outer, inner, selected, party, "
                                     "#<edge id>, normal:<from>-<to> or *)");
       rule.labels.emplace_back(l);
     }
@@ -108,6 +108,7 @@ bool label_matches(std::string_view l, const EdgeLabels& e, bool selected) {
   if (l == "outer") return !e.inner;
   if (l == "inner") return e.inner;
   if (l == "selected") return selected;
+  if (l == "party") return e.party;
   std::size_t id;
   if (l[0] == '#' && parse_index(l.substr(1), id)) return e.id >= 0 && static_cast<std::size_t>(e.id) == id;
   double from, to;

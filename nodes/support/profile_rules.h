@@ -5,7 +5,8 @@
 //
 // Rules are separated by ';' or newlines and tried in order; the first whose
 // labels all match an edge decides. Labels: short, medium, long; street, side,
-// back; outer, inner; selected (the node's selection); #<edge id>;
+// back; outer, inner; selected (the node's selection); party (shared with a
+// neighbouring footprint); #<edge id>;
 // normal:<from>-<to> (degrees, counter-clockwise from +x, may wrap past 360);
 // * (any edge). Choices name a profile by its name or its index in the list,
 // each with an optional weight (default 1).

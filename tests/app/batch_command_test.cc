@@ -14,8 +14,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/batch_command.h"
+#include "app/cli/feature_binding.h"
 #include "app/cli/merge_command.h"
 #include "app/cli/recipe_session.h"
+#include "core/geom/party_walls.h"
+#include "core/io/footprint_read.h"
 #include "core/io/gltf_write.h"
 #include "tests/app/command_test.h"
 #include "tests/expected/sample_summaries.h"
@@ -199,6 +202,33 @@ TEST_F(Batch, PropertiesSetExposedParameters) {
   ASSERT_EQ(report["buildings"][0]["status"], "ok") << report["buildings"][0];
   // A 10 x 10 square peaks at 5 / tan(pitch): 5 m at the recipe's 45 degrees, 23.5 m at 12.
   EXPECT_NEAR(report["buildings"][0]["bounds"]["max"][2].get<double>(), 5.0 / std::tan(12 * M_PI / 180), 1e-9);
+}
+
+// The city recipe's graph input party_edges gets each building's edges shared
+// with a neighbour in the file: one blank vertical face tagged party per such
+// edge, as many as party_edges finds on the block read on its own.
+TEST_F(Batch, PartyWallsOfTheSampleBlock) {
+  BatchCommandOptions o = options("city.glb");
+  o.report = dir_ / "city.json";
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  const json report = json::parse(read_text(o.report));
+  const GeoJsonCollection block = read_footprints(kBlock);
+  std::vector<PlanLoops> plans;
+  for (const GeoJsonFeature& f : block.features) plans.push_back(f.loops);
+  const auto party = party_edges(plans, kPartyWallDistance);
+  std::size_t shared = 0, with_party = 0;
+  for (std::size_t i = 0; i < block.features.size(); ++i) {
+    shared += party[i].size();
+    with_party += !party[i].empty();
+    for (const auto& b : report["buildings"]) {
+      if (b["id"] != block.features[i].id) continue;
+      SCOPED_TRACE(block.features[i].id);
+      const std::size_t faces = b["faces_per_tag"].contains("party") ? b["faces_per_tag"]["party"].get<std::size_t>() : 0;
+      EXPECT_EQ(faces, party[i].size());
+    }
+  }
+  EXPECT_GE(with_party, 4u);  // the block has terraced neighbours
+  EXPECT_GE(shared, with_party);
 }
 
 TEST_F(Batch, RecipeWithoutFootprintInputIsRefused) {

@@ -121,7 +121,7 @@ TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
     EXPECT_TRUE(m["normals"].get<bool>());
     EXPECT_GT(m["triangles"].get<int>(), 0);
   }
-  EXPECT_EQ(tags, (std::set<std::string>{"base", "cap", "gable", "roof", "wall"}));
+  EXPECT_EQ(tags, (std::set<std::string>{"base", "cap", "gable", "party", "roof", "wall"}));
   EXPECT_EQ(buildings.size(), 18u);
   EXPECT_TRUE(buildings.count("w362871296"));  // the cathedral
 }

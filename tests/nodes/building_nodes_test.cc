@@ -61,6 +61,23 @@ TEST(AssignProfiles, ByStreetOrientation) {
   EXPECT_EQ(assigned(by_longest), (std::vector<int>{2, 0, 0, 0}));
 }
 
+// A terraced lot: edges 1 and 3 are shared with the neighbours. `party` picks
+// them out, and the street is beyond the longest edge that is not a party wall.
+TEST(AssignProfiles, PartyWalls) {
+  const auto r = run_node("Assign Profiles",
+                          {{"rules", Value::make(std::string("party = vertical_wall; street = gable_end; * = hip"))}},
+                          {{"footprint", rectangle(6, 20)},
+                           {"profiles", presets()},
+                           {"party_edges", Value::make(std::vector<std::int64_t>{1, 3})}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  // Without party walls the 20 m edge 1 would face the street; with them edge 0 (6 m, south) does.
+  EXPECT_EQ(assigned(r), (std::vector<int>{2, 0, 1, 0}));
+  const auto alone = run_node("Assign Profiles",
+                              {{"rules", Value::make(std::string("party = vertical_wall; street = gable_end; * = hip"))}},
+                              {{"footprint", rectangle(6, 20)}, {"profiles", presets()}});
+  EXPECT_EQ(assigned(alone), (std::vector<int>{1, 2, 1, 1}));
+}
+
 TEST(AssignProfiles, ByLengthSelectionAndIndex) {
   const auto r = run_node("Assign Profiles",
                           {{"rules", Value::make(std::string("#3 = 5; selected = 4; long = 1; short = 3; * = 0"))},

@@ -45,7 +45,7 @@ TEST(ProfileRules, ErrorsNameTheRule) {
   };
   EXPECT_EQ(message("* = hip; streat = hip"),
             "rule 2 ('streat = hip'): unknown label 'streat' (use short, medium, long, street, side, back, outer, "
-            "inner, selected, #<edge id>, normal:<from>-<to> or *)");
+            "inner, selected, party, #<edge id>, normal:<from>-<to> or *)");
   EXPECT_EQ(message("* = pagoda"), "rule 1 ('* = pagoda'): no profile named 'pagoda' among the 8 profiles given");
   EXPECT_EQ(message("* = 8"), "rule 1 ('* = 8'): no profile named '8' among the 8 profiles given");
   EXPECT_EQ(message("* hip"), "rule 1 ('* hip') has no '=' between labels and profiles");
@@ -65,6 +65,9 @@ TEST(ProfileRules, LabelsMatch) {
   EXPECT_FALSE(label_matches("normal:0-180", e, false));
   EXPECT_TRUE(label_matches("selected", e, true));
   EXPECT_TRUE(label_matches("outer", e, false));
+  EXPECT_FALSE(label_matches("party", e, false));
+  e.party = true;
+  EXPECT_TRUE(label_matches("party", e, false));
 }
 
 TEST(ProfileRules, PickFollowsWeights) {

@@ -63,6 +63,7 @@ TEST(NodeRegistration, EveryTypeConforms) {
       {&value_type<MeshSet>(), Value::make(mesh)},
       {&value_type<AnchorSpec>(), Value::make(AnchorSpec{{"window", {}, 1.0, -1, {}}, ""})},
       {&value_type<PlanEditSpec>(), Value::make(bay_edit())},
+      {&value_type<std::vector<std::int64_t>>(), Value::make(std::vector<std::int64_t>{1})},
   };
   for (const auto& t : NodeRegistry::global().all()) {
     if (!from_nodes_dir(*t)) continue;
