@@ -30,9 +30,10 @@ bool names_setting(const Graph& graph, const std::string& key) {
                      [&](const ExposedParam& p) { return p.name == key; });
 }
 
-// Each feature's edges shared with another feature of the file, as the
-// property party_edges (a JSON list of edge ids), unless the file gives it.
-void add_party_edges(GeoJsonCollection& collection) {
+}  // namespace
+
+void add_party_edges(const Graph& recipe, GeoJsonCollection& collection) {
+  if (!names_setting(recipe, std::string(kPartyEdgesProperty))) return;
   std::vector<PlanLoops> plans;
   for (const GeoJsonFeature& f : collection.features) plans.push_back(f.loops);
   const std::vector<std::vector<std::int32_t>> party = party_edges(plans, kPartyWallDistance);
@@ -46,8 +47,6 @@ void add_party_edges(GeoJsonCollection& collection) {
     collection.features[i].properties.try_emplace(std::string(kPartyEdgesProperty), list);
   }
 }
-
-}  // namespace
 
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
   const auto i = recipe.input_index("footprint");
@@ -66,7 +65,7 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
   }
   try {
     GeoJsonCollection collection = read_footprints(footprints, read);
-    if (names_setting(recipe, std::string(kPartyEdgesProperty))) add_party_edges(collection);
+    add_party_edges(recipe, collection);
     return collection;
   } catch (const IoError& e) {
     err << "procex " << command << ": " << e.what() << "\n";

@@ -29,6 +29,10 @@ namespace procex {
 inline constexpr std::string_view kPartyEdgesProperty = "party_edges";
 inline constexpr double kPartyWallDistance = 0.3;
 
+// Adds the property party_edges to every feature of `collection` that lacks
+// it, when `recipe` reads it (core/geom/party_walls.h); else does nothing.
+void add_party_edges(const Graph& recipe, GeoJsonCollection& collection);
+
 // Ok, or why features cannot be bound to the recipe (no graph input named
 // `footprint` of type footprint), naming recipe_file.
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file);
