@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
 #include "core/geom/nesting.h"
-#include <glm/ext/vector_int2_sized.hpp>
 
 namespace procex {
 namespace {
@@ -50,33 +49,39 @@ std::vector<std::vector<std::int32_t>> party_edges(const std::vector<PlanLoops>&
   }
   std::vector<std::vector<std::int32_t>> out(plans.size());
   if (edges.empty()) return out;
-  // Cells about the mean edge length (at most a million across the data):
-  // each edge is listed in the cells its bounds, grown by `distance`, touch;
-  // an edge over more than kMaxCells of them is compared with every edge.
-  constexpr std::int64_t kMaxCells = 64;
+  // Cells about the mean edge length (at most a million across the data).
+  // An edge is listed in the cells of points half a cell apart along it. A
+  // point within `distance` (at most a quarter cell) of edge e is within half
+  // a cell of one of e's points, so the edges near e are listed in the cells
+  // next to those of e's points (reach 1). An edge longer than kMaxSteps
+  // steps is compared with every edge.
+  constexpr std::int64_t kMaxSteps = 4096;
   const double cell = std::max({total / static_cast<double>(edges.size()), 4 * distance,
                                 1e-6 * std::max(hi.x - lo.x, hi.y - lo.y), 1e-9});
-  auto cell_of = [&](double v, double origin) { return static_cast<std::int64_t>(std::floor((v - origin) / cell)); };
-  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> grid;
+  auto steps = [&](const Edge& e) { return static_cast<std::int64_t>(std::ceil(2 * glm::length(e.b - e.a) / cell)); };
+  auto is_long = [&](const Edge& e) { return steps(e) > kMaxSteps; };
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
   std::vector<std::size_t> long_edges;
-  auto span = [&](const Edge& e) {
-    const glm::dvec2 l = glm::min(e.a, e.b) - distance, h = glm::max(e.a, e.b) + distance;
-    return std::pair{glm::i64vec2(cell_of(l.x, lo.x), cell_of(l.y, lo.y)), glm::i64vec2(cell_of(h.x, lo.x), cell_of(h.y, lo.y))};
-  };
-  auto is_long = [&](const Edge& e) {
-    const auto [l, h] = span(e);
-    return (h.x - l.x + 1) * (h.y - l.y + 1) > kMaxCells;
-  };
-  auto cells = [&](const Edge& e, auto&& visit) {
-    const auto [l, h] = span(e);
-    for (std::int64_t x = l.x; x <= h.x; ++x)
-      for (std::int64_t y = l.y; y <= h.y; ++y) visit(std::pair{x, y});
+  auto cells = [&](const Edge& e, std::int64_t reach, auto&& visit) {
+    const std::int64_t n = std::max<std::int64_t>(1, steps(e));
+    std::vector<std::uint64_t> keys;
+    for (std::int64_t k = 0; k <= n; ++k) {
+      const glm::dvec2 p = e.a + (e.b - e.a) * (static_cast<double>(k) / static_cast<double>(n));
+      const auto x = static_cast<std::int64_t>(std::floor((p.x - lo.x) / cell));
+      const auto y = static_cast<std::int64_t>(std::floor((p.y - lo.y) / cell));
+      for (std::int64_t dx = -reach; dx <= reach; ++dx)
+        for (std::int64_t dy = -reach; dy <= reach; ++dy)
+          keys.push_back(static_cast<std::uint64_t>(x + dx + 1) << 32 | static_cast<std::uint32_t>(y + dy + 1));
+    }
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    for (const auto& key : keys) visit(key);
   };
   for (std::size_t i = 0; i < edges.size(); ++i) {
     if (is_long(edges[i]))
       long_edges.push_back(i);
     else
-      cells(edges[i], [&](auto key) { grid[key].push_back(i); });
+      cells(edges[i], 0, [&](auto key) { grid[key].push_back(i); });
   }
 
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -87,7 +92,7 @@ std::vector<std::vector<std::int32_t>> party_edges(const std::vector<PlanLoops>&
     if (is_long(e)) {
       for (std::size_t j = 0; j < edges.size(); ++j) near.push_back(j);
     } else {
-      cells(e, [&](auto key) {
+      cells(e, 1, [&](auto key) {
         if (const auto it = grid.find(key); it != grid.end()) near.insert(near.end(), it->second.begin(), it->second.end());
       });
     }
