@@ -52,7 +52,10 @@ void declare(NodeDecl& d) {
         "past a corner) are dropped and counted in `dropped`. A grid's z_to may be an expression of the recipe's "
         "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
         "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot. The meshes "
-        "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. Where an anchor "
+        "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. The mesh keeps its own "
+        "texture coordinates and normals (`vt`, `vn`) and its `mtllib` materials (colour `Kd`, texture `map_Kd`, a PNG "
+        "or JPEG image; library and image confined to the recipe's folder as the mesh is): .glb files embed the image, "
+        "OBJ's .mtl names it relative to the output. Where an anchor "
         "resolved as absent (its edge is gone at that height) nothing is placed and a warning says so. With `cut`, each "
         "placed mesh's outline becomes a hole in the face it stands on, lined by reveals `cut_depth` deep and closed "
         "behind, so the building stays closed (offset z = -cut_depth sets the mesh back into it); an outline not "
@@ -109,13 +112,15 @@ struct SharedMesh {
   std::vector<std::string> warnings;
 };
 
-SharedMesh read_shared(const fs::path& path) {
+// Files the OBJ names (its material library, textures) are confined as the
+// recipe's own.
+SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve) {
   std::error_code size_error, time_error;
   const auto size = fs::file_size(path, size_error);
   const auto time = fs::last_write_time(path, time_error);
   if (size_error || time_error) {  // read_mesh_file says what is wrong
     SharedMesh m;
-    m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings));
+    m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve));
     return m;
   }
   using Key = std::tuple<std::string, std::uintmax_t, fs::file_time_type::rep>;
@@ -125,7 +130,7 @@ SharedMesh read_shared(const fs::path& path) {
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   SharedMesh m;
-  m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings));
+  m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve));
   if (cache.size() >= 64) cache.clear();  // edited files leave old versions behind
   return cache.emplace(key, std::move(m)).first->second;
 }
@@ -214,7 +219,7 @@ void evaluate(EvalContext& ctx) {
   SharedMesh read;
   try {
     path = ctx.file(file);
-    read = read_shared(path);
+    read = read_shared(path, [&](const fs::path& name) { return ctx.file(name.string()); });
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }

@@ -1,11 +1,23 @@
 // Loads one .glb with three.js's GLTFLoader (as a browser would) and prints
 // what it found as JSON: the scene's top nodes (name, position, extras), and
 // one entry per primitive with its node's building id, its tag (extras),
-// material, triangle count, whether it has normals and texture coordinates,
+// material (its name, base colour and whether it shows a texture), triangle
+// count, whether it has normals and texture coordinates,
 // and its world bounds (three.js is +Y up, as glTF). Exit code 1 if loading fails.
 import { readFileSync } from 'node:fs';
+import { PNG } from 'pngjs';
 import { Box3 } from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+
+// Node.js has no image decoding of a browser's: GLTFLoader's own path for an
+// embedded image (a blob URL, fetched, then createImageBitmap) runs with the
+// global names it expects, the PNG decoded by pngjs. An image that is not a
+// valid PNG fails the load.
+globalThis.self = globalThis;
+globalThis.createImageBitmap = async (blob) => {
+  const png = PNG.sync.read(Buffer.from(await blob.arrayBuffer()));
+  return { width: png.width, height: png.height, data: png.data, close() {} };
+};
 
 const file = process.argv[2];
 const buffer = readFileSync(file);
@@ -24,6 +36,9 @@ new GLTFLoader().parse(data, '', (gltf) => {
       vertices: o.geometry.attributes.position.count,
       normals: o.geometry.attributes.normal !== undefined,
       uvs: o.geometry.attributes.uv !== undefined,
+      texture: o.material.map != null,
+      texture_size: o.material.map ? [o.material.map.image.width, o.material.map.image.height] : null,
+      colour: o.material.color.toArray(),
       min: new Box3().setFromObject(o, true).min.toArray(),
       max: new Box3().setFromObject(o, true).max.toArray(),
     });

@@ -1,8 +1,11 @@
 #include "app/python/mesh_arrays.h"
 
+#include "core/mesh/material.h"
+
 #include <map>
 
 #include <pybind11/numpy.h>
+#include <pybind11/pytypes.h>
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
@@ -175,6 +178,18 @@ void bind_mesh(py::module_& m) {
       .def_readonly("name", &MeshArrays::name, "A placed mesh's name (its file's stem); empty for a building's mesh.")
       .def_readonly("building", &MeshArrays::building, "The building (GeoJSON feature) id, empty when none is bound.")
       .def_readonly("feature", &MeshArrays::feature, "The feature's index in its GeoJSON file, -1 when none.")
+      .def_property_readonly(
+          "materials",
+          [](const MeshArrays& a) {
+            py::dict out;
+            for (const auto& [tag, material] : mesh_materials(*a.mesh))
+              out[py::str(tag)] = py::dict(
+                  py::arg("colour") = py::make_tuple(material.colour[0], material.colour[1], material.colour[2]),
+                  py::arg("texture") = material.texture.empty() ? py::object(py::none()) : py::str(material.texture.string()));
+            return out;
+          },
+          "A placed mesh's own materials by tag, from its OBJ's .mtl: {tag: {'colour': (r, g, b) linear, 'texture': "
+          "the absolute path of its image (map_Kd), or None}}; empty for a building's mesh (its tags have no material).")
       .def_property_readonly("placed", [](const MeshArrays& a) { return a.placed; },
                              "The meshes placed on this one, as a list of Placement (mesh, matrix).")
       .def_property_readonly("n_vertices", [](const MeshArrays& a) { return a.mesh->n_vertices(); })

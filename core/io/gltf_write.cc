@@ -24,7 +24,9 @@
 #include "core/io/atomic_write.h"
 #include "core/io/byte_range.h"
 #include "core/io/io_error.h"
+#include "core/io/texture_image.h"
 #include "core/io/up_axis.h"
+#include "core/mesh/material.h"
 #include "core/mesh/uv_frames.h"
 #include "core/placement/placement.h"
 #include "core/placement/trs_split.h"
@@ -150,6 +152,13 @@ void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
              p.tag + "'");
     if (!std::all_of(p.positions.begin(), p.positions.end(), [](float x) { return std::isfinite(x); }))
       refuse("has a vertex that is not finite in primitive '" + p.tag + "'");
+    if (p.material) {
+      if (!std::all_of(p.material->colour.begin(), p.material->colour.end(), [](double c) { return c >= 0.0 && c <= 1.0; }))
+        refuse("has a material colour outside 0 to 1 in primitive '" + p.tag + "'");
+      if (p.material->image && image_mime_type(*p.material->image).empty())
+        refuse("has a texture that is not a PNG or JPEG image in primitive '" + p.tag + "'");
+      if (p.material->image && p.uvs.empty()) refuse("has a texture but no texture coordinates in primitive '" + p.tag + "'");
+    }
   }
 }
 
@@ -255,9 +264,41 @@ void put_accessor(std::string& out, int view, std::size_t byte_offset, int compo
   out += '"';
 }
 
+void put_material(std::string& out, const std::string& tag, const GltfMaterialData* own, std::size_t texture);
+
+// The materials as written, in order of first use: a tag's colour, or a
+// placed mesh's own material under its tag (two meshes' different materials
+// of one name are two materials). Their images, each distinct one once,
+// become the textures in the same order.
+struct WrittenMaterials {
+  std::vector<std::pair<std::string, const GltfMaterialData*>> keys;
+  std::vector<const std::string*> images;
+  std::string json, textures_json, images_json;
+
+  static bool same(const GltfMaterialData* a, const GltfMaterialData* b) { return a == b || (a && b && *a == *b); }
+  std::size_t index(const GltfPrimitiveData& p) const {
+    const GltfMaterialData* own = p.material ? &*p.material : nullptr;
+    const auto it = std::find_if(keys.begin(), keys.end(), [&](const auto& k) { return k.first == p.tag && same(k.second, own); });
+    return static_cast<std::size_t>(it - keys.begin());
+  }
+  void add(const GltfPrimitiveData& p) {
+    if (index(p) < keys.size()) return;
+    const GltfMaterialData* own = p.material ? &*p.material : nullptr;
+    keys.emplace_back(p.tag, own);
+    std::size_t texture = 0;
+    if (own && own->image) {
+      const auto it = std::find_if(images.begin(), images.end(), [&](const std::string* i) { return *i == *own->image; });
+      texture = static_cast<std::size_t>(it - images.begin());
+      if (it == images.end()) images.push_back(own->image.get());
+    }
+    if (!json.empty()) json += ',';
+    put_material(json, p.tag, own, texture);
+  }
+};
+
 // The item's mesh and accessors (the validator wants each position
 // accessor's exact bounds).
-void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials) {
+void render_mesh(Item& item, const WrittenMaterials& materials) {
   const GltfMeshData& d = *item.data;
   std::string& mesh = item.mesh_json;
   std::string& acc = item.accessors_json;
@@ -281,7 +322,7 @@ void render_mesh(Item& item, const std::map<std::string, std::size_t>& materials
     mesh += "},\"indices\":";
     put_index(mesh, a + 2);
     mesh += ",\"material\":";
-    put_index(mesh, materials.at(p.tag));
+    put_index(mesh, materials.index(p));
     mesh += ",\"mode\":4,\"extras\":{\"tag\":";
     put_string(mesh, p.tag);
     mesh += "}}";
@@ -414,12 +455,18 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   }
 }
 
-void put_material(std::string& out, const std::string& tag) {
+void put_material(std::string& out, const std::string& tag, const GltfMaterialData* own, std::size_t texture) {
   out += "{\"name\":";
   put_string(out, tag);
   out += ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[";
-  for (double c : tag_colour(tag)) put_number(out, c), out += ',';
-  out += "1],\"metallicFactor\":0,\"roughnessFactor\":0.9}}";
+  for (double c : own ? own->colour : tag_colour(tag)) put_number(out, c), out += ',';
+  out += "1]";
+  if (own && own->image) {
+    out += ",\"baseColorTexture\":{\"index\":";
+    put_index(out, texture);
+    out += '}';
+  }
+  out += ",\"metallicFactor\":0,\"roughnessFactor\":0.9}}";
 }
 
 // A file as views of the text it is made of, in order, for
@@ -470,15 +517,10 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   for (const GltfMeshData* p : written.meshes) items.emplace_back().data = p, items.back().placed = true;
   for (const GltfMeshData& b : meshes) items.emplace_back().data = &b;
   const Totals totals = place_items(items);
-  // Materials in order of first use.
-  std::map<std::string, std::size_t> materials;
-  std::string materials_json;
+  WrittenMaterials materials;
   for (const Item& item : items)
     for (const GltfPrimitiveData& p : item.data->primitives)
-      if (!p.indices.empty() && materials.try_emplace(p.tag, materials.size()).second) {
-        if (!materials_json.empty()) materials_json += ',';
-        put_material(materials_json, p.tag);
-      }
+      if (!p.indices.empty()) materials.add(p);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       Item& item = items[i];
@@ -506,12 +548,36 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   json.add(scene);
   json.add_array("nodes", items, &Item::nodes_json);
   json.add_array("meshes", items, &Item::mesh_json);
-  if (!materials_json.empty()) json.add_own(",\"materials\":[" + materials_json + "]");
+  if (!materials.json.empty()) json.add_own(",\"materials\":[" + materials.json + "]");
   json.add_array("accessors", items, &Item::accessors_json);
   const std::size_t vertex_bytes = totals.floats * sizeof(float), index_bytes = totals.indices * sizeof(std::uint32_t);
   const std::size_t uv_bytes = totals.uv_floats * sizeof(float);
-  const std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes;
+  // Each image in a view of its own after the arrays, 4-byte aligned.
+  std::vector<std::size_t> image_offsets;
+  std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes;
+  for (const std::string* image : materials.images) {
+    image_offsets.push_back(bin_bytes);
+    bin_bytes += (image->size() + 3) / 4 * 4;
+  }
   std::string tail;
+  if (!materials.images.empty()) {
+    const int first_image_view = uv_bytes > 0 ? 4 : 3;
+    tail += ",\"textures\":[";
+    for (std::size_t i = 0; i < materials.images.size(); ++i) {
+      tail += i > 0 ? ",{\"sampler\":0,\"source\":" : "{\"sampler\":0,\"source\":";
+      put_index(tail, i);
+      tail += '}';
+    }
+    tail += "],\"samplers\":[{\"wrapS\":10497,\"wrapT\":10497}],\"images\":[";
+    for (std::size_t i = 0; i < materials.images.size(); ++i) {
+      tail += i > 0 ? ",{\"bufferView\":" : "{\"bufferView\":";
+      put_index(tail, first_image_view + i);
+      tail += ",\"mimeType\":";
+      put_string(tail, image_mime_type(*materials.images[i]));
+      tail += '}';
+    }
+    tail += ']';
+  }
   if (bin_bytes > 0) {
     // Three or four views, each tightly packed: every position, then every
     // normal (vertex attributes, so a stride), every index, and every texture
@@ -530,6 +596,13 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
       tail += ",\"byteLength\":";
       put_index(tail, lengths[v]);
       tail += kViewTails[v];
+    }
+    for (std::size_t i = 0; i < materials.images.size(); ++i) {
+      tail += ",{\"buffer\":0,\"byteOffset\":";
+      put_index(tail, image_offsets[i]);
+      tail += ",\"byteLength\":";
+      put_index(tail, materials.images[i]->size());
+      tail += '}';
     }
     tail += "],\"buffers\":[{\"byteLength\":";
     put_index(tail, bin_bytes);
@@ -569,6 +642,11 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     for (const Item& item : items)
       for (const GltfPrimitiveData& p : item.data->primitives)
         if (!p.indices.empty()) add(p.uvs);
+    static constexpr char kZeros[3] = {0, 0, 0};
+    for (const std::string* image : materials.images) {
+      add(*image);
+      pieces.emplace_back(kZeros, (4 - image->size() % 4) % 4);
+    }
   }
   write_file_atomically(path, pieces);
 }
@@ -642,12 +720,38 @@ glm::dmat4 exact_transform(const tinygltf::Node& node, int index, const std::fil
   return t;
 }
 
-std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mesh, const std::filesystem::path& path) {
+// The images' bytes (kept as they were by keep_image_bytes), each shared by
+// every primitive whose material shows it.
+using ImageBytes = std::vector<std::shared_ptr<const std::string>>;
+
+// A primitive's material when it is a placed mesh's own (not the tag's
+// colour alone), as write_glb wrote it.
+std::optional<GltfMaterialData> read_material(const tinygltf::Model& m, const tinygltf::Primitive& p, const std::string& tag,
+                                              const ImageBytes& images, const std::filesystem::path& path) {
+  if (p.material < 0) return std::nullopt;
+  if (static_cast<std::size_t>(p.material) >= m.materials.size()) bad(path, "material " + std::to_string(p.material) + " is missing");
+  const tinygltf::PbrMetallicRoughness& pbr = m.materials[static_cast<std::size_t>(p.material)].pbrMetallicRoughness;
+  GltfMaterialData out;
+  if (pbr.baseColorFactor.size() != 4) bad(path, "material " + std::to_string(p.material) + "'s base colour is not 4 numbers");
+  std::copy_n(pbr.baseColorFactor.begin(), 3, out.colour.begin());
+  if (const int t = pbr.baseColorTexture.index; t >= 0) {
+    if (static_cast<std::size_t>(t) >= m.textures.size()) bad(path, "texture " + std::to_string(t) + " is missing");
+    const int source = m.textures[static_cast<std::size_t>(t)].source;
+    if (source < 0 || static_cast<std::size_t>(source) >= images.size()) bad(path, "texture " + std::to_string(t) + " has no image");
+    out.image = images[static_cast<std::size_t>(source)];
+  }
+  if (!out.image && out.colour == tag_colour(tag)) return std::nullopt;
+  return out;
+}
+
+std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mesh, const ImageBytes& images,
+                                               const std::filesystem::path& path) {
   if (mesh < 0 || static_cast<std::size_t>(mesh) >= m.meshes.size()) bad(path, "mesh " + std::to_string(mesh) + " is missing");
   std::vector<GltfPrimitiveData> out;
   for (const tinygltf::Primitive& p : m.meshes[static_cast<std::size_t>(mesh)].primitives) {
     GltfPrimitiveData& prim = out.emplace_back();
     if (p.extras.Has("tag")) prim.tag = p.extras.Get("tag").Get<std::string>();
+    prim.material = read_material(m, p, prim.tag, images, path);
     const auto pos = p.attributes.find("POSITION"), nor = p.attributes.find("NORMAL");
     if (pos == p.attributes.end() || nor == p.attributes.end()) bad(path, "a primitive lacks POSITION or NORMAL");
     prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
@@ -701,12 +805,18 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
     for (std::size_t p = 0; p < out.primitives.size(); ++p)
       if (out.primitives[p].tag == view.tags[t]) primitive_of_tag[t] = static_cast<int>(p);
   const std::vector<UvFrame> frames = face_uv_frames(mesh, origin);
+  const auto own_uv = corner_uv_property(mesh);
+  const auto own_normal = corner_normal_property(mesh);
+  const Materials& materials = mesh_materials(mesh);
   std::vector<glm::dvec3> pts;
+  std::vector<Mesh::HalfedgeHandle> corners;
   for (const auto f : mesh.faces()) {
     pts.clear();
-    for (const auto v : mesh.fv_range(f)) {
-      const Mesh::Point& p = mesh.point(v);
+    corners.clear();
+    for (const auto h : mesh.fh_range(f)) {
+      const Mesh::Point& p = mesh.point(mesh.to_vertex_handle(h));
       pts.push_back(glm::dvec3(p[0], p[1], p[2]) - origin);
+      corners.push_back(h);
     }
     const glm::dvec3 n = newell_normal(pts);
     const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
@@ -715,19 +825,29 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
     int& slot = primitive_of_tag[tag];
     if (slot < 0) {
       slot = static_cast<int>(out.primitives.size());
-      out.primitives.push_back({view.tags[tag], {}, {}, {}, {}});
+      GltfPrimitiveData& added = out.primitives.emplace_back();
+      added.tag = view.tags[tag];
+      if (const auto m = materials.find(added.tag); m != materials.end()) {
+        GltfMaterialData& material = added.material.emplace();
+        material.colour = m->second.colour;
+        if (!m->second.texture.empty())
+          material.image = std::make_shared<const std::string>(read_texture_image(m->second.texture));
+      }
     }
     GltfPrimitiveData& prim = out.primitives[static_cast<std::size_t>(slot)];
     const auto base = static_cast<std::uint32_t>(prim.positions.size() / 3);
-    const glm::dvec3 file_n = to_file_axes(n / len, UpAxis::Y);
     const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
-    for (const glm::dvec3& p : pts) {
-      const glm::dvec3 q = to_file_axes(p, UpAxis::Y);
-      const glm::dvec2 uv = frame.at(p);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const CornerAttribute own = corner_attribute(mesh, own_uv, own_normal, corners[k]);
+      const glm::dvec3 q = to_file_axes(pts[k], UpAxis::Y);
+      // Metres run on past 1 (v negated: a repeating texture stands upright);
+      // a placed mesh's own coordinates address its image, so 1 - v.
+      const glm::dvec2 uv = own.uv ? glm::dvec2(own.uv->x, 1.0 - own.uv->y) : frame.at(pts[k]) * glm::dvec2(1, -1);
+      const glm::dvec3 file_n = to_file_axes(own.normal ? *own.normal : n / len, UpAxis::Y);
       prim.positions.insert(prim.positions.end(), {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
       prim.normals.insert(prim.normals.end(), {static_cast<float>(file_n.x), static_cast<float>(file_n.y),
                                                static_cast<float>(file_n.z)});
-      prim.uvs.insert(prim.uvs.end(), {static_cast<float>(uv.x), static_cast<float>(-uv.y)});
+      prim.uvs.insert(prim.uvs.end(), {static_cast<float>(uv.x), static_cast<float>(uv.y)});
     }
     for (const auto& piece : convex_partition({drop_axis(pts, n)}))
       for (std::size_t k = 1; k + 1 < piece.size(); ++k)
@@ -757,7 +877,7 @@ namespace {
 
 // Reading a shard must not reach outside it: a buffer or image URI naming a
 // file (merge would copy ../../etc/passwd into its output) is refused, and
-// images, which procex never writes, are not decoded.
+// images (placed meshes' textures) are kept as their bytes, not decoded.
 bool refuse_external_file(std::vector<unsigned char>*, std::string* err, const std::string& name, void*) {
   if (err) *err += "it refers to the external file '" + name + "': a .glb from procex holds everything in itself";
   return false;
@@ -766,9 +886,15 @@ bool refuse_external_file(std::vector<unsigned char>*, std::string* err, const s
 // whose refusal says why, instead of reporting the file as not found.
 bool every_name_exists(const std::string&, void*) { return true; }
 std::string same_path(const std::string& name, void*) { return name; }
-bool refuse_image(tinygltf::Image*, const int, std::string* err, std::string*, int, int, const unsigned char*, int, void*) {
-  if (err) *err += "it holds an image: a .glb from procex has none";
-  return false;
+bool keep_image_bytes(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  const std::string_view data(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(std::max(size, 0)));
+  if (image_mime_type(data).empty()) {
+    if (err) *err += "image " + std::to_string(index) + " is not a PNG or JPEG image";
+    return false;
+  }
+  image->image.assign(data.begin(), data.end());
+  return true;
 }
 
 }  // namespace
@@ -794,7 +920,7 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&every_name_exists, &same_path, &refuse_external_file, nullptr, nullptr});
-  loader.SetImageLoader(&refuse_image, nullptr);
+  loader.SetImageLoader(&keep_image_bytes, nullptr);
   std::string err, warn;
   if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                    static_cast<unsigned int>(bytes.size())))
@@ -814,6 +940,9 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
     for (const auto& [name, value] : members.items()) values[name] = value.dump();
     return values;
   };
+  ImageBytes images;
+  for (const tinygltf::Image& image : m.images)
+    images.push_back(std::make_shared<const std::string>(image.image.begin(), image.image.end()));
   GltfScene out;
   // Placed meshes carry their name in extras; the others are buildings'.
   std::map<int, std::size_t> prototype_of_mesh;
@@ -822,7 +951,7 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
     prototype_of_mesh[static_cast<int>(i)] = out.prototypes.size();
     GltfMeshData& p = out.prototypes.emplace_back();
     p.building = m.meshes[i].extras.Get("placed").Get<std::string>();
-    p.primitives = read_primitives(m, static_cast<int>(i), path);
+    p.primitives = read_primitives(m, static_cast<int>(i), images, path);
   }
   if (m.scenes.empty()) return out;
   if (const auto scenes = raw.find("scenes"); scenes != raw.end() && scenes->is_array() && !scenes->empty()) {
@@ -845,7 +974,7 @@ GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& p
     }
     data.properties = attributes(ni, "properties");
     data.parameters = attributes(ni, "parameters");
-    if (node.mesh >= 0) data.primitives = read_primitives(m, node.mesh, path);
+    if (node.mesh >= 0) data.primitives = read_primitives(m, node.mesh, images, path);
     for (int ci : node.children) {
       GltfInstanceData& instance = data.instances.emplace_back();
       const tinygltf::Node* at = &node_at(m, ci, path);

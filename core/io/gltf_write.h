@@ -3,7 +3,9 @@
 // only reads files back), in glTF's frame: metres, +Y up (procex's z), the
 // plan not mirrored (core/io/up_axis.h). One glTF mesh (and node) per
 // building, one primitive per face tag (triangles, flat normals, texture
-// coordinates in metres), the tag in the primitive's extras and material name.
+// coordinates in metres), the tag in the primitive's extras and material name;
+// a placed mesh's primitives carry its own texture coordinates, normals and
+// material (colour and image, the image embedded).
 // The node is named by the building id and stands at the building's local
 // origin (its translation, in double precision); its extras hold the id, the
 // feature's position in its source file (for merging shards), the origin in
@@ -22,6 +24,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -43,6 +47,18 @@ struct TaggedMeshView {
   std::int64_t feature = -1;   // position of the building's feature in its GeoJSON file, -1 if none
 };
 
+// A primitive's own material (a placed mesh's, from its .mtl): the base
+// colour, times the image where there is one (embedded in the .glb, its
+// texture repeating).
+struct GltfMaterialData {
+  std::array<double, 3> colour{1, 1, 1};  // linear RGB
+  std::shared_ptr<const std::string> image;  // PNG or JPEG bytes; null if none
+
+  bool operator==(const GltfMaterialData& o) const {
+    return colour == o.colour && (image == o.image || (image && o.image && *image == *o.image));
+  }
+};
+
 // The triangles of one tag of one mesh: what a primitive holds.
 struct GltfPrimitiveData {
   std::string tag;
@@ -52,7 +68,12 @@ struct GltfPrimitiveData {
   // Texture coordinates (TEXCOORD_0), u v per vertex or none: metres on the
   // face (core/mesh/uv_frames.h), v negated as glTF's v runs down the image,
   // so a texture stands upright on a wall.
+  // A placed mesh's own texture coordinates are kept, v turned to run down
+  // (1 - v) as an image's rows do.
   std::vector<float> uvs;
+  // The tag's material where its mesh has one (core/mesh/material.h), else
+  // none: the tag's colour.
+  std::optional<GltfMaterialData> material;
 
   bool operator==(const GltfPrimitiveData&) const = default;
 };
@@ -101,7 +122,9 @@ void append_scene(GltfScene& into, GltfScene part);
 std::array<double, 3> tag_colour(const std::string& tag);
 
 // Triangulates every face (convex pieces, fanned); faces with zero area are
-// dropped. Positions and normals turn into glTF's frame here: every
+// dropped. A tag with a material of the mesh's (core/mesh/material.h) gets
+// it, its texture read (throws IoError naming the file if it is not a PNG or
+// JPEG image). Positions and normals turn into glTF's frame here: every
 // GltfMeshData is in glTF's frame, so files read back write the same bytes.
 // `origin` (procex's frame) becomes GltfMeshData::origin.
 GltfMeshData to_gltf_mesh(const TaggedMeshView& view, const glm::dvec3& origin = {0, 0, 0});
@@ -123,7 +146,8 @@ void write_glb(const std::filesystem::path& path, const GltfScene& scene);
 std::vector<GltfMeshData> read_glb(const std::filesystem::path& path);
 GltfScene read_glb_scene(const std::filesystem::path& path);
 // The same on a file's bytes already in memory; path names it in messages.
-// External buffer URIs and images are refused: a shard holds everything.
+// External buffer and image URIs are refused: a shard holds everything.
+// Images (PNG or JPEG only) are kept as their bytes.
 GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path);
 
 }  // namespace procex

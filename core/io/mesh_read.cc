@@ -11,8 +11,11 @@
 #include <sstream>
 #include <string_view>
 
+#include "base/confined_path.h"
 #include "base/read_file.h"
 #include "core/io/io_error.h"
+#include "core/io/texture_image.h"
+#include "core/mesh/material.h"
 
 namespace procex {
 namespace {
@@ -55,23 +58,61 @@ struct ObjScan {
   std::vector<Mesh::Point> vertices;
   std::vector<std::string> face_tags;
   std::string plain;
+  // Texture coordinates and normals ('vt', 'vn'), and per face its corners
+  // as (vertex, texture coordinate, normal), -1 where a corner names none.
+  std::vector<OpenMesh::Vec2d> uvs;
+  std::vector<OpenMesh::Vec3d> normals;
+  std::vector<std::vector<std::array<long long, 3>>> corners;
+  std::vector<std::pair<std::size_t, std::string>> libraries;  // 'mtllib' file names, with their line
 };
 
-// The vertex a face corner names (its part before any '/'), 0-based; OBJ
-// counts from 1, and negative numbers count back from the last vertex so far.
-std::size_t corner_vertex(const Path& path, std::size_t line_no, std::string_view line, std::string_view corner,
-                          std::size_t vertices) {
-  const std::string_view number = corner.substr(0, corner.find('/'));
+// One number of a face corner ("v", "v/vt", "v//vn" or "v/vt/vn"), 0-based:
+// OBJ counts from 1, and negative numbers count back from the last one so
+// far. -1 for a texture coordinate or normal the corner leaves out.
+long long corner_index(const Path& path, std::size_t line_no, std::string_view line, std::string_view corner, int part,
+                       std::size_t count) {
+  static constexpr const char* kWhat[] = {"vertex", "texture coordinate", "normal"};
+  static constexpr const char* kWhats[] = {"vertices", "texture coordinates", "normals"};
+  std::string_view number = corner;
+  for (int k = 0; k < part; ++k) {
+    const std::size_t slash = number.find('/');
+    if (slash == std::string_view::npos) return -1;
+    number.remove_prefix(slash + 1);
+  }
+  number = number.substr(0, number.find('/'));
+  if (part > 0 && number.empty()) return -1;
   long long index = 0;
   const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), index);
   if (ec != std::errc() || end != number.data() + number.size() || index == 0)
-    fail_at(path, line_no, line, "face corner '" + std::string(corner) + "' does not start with a vertex number (1, 2, ... or -1, -2, ...)");
-  const long long n = static_cast<long long>(vertices);
+    fail_at(path, line_no, line, "face corner '" + std::string(corner) + "' has no " + kWhat[part] +
+                                     " number (1, 2, ... or -1, -2, ...) where one belongs");
+  const long long n = static_cast<long long>(count);
   const long long resolved = index > 0 ? index - 1 : n + index;
   if (resolved < 0 || resolved >= n)
-    fail_at(path, line_no, line, "face corner '" + std::string(corner) + "' names a vertex that does not exist (" +
-                                     std::to_string(vertices) + " vertices so far)");
-  return static_cast<std::size_t>(resolved);
+    fail_at(path, line_no, line, "face corner '" + std::string(corner) + "' names a " + kWhat[part] + " that does not exist (" +
+                                     std::to_string(count) + " " + kWhats[part] + " so far)");
+  return resolved;
+}
+
+// The finite numbers of words[1..], at least `least` and at most `most` of them.
+template <std::size_t N>
+std::array<double, N> numbers(const Path& path, std::size_t line_no, std::string_view line,
+                              const std::vector<std::string_view>& words, std::size_t least, const char* what) {
+  if (words.size() < least + 1) fail_at(path, line_no, line, std::string(what) + " needs " + std::to_string(least) + " numbers");
+  std::array<double, N> out{};
+  for (std::size_t k = 1; k < words.size() && k <= N; ++k)
+    if (!parse_coordinate(words[k], out[k - 1]))
+      fail_at(path, line_no, line, std::string(what) + " '" + std::string(words[k]) + "' is not a finite number");
+  return out;
+}
+
+// The rest of the line after its first word, trimmed: a name or file name
+// that may hold spaces.
+std::string rest_of_line(std::string_view content, const std::vector<std::string_view>& words) {
+  if (words.size() < 2) return "";
+  std::string out(content.substr(static_cast<std::size_t>(words[1].data() - content.data())));
+  while (!out.empty() && (out.back() == ' ' || out.back() == '\t')) out.pop_back();
+  return out;
 }
 
 ObjScan scan_obj(const Path& path, std::string_view text) {
@@ -100,12 +141,22 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
         scan.plain += words[k];
       }
       scan.plain += '\n';
+    } else if (words[0] == "vt") {
+      const auto uv = numbers<2>(path, line_no, line, words, 1, "a texture coordinate");
+      scan.uvs.emplace_back(uv[0], uv[1]);
+    } else if (words[0] == "vn") {
+      const auto n = numbers<3>(path, line_no, line, words, 3, "a normal");
+      scan.normals.emplace_back(n[0], n[1], n[2]);
     } else if (words[0] == "f") {
       if (words.size() < 4) fail_at(path, line_no, line, "a face needs at least three corners");
       corners.clear();
+      auto& face = scan.corners.emplace_back();
       scan.plain += 'f';
       for (std::size_t k = 1; k < words.size(); ++k) {
-        corners.push_back(corner_vertex(path, line_no, line, words[k], scan.vertices.size()));
+        const long long v = corner_index(path, line_no, line, words[k], 0, scan.vertices.size());
+        face.push_back({v, corner_index(path, line_no, line, words[k], 1, scan.uvs.size()),
+                        corner_index(path, line_no, line, words[k], 2, scan.normals.size())});
+        corners.push_back(static_cast<std::size_t>(v));
         scan.plain += ' ' + std::to_string(corners.back() + 1);
       }
       scan.plain += '\n';
@@ -114,8 +165,9 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
         fail_at(path, line_no, line, "the face visits vertex " + std::to_string(*dup + 1) + " twice");
       scan.face_tags.push_back(tag);
     } else if (words[0] == "usemtl") {
-      tag = words.size() > 1 ? std::string(content.substr(static_cast<std::size_t>(words[1].data() - content.data()))) : "";
-      while (!tag.empty() && (tag.back() == ' ' || tag.back() == '\t')) tag.pop_back();
+      tag = rest_of_line(content, words);
+    } else if (words[0] == "mtllib") {
+      for (std::size_t k = 1; k < words.size(); ++k) scan.libraries.emplace_back(line_no, std::string(words[k]));
     }
   }
   if (scan.face_tags.empty())
@@ -143,18 +195,101 @@ void restore_precision(Mesh& mesh, const std::vector<Mesh::Point>& exact) {
   }
 }
 
+// A material library (MTL): per 'newmtl' its 'Kd' colour and 'map_Kd'
+// texture, the texture resolved against the library's folder. Other
+// statements (Ka, Ks, Ns, d, illum, other maps) are left out: glTF's base
+// colour is what every consumer shows.
+Materials read_material_library(const Path& path, const ReferencedFileResolver& resolve) {
+  const std::string text = read_file(path, kMaxDataFileBytes);
+  if (text.find('\0') != std::string::npos) fail(path, "is not a text material library (it contains NUL bytes)");
+  Materials out;
+  Material* current = nullptr;
+  std::size_t line_no = 0;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t eol = std::min(text.find('\n', at), text.size());
+    std::string_view line = std::string_view(text).substr(at, eol - at);
+    at = eol + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view content = line.substr(0, line.find('#'));
+    const std::vector<std::string_view> words = split_words(content);
+    if (words.empty()) continue;
+    if (words[0] == "newmtl") {
+      const std::string name = rest_of_line(content, words);
+      if (name.empty()) fail_at(path, line_no, line, "a material needs a name");
+      current = &out[name];
+      *current = Material{};
+      continue;
+    }
+    if (words[0] != "Kd" && words[0] != "map_Kd") continue;
+    if (!current) fail_at(path, line_no, line, "'" + std::string(words[0]) + "' comes before any 'newmtl'");
+    if (words[0] == "Kd") {
+      const auto kd = numbers<3>(path, line_no, line, words, 3, "a colour (Kd)");
+      for (double c : kd)
+        if (c < 0.0 || c > 1.0) fail_at(path, line_no, line, "a colour (Kd) needs three numbers from 0 to 1");
+      current->colour = kd;
+    } else {
+      const std::string name = rest_of_line(content, words);
+      if (name.empty() || name[0] == '-')
+        fail_at(path, line_no, line, "a texture (map_Kd) needs a file name and no options (procex does not apply -s, -o, ...)");
+      current->texture = resolve(path.parent_path() / name);
+      read_texture_image(current->texture);
+    }
+  }
+  return out;
+}
+
+// Each face's corners in OpenMesh's mesh (fh_range order) take the texture
+// coordinates and normals of the file's corner at the same vertex: OpenMesh
+// may start a face at another corner, and gives a vertex it duplicated a
+// new number (the copy stands at the original's exact point).
+void set_corner_attributes(Mesh& mesh, const ObjScan& scan) {
+  const bool any_uv = !scan.uvs.empty(), any_normal = !scan.normals.empty();
+  if (!any_uv && !any_normal) return;
+  OpenMesh::HPropHandleT<OpenMesh::Vec2d> uv;
+  OpenMesh::HPropHandleT<OpenMesh::Vec3d> normal;
+  if (any_uv) uv = add_corner_uvs(mesh);
+  if (any_normal) normal = add_corner_normals(mesh);
+  const auto all_have = [](const std::vector<std::array<long long, 3>>& face, int part) {
+    return std::all_of(face.begin(), face.end(), [&](const auto& c) { return c[static_cast<std::size_t>(part)] >= 0; });
+  };
+  for (const auto f : mesh.faces()) {
+    const auto& face = scan.corners[static_cast<std::size_t>(f.idx())];
+    const bool has_uv = any_uv && all_have(face, 1), has_normal = any_normal && all_have(face, 2);
+    if (!has_uv && !has_normal) continue;
+    for (const auto h : mesh.fh_range(f)) {
+      const auto v = mesh.to_vertex_handle(h);
+      const auto corner = std::find_if(face.begin(), face.end(), [&](const auto& c) {
+        const auto i = static_cast<std::size_t>(c[0]);
+        return static_cast<std::size_t>(v.idx()) < scan.vertices.size() ? i == static_cast<std::size_t>(v.idx())
+                                                                          : scan.vertices[i] == mesh.point(v);
+      });
+      if (corner == face.end()) continue;  // (cannot happen: every corner of the face is in the file's face)
+      if (has_uv) mesh.property(uv, h) = scan.uvs[static_cast<std::size_t>((*corner)[1])];
+      if (has_normal) {
+        const OpenMesh::Vec3d n = scan.normals[static_cast<std::size_t>((*corner)[2])];
+        const double length = n.norm();
+        mesh.property(normal, h) = length > 0 ? OpenMesh::Vec3d(n / length) : OpenMesh::Vec3d(NAN, NAN, NAN);
+      }
+    }
+  }
+}
+
 }  // namespace
 
-Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings) {
+Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings, const ReferencedFileResolver& resolve) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".obj") fail(path, "cannot read meshes in '" + ext + "' files to place: use a Wavefront .obj file");
   const std::string text = read_file(path, kMaxDataFileBytes);
   if (text.empty()) fail(path, "is empty (a mesh to place needs 'v' and 'f' lines)");
-  return parse_obj_mesh(text, path, warnings);
+  if (resolve) return parse_obj_mesh(text, path, warnings, resolve);
+  const Path folder = path.parent_path();
+  return parse_obj_mesh(text, path, warnings, [&](const Path& name) { return confined_path(folder, name.string()); });
 }
 
-Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::string>* warnings) {
+Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::string>* warnings,
+                    const ReferencedFileResolver& resolve) {
   const ObjScan scan = scan_obj(path, text);
 
   Mesh mesh;
@@ -179,6 +314,21 @@ Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::st
   add_face_properties(mesh);
   const auto tags = face_tag_property(mesh);
   for (const auto f : mesh.faces()) mesh.property(tags, f) = scan.face_tags[static_cast<std::size_t>(f.idx())];
+  set_corner_attributes(mesh, scan);
+  if (!resolve) return mesh;
+  Materials materials;
+  for (const auto& [line, name] : scan.libraries) {
+    const Path library = resolve(path.parent_path() / name);  // outside the folder: refused, as every file
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(library, error)) {
+      if (warnings)
+        warnings->push_back(std::string("'").append(path.string()).append("' line ") + std::to_string(line) +
+                            ": material library '" + name + "' is not there: its faces keep their tags' colours");
+      continue;
+    }
+    materials.merge(read_material_library(library, resolve));  // the first library to define a name wins
+  }
+  if (!materials.empty()) set_mesh_materials(mesh, std::move(materials));
   return mesh;
 }
 

@@ -113,9 +113,12 @@ std::vector<UvFrame> face_uv_frames(const Mesh& mesh, const glm::dvec3& origin) 
 
 SurfaceAttributes surface_attributes(const Mesh& mesh, const glm::dvec3& origin) {
   const std::vector<UvFrame> frames = face_uv_frames(mesh, origin);
+  const auto own_uv = corner_uv_property(mesh);
+  const auto own_normal = corner_normal_property(mesh);
   SurfaceAttributes out;
   out.corner_uvs.reserve(mesh.n_halfedges() / 2);
   out.face_normals.reserve(mesh.n_faces());
+  if (own_normal.is_valid()) out.corner_normals.reserve(mesh.n_halfedges() / 2);
   std::vector<glm::dvec3> pts;
   for (const auto f : mesh.faces()) {
     pts.clear();
@@ -124,8 +127,25 @@ SurfaceAttributes surface_attributes(const Mesh& mesh, const glm::dvec3& origin)
     const double len = glm::length(n);
     out.face_normals.push_back(len > 0 ? n / len : glm::dvec3(0, 0, 1));
     const UvFrame& frame = frames[static_cast<std::size_t>(f.idx())];
-    for (const glm::dvec3& p : pts) out.corner_uvs.push_back(frame.at(p));
+    std::size_t k = 0;
+    for (const auto h : mesh.fh_range(f)) {
+      const CornerAttribute own = corner_attribute(mesh, own_uv, own_normal, h);
+      out.corner_uvs.push_back(own.uv ? *own.uv : frame.at(pts[k]));
+      if (own_normal.is_valid()) out.corner_normals.push_back(own.normal ? *own.normal : out.face_normals.back());
+      ++k;
+    }
   }
+  return out;
+}
+
+CornerAttribute corner_attribute(const Mesh& mesh, OpenMesh::HPropHandleT<OpenMesh::Vec2d> uv,
+                                 OpenMesh::HPropHandleT<OpenMesh::Vec3d> normal, Mesh::HalfedgeHandle h) {
+  CornerAttribute out;
+  if (uv.is_valid())
+    if (const OpenMesh::Vec2d& t = mesh.property(uv, h); std::isfinite(t[0]) && std::isfinite(t[1])) out.uv = glm::dvec2(t[0], t[1]);
+  if (normal.is_valid())
+    if (const OpenMesh::Vec3d& n = mesh.property(normal, h); std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]))
+      out.normal = glm::dvec3(n[0], n[1], n[2]);
   return out;
 }
 

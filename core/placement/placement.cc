@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -9,6 +10,7 @@
 #include "core/geom/error.h"
 #include "core/placement/placement_error.h"
 #include "core/geom/tolerances.h"
+#include "core/mesh/material.h"
 
 namespace procex {
 
@@ -67,6 +69,56 @@ void check_instance(const PlacementResult& result, std::size_t index) {
     throw PlacementError(name + " (" + result.meshes[in.mesh].name + ") has " + problem);
 }
 
+namespace {
+
+// The placed meshes' corner attributes on `out` (NaN on the building's own
+// faces) where any of them has some, and their materials joined to the
+// building's (the first to name a tag wins).
+struct CornerAttributes {
+  OpenMesh::HPropHandleT<OpenMesh::Vec2d> uv;
+  OpenMesh::HPropHandleT<OpenMesh::Vec3d> normal;
+};
+
+CornerAttributes prepare_corner_attributes(Mesh& out, const PlacementResult& result) {
+  CornerAttributes a;
+  Materials materials = mesh_materials(out);
+  for (const Instance& in : result.instances) {
+    const Mesh& mesh = *result.meshes[in.mesh].mesh;
+    if (corner_uv_property(mesh).is_valid() && !a.uv.is_valid()) a.uv = add_corner_uvs(out);
+    if (corner_normal_property(mesh).is_valid() && !a.normal.is_valid()) a.normal = add_corner_normals(out);
+    for (const auto& [tag, material] : mesh_materials(mesh)) materials.try_emplace(tag, material);
+  }
+  if (!materials.empty()) set_mesh_materials(out, std::move(materials));
+  return a;
+}
+
+// Face g of `out` takes the corner attributes of face f of `mesh`, placed by
+// `transform` (normals by its inverse transpose); handles[i] is the vertex of
+// out that mesh's vertex i became.
+void copy_corner_attributes(Mesh& out, const CornerAttributes& to, Mesh::FaceHandle g, const Mesh& mesh,
+                            Mesh::FaceHandle f, const std::vector<Mesh::VertexHandle>& handles, const glm::dmat3& normal_matrix) {
+  const auto uv = corner_uv_property(mesh);
+  const auto normal = corner_normal_property(mesh);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (const auto h : out.fh_range(g)) {
+    OpenMesh::Vec2d t(kNaN, kNaN);
+    OpenMesh::Vec3d n(kNaN, kNaN, kNaN);
+    for (const auto k : mesh.fh_range(f)) {
+      if (handles[static_cast<std::size_t>(mesh.to_vertex_handle(k).idx())] != out.to_vertex_handle(h)) continue;
+      if (uv.is_valid()) t = mesh.property(uv, k);
+      if (normal.is_valid()) {
+        const OpenMesh::Vec3d& m = mesh.property(normal, k);
+        const glm::dvec3 q = glm::normalize(normal_matrix * glm::dvec3(m[0], m[1], m[2]));
+        n = {q.x, q.y, q.z};  // NaN stays NaN
+      }
+    }
+    if (to.uv.is_valid()) out.property(to.uv, h) = t;
+    if (to.normal.is_valid()) out.property(to.normal, h) = n;
+  }
+}
+
+}  // namespace
+
 Mesh flatten(const PlacementResult& result) {
   Mesh out;
   if (result.building) out = *result.building;
@@ -79,6 +131,7 @@ Mesh flatten(const PlacementResult& result) {
   const auto tag_prop = face_tag_property(out);
   const auto edge_prop = source_edge_property(out);
   const auto kind_prop = face_kind_property(out);
+  const CornerAttributes corners = prepare_corner_attributes(out, result);
 
   std::vector<Mesh::VertexHandle> handles, face;
   for (std::size_t i = 0; i < result.instances.size(); ++i) {
@@ -88,6 +141,7 @@ Mesh flatten(const PlacementResult& result) {
     const Mesh& mesh = *placed.mesh;
     const auto own_tags = face_tag_property(mesh);
     const bool mirrored = linear_determinant(in.transform) < 0.0;
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(in.transform)));
     handles.clear();
     for (const auto v : mesh.vertices()) {
       const Mesh::Point& p = mesh.point(v);
@@ -107,6 +161,8 @@ Mesh flatten(const PlacementResult& result) {
       out.property(edge_prop, g) = in.source_edge;
       out.property(kind_prop, g) = FaceKind::Side;
       out.property(instance_prop, g) = static_cast<int>(i);
+      if (corners.uv.is_valid() || corners.normal.is_valid())
+        copy_corner_attributes(out, corners, g, mesh, f, handles, normal_matrix);
     }
   }
   return out;

@@ -71,7 +71,10 @@ double linear_determinant(const glm::dmat4& transform);
 // mesh's name; its source edge is the instance's, its kind Side, and
 // kInstanceProperty gives the instance. A mirroring transform (negative
 // determinant) reverses every face of its instance, so outward faces stay
-// outward and a closed 2-manifold part stays one. Throws PlacementError (from
+// outward and a closed 2-manifold part stays one. The placed meshes' own
+// corner texture coordinates and normals (normals turned by the transform)
+// and materials come along (core/mesh/material.h); the first mesh to name a
+// material's tag gives it. Throws PlacementError (from
 // check_instance) or MeshError if OpenMesh refuses a face.
 Mesh flatten(const PlacementResult& result);
 

@@ -11,6 +11,7 @@
 #include "core/io/geopackage_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
+#include "core/mesh/material.h"
 #include "core/mesh/uv_frames.h"
 #include "core/placement/placement_gltf.h"
 
@@ -42,14 +43,16 @@ void append_triple(std::string& out, const char* key, const glm::dvec3& p) {
 }
 
 // One object per part ("o building_id", as Blender, Maya and Houdini split
-// them), a material per face tag, and per face its flat normal (vn) and its
-// corners' texture coordinates in metres (vt: core/mesh/uv_frames.h).
+// them), a material per face tag (a placed mesh's own colour and texture,
+// else the tag's colour), and per face its flat normal (vn) and its corners'
+// texture coordinates in metres (vt: core/mesh/uv_frames.h); a placed mesh's
+// corners keep their own texture coordinates and normals.
 void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpAxis up) {
   std::filesystem::path mtl = path;
   mtl.replace_extension(".mtl");
   std::string obj = "# procex: metres, " + std::string(up == UpAxis::Y ? "+Y up (x east, -z north)" : "+Z up (x east, y north)") +
                     "\nmtllib " + mtl.filename().string() + "\n";
-  std::vector<std::string> materials;
+  std::vector<std::pair<std::string, Material>> materials;  // as written: name, look
   std::size_t base = 1, normals = 1, uvs = 1;  // OBJ numbers each kind from 1 across the file
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
@@ -71,8 +74,10 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
         const auto fi = static_cast<std::size_t>(f.idx());
         if (part.face_tags[fi] != t) continue;
         if (!used) obj += "usemtl " + name + "\n", used = true;
-        append_triple(obj, "vn", to_file_axes(surface.face_normals[fi], up));
+        const bool corner_normals = !surface.corner_normals.empty();
+        if (!corner_normals) append_triple(obj, "vn", to_file_axes(surface.face_normals[fi], up));
         for (std::size_t c = first_corner[fi]; c < first_corner[fi + 1]; ++c) {
+          if (corner_normals) append_triple(obj, "vn", to_file_axes(surface.corner_normals[c], up));
           obj += "vt ";
           append_number(obj, surface.corner_uvs[c].x);
           obj += ' ';
@@ -81,22 +86,31 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
         }
         obj += 'f';
         std::size_t corner = 0;
-        for (const auto v : mesh.fv_range(f))
-          obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx())) + '/' + std::to_string(uvs + corner++) + '/' +
-                 std::to_string(normals);
+        for (const auto v : mesh.fv_range(f)) {
+          obj += ' ' + std::to_string(base + static_cast<std::size_t>(v.idx())) + '/' + std::to_string(uvs + corner) + '/' +
+                 std::to_string(normals + (corner_normals ? corner : 0));
+          ++corner;
+        }
         obj += '\n';
         uvs += corner;
-        ++normals;
+        normals += corner_normals ? corner : 1;
       }
-      if (used && std::find(materials.begin(), materials.end(), name) == materials.end()) materials.push_back(name);
+      if (used && std::none_of(materials.begin(), materials.end(), [&](const auto& m) { return m.first == name; })) {
+        const auto own = mesh_materials(mesh).find(part.tags[t]);
+        materials.emplace_back(name, own != mesh_materials(mesh).end() ? own->second : Material{tag_colour(part.tags[t]), {}});
+      }
     }
     base += mesh.n_vertices();
   }
   std::string mtl_text = "# procex: one material per face tag\n";
-  for (const std::string& name : materials) {
+  const std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path());
+  for (const auto& [name, material] : materials) {
     mtl_text += "newmtl " + name + "\nKd";
-    for (double c : tag_colour(name)) mtl_text += ' ', append_number(mtl_text, c);
+    for (double c : material.colour) mtl_text += ' ', append_number(mtl_text, c);
     mtl_text += "\n";
+    // The texture where the placed mesh's library found it, relative to the
+    // .obj so the pair can move with its folder.
+    if (!material.texture.empty()) mtl_text += "map_Kd " + material.texture.lexically_relative(folder).generic_string() + "\n";
   }
   AtomicFileSet files;  // both or neither: a failed .obj leaves no new .mtl beside the old one
   files.add(mtl, mtl_text);

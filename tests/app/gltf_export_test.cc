@@ -67,6 +67,24 @@ class GltfExport : public ::testing::Test {
     EXPECT_EQ(run_batch(o, out, err), 0) << err.str();
     return o.output;
   }
+  // samples/windows_grid.pxg with the sample's textured door placed in its
+  // grid instead of the window (in dir_, with the meshes beside it), written
+  // to dir_/out/house<extension>.
+  fs::path textured_house(const std::string& extension) {
+    fs::copy(kRoot / "samples" / "meshes", dir_ / "meshes", fs::copy_options::skip_existing);
+    std::ifstream in(kRoot / "samples" / "windows_grid.pxg");
+    std::string recipe((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string window = "\"file\": \"meshes/window_frame.obj\"";
+    const std::size_t at = recipe.find(window);
+    EXPECT_NE(at, std::string::npos);
+    recipe.replace(at, window.size(), "\"file\": \"meshes/door_textured.obj\"");
+    std::ofstream(dir_ / "textured.pxg") << recipe;
+    fs::create_directories(dir_ / "out");
+    const fs::path output = dir_ / "out" / ("house" + extension);
+    std::ostringstream o, e;
+    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    return output;
+  }
   json node_json(const char* script, const fs::path& glb, int want_code) {
     const ProcessRun r = run("node " + (kTools / script).string() + " " + glb.string());
     EXPECT_EQ(r.code, want_code) << r.out;
@@ -179,6 +197,53 @@ TEST_F(GltfExport, ThreeJsSeesBuildingsUprightAtTheirOrigins) {
     EXPECT_NEAR(box.first[2], -at("max", 1), 1e-3);  // z south
     EXPECT_NEAR(box.second[2], -at("min", 1), 1e-3);
   }
+}
+
+}  // namespace
+}  // namespace procex
+
+namespace procex {
+namespace {
+
+// A placed mesh's material and texture reach the .glb: the image embedded
+// once, the validator content (no errors, no warnings, the image read), and
+// three.js showing the doors with their texture and their own texture
+// coordinates.
+TEST_F(GltfExport, PlacedMeshKeepsItsMaterialAndTexture) {
+  const fs::path glb = textured_house(".glb");
+  const json report = node_json("validate_gltf.mjs", glb, 0);
+  EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+  ASSERT_EQ(report["info"]["resources"].size(), 2u) << report["info"].dump(1);  // the binary chunk and the image
+  const json& image = report["info"]["resources"][1];
+  EXPECT_EQ(image["pointer"], "/images/0");
+  EXPECT_EQ(image["mimeType"], "image/png");
+  EXPECT_EQ(image["image"]["width"], 16);
+  EXPECT_EQ(image["image"]["height"], 32);
+
+  const json loaded = node_json("load_gltf_three.mjs", glb, 0);
+  int doors = 0;
+  for (const json& m : loaded["meshes"]) {
+    EXPECT_EQ(m["texture"].get<bool>(), m["tag"] == "door") << m.dump();
+    if (m["tag"] != "door") continue;
+    ++doors;
+    EXPECT_TRUE(m["uvs"].get<bool>());
+    EXPECT_EQ(m["colour"], json::array({1, 1, 1}));
+    EXPECT_EQ(m["texture_size"], json::array({16, 32}));  // the image decoded
+  }
+  EXPECT_GT(doors, 0);
+}
+
+// The .obj's library gives the door its colour and a map_Kd that names the
+// sample's image relative to the output's folder.
+TEST_F(GltfExport, ObjLibraryNamesThePlacedMeshsTexture) {
+  const fs::path obj = textured_house(".obj");
+  std::ifstream in(dir_ / "out" / "house.mtl");
+  const std::string mtl((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(mtl.find("newmtl door\nKd 1 1 1\nmap_Kd ../meshes/door_planks.png\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl door_frame\nKd 0.2 0.25 0.3\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl wall\nKd 0.82 0.78 0.7\n"), std::string::npos) << mtl;  // the building keeps its tag colours
+  EXPECT_TRUE(fs::exists(obj.parent_path() / "../meshes/door_planks.png"));
 }
 
 }  // namespace

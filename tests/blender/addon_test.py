@@ -11,6 +11,7 @@ flat normals, checked against Blender's own geometry.
 import collections
 import json
 import os
+import shutil
 import sys
 import tempfile
 
@@ -199,6 +200,39 @@ params = building.procex.params
 params["spacing"].float_value = params["spacing"].float_value * 2  # wider spacing: fewer windows
 again = [c for c in building.children if c.get("procex_placed")]
 check(0 < len(again) < 28, f"{len(again)} placed objects after doubling the spacing")
+
+# ---- a placed mesh's own materials: the sample door's colour and texture image, its own UVs
+textured = tempfile.mkdtemp()
+shutil.copytree(os.path.join(samples, "meshes"), os.path.join(textured, "meshes"))
+with open(grid) as f:
+    recipe = f.read().replace('"file": "meshes/window_frame.obj"', '"file": "meshes/door_textured.obj"', 1)
+with open(os.path.join(textured, "doors.pxg"), "w") as f:
+    f.write(recipe)
+check(bpy.ops.import_scene.procex_recipe(filepath=os.path.join(textured, "doors.pxg")) == {"FINISHED"},
+      "importing the textured doors failed")
+doors = [c for c in bpy.context.active_object.children if c.get("procex_placed") and "door_textured" in c.data.name]
+check(doors, "no door was placed")
+door = doors[0].data
+slots = {m.name: m for m in door.materials}
+check(set(slots) == {"procex door", "procex door_frame"}, f"door materials: {set(slots)}")
+frame = slots["procex door_frame"]
+bsdf = next(n for n in frame.node_tree.nodes if n.type == "BSDF_PRINCIPLED")
+check(tuple(round(c, 6) for c in bsdf.inputs["Base Color"].default_value[:3]) == (0.2, 0.25, 0.3),
+      f"door frame colour: {tuple(bsdf.inputs['Base Color'].default_value)}")
+face = slots["procex door"]
+bsdf = next(n for n in face.node_tree.nodes if n.type == "BSDF_PRINCIPLED")
+links = [l for l in face.node_tree.links if l.to_socket == bsdf.inputs["Base Color"]]
+check(len(links) == 1 and links[0].from_node.type == "TEX_IMAGE", "the door's base colour is not its image")
+image = links[0].from_node.image
+check(os.path.samefile(bpy.path.abspath(image.filepath), os.path.join(textured, "meshes", "door_planks.png")),
+      f"the door's image is {image.filepath}")
+check(tuple(image.size) == (16, 32), f"the door's image did not load: size {tuple(image.size)}")
+front = [p for p in door.polygons if door.materials[p.material_index] == face]
+check(len(front) == 1, f"{len(front)} faces show the door's image")
+uv = door.uv_layers["UVMap"].data
+corners = {(round(uv[i].uv[0], 6), round(uv[i].uv[1], 6)) for i in front[0].loop_indices}
+check(corners == {(0, 0), (1, 0), (1, 1), (0, 1)}, f"the door's face does not keep its own UVs: {corners}")
+shutil.rmtree(textured)
 
 # ---- batch: one object per building of the sample block
 block = os.path.join(samples, "footprints", "sample_block.geojson")

@@ -23,7 +23,7 @@ GltfMeshData triangle(const std::string& name, const std::string& tag, float x =
   GltfMeshData m;
   m.building = name;
   m.feature = 3;
-  m.primitives.push_back({tag, {x, 0, 0, x + 1, 0, 0, x, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}, {}});
+  m.primitives.push_back({tag, {x, 0, 0, x + 1, 0, 0, x, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}, {}, {}});
   return m;
 }
 

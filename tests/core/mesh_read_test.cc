@@ -7,6 +7,7 @@
 
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
+#include "core/mesh/uv_frames.h"
 #include "core/mesh/validate.h"
 
 namespace procex {
@@ -95,7 +96,15 @@ TEST(MeshRead, LineEndingsCommentsAndCornerFormsOfOtherExporters) {
   EXPECT_EQ(m.valence(*m.faces().begin()), 4u);
   EXPECT_EQ(face_tag(m, *m.faces().begin()), "glass pane");
   EXPECT_EQ(m.point(Mesh::VertexHandle(1)), Mesh::Point(1, 0, 0));
-  EXPECT_TRUE(warnings.empty()) << testing::PrintToString(warnings);
+  // x.mtl is not there: said, and the face keeps its tag.
+  ASSERT_EQ(warnings.size(), 1u) << testing::PrintToString(warnings);
+  EXPECT_NE(warnings[0].find("line 2: material library 'x.mtl' is not there"), std::string::npos) << warnings[0];
+  // The last corner names no texture coordinate: the face has none of its own; all name a normal.
+  const auto h = *m.fh_range(*m.faces().begin()).begin();
+  const CornerAttribute own = corner_attribute(m, corner_uv_property(m), corner_normal_property(m), h);
+  EXPECT_FALSE(own.uv);
+  ASSERT_TRUE(own.normal);
+  EXPECT_EQ(*own.normal, glm::dvec3(0, 0, 1));
 }
 
 }  // namespace

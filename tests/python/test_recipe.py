@@ -1,6 +1,8 @@
 """procex.Recipe: every sample evaluates to the summary the C++ sample test
 stores (samples/expected), exposed parameters as their declarations say, and
 a parameter change moves the mesh as it should."""
+import shutil
+
 import numpy as np
 import pytest
 
@@ -179,3 +181,23 @@ def test_a_change_recomputes_only_the_nodes_it_reaches():
     assert after[node["shape"]] == "cache hit"  # the footprint branch is not recomputed
     computed = {p for p, o in after.items() if o == "computed"}
     assert computed < set(first)
+
+
+def test_placed_mesh_materials_and_own_uvs(tmp_path):
+    """The sample door placed instead of the window: its .mtl's colours and
+    texture (an absolute path inside the recipe's folder) and its face's own
+    texture coordinates."""
+    shutil.copytree(SAMPLES / "meshes", tmp_path / "meshes")
+    recipe = (SAMPLES / "windows_grid.pxg").read_text().replace(
+        '"file": "meshes/window_frame.obj"', '"file": "meshes/door_textured.obj"', 1)
+    (tmp_path / "doors.pxg").write_text(recipe)
+    (part,) = procex.Recipe.load(tmp_path / "doors.pxg").evaluate()
+    assert part.materials == {}
+    door = next(p.mesh for p in part.placed if p.mesh.name == "window")  # the node's `name`
+    assert door.materials == {
+        "door": {"colour": (1.0, 1.0, 1.0), "texture": str((tmp_path / "meshes" / "door_planks.png").resolve())},
+        "door_frame": {"colour": (0.2, 0.25, 0.3), "texture": None},
+    }
+    front = list(door.face_tags).index(door.tags.index("door"))
+    corners = door.uvs[door.face_offsets[front]:door.face_offsets[front + 1]]
+    assert sorted(map(tuple, corners)) == [(0, 0), (0, 1), (1, 0), (1, 1)]

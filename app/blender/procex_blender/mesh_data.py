@@ -1,8 +1,9 @@
 """procex meshes into Blender data: one Blender mesh from the parts of a
 building (NumPy arrays straight into foreach_set) with procex's texture
 coordinates (metres) as its UV map and procex's flat face normals as its
-custom normals, one material per face tag, placed meshes as linked duplicates
-(objects sharing one mesh datablock)."""
+custom normals, one material per face tag (a placed mesh's own colour and
+texture image from its .mtl), placed meshes as linked duplicates (objects
+sharing one mesh datablock)."""
 import zlib
 
 import bpy
@@ -13,16 +14,43 @@ PLACED_KEY = "procex_placed"  # marks the objects the add-on placed (replaced on
 UV_MAP = "UVMap"  # Blender's default name, which its texture nodes and exporters take first
 
 
-def material(tag):
-    """The material of a face tag, made once per file with a colour of its own."""
+def material(tag, own=None):
+    """The material of a face tag, made once per file: a placed mesh's own
+    (own: procex.Mesh.materials[tag], its colour and texture image) or a
+    colour of the tag's own."""
     name = "procex " + (tag or "untagged")
     m = bpy.data.materials.get(name)
     if m is None:
         m = bpy.data.materials.new(name)
-        h = zlib.crc32(name.encode())
-        m.diffuse_color = (0.35 + 0.6 * (h & 255) / 255, 0.35 + 0.6 * ((h >> 8) & 255) / 255,
-                           0.35 + 0.6 * ((h >> 16) & 255) / 255, 1.0)
+        if own is None:
+            h = zlib.crc32(name.encode())
+            m.diffuse_color = (0.35 + 0.6 * (h & 255) / 255, 0.35 + 0.6 * ((h >> 8) & 255) / 255,
+                               0.35 + 0.6 * ((h >> 16) & 255) / 255, 1.0)
+        else:
+            _own_look(m, own)
     return m
+
+
+def _own_look(m, own):
+    """The .mtl's look in a node material: Kd as the base colour, times the
+    map_Kd image (procex resolved its path, confined to the recipe's folder)."""
+    m.diffuse_color = (*own["colour"], 1.0)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    bsdf = next(n for n in nodes if n.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Base Color"].default_value = (*own["colour"], 1.0)
+    if own["texture"] is None:
+        return
+    image = nodes.new("ShaderNodeTexImage")
+    image.image = bpy.data.images.load(own["texture"], check_existing=True)
+    colour = image.outputs["Color"]
+    if own["colour"] != (1.0, 1.0, 1.0):  # MTL: Kd multiplies the image
+        mix = nodes.new("ShaderNodeVectorMath")
+        mix.operation = "MULTIPLY"
+        mix.inputs[1].default_value = own["colour"]
+        m.node_tree.links.new(colour, mix.inputs[0])
+        colour = mix.outputs["Vector"]
+    m.node_tree.links.new(colour, bsdf.inputs["Base Color"])
 
 
 def fill(me, parts):
@@ -61,8 +89,12 @@ def fill(me, parts):
     me.polygons.foreach_set("loop_total", loop_total)
     # Slots first: clearing them resets every face's material index to 0.
     me.materials.clear()
+    own = {}
+    for part in parts:
+        for t, look in part.materials.items():
+            own.setdefault(t, look)
     for t in tags:
-        me.materials.append(material(t))
+        me.materials.append(material(t, own.get(t)))
     me.polygons.foreach_set("material_index", cat(materials, np.int32))
     attribute = me.attributes.get("procex_source_edge") or me.attributes.new("procex_source_edge", "INT", "FACE")
     attribute.data.foreach_set("value", cat(edges, np.int32))

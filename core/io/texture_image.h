@@ -1,0 +1,22 @@
+// Texture images a recipe's meshes name (MTL map_Kd): only PNG and JPEG, the
+// two formats glTF 2.0 carries and every consumer decodes. The bytes are
+// checked by their signature, never decoded here: the consumer decodes them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace procex {
+
+// Largest texture read (a 8192 x 8192 RGBA PNG is at most about this).
+inline constexpr std::size_t kMaxTextureBytes = std::size_t{256} << 20;
+
+// "image/png" or "image/jpeg" by the bytes' signature, "" for anything else.
+std::string_view image_mime_type(std::string_view bytes);
+
+// The image's bytes. Throws IoError naming the file if it cannot be read, is
+// larger than kMaxTextureBytes or is not a PNG or JPEG image.
+std::string read_texture_image(const std::filesystem::path& path);
+
+}  // namespace procex

@@ -1,0 +1,50 @@
+// What a placed mesh brings with it beyond its shape (paper 3.6's windows and
+// doors as artists make them): each face tag's material as its OBJ's .mtl
+// gives it, and each face corner's own texture coordinates and normal. The
+// writers hand them on (OBJ and MTL, glTF); faces without them (a
+// building's) keep the tag colours and the world-scale frames of
+// core/mesh/uv_frames.h.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "core/mesh/mesh.h"
+
+namespace procex {
+
+struct Material {
+  std::array<double, 3> colour{0.8, 0.8, 0.8};  // linear RGB, each in [0, 1] (MTL Kd, glTF baseColorFactor)
+  // A PNG or JPEG image (MTL map_Kd), resolved and confined to the recipe's
+  // folder when read; empty if none.
+  std::filesystem::path texture;
+
+  bool operator==(const Material&) const = default;
+};
+
+// Materials by face tag.
+using Materials = std::map<std::string, Material>;
+
+// Names of the mesh and corner properties (a corner is the halfedge that
+// points to its vertex in its face, so fh_range walks a face's corners in
+// fv_range's order).
+inline constexpr const char* kMaterialsProperty = "procex:materials";        // Materials (mesh)
+inline constexpr const char* kCornerUvProperty = "procex:corner_uv";          // OpenMesh::Vec2d (halfedge)
+inline constexpr const char* kCornerNormalProperty = "procex:corner_normal";  // OpenMesh::Vec3d (halfedge)
+
+// The mesh's materials; empty if it has none.
+const Materials& mesh_materials(const Mesh& mesh);
+// Sets them (the property is added if missing).
+void set_mesh_materials(Mesh& mesh, Materials materials);
+
+// The corner properties, invalid if the mesh has none. A face without its
+// own texture coordinates (or normals) holds NaN at its corners.
+OpenMesh::HPropHandleT<OpenMesh::Vec2d> corner_uv_property(const Mesh& mesh);
+OpenMesh::HPropHandleT<OpenMesh::Vec3d> corner_normal_property(const Mesh& mesh);
+// Adds them, NaN at every corner (no-op where present).
+OpenMesh::HPropHandleT<OpenMesh::Vec2d> add_corner_uvs(Mesh& mesh);
+OpenMesh::HPropHandleT<OpenMesh::Vec3d> add_corner_normals(Mesh& mesh);
+
+}  // namespace procex
