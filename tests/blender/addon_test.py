@@ -210,7 +210,8 @@ with open(os.path.join(textured, "doors.pxg"), "w") as f:
     f.write(recipe)
 check(bpy.ops.import_scene.procex_recipe(filepath=os.path.join(textured, "doors.pxg")) == {"FINISHED"},
       "importing the textured doors failed")
-doors = [c for c in bpy.context.active_object.children if c.get("procex_placed") and "door_textured" in c.data.name]
+doors = [c for c in bpy.context.active_object.children
+         if c.get("procex_placed") and "procex door" in {m.name for m in c.data.materials}]
 check(doors, "no door was placed")
 door = doors[0].data
 slots = {m.name: m for m in door.materials}
