@@ -71,7 +71,7 @@ class GltfExport : public ::testing::Test {
   // grid instead of the window (in dir_, with the meshes beside it), written
   // to dir_/out/house<extension>.
   fs::path textured_house(const std::string& extension) {
-    fs::copy(kRoot / "samples" / "meshes", dir_ / "meshes", fs::copy_options::skip_existing);
+    fs::copy(kRoot / "samples" / "meshes", dir_ / "meshes", fs::copy_options::recursive | fs::copy_options::skip_existing);
     std::ifstream in(kRoot / "samples" / "windows_grid.pxg");
     std::string recipe((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string window = "\"file\": \"meshes/window_frame.obj\"";
@@ -82,7 +82,7 @@ class GltfExport : public ::testing::Test {
     fs::create_directories(dir_ / "out");
     const fs::path output = dir_ / "out" / ("house" + extension);
     std::ostringstream o, e;
-    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
     return output;
   }
   json node_json(const char* script, const fs::path& glb, int want_code) {
