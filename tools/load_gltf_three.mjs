@@ -36,6 +36,9 @@ new GLTFLoader().parse(data, '', (gltf) => {
       vertices: o.geometry.attributes.position.count,
       normals: o.geometry.attributes.normal !== undefined,
       uvs: o.geometry.attributes.uv !== undefined,
+      // The _TAG attribute (three.js lower-cases it) named through the asset's tag list.
+      tag_attribute: o.geometry.attributes._tag
+        ? [...new Set(o.geometry.attributes._tag.array)].map((i) => gltf.asset.extras.tags[i]) : null,
       texture: o.material.map != null,
       texture_size: o.material.map ? [o.material.map.image.width, o.material.map.image.height] : null,
       colour: o.material.color.toArray(),

@@ -220,6 +220,8 @@ struct Item {
   bool has_mesh = false, has_node = false;
   // Its JSON, each a comma-separated run of array elements ("" if none).
   std::string nodes_json, mesh_json, accessors_json;
+  // The _TAG attribute's values, primitive after primitive.
+  std::vector<float> tag_values;
 };
 
 // Counts every item's share of each array: its first indices follow.
@@ -235,7 +237,7 @@ Totals place_items(std::vector<Item>& items) {
     item.floats = t.floats, item.uv_floats = t.uv_floats, item.indices = t.indices;
     for (const GltfPrimitiveData& p : d.primitives) {
       if (p.indices.empty()) continue;
-      t.accessors += p.uvs.empty() ? 3 : 4;
+      t.accessors += p.uvs.empty() ? 4 : 5;
       t.floats += p.positions.size(), t.uv_floats += p.uvs.size(), t.indices += p.indices.size();
     }
     item.has_mesh = t.accessors > item.accessor;
@@ -298,7 +300,8 @@ struct WrittenMaterials {
 
 // The item's mesh and accessors (the validator wants each position
 // accessor's exact bounds).
-void render_mesh(Item& item, const WrittenMaterials& materials) {
+void render_mesh(Item& item, const WrittenMaterials& materials, const std::map<std::string, std::size_t>& tag_ids,
+                 int item_tag_view) {
   const GltfMeshData& d = *item.data;
   std::string& mesh = item.mesh_json;
   std::string& acc = item.accessors_json;
@@ -319,6 +322,8 @@ void render_mesh(Item& item, const WrittenMaterials& materials) {
       mesh += ",\"TEXCOORD_0\":";
       put_index(mesh, a + 3);
     }
+    mesh += ",\"_TAG\":";
+    put_index(mesh, a + (p.uvs.empty() ? 3 : 4));
     mesh += "},\"indices\":";
     put_index(mesh, a + 2);
     mesh += ",\"material\":";
@@ -326,7 +331,7 @@ void render_mesh(Item& item, const WrittenMaterials& materials) {
     mesh += ",\"mode\":4,\"extras\":{\"tag\":";
     put_string(mesh, p.tag);
     mesh += "}}";
-    a += p.uvs.empty() ? 3 : 4;
+    a += p.uvs.empty() ? 4 : 5;
 
     float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (std::size_t i = 0; i < p.positions.size(); i += 3)
@@ -350,6 +355,10 @@ void render_mesh(Item& item, const WrittenMaterials& materials) {
       put_accessor(acc, 3, uv_floats * sizeof(float), kFloat, "VEC2", n);
       acc += '}';
     }
+    // Every vertex its face's tag, numbered as the asset's extras list them.
+    put_accessor(acc, item_tag_view, floats / 3 * sizeof(float), kFloat, "SCALAR", n);
+    acc += '}';
+    item.tag_values.insert(item.tag_values.end(), n, static_cast<float>(tag_ids.at(p.tag)));
     floats += p.positions.size();
     uv_floats += p.uvs.size();
     indices += p.indices.size();
@@ -518,20 +527,32 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   for (const GltfMeshData& b : meshes) items.emplace_back().data = &b;
   const Totals totals = place_items(items);
   WrittenMaterials materials;
+  // The tags, numbered in order of first use for the _TAG attribute, and listed in the asset's extras.
+  std::map<std::string, std::size_t> tag_ids;
+  std::string tags_json;
   for (const Item& item : items)
-    for (const GltfPrimitiveData& p : item.data->primitives)
-      if (!p.indices.empty()) materials.add(p);
+    for (const GltfPrimitiveData& p : item.data->primitives) {
+      if (p.indices.empty()) continue;
+      materials.add(p);
+      if (tag_ids.try_emplace(p.tag, tag_ids.size()).second) {
+        if (!tags_json.empty()) tags_json += ',';
+        put_string(tags_json, p.tag);
+      }
+    }
+  const int tag_view = totals.uv_floats > 0 ? 4 : 3;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       Item& item = items[i];
       check_mesh(path, *item.data);
-      if (item.has_mesh) render_mesh(item, materials);
+      if (item.has_mesh) render_mesh(item, materials, tag_ids, tag_view);
       if (item.has_node) render_nodes(item, written);
     }
   });
 
   Pieces json;
-  std::string scene = "{\"asset\":{\"generator\":\"procex\",\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{";
+  std::string scene = "{\"asset\":{";
+  if (!tags_json.empty()) scene += "\"extras\":{\"tags\":[" + tags_json + "]},";
+  scene += "\"generator\":\"procex\",\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{";
   bool first = true;
   for (const Item& item : items) {
     if (!item.has_node) continue;
@@ -554,14 +575,15 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   const std::size_t uv_bytes = totals.uv_floats * sizeof(float);
   // Each image in a view of its own after the arrays, 4-byte aligned.
   std::vector<std::size_t> image_offsets;
-  std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes;
+  const std::size_t tag_bytes = totals.floats / 3 * sizeof(float);
+  std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes + tag_bytes;
   for (const std::string* image : materials.images) {
     image_offsets.push_back(bin_bytes);
     bin_bytes += (image->size() + 3) / 4 * 4;
   }
   std::string tail;
   if (!materials.images.empty()) {
-    const int first_image_view = uv_bytes > 0 ? 4 : 3;
+    const int first_image_view = tag_view + 1;
     tail += ",\"textures\":[";
     for (std::size_t i = 0; i < materials.images.size(); ++i) {
       tail += i > 0 ? ",{\"sampler\":0,\"source\":" : "{\"sampler\":0,\"source\":";
@@ -579,17 +601,19 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     tail += ']';
   }
   if (bin_bytes > 0) {
-    // Three or four views, each tightly packed: every position, then every
-    // normal (vertex attributes, so a stride), every index, and every texture
-    // coordinate pair. Views shared by all primitives keep the JSON small for
-    // whole cities.
-    const std::size_t offsets[4] = {0, vertex_bytes, 2 * vertex_bytes, 2 * vertex_bytes + index_bytes};
-    const std::size_t lengths[4] = {vertex_bytes, vertex_bytes, index_bytes, uv_bytes};
-    static constexpr const char* kViewTails[4] = {",\"byteStride\":12,\"target\":34962}",
-                                                  ",\"byteStride\":12,\"target\":34962}", ",\"target\":34963}",
-                                                  ",\"byteStride\":8,\"target\":34962}"};
+    // Four or five views, each tightly packed: every position, then every
+    // normal (vertex attributes, so a stride), every index, every texture
+    // coordinate pair (if any), and every vertex's tag number. Views shared by
+    // all primitives keep the JSON small for whole cities.
+    const std::size_t offsets[5] = {0, vertex_bytes, 2 * vertex_bytes, 2 * vertex_bytes + index_bytes,
+                                    2 * vertex_bytes + index_bytes + uv_bytes};
+    const std::size_t lengths[5] = {vertex_bytes, vertex_bytes, index_bytes, uv_bytes, tag_bytes};
+    static constexpr const char* kViewTails[5] = {
+        ",\"byteStride\":12,\"target\":34962}", ",\"byteStride\":12,\"target\":34962}", ",\"target\":34963}",
+        ",\"byteStride\":8,\"target\":34962}", ",\"byteStride\":4,\"target\":34962}"};
     tail += ",\"bufferViews\":[";
-    for (int v = 0; v < (uv_bytes > 0 ? 4 : 3); ++v) {
+    for (int v = 0; v < 5; ++v) {
+      if (v == 3 && uv_bytes == 0) continue;
       if (v > 0) tail += ',';
       tail += "{\"buffer\":0,\"byteOffset\":";
       put_index(tail, offsets[v]);
@@ -642,6 +666,7 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     for (const Item& item : items)
       for (const GltfPrimitiveData& p : item.data->primitives)
         if (!p.indices.empty()) add(p.uvs);
+    for (const Item& item : items) add(item.tag_values);
     static constexpr char kZeros[3] = {0, 0, 0};
     for (const std::string* image : materials.images) {
       add(*image);

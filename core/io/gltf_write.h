@@ -3,7 +3,9 @@
 // only reads files back), in glTF's frame: metres, +Y up (procex's z), the
 // plan not mirrored (core/io/up_axis.h). One glTF mesh (and node) per
 // building, one primitive per face tag (triangles, flat normals, texture
-// coordinates in metres), the tag in the primitive's extras and material name;
+// coordinates in metres), the tag in the primitive's extras and material name
+// and, per vertex, as the application attribute _TAG (float, the tag's
+// position in the asset's extras.tags list, in order of first use);
 // a placed mesh's primitives carry its own texture coordinates, normals and
 // material (colour and image, the image embedded).
 // The node is named by the building id and stands at the building's local

@@ -136,6 +136,7 @@ TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
     tags.insert(m["tag"].get<std::string>());
     buildings.insert(m["building"].get<std::string>());
     EXPECT_EQ(m["tag"], m["material"]);
+    EXPECT_EQ(m["tag_attribute"], json::array({m["tag"]}));  // every vertex's _TAG names the primitive's tag
     EXPECT_TRUE(m["normals"].get<bool>());
     EXPECT_GT(m["triangles"].get<int>(), 0);
   }
