@@ -43,6 +43,23 @@ std::vector<std::string_view> split_words(std::string_view line) {
   return out;
 }
 
+// Calls fn(line number, line, its content before any '#', the content's
+// words) for every line of an OBJ or MTL text that has words, CR LF or LF.
+template <class Fn>
+void for_each_statement(std::string_view text, Fn&& fn) {
+  std::size_t line_no = 0;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t eol = std::min(text.find('\n', at), text.size());
+    std::string_view line = text.substr(at, eol - at);
+    at = eol + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view content = line.substr(0, line.find('#'));
+    const std::vector<std::string_view> words = split_words(content);
+    if (!words.empty()) fn(line_no, line, content, words);
+  }
+}
+
 // A whole word as a finite number ("+1" allowed, as some exporters write it).
 bool parse_coordinate(std::string_view word, double& value) {
   if (!word.empty() && word[0] == '+') word.remove_prefix(1);
@@ -120,16 +137,8 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
   ObjScan scan;
   std::string tag;
   std::vector<std::size_t> corners;
-  std::size_t line_no = 0;
-  for (std::size_t at = 0; at <= text.size();) {
-    const std::size_t eol = std::min(text.find('\n', at), text.size());
-    std::string_view line = text.substr(at, eol - at);
-    at = eol + 1;
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::string_view content = line.substr(0, line.find('#'));
-    const std::vector<std::string_view> words = split_words(content);
-    if (words.empty()) continue;
+  for_each_statement(text, [&](std::size_t line_no, std::string_view line, std::string_view content,
+                               const std::vector<std::string_view>& words) {
     if (words[0] == "v") {
       if (words.size() < 4) fail_at(path, line_no, line, "a vertex needs three coordinates");
       Mesh::Point& p = scan.vertices.emplace_back();
@@ -169,7 +178,7 @@ ObjScan scan_obj(const Path& path, std::string_view text) {
     } else if (words[0] == "mtllib") {
       for (std::size_t k = 1; k < words.size(); ++k) scan.libraries.emplace_back(line_no, std::string(words[k]));
     }
-  }
+  });
   if (scan.face_tags.empty())
     fail(path, "has no faces (a mesh to place needs 'v' lines and at least one 'f' line), " +
                    std::to_string(scan.vertices.size()) + " vertices");
@@ -204,24 +213,16 @@ Materials read_material_library(const Path& path, const ReferencedFileResolver& 
   if (text.find('\0') != std::string::npos) fail(path, "is not a text material library (it contains NUL bytes)");
   Materials out;
   Material* current = nullptr;
-  std::size_t line_no = 0;
-  for (std::size_t at = 0; at <= text.size();) {
-    const std::size_t eol = std::min(text.find('\n', at), text.size());
-    std::string_view line = std::string_view(text).substr(at, eol - at);
-    at = eol + 1;
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::string_view content = line.substr(0, line.find('#'));
-    const std::vector<std::string_view> words = split_words(content);
-    if (words.empty()) continue;
+  for_each_statement(text, [&](std::size_t line_no, std::string_view line, std::string_view content,
+                               const std::vector<std::string_view>& words) {
     if (words[0] == "newmtl") {
       const std::string name = rest_of_line(content, words);
       if (name.empty()) fail_at(path, line_no, line, "a material needs a name");
       current = &out[name];
       *current = Material{};
-      continue;
+      return;
     }
-    if (words[0] != "Kd" && words[0] != "map_Kd") continue;
+    if (words[0] != "Kd" && words[0] != "map_Kd") return;
     if (!current) fail_at(path, line_no, line, "'" + std::string(words[0]) + "' comes before any 'newmtl'");
     if (words[0] == "Kd") {
       const auto kd = numbers<3>(path, line_no, line, words, 3, "a colour (Kd)");
@@ -235,7 +236,7 @@ Materials read_material_library(const Path& path, const ReferencedFileResolver& 
       current->texture = resolve(path.parent_path() / name);
       read_texture_image(current->texture);
     }
-  }
+  });
   return out;
 }
 
