@@ -47,6 +47,7 @@ struct Building {
   GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
   MeshSummary summary;
   double ms = 0;
+  std::string entry;  // its part of the report's text, made as it leaves its window
 };
 
 // What identifies a run's inputs in its report, so that merge can tell the
@@ -185,6 +186,16 @@ nlohmann::ordered_json building_json(const Building& b) {
   return j;
 }
 
+// The building's element of the report's "buildings" array as report_text
+// lays it out there (two levels deep): the report is joined from these
+// instead of one JSON document of every building.
+std::string report_entry(const Building& b) {
+  const std::string flat = report_text(building_json(b));
+  std::string out = "  ";
+  for (std::size_t i = 0; i + 1 < flat.size(); ++i) out += flat[i] == '\n' ? std::string("\n  ") : std::string(1, flat[i]);
+  return out;
+}
+
 bool is_folder_output(const std::filesystem::path& p) {
   const std::string s = p.string();
   return (!s.empty() && s.back() == '/') || std::filesystem::is_directory(p);
@@ -262,6 +273,9 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   std::size_t ok = 0, refused = 0, failed = 0;
   ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
   std::chrono::steady_clock::time_point evaluated = start;
+  // The report's text as pieces: its head and tail around the buildings'
+  // entries, each made when its building left its window.
+  std::string head, tail;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
@@ -269,12 +283,24 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     j["output"] = options.output.string();
     j["shard"] = to_json(stamp);
     j["buildings"] = nlohmann::ordered_json::array();
-    for (const Building& b : buildings) j["buildings"].push_back(building_json(b));
     auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
     j["summary"] = {{"buildings", buildings.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
                     {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
                     {"ms", ms(start, std::chrono::steady_clock::now())}};
-    return report_text(j);
+    const std::string text = report_text(j);
+    // No string value holds a raw newline, so this is the array's place.
+    const std::string empty = "\n \"buildings\": []";
+    const std::size_t at = text.find(empty) + empty.size() - 1;
+    head = text.substr(0, at), tail = text.substr(at + 1);
+    std::vector<std::string_view> pieces{head};
+    for (const Building& b : buildings) {
+      if (b.entry.empty()) continue;  // staged before the buildings ran
+      pieces.push_back(pieces.size() == 1 ? "\n" : ",\n");
+      pieces.push_back(b.entry);
+    }
+    pieces.push_back(pieces.size() == 1 ? "]" : "\n ]");
+    pieces.push_back(tail);
+    return pieces;
   };
   MeshSet all;
   GltfScene all_gltf;
@@ -307,6 +333,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       for (std::size_t i = first; i < last; ++i) {
         Building& b = buildings[i];
         if (per_building) b.file = file_name(b);
+        b.entry = report_entry(b);
+        b.summary = {}, b.warnings = {};
         if (b.status != "ok") {
           ++(b.status == "refused" ? refused : failed);
           err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason
