@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cstdio>
 #include <chrono>
 #include <charconv>
 #include <mutex>
@@ -47,7 +48,6 @@ struct Building {
   GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
   MeshSummary summary;
   double ms = 0;
-  std::string entry;  // its part of the report's text, made as it leaves its window
 };
 
 // What identifies a run's inputs in its report, so that merge can tell the
@@ -196,6 +196,42 @@ std::string report_entry(const Building& b) {
   return out;
 }
 
+// The report's building entries, joined as the array holds them, in an
+// unnamed temporary file as buildings leave their window: read back once,
+// when the report is written, so they take no memory while buildings run.
+class EntrySpool {
+ public:
+  EntrySpool() : file_(std::tmpfile()) {}
+  EntrySpool(const EntrySpool&) = delete;
+  EntrySpool& operator=(const EntrySpool&) = delete;
+  ~EntrySpool() {
+    if (file_) std::fclose(file_);
+  }
+  void add(const std::string& entry) {
+    const std::string_view separator = count_ == 0 ? "\n" : ",\n";
+    if (!file_ || std::fwrite(separator.data(), 1, separator.size(), file_) != separator.size() ||
+        std::fwrite(entry.data(), 1, entry.size(), file_) != entry.size())
+      fail();
+    bytes_ += separator.size() + entry.size(), ++count_;
+  }
+  std::size_t count() const { return count_; }
+  std::string text() const {
+    std::string out(bytes_, '\0');
+    if (bytes_ > 0 && (std::fseek(file_, 0, SEEK_SET) != 0 || std::fread(out.data(), 1, bytes_, file_) != bytes_)) fail();
+    if (bytes_ > 0 && std::fseek(file_, 0, SEEK_END) != 0) fail();
+    return out;
+  }
+
+ private:
+  [[noreturn]] static void fail() {
+    throw IoError("the report's temporary file could not be written or read (is the temporary "
+                  "folder full? TMPDIR names it)",
+                  "");
+  }
+  std::FILE* file_;
+  std::size_t bytes_ = 0, count_ = 0;
+};
+
 bool is_folder_output(const std::filesystem::path& p) {
   const std::string s = p.string();
   return (!s.empty() && s.back() == '/') || std::filesystem::is_directory(p);
@@ -275,7 +311,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   std::chrono::steady_clock::time_point evaluated = start;
   // The report's text as pieces: its head and tail around the buildings'
   // entries, each made when its building left its window.
-  std::string head, tail;
+  std::string head, tail, entries;
+  EntrySpool spool;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
@@ -292,15 +329,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     const std::string empty = "\n \"buildings\": []";
     const std::size_t at = text.find(empty) + empty.size() - 1;
     head = text.substr(0, at), tail = text.substr(at + 1);
-    std::vector<std::string_view> pieces{head};
-    for (const Building& b : buildings) {
-      if (b.entry.empty()) continue;  // staged before the buildings ran
-      pieces.push_back(pieces.size() == 1 ? "\n" : ",\n");
-      pieces.push_back(b.entry);
-    }
-    pieces.push_back(pieces.size() == 1 ? "]" : "\n ]");
-    pieces.push_back(tail);
-    return pieces;
+    entries = spool.text();
+    return std::vector<std::string_view>{head, entries, spool.count() == 0 ? "]" : "\n ]", tail};
   };
   MeshSet all;
   GltfScene all_gltf;
@@ -333,7 +363,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       for (std::size_t i = first; i < last; ++i) {
         Building& b = buildings[i];
         if (per_building) b.file = file_name(b);
-        b.entry = report_entry(b);
+        spool.add(report_entry(b));
         b.summary = {}, b.warnings = {};
         if (b.status != "ok") {
           ++(b.status == "refused" ? refused : failed);
@@ -359,6 +389,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     evaluated = std::chrono::steady_clock::now();
     if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
     else if (!per_building) write_mesh_set(options.output, all, export_options);
+    all_gltf = {}, all = {};  // before the report's entries are read back
     if (!options.report.empty()) {
       report_file.add(options.report, report(std::chrono::steady_clock::now()));
       report_file.commit();
