@@ -13,9 +13,9 @@ struct Params {
 };
 Params par;
 
-// An edited file is read again.
+// An edited file is read again, a Shapefile's .dbf and .prj included.
 void hash_file(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
-  hash_file_stamp(folder / params[par.file].get<std::string>(), h);
+  for (const std::filesystem::path& f : footprint_files(folder / params[par.file].get<std::string>())) hash_file_stamp(f, h);
 }
 
 void declare(NodeDecl& d) {

@@ -27,6 +27,7 @@
 #include "base/atomic_file_set.h"
 #include "base/read_file.h"
 #include "core/io/geojson.h"
+#include "core/io/gltf_crs.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "graph/hash.h"
@@ -261,7 +262,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   const std::filesystem::path kind = per_building ? std::filesystem::path("x" + format) : options.output;
   if (!is_mesh_file(kind) && !is_gis_file(kind)) {
     err << "procex batch: " << (per_building ? "--format " + options.format : options.output.string())
-        << ": use .obj, .ply, .glb or .gpkg\n";
+        << ": use .obj, .ply, .glb, .gpkg or .json (CityJSON)\n";
     return kExitUnusableInput;
   }
   if (const auto clash = output_clash({options.recipe, options.footprints},
@@ -273,7 +274,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
                                                                 options.budget);
   if (!recipe) return kExitUnusableInput;
   FootprintReadOptions read;
-  read.crs = options.export_options.crs, read.target_crs = options.target_crs;
+  read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
   const std::optional<GeoJsonCollection> opened =
       open_footprints(recipe->graph, options.recipe, options.footprints, read, "batch", err);
   if (!opened) return kExitUnusableInput;
@@ -344,7 +345,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     if (!options.report.empty() || one_glb)
       stamp.recipe = file_hash(options.recipe), stamp.footprints = file_hash(options.footprints);
     if (!options.report.empty()) report_file.add(options.report, report(start));
-    if (one_glb) all_gltf.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
+    if (one_glb) {
+      all_gltf.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
+      set_gltf_crs(all_gltf, export_options.crs, options.output);
+    }
     if (per_building) std::filesystem::create_directories(options.output);
     // Buildings run a window at a time and leave it in input order: a
     // building's meshes are written (per-building files) or converted to what

@@ -40,6 +40,7 @@ struct BatchCommandOptions {
   ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
   std::string target_crs;             // --target-crs
   BudgetSettings budget;              // set on every Extrude node
+  std::string layer;                  // --layer (core/io/footprint_read.h)
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

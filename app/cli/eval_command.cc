@@ -14,7 +14,7 @@ namespace procex {
 
 int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream& err) {
   if (!is_mesh_file(options.output) && !is_gis_file(options.output)) {
-    err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply, .glb or .gpkg\n";
+    err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply, .glb, .gpkg or .json (CityJSON)\n";
     return kExitUnusableInput;
   }
   if (const auto clash = output_clash({options.recipe, options.footprints}, {options.output})) {
@@ -28,7 +28,7 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
   const GeoJsonFeature* feature = nullptr;
   if (!options.footprints.empty()) {
     FootprintReadOptions read;
-    read.crs = options.export_options.crs, read.target_crs = options.target_crs;
+    read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
     collection = open_footprints(recipe->graph, options.recipe, options.footprints, read, "eval", err);
     if (!collection) return kExitUnusableInput;
     const Result<const GeoJsonFeature*> found = find_feature(*collection, options.feature, options.footprints.string());

@@ -26,6 +26,7 @@ struct EvalCommandOptions {
   ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
   std::string target_crs;             // --target-crs
   BudgetSettings budget;              // set on every Extrude node
+  std::string layer;                  // --layer (core/io/footprint_read.h)
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

@@ -44,18 +44,21 @@ void add_allow_path(CLI::App* cmd, std::vector<std::filesystem::path>& folders) 
       ->check(CLI::ExistingDirectory);
 }
 
-// --crs and --target-crs for the commands that read footprints (core/io/footprint_read.h).
-void add_crs_options(CLI::App* cmd, std::string& crs, std::string& target_crs) {
+// --crs, --target-crs and --layer for the commands that read footprints (core/io/footprint_read.h).
+void add_footprint_options(CLI::App* cmd, std::string& crs, std::string& target_crs, std::string& layer) {
   cmd->add_option("--crs", crs,
                   "The footprints' coordinate reference system (EPSG:4326, EPSG:32632, a WKT or a PROJ string), "
                   "replacing the file's own (.prj, GeoPackage srs, GeoJSON \"crs\"). A projected CRS in metres is "
-                  "built in as it is and a .gpkg output is written in it; longitude/latitude (or feet) is projected "
+                  "built in as it is and a .gpkg, .json (CityJSON) or .glb output is georeferenced in it; longitude/latitude (or feet) is projected "
                   "to a transverse Mercator centred on the data, true to size there. A file declaring no CRS is taken "
                   "in metres, but refused if all its coordinates are longitude/latitude and every footprint would be "
-                  "under 5 cm across: give --crs then. Without footprints (eval): the .gpkg output's CRS");
+                  "under 5 cm across: give --crs then. Without footprints (eval): the output's CRS");
   cmd->add_option("--target-crs", target_crs,
-                  "The projected CRS in metres to build in (and write a .gpkg in) instead, e.g. the UTM zone "
-                  "(EPSG:32632); needs the footprints' CRS");
+                  "The projected CRS in metres to build in (and georeference the output in) instead, e.g. the UTM "
+                  "zone (EPSG:32632; CityJSON needs one with an EPSG code); needs the footprints' CRS");
+  cmd->add_option("--layer", layer,
+                  "The layer of the footprint file to read (a GeoPackage's table, an OSM file's layer); default: "
+                  "the first (OSM: multipolygons). A name the file lacks is refused, listing its layers");
 }
 
 // The sweep budget's options, the same on roof, eval and batch.
@@ -89,7 +92,7 @@ Runner add_roof(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--angles-property", options->angles_property,
                   "Feature property with per-edge angles: one list per ring, one angle per edge");
-  add_crs_options(cmd, options->crs, options->target_crs);
+  add_footprint_options(cmd, options->crs, options->target_crs, options->layer);
   cmd->add_option_function<double>(
          "--max-height", [options](double h) { options->max_height = h; }, "Cap the roofs with flat faces at this height")
       ->check(kFinite & CLI::PositiveNumber);
@@ -118,7 +121,8 @@ Runner add_eval(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("eval", "Evaluate a recipe (.pxg) and write its mesh outputs to one file");
   cmd->add_option("recipe", options->recipe, "Recipe file (.pxg)")->required();
   cmd->add_option("-o,--output", options->output,
-                  "Mesh file: .obj (+ .mtl), .ply or .glb; or a GeoPackage (.gpkg, with --crs) for GIS tools")
+                  "Mesh file: .obj (+ .mtl), .ply or .glb; or for GIS tools a GeoPackage (.gpkg) or CityJSON 2.0 "
+                  "(.json, e.g. city.city.json), with --crs")
       ->required();
   cmd->add_option("--set", options->settings, "name=value for an exposed parameter or graph input (repeatable)");
   cmd->add_option("--preset", options->preset, "A named set of exposed values stored in the recipe, applied before --set");
@@ -128,7 +132,7 @@ Runner add_eval(CLI::App& app) {
   footprints->needs("--feature");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
-  add_crs_options(cmd, options->export_options.crs, options->target_crs);
+  add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
   add_budget_options(cmd, options->budget);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
@@ -165,11 +169,11 @@ Runner add_batch(CLI::App& app) {
   cmd->add_option("--footprints", options->footprints,
                   "Footprint file: GeoJSON, Shapefile, GeoPackage, FlatGeobuf or OSM (.osm, .pbf: its buildings)")
       ->required();
-  cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb) or GeoPackage (.gpkg, "
-                                                  "each building a feature), or a folder (ending in /) for one file "
+  cmd->add_option("-o,--output", options->output, "One mesh file (.obj, .ply, .glb), GeoPackage (.gpkg, "
+                                                  "each building a feature) or CityJSON (.json), or a folder (ending in /) for one file "
                                                   "per building")->required();
   cmd->add_option("--format", options->format, "Per-building file format")
-      ->check(CLI::IsMember({"obj", "ply", "glb", "gpkg"}))
+      ->check(CLI::IsMember({"obj", "ply", "glb", "gpkg", "json"}))
       ->capture_default_str();
   cmd->add_option("--report", options->report, "JSON report: one entry per building, failures with reasons");
   cmd->add_option("-j,--jobs", options->jobs, "Worker threads (0 = one per hardware thread)")
@@ -190,7 +194,7 @@ Runner add_batch(CLI::App& app) {
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
   add_allow_path(cmd, options->allowed_paths);
   add_up_option(cmd, options->export_options);
-  add_crs_options(cmd, options->export_options.crs, options->target_crs);
+  add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
   add_budget_options(cmd, options->budget);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }

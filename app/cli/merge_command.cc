@@ -10,6 +10,7 @@
 #include "app/cli/report_text.h"
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
+#include "core/io/gltf_crs.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "core/io/json_read.h"
@@ -104,6 +105,16 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
                                    "the .glb parts of one batch run",
                       p.string());
       shards.emplace_back(read_shard_stamp(json::parse(stamp->second), p, "/scenes/0/extras/shard"), p);
+      // One run has one CRS; parts that disagree were built with different --crs.
+      const auto crs = part.extras.find(kGltfCrsKey);
+      const std::string part_crs = crs == part.extras.end() ? "" : crs->second;
+      if (shards.size() == 1) {
+        if (!part_crs.empty()) all.extras[kGltfCrsKey] = part_crs;
+      } else if (part_crs != (all.extras.count(kGltfCrsKey) ? all.extras[kGltfCrsKey] : "")) {
+        throw IoError(p.string() + ": its scene's CRS (extras.crs) is not that of " + shards.front().second.string() +
+                          ": merge joins the parts of one run, all made in one CRS",
+                      p.string());
+      }
       append_scene(all, std::move(part));
     }
     check_whole(shards);

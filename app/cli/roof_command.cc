@@ -143,7 +143,7 @@ int run_roof(const RoofOptions& options, std::ostream& out, std::ostream& err) {
   try {
     FootprintReadOptions read;
     read.geojson = {options.angles_property, /*require_angles=*/false};
-    read.crs = options.crs, read.target_crs = options.target_crs;
+    read.crs = options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
     collection = read_footprints(options.input, read);
   } catch (const IoError& e) {
     err << "procex roof: " << e.what() << "\n";

@@ -18,6 +18,7 @@ struct RoofOptions {
   double angle_deg = 45.0;       // every edge, unless angles_property gives per-edge angles
   std::string angles_property;   // feature property: one list of angles per ring, one per edge
   std::string crs, target_crs;   // --crs, --target-crs (core/io/footprint_read.h)
+  std::string layer;             // --layer
   std::optional<double> max_height;
   std::filesystem::path output;  // .obj or .ply
   std::filesystem::path report;  // JSON

@@ -140,7 +140,8 @@ void bind_batch(py::module_& m) {
         py::arg("progress") = py::none(), py::arg("attributes") = py::none(),
         "Evaluates the recipe once per footprint, in parallel, as procex batch does: each feature is bound to the "
         "graph input footprint, its id to building_id, its properties to the parameters of the same name. "
-        "footprints: a GeoJSON path, a FeatureCollection dict, or a sequence of features or of loops. jobs: worker "
+        "footprints: a footprint file's path (GeoJSON, Shapefile, GeoPackage, FlatGeobuf or OSM, longitude/latitude projected "
+        "as procex batch projects it), a FeatureCollection dict, or a sequence of features or of loops. jobs: worker "
         "threads (0: one per core). progress(done, total) is called from this thread as buildings finish. The GIL "
         "is released while the buildings are evaluated; an exception in progress (or Ctrl+C) stops the rest. "
         "Returns one Building per footprint, in order: a building that fails does not stop the others.");

@@ -4,6 +4,7 @@
 
 #include "app/python/errors.h"
 #include "app/python/python_json.h"
+#include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
 
 namespace py = pybind11;
@@ -88,7 +89,7 @@ GeoJsonCollection collection_from_python(py::handle footprints) {
   if (is_path(footprints)) {
     const std::string path = py::str(py::module_::import("os").attr("fspath")(footprints));
     try {
-      return read_geojson_file(path);
+      return read_footprints(path);  // any format procex batch reads, projected as it projects them
     } catch (const IoError& e) {
       raise(ErrorKind::Footprint, e.what());
     }
@@ -96,7 +97,7 @@ GeoJsonCollection collection_from_python(py::handle footprints) {
   py::handle source = py::hasattr(footprints, "__geo_interface__") ? footprints.attr("__geo_interface__") : footprints;
   if (py::isinstance<py::dict>(source)) return parse(json_text(source), "footprints");
   if (!py::isinstance<py::sequence>(source))
-    raise(ErrorKind::Footprint, "footprints must be a GeoJSON path, a FeatureCollection or a sequence of footprints, not a " +
+    raise(ErrorKind::Footprint, "footprints must be a footprint file's path (GeoJSON, Shapefile, GeoPackage, FlatGeobuf, OSM), a FeatureCollection or a sequence of footprints, not a " +
                                     type_name(footprints));
   // Features go through the GeoJSON reader together, as one collection; loops are read here.
   py::list features;

@@ -6,8 +6,9 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string_view>
+#include <utility>
 
-#include <cpl_conv.h>
 #include <cpl_error.h>
 #include <gdal_priv.h>
 #include <glm/common.hpp>
@@ -17,8 +18,8 @@
 #include <ogrsf_frmts.h>
 
 #include "core/io/gdal_support.h"
-#include "core/io/geopackage_write.h"
 #include "core/io/io_error.h"
+#include "core/io/output_crs.h"
 
 namespace procex {
 namespace {
@@ -37,17 +38,6 @@ constexpr double kLargestLonLatFootprint = 0.05;
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
   throw IoError(path.string() + ": " + why, path.string());
-}
-
-// A CRS as WKT2, the form GeoJsonCollection::crs and the outputs carry;
-// nullopt if GDAL cannot write it.
-std::optional<std::string> wkt2(const OGRSpatialReference& srs) {
-  char* wkt = nullptr;
-  const char* options[] = {"FORMAT=WKT2_2019", nullptr};
-  std::optional<std::string> out;
-  if (srs.exportToWkt(&wkt, options) == OGRERR_NONE && wkt) out = wkt;
-  CPLFree(wkt);
-  return out;
 }
 
 struct CloseDataset {
@@ -106,6 +96,26 @@ void add_other_tags(const std::string& text, std::map<std::string, std::string>&
   }
 }
 
+// A Shapefile's .dbf holds field names of at most 10 characters, so GDAL
+// writes "building:levels" as "building_l" (':' becomes '_', the rest is cut):
+// the OSM Simple 3D Buildings keys a massing recipe reads whose names are cut
+// get their names back, so they set from a Shapefile what they set from any
+// other format. Only these: a cut name is ambiguous in general (building_m
+// could be building:material; it is taken as building:min_level, the one with
+// a bearing on the geometry). Names of 10 characters or fewer ("height",
+// "roof_shape", "min_height") need none: binding reads ':' as '_'.
+constexpr std::pair<std::string_view, const char*> kShapefileCutNames[] = {
+    {"building_l", "building:levels"}, {"building_m", "building:min_level"}, {"roof_heigh", "roof:height"},
+    {"roof_level", "roof:levels"},     {"roof_direc", "roof:direction"},     {"roof_orien", "roof:orientation"},
+};
+
+std::string property_name(const char* field, bool shapefile) {
+  if (shapefile)
+    for (const auto& [cut, name] : kShapefileCutNames)
+      if (cut == field) return name;
+  return field;
+}
+
 // The feature's id: its "id" column (as GeoJSON's properties.id), OSM's way
 // or relation id, else its position.
 std::string feature_id(const OGRFeature& f, std::size_t index) {
@@ -156,7 +166,7 @@ void read_geometry(const OGRGeometry* g, GeoJsonFeature& out) {
 }
 
 // The footprints of a file GDAL reads; crs is the layer's when empty.
-GeoJsonCollection read_with_gdal(const fs::path& path, std::string& crs) {
+GeoJsonCollection read_with_gdal(const fs::path& path, const std::string& layer_asked, std::string& crs) {
   const std::string name = path.string();
   if (name.rfind("/vsi", 0) == 0 || name.find("://") != std::string::npos)
     refuse(path, "not a local file: footprints are read only from files on disk");
@@ -168,7 +178,18 @@ GeoJsonCollection read_with_gdal(const fs::path& path, std::string& crs) {
       GDALDataset::Open(name.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, kDrivers, nullptr, nullptr));
   if (!dataset) refuse(path, std::string("not a ") + kFormats + " file GDAL can read (" + gdal_reason() + ")");
   const bool osm = std::string(dataset->GetDriverName()) == "OSM";
-  OGRLayer* layer = osm ? dataset->GetLayerByName("multipolygons") : dataset->GetLayerCount() ? dataset->GetLayer(0) : nullptr;
+  const bool shapefile = std::string(dataset->GetDriverName()) == "ESRI Shapefile";
+  OGRLayer* layer = !layer_asked.empty()     ? dataset->GetLayerByName(layer_asked.c_str())
+                    : osm                      ? dataset->GetLayerByName("multipolygons")
+                    : dataset->GetLayerCount() ? dataset->GetLayer(0)
+                                               : nullptr;
+  if (!layer && !layer_asked.empty()) {
+    std::string names;
+    for (int i = 0; i < dataset->GetLayerCount(); ++i)
+      names += std::string(i ? ", '" : "'") + dataset->GetLayer(i)->GetName() + "'";
+    refuse(path, "has no layer '" + layer_asked + "': its layers are " + (names.empty() ? "none" : names) +
+                     " (choose one with --layer)");
+  }
   if (!layer) refuse(path, "holds no layer of polygons");
   if (osm && layer->SetAttributeFilter("building IS NOT NULL") != OGRERR_NONE)
     refuse(path, "cannot select the buildings: " + gdal_reason());
@@ -201,7 +222,7 @@ GeoJsonCollection read_with_gdal(const fs::path& path, std::string& crs) {
       if (gdal_failed) throw FeatureProblem{"GDAL: " + gdal_reason()};
       for (int i = 0; i < f->GetFieldCount(); ++i)
         if (f->IsFieldSetAndNotNull(i)) {
-          feature.properties[f->GetFieldDefnRef(i)->GetNameRef()] = field_json(*f, i);
+          feature.properties[property_name(f->GetFieldDefnRef(i)->GetNameRef(), shapefile)] = field_json(*f, i);
           if (osm && std::string(f->GetFieldDefnRef(i)->GetNameRef()) == "other_tags")
             add_other_tags(f->GetFieldAsString(i), feature.properties);
         }
@@ -325,13 +346,23 @@ GeoJsonCollection read_footprints(const fs::path& path, const FootprintReadOptio
   std::string source = options.crs;
   GeoJsonCollection c;
   if (const std::string e = lower_extension(path); e == ".geojson" || e == ".json") {
+    if (!options.layer.empty())
+      refuse(path, "a GeoJSON file holds one layer, so --layer '" + options.layer + "' names nothing: leave it out");
     c = read_geojson_file(path, options.geojson);
     if (source.empty()) source = crs_member(c, path);
   } else {
-    c = read_with_gdal(path, source);
+    c = read_with_gdal(path, options.layer, source);
   }
   settle_frame(c, source, options.target_crs, path);
   return c;
+}
+
+std::vector<fs::path> footprint_files(const fs::path& path) {
+  std::vector<fs::path> files = {path};
+  if (lower_extension(path) != ".shp") return files;
+  for (const char* sidecar : {".dbf", ".shx", ".prj", ".cpg", ".DBF", ".SHX", ".PRJ", ".CPG"})
+    files.push_back(fs::path(path).replace_extension(sidecar));
+  return files;
 }
 
 }  // namespace procex

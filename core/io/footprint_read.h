@@ -3,7 +3,10 @@
 //  - .geojson / .json: procex's own reader (line/column errors, depth limits);
 //  - anything else through GDAL/OGR, and only with its GeoJSON, ESRI Shapefile,
 //    GPKG, FlatGeobuf and OSM drivers (no VRT, no /vsi paths, no network): the
-//    first layer, or for OSM (.osm, .pbf) the multipolygons with building=*.
+//    layer named (--layer), else the first, or for OSM (.osm, .pbf) the
+//    multipolygons with building=*. A Shapefile's field names cut to 10
+//    characters get the OSM building keys they were cut from back
+//    ("building_l" is "building:levels").
 // The CRS the coordinates are in is the file's own (a Shapefile's .prj, a
 // GeoPackage's srs, a GeoJSON "crs" member), which --crs replaces. A
 // projected CRS in metres is kept as it is; a geographic one (longitude/
@@ -20,6 +23,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/io/geojson.h"
 
@@ -29,6 +33,7 @@ struct FootprintReadOptions {
   GeoJsonReadOptions geojson;  // for the GeoJSON reader (edge angles)
   std::string crs;             // the file's CRS, replacing what it declares (--crs)
   std::string target_crs;      // the metric CRS to build in (--target-crs); empty: as above
+  std::string layer;           // the layer to read (--layer); empty: the first (OSM: multipolygons)
 };
 
 // The footprints in `path`, GeoJsonCollection::crs naming the CRS their
@@ -36,5 +41,10 @@ struct FootprintReadOptions {
 // file if it cannot be read or its CRS used; a feature that cannot be read or
 // projected goes to GeoJsonCollection::errors, naming it.
 GeoJsonCollection read_footprints(const std::filesystem::path& path, const FootprintReadOptions& options = {});
+
+// The files read_footprints(path) reads: path, and for a Shapefile the
+// sidecars beside it (.dbf, .shx, .prj, .cpg, in either case; those missing
+// too, since adding one changes what is read). What a cache key hashes.
+std::vector<std::filesystem::path> footprint_files(const std::filesystem::path& path);
 
 }  // namespace procex

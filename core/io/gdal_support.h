@@ -29,4 +29,12 @@ void register_gdal_drivers();
 // Sets srs from `crs`; the problem (naming crs) if PROJ does not know it.
 std::optional<std::string> read_crs(const std::string& crs, OGRSpatialReference& srs);
 
+// As read_crs, and the problem if the CRS cannot georeference procex's
+// output (core/io/output_crs.h): empty, geographic, or not in metres.
+std::optional<std::string> read_metric_crs(const std::string& crs, OGRSpatialReference& srs);
+
+// A CRS as WKT2 (2019), the form GeoJsonCollection::crs and the outputs carry;
+// nullopt if GDAL cannot write it.
+std::optional<std::string> wkt2(const OGRSpatialReference& srs);
+
 }  // namespace procex

@@ -35,29 +35,6 @@ class FixedDate {
   FixedDate& operator=(const FixedDate&) = delete;
 };
 
-struct ParsedCrs {
-  OGRSpatialReference srs;
-  std::optional<std::string> problem;
-};
-
-ParsedCrs parse_crs(const std::string& crs) {
-  ParsedCrs out;
-  if (crs.empty()) {
-    out.problem = "no coordinate reference system: give the footprints' CRS with --crs (e.g. EPSG:32632, a WKT or a "
-                  "PROJ string; projected, in metres)";
-    return out;
-  }
-  out.problem = read_crs(crs, out.srs);
-  if (out.problem) return out;
-  if (out.srs.IsGeographic())
-    out.problem = "the CRS '" + crs + "' is geographic (longitude/latitude in degrees); procex builds in metres: " +
-                  "give a projected CRS in metres (procex projects longitude/latitude footprints itself)";
-  else if (const double metres = out.srs.GetLinearUnits(); metres != 1.0)
-    out.problem = "the CRS '" + crs + "' measures in units of " + std::to_string(metres) +
-                  " m; procex writes metres: give a CRS in metres";
-  return out;
-}
-
 enum class ColumnType { Real, Boolean, String };
 
 struct Column {
@@ -169,22 +146,18 @@ void set_property(OGRFeature& f, const Column& c, const std::string& text) {
 
 }  // namespace
 
-std::optional<std::string> crs_problem(const std::string& crs) {
-  const QuietGdal quiet;
-  return parse_crs(crs).problem;
-}
-
 void write_geopackage(const std::filesystem::path& path, const std::string& crs, const std::vector<GisBuilding>& buildings) {
   register_gdal_drivers();
   const QuietGdal quiet;
   const FixedDate date;
-  ParsedCrs parsed = parse_crs(crs);
+  OGRSpatialReference srs;
+  const std::optional<std::string> problem = read_metric_crs(crs, srs);
   auto refuse = [&](const std::string& why) { throw IoError("cannot write '" + path.string() + "': " + why, path.string()); };
-  if (parsed.problem) refuse(*parsed.problem);
+  if (problem) refuse(*problem);
 
   static std::atomic<std::uint64_t> serial{0};
   Writer w(path, "/vsimem/procex_" + std::to_string(++serial) + ".gpkg");
-  OGRLayer* shells = w.layer("buildings", parsed.srs, wkbMultiPolygon25D);
+  OGRLayer* shells = w.layer("buildings", srs, wkbMultiPolygon25D);
   std::set<std::string> used = {"fid", "geom", "building_id", "procex_ground", "procex_height", "procex_volume"};
   const std::vector<Column> columns = property_columns(buildings, used);
   add_field(w, shells, "building_id", OFTString);
@@ -192,7 +165,7 @@ void write_geopackage(const std::filesystem::path& path, const std::string& crs,
     add_field(w, shells, c.name, c.type == ColumnType::String ? OFTString : c.type == ColumnType::Real ? OFTReal : OFTInteger,
               c.type == ColumnType::Boolean ? OFSTBoolean : OFSTNone);
   for (const char* measure : {"procex_ground", "procex_height", "procex_volume"}) add_field(w, shells, measure, OFTReal);
-  OGRLayer* surfaces = w.layer("surfaces", parsed.srs, wkbPolygon25D);
+  OGRLayer* surfaces = w.layer("surfaces", srs, wkbPolygon25D);
   add_field(w, surfaces, "building_id", OFTString);
   add_field(w, surfaces, "tag", OFTString);
 

@@ -8,7 +8,10 @@
 #include <glm/geometric.hpp>
 
 #include "base/atomic_file_set.h"
+#include "core/io/cityjson_write.h"
 #include "core/io/geopackage_write.h"
+#include "core/io/output_crs.h"
+#include "core/io/gltf_crs.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_write.h"
 #include "core/mesh/material.h"
@@ -139,6 +142,7 @@ std::vector<GisBuilding> to_gis(const MeshSet& set) {
       b.properties = part.properties;
     }
     GisBuilding& b = out.back();
+    b.shells.push_back(b.faces.size());
     for (const auto f : part.mesh->faces()) {
       std::vector<glm::dvec3> pts = face_points(*part.mesh, f);
       for (std::size_t k = 1; k + 1 < pts.size(); ++k) b.volume += glm::dot(pts[0], glm::cross(pts[k], pts[k + 1])) / 6.0;
@@ -195,17 +199,32 @@ bool is_mesh_file(const std::filesystem::path& path) {
   return ext == ".obj" || ext == ".ply" || ext == ".glb";
 }
 
-bool is_gis_file(const std::filesystem::path& path) { return lower_extension(path) == ".gpkg"; }
+bool is_gis_file(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".gpkg" || ext == ".json";
+}
+
+std::optional<std::string> output_crs_problem(const std::filesystem::path& path, const std::string& crs) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".gpkg" || (ext == ".glb" && !crs.empty())) return crs_problem(crs);
+  if (ext == ".json") return cityjson_crs_problem(crs);
+  return std::nullopt;
+}
 
 const std::vector<std::string>& export_extensions() {
-  static const std::vector<std::string> extensions = {".glb", ".obj", ".ply", ".gpkg"};
+  static const std::vector<std::string> extensions = {".glb", ".obj", ".ply", ".gpkg", ".json"};
   return extensions;
 }
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options) {
   const std::string ext = lower_extension(path);
-  if (ext == ".glb") return write_glb(path, to_gltf(set));
+  if (ext == ".glb") {
+    GltfScene scene = to_gltf(set);
+    set_gltf_crs(scene, options.crs, path);
+    return write_glb(path, scene);
+  }
   if (ext == ".gpkg") return write_geopackage(path, options.crs, to_gis(set));
+  if (ext == ".json") return write_cityjson(path, options.crs, to_gis(set));
   MeshSet flat;
   for (const TaggedMesh& part : set.parts) flat.parts.push_back(flattened(part));
   if (ext == ".obj") return write_tagged_obj(path, flat, options.up);
@@ -214,7 +233,7 @@ void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const
     for (const TaggedMesh& part : flat.parts) named.push_back({part.building, part.mesh.get()});
     return write_ply(path, named, options.up);
   }
-  throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply, .glb or .gpkg)",
+  throw IoError("cannot write '" + path.string() + "': unknown mesh format '" + ext + "' (use .obj, .ply, .glb, .gpkg or .city.json)",
                 path.string());
 }
 

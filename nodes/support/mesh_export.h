@@ -2,16 +2,19 @@
 // .obj (one group per mesh, one material per face tag, with a .mtl beside it),
 // .ply (core's writer: source edges and face kinds, one group per mesh) or
 // .glb (one glTF mesh per building: consecutive parts with the same building
-// id and feature join; one primitive per tag; placed meshes instanced) or
+// id and feature join; one primitive per tag; placed meshes instanced; the
+// scene georeferenced in ExportOptions::crs if given: core/io/gltf_crs.h) or
 // .gpkg (core/io/geopackage_write.h: each building's shell and its faces in
 // ExportOptions::crs; placed meshes are left out, a GIS layer holds the
-// closed shells). OBJ
+// closed shells) or CityJSON, .json (core/io/cityjson_write.h; .city.json
+// is its usual name, likewise without placed meshes). OBJ
 // and PLY get placed meshes flattened into their part. glTF is +Y up; OBJ and
 // PLY +Y up unless ExportOptions::up says Z (core/io/up_axis.h). Atomic writes;
 // IoError naming the file on failure.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +27,7 @@ namespace procex {
 // How the files are written beyond their format.
 struct ExportOptions {
   UpAxis up = UpAxis::Y;  // OBJ and PLY (glTF is +Y up by its specification)
-  std::string crs;        // .gpkg: the footprints' CRS (core/io/geopackage_write.h)
+  std::string crs;        // .gpkg, .json and .glb: the footprints' CRS (output_crs_problem)
 };
 
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options = {});
@@ -39,9 +42,13 @@ GltfScene to_gltf(const MeshSet& set);
 TaggedMesh flattened(const TaggedMesh& part);
 
 // Whether the extension (case-insensitive) is a mesh format write_mesh_set
-// writes, or its GIS format (which needs ExportOptions::crs).
+// writes, or one of its GIS formats (which need ExportOptions::crs).
 bool is_mesh_file(const std::filesystem::path& path);
 bool is_gis_file(const std::filesystem::path& path);
+// Why `crs` cannot georeference a file of path's format, or nullopt: a
+// GeoPackage needs a projected CRS in metres, CityJSON one with an EPSG code,
+// a .glb given one a metric one; the other formats carry none.
+std::optional<std::string> output_crs_problem(const std::filesystem::path& path, const std::string& crs);
 // Every extension write_mesh_set writes, lower case with the dot, for a menu
 // or a file chooser: the mesh formats, then the GIS one.
 const std::vector<std::string>& export_extensions();

@@ -17,6 +17,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/batch_command.h"
+#include "app/cli/eval_command.h"
+#include "app/cli/merge_command.h"
 #include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
 #include "tests/app/command_test.h"
@@ -49,11 +51,13 @@ class GisInput : public test::CommandTest {
     run("ogr2ogr " + (dir_ / name).string() + " " + geojson.string());
     return dir_ / name;
   }
-  int batch(const fs::path& footprints, const std::string& crs, const std::string& name, const std::string& target = "") {
+  int batch(const fs::path& footprints, const std::string& crs, const std::string& name, const std::string& target = "",
+            const std::string& extension = ".gpkg", int shard = 0, int shards = 1) {
     BatchCommandOptions o;
     o.recipe = kRoot / "samples" / "city.pxg";
     o.footprints = footprints;
-    o.output = dir_ / (name + ".gpkg");
+    o.output = dir_ / (name + extension);
+    o.shard = shard, o.shards = shards;
     o.report = dir_ / (name + ".json");
     o.progress = false;
     o.export_options.crs = crs;
@@ -66,6 +70,13 @@ class GisInput : public test::CommandTest {
     const fs::path result = dir_ / (name + ".read.json");
     run(std::string(PROCEX_PYTHON) + " " + (kRoot / "tools" / "read_geopackage.py").string() + " " +
         (dir_ / (name + ".gpkg")).string() + " '" + crs + "' " + result.string());
+    return json::parse(test::read_text(result));
+  }
+  // The batch's .glb georeference as GDAL's Python bindings read it (tools/read_glb_georeference.py).
+  json read_glb_back(const std::string& name, const std::string& crs) {
+    const fs::path result = dir_ / (name + ".glb.json");
+    run(std::string(PROCEX_PYTHON) + " " + (kRoot / "tools" / "read_glb_georeference.py").string() + " " +
+        (dir_ / (name + ".glb")).string() + " '" + crs + "' " + result.string());
     return json::parse(test::read_text(result));
   }
   static std::map<std::string, json> by_id(const json& report) {
@@ -138,6 +149,68 @@ TEST_F(GisInput, TargetCrsBuildsInTheFrameAsked) {
   EXPECT_TRUE(read_back("shp", test::sample_block_crs())["layers"]["buildings"]["crs_same"]);
 }
 
+// A GIS user puts the .glb's buildings back on the Earth from its scene's CRS
+// and each node's origin alone: the lon/lat footprints' buildings (made in
+// the local frame) land where the metric sample's (made in its own CRS) do.
+TEST_F(GisInput, TheGlbCarriesItsCrsSoBuildingsGoBackWhereTheyWere) {
+  ASSERT_EQ(batch(kBlock, test::sample_block_crs(), "metric", "", ".glb"), 0) << err_.str();
+  const json metric = read_glb_back("metric", test::sample_block_crs());
+  EXPECT_TRUE(metric["crs_same"]) << metric["crs"];
+  const fs::path gpkg = lon_lat("block.gpkg");
+  ASSERT_EQ(batch(gpkg, "", "lonlat", "", ".glb"), 0) << err_.str();
+  const json lonlat = read_glb_back("lonlat", read_footprints(gpkg).crs);
+  EXPECT_TRUE(lonlat["crs_same"]) << lonlat["crs"];
+  EXPECT_TRUE(lonlat["projected_metres"]);
+  EXPECT_NE(lonlat["crs"].get<std::string>().find("procex local transverse Mercator"), std::string::npos);
+  ASSERT_EQ(lonlat["buildings"].size(), 18u);
+  ASSERT_EQ(metric["buildings"].size(), 18u);
+  for (const auto& [id, b] : lonlat["buildings"].items()) {
+    SCOPED_TRACE(id);
+    const json& m = metric["buildings"][id];
+    EXPECT_TRUE(b["origin_is_translation"]);
+    EXPECT_TRUE(m["origin_is_translation"]);
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(b["lonlat"][k].get<double>(), m["lonlat"][k].get<double>(), 1e-8);
+    for (const char* end : {"min", "max"}) EXPECT_NEAR(b[end][2].get<double>(), m[end][2].get<double>(), 1e-3);
+  }
+  // The CRS is in the scene's extras, which the Khronos validator accepts without a warning.
+  run("node " + (kRoot / "tools" / "validate_gltf.mjs").string() + " " + (dir_ / "lonlat.glb").string() + " | tee " +
+      (dir_ / "validated.json").string());
+  const json report = json::parse(test::read_text(dir_ / "validated.json"));
+  EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+}
+
+TEST_F(GisInput, TheGlbCrsRefusesDegreesAndSurvivesMerge) {
+  // A geographic CRS for metres is refused, naming it, before anything is made.
+  EvalCommandOptions eval;
+  eval.recipe = kRoot / "samples" / "house.pxg";
+  eval.output = dir_ / "degrees.glb";
+  eval.export_options.crs = "EPSG:4326";
+  ASSERT_EQ(run_eval(eval, out_, err_), 2);
+  EXPECT_NE(err_.str().find("'EPSG:4326' is geographic"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(eval.output));
+  eval.export_options.crs = "EPSG:32632";  // a house with no footprints stands at the CRS's origin
+  ASSERT_EQ(run_eval(eval, out_, err_), 0) << err_.str();
+  EXPECT_TRUE(read_glb_back("degrees", "EPSG:32632")["crs_same"]);
+  // Shards made in one CRS merge into the bytes a single run writes, CRS included.
+  const fs::path gpkg = lon_lat("block.gpkg");
+  ASSERT_EQ(batch(gpkg, "", "whole", "", ".glb"), 0) << err_.str();
+  ASSERT_EQ(batch(gpkg, "", "part0", "", ".glb", 0, 2), 0) << err_.str();
+  ASSERT_EQ(batch(gpkg, "", "part1", "", ".glb", 1, 2), 0) << err_.str();
+  MergeCommandOptions merge;
+  merge.parts = {dir_ / "part0.glb", dir_ / "part1.glb"};
+  merge.output = dir_ / "merged.glb";
+  ASSERT_EQ(run_merge(merge, out_, err_), 0) << err_.str();
+  EXPECT_EQ(test::read_text(dir_ / "merged.glb"), test::read_text(dir_ / "whole.glb"));
+  // Shards made in different CRSs are no one run.
+  ASSERT_EQ(batch(gpkg, "", "utm1", test::sample_block_crs(), ".glb", 1, 2), 0) << err_.str();
+  merge.parts = {dir_ / "part0.glb", dir_ / "utm1.glb"};
+  merge.output = dir_ / "mixed.glb";
+  EXPECT_EQ(run_merge(merge, out_, err_), 2);
+  EXPECT_NE(err_.str().find("CRS"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "mixed.glb"));
+}
+
 TEST_F(GisInput, LonLatThatDeclaresNoCrsIsRefusedNotTakenAsMetres) {
   const fs::path lonlat = lon_lat("block_lonlat.geojson");
   EXPECT_EQ(batch(lonlat, "", "refused"), 2);
@@ -187,6 +260,80 @@ TEST_F(GisInput, ABadFeatureIsReportedAndSkipped) {
   EXPECT_EQ(made.at("road")["status"], "refused");
   EXPECT_NE(made.at("road")["reason"].get<std::string>().find("layer 'mixed' (FID 2)"), std::string::npos);
   EXPECT_NE(made.at("road")["reason"].get<std::string>().find("'Line String' is not a Polygon"), std::string::npos);
+}
+
+// GDAL cuts a Shapefile's field names to 10 characters: the OSM building keys
+// come back under their own names, so they bind as from any other format.
+TEST_F(GisInput, ShapefileCutFieldNamesGetTheirKeysBack) {
+  const fs::path geojson = dir_ / "levels.geojson", shp = dir_ / "levels.shp";
+  std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": "a",
+      "building:levels": 3, "building:min_level": 1, "roof:height": 2.5, "roof:levels": 1, "roof:direction": 90,
+      "roof:orientation": "across", "roof:shape": "gabled", "height": 9, "colour": "red"},
+      "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [12, 0], [12, 8], [0, 8], [0, 0]]]}}]})";
+  run("ogr2ogr " + shp.string() + " " + geojson.string());
+  const std::string dbf = test::read_text(dir_ / "levels.dbf");
+  EXPECT_NE(dbf.find("building_l"), std::string::npos);  // what GDAL wrote: the cut name
+  const GeoJsonCollection read = read_footprints(shp);
+  ASSERT_EQ(read.features.size(), 1u);
+  const GeoJsonFeature& f = read.features[0];
+  EXPECT_EQ(f.property_number("building:levels"), 3.0);
+  EXPECT_EQ(f.property_number("building:min_level"), 1.0);
+  EXPECT_EQ(f.property_number("roof:height"), 2.5);
+  EXPECT_EQ(f.property_number("roof:levels"), 1.0);
+  EXPECT_EQ(f.property_number("roof:direction"), 90.0);
+  EXPECT_EQ(f.property_text("roof:orientation"), "across");
+  EXPECT_EQ(f.property_text("roof_shape"), "gabled");  // 10 characters: only ':' laundered, which binding reads as '_'
+  EXPECT_EQ(f.property_number("height"), 9.0);
+  EXPECT_EQ(f.property_text("colour"), "red");
+  EXPECT_FALSE(f.properties.count("building_l"));
+  // A GeoPackage keeps long names: a field that is named building_l there stays so.
+  const fs::path gpkg = dir_ / "cut.gpkg";
+  run("ogr2ogr " + gpkg.string() + " " + shp.string());
+  EXPECT_TRUE(read_footprints(gpkg).features.at(0).properties.count("building_l"));
+}
+
+TEST_F(GisInput, LayerChoosesAmongAGeoPackagesLayers) {
+  const fs::path gpkg = dir_ / "two.gpkg";
+  for (const char* name : {"roads", "houses"}) {
+    const fs::path geojson = dir_ / (std::string(name) + ".geojson");
+    std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": ")"
+                           << name << R"("}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [12, 0], [12, 8], [0, 8], [0, 0]]]}}]})";
+    run("ogr2ogr " + std::string(fs::exists(gpkg) ? "-update " : "") + "-a_srs EPSG:32632 -nln " + name + " " +
+        gpkg.string() + " " + geojson.string());
+  }
+  EXPECT_EQ(read_footprints(gpkg).features.at(0).id, "roads");  // the first, as before
+  FootprintReadOptions houses;
+  houses.layer = "houses";
+  EXPECT_EQ(read_footprints(gpkg, houses).features.at(0).id, "houses");
+  FootprintReadOptions missing;
+  missing.layer = "buildings";
+  try {
+    read_footprints(gpkg, missing);
+    ADD_FAILURE() << "read";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no layer 'buildings': its layers are 'roads', 'houses'"), std::string::npos)
+        << e.what();
+  }
+  // Through the CLI: batch --layer.
+  BatchCommandOptions o;
+  o.recipe = kRoot / "samples" / "city.pxg";
+  o.footprints = gpkg;
+  o.output = dir_ / "houses.gpkg";
+  o.report = dir_ / "houses.json";
+  o.progress = false;
+  o.layer = "houses";
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  EXPECT_TRUE(by_id(report("houses")).count("houses"));
+  o.layer = "nothing";
+  EXPECT_EQ(run_batch(o, out_, err_), 2);
+  EXPECT_NE(err_.str().find("its layers are 'roads', 'houses'"), std::string::npos) << err_.str();
+  // A GeoJSON file has one layer: a name for it is a mistake, said so.
+  try {
+    read_footprints(kBlock, houses);
+    ADD_FAILURE() << "read";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds one layer"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(GisInput, OsmBuildingsWithTheirTags) {

@@ -4,6 +4,9 @@
 
 #include <set>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -245,6 +248,56 @@ TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
   EXPECT_EQ(second.stats.computed(), 1u);
   EXPECT_EQ(second.output("footprint")->get<Footprint>().loops[0].points[1].x, 12.5);
   std::filesystem::remove_all(dir);
+}
+
+// A Shapefile is read again when its .dbf or .prj is edited, not only its .shp:
+// the feature asked for by id appears when the .dbf renames it, and a .prj in
+// feet makes a footprint a third the size (GDAL's ogr2ogr writes the files).
+TEST(FootprintGeoJson, AnEditedShapefileSidecarChangesTheHash) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "procex_shapefile_node_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "a");
+  fs::create_directories(dir / "b");
+  for (const char* id : {"a", "b"}) {
+    const fs::path geojson = dir / id / "plan.geojson";
+    std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": ")"
+                           << id << R"("}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[12,0],[12,8],[0,8],[0,0]]]}}]})";
+    const std::string command = "ogr2ogr -a_srs EPSG:32632 " + (dir / id / "plan.shp").string() + " " + geojson.string();
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  Graph g;
+  const NodeId n = g.add_node("Footprint GeoJSON").value();
+  ASSERT_TRUE(g.set_param(n, "file", Value::make(std::string("a/plan.shp"))));
+  ASSERT_TRUE(g.set_param(n, "id", Value::make(std::string("b"))));
+  ASSERT_TRUE(g.add_output({"footprint", &value_type<Footprint>(), ""}));
+  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  ResultCache cache(1 << 20);
+  Evaluator ev(cache, "nodes test");
+  EvalOptions options;
+  options.folder = dir;
+  EXPECT_FALSE(ev.evaluate(g, {}, {}, options).ok());  // a/plan.dbf names the feature "a"
+  // Only the .dbf changes (the same size: one letter for another), a minute later.
+  fs::copy_file(dir / "b" / "plan.dbf", dir / "a" / "plan.dbf", fs::copy_options::overwrite_existing);
+  fs::last_write_time(dir / "a" / "plan.dbf", fs::last_write_time(dir / "a" / "plan.shp") + std::chrono::minutes(1));
+  const EvalResult renamed = ev.evaluate(g, {}, {}, options);
+  ASSERT_TRUE(renamed.ok());
+  auto width = [](const EvalResult& r) {
+    double low = 1e300, high = -1e300;
+    for (const auto& p : r.output("footprint")->get<Footprint>().loops[0].points) low = std::min(low, p.x), high = std::max(high, p.x);
+    return high - low;
+  };
+  EXPECT_EQ(width(renamed), 12.0);
+  // Only the .prj changes: the same numbers are US survey feet now, projected to metres.
+  const std::string prj = "gdalsrsinfo --single-line -o wkt_esri EPSG:2263 > " + (dir / "a" / "plan.prj").string();
+  ASSERT_EQ(std::system(prj.c_str()), 0) << prj;
+  fs::last_write_time(dir / "a" / "plan.prj", fs::last_write_time(dir / "a" / "plan.shp") + std::chrono::minutes(2));
+  const EvalResult feet = ev.evaluate(g, {}, {}, options);
+  ASSERT_TRUE(feet.ok());
+  EXPECT_EQ(feet.stats.computed(), 1u);
+  // 12 US feet, give or take the Lambert projection's scale this far (300 km) from the zone's centre.
+  EXPECT_NEAR(width(feet), 12 * 0.3048006, 0.15);
+  fs::remove_all(dir);
 }
 
 TEST(Export, WritesTheMeshBesideTheRecipe) {

@@ -2,6 +2,7 @@
 (samples/expected/city.json), the same for any number of threads, progress
 reported, failures reported per building, and the GIL released."""
 import json
+import subprocess
 import sys
 import threading
 import time
@@ -135,3 +136,14 @@ def test_recipes_evaluate_concurrently_from_threads():
     for pitch, z in results:
         assert heights.setdefault(pitch, z) == z
     assert heights[25] > heights[30] > heights[35] > heights[40]  # pitch from the vertical: 25 is the steepest
+
+
+def test_any_footprint_file_procex_batch_reads(tmp_path):
+    # The sample block as a Shapefile and a GeoPackage, written by GDAL's ogr2ogr:
+    # the same buildings as from the GeoJSON.
+    want = {b.id: b.meshes[0].vertices.shape for b in procex.batch(city(), BLOCK)}
+    for name in ("block.shp", "block.gpkg"):
+        subprocess.run(["ogr2ogr", "-a_srs", "EPSG:32632", str(tmp_path / name), str(BLOCK)], check=True)  # metres, as the GeoJSON
+        buildings = procex.batch(city(), tmp_path / name)
+        assert all(b.status == "ok" for b in buildings), name
+        assert {b.id: b.meshes[0].vertices.shape for b in buildings} == want, name

@@ -34,6 +34,7 @@
 #include "app/studio/ui/recipe_panel.h"
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
+#include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_write.h"
 #include "graph/pxg.h"
@@ -60,6 +61,7 @@ const char* format_label(const std::string& extension) {
   if (extension == ".obj") return "OBJ + MTL (.obj)";
   if (extension == ".ply") return "PLY (.ply)";
   if (extension == ".gpkg") return "GeoPackage (.gpkg)";
+  if (extension == ".json") return "CityJSON (.json)";
   return extension.c_str();
 }
 
@@ -136,8 +138,10 @@ class App {
     if (!options_.ui_map.empty()) write_ui_map();
   }
 
-  // Files dropped onto the window: a recipe opens (after asking about unsaved
-  // changes); a GeoJSON's first feature becomes the preview's footprint.
+  // Files dropped onto the window: a .glb is viewed, a recipe opens (after
+  // asking about unsaved changes); any other file is read as footprints (core/io/footprint_read.h:
+  // GeoJSON, Shapefile, GeoPackage, FlatGeobuf, OSM), its first feature the
+  // preview's footprint.
   void open_dropped(const fs::path& file) {
     if (file.extension() == ".glb") {
       view_glb(file);
@@ -147,12 +151,8 @@ class App {
       confirm_discard([this, file] { load(file, true); });
       return;
     }
-    if (file.extension() != ".geojson" && file.extension() != ".json") {
-      status_ = file.string() + ": drop a recipe (.pxg) to open it, a .glb to view it, or footprints (.geojson) to preview the first";
-      return;
-    }
     try {
-      const GeoJsonCollection c = read_geojson_file(file);
+      const GeoJsonCollection c = read_footprints(file);
       if (c.features.empty()) {
         status_ = file.string() + ": no feature could be read" + (c.errors.empty() ? "" : " (" + c.errors.front().message + ")");
         return;
@@ -163,7 +163,7 @@ class App {
       submitted_ = 0;  // evaluate again with the new plan
       status_ = "footprint input: feature " + c.features.front().id + " of " + file.string();
     } catch (const std::exception& e) {
-      status_ = e.what();
+      status_ = std::string(e.what()) + " (drop a recipe (.pxg) to open it, a .glb to view it, or a footprint file to preview its first feature)";
     }
   }
 
@@ -671,7 +671,7 @@ class App {
   }
 
   // Under the export path: the format (it sets the path's extension), the up
-  // axis for OBJ and PLY, the CRS for a GeoPackage: procex eval's -o, --up and --crs.
+  // axis for OBJ and PLY, the CRS for GeoPackage, CityJSON and glTF: procex eval's -o, --up and --crs.
   void export_options() {
     const std::string now = fs::path(prompt_.path).extension().string();
     for (const std::string& ext : export_extensions()) {
@@ -690,7 +690,7 @@ class App {
       if (ImGui::RadioButton("+Z (GIS)", export_options_.up == UpAxis::Z)) export_options_.up = UpAxis::Z;
       record_button("export_up_z");
     }
-    if (now == ".gpkg") {
+    if (now == ".gpkg" || now == ".json" || now == ".glb") {  // the GIS formats; a .glb's is optional
       ImGui::SetNextItemWidth(260);
       ImGui::InputTextWithHint("CRS", "EPSG:32632 (projected, in metres)", &export_options_.crs);
       record_button("export_crs");

@@ -479,6 +479,15 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   EXPECT_EQ(map["errors"], 0);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "the preview's plan is not an edit of the recipe";
 
+  // Any footprint file procex batch reads: the same plots as a Shapefile (GDAL's ogr2ogr).
+  const fs::path shapefile = dir / "plots.shp";
+  ASSERT_EQ(std::system(("ogr2ogr -a_srs EPSG:32632 " + shapefile.string() + " " + footprints.string()).c_str()), 0);
+  drop_file(map, shapefile);
+  map = studio.wait("the dropped Shapefile evaluated", [&](const json& j) {
+    return j["settled"] && j["preview_footprint"] == shapefile.string() + "#plot-7" && j["preview_faces"] > rectangle;
+  });
+  EXPECT_EQ(map["errors"], 0);
+
   drop_file(map, dir / "notes.txt");
   map = studio.wait("the refusal", [](const json& j) { return j["status"].get<std::string>().find("drop a recipe (.pxg)") != std::string::npos; });
 
