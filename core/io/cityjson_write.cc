@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/atomic_write.h"
+#include "core/geom/polygon3.h"
 #include "core/io/io_error.h"
 #include "core/io/output_crs.h"
 
@@ -24,22 +25,12 @@ const double kWallSlope = std::sin(10.0 * M_PI / 180.0);
 // A down-facing face this close to the building's lowest point is on the ground.
 constexpr double kGroundTolerance = 1e-6;
 
-glm::dvec3 face_normal(const std::vector<glm::dvec3>& face) {  // Newell's, unnormalised
-  glm::dvec3 n(0.0);
-  for (std::size_t i = 0; i < face.size(); ++i) {
-    const glm::dvec3& a = face[i];
-    const glm::dvec3& b = face[(i + 1) % face.size()];
-    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-  }
-  return n;
-}
-
 bool on_ground(const std::vector<glm::dvec3>& face, double ground) {
   return std::all_of(face.begin(), face.end(), [&](const glm::dvec3& p) { return p.z <= ground + kGroundTolerance; });
 }
 
 const char* semantic_type(const std::vector<glm::dvec3>& face, const std::string& tag, double ground) {
-  const glm::dvec3 n = face_normal(face);
+  const glm::dvec3 n = newell_normal(face);
   const double length = glm::length(n);
   const double up = length > 0 ? n.z / length : 0.0;
   if (up < -kWallSlope) return on_ground(face, ground) ? "GroundSurface" : "OuterCeilingSurface";
@@ -52,7 +43,7 @@ const char* semantic_type(const std::vector<glm::dvec3>& face, const std::string
 class Vertices {
  public:
   explicit Vertices(const glm::dvec3& translate) : translate_(translate) {}
-  // The index of p, or -1 if the quantised point repeats the ring's previous one.
+  // The index of p once quantised (equal quantised points share one).
   std::int64_t add(const glm::dvec3& p) {
     const auto q = std::make_tuple(std::llround((p.x - translate_.x) / kScale), std::llround((p.y - translate_.y) / kScale),
                                    std::llround((p.z - translate_.z) / kScale));
@@ -148,7 +139,7 @@ json lod1(const GisBuilding& b, double ground, Vertices& vertices) {
     std::vector<const std::vector<glm::dvec3>*> base;
     for (std::size_t f = begin; f < end; ++f) {
       for (const glm::dvec3& p : b.faces[f]) top = std::max(top, p.z);
-      if (on_ground(b.faces[f], ground) && face_normal(b.faces[f]).z < 0) base.push_back(&b.faces[f]);
+      if (on_ground(b.faces[f], ground) && newell_normal(b.faces[f]).z < 0) base.push_back(&b.faces[f]);
     }
     if (base.empty()) continue;
     std::map<std::pair<std::tuple<double, double>, std::tuple<double, double>>, int> edges;  // directed, plan only

@@ -103,7 +103,7 @@ TEST_F(GltfExport, EverySampleValidatesWithoutErrors) {
   for (const char* name : {"house", "gallery_courtyard", "gallery_tower"}) {
     const fs::path out = dir_ / (std::string(name) + ".glb");
     std::ostringstream o, e;
-    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
     files.push_back(out);
   }
   for (const fs::path& f : files) {
