@@ -82,7 +82,7 @@ class GltfExport : public ::testing::Test {
     fs::create_directories(dir_ / "out");
     const fs::path output = dir_ / "out" / ("house" + extension);
     std::ostringstream o, e;
-    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
     return output;
   }
   json node_json(const char* script, const fs::path& glb, int want_code) {
