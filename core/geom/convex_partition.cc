@@ -1,6 +1,7 @@
 #include "core/geom/convex_partition.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -10,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/predicates.h"
+#include "core/geom/tolerances.h"
 
 namespace procex {
 
@@ -35,6 +37,18 @@ int turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
 }
 
 bool convex_turn(int t) { return t == 0 || t == 1; }
+
+// Whether a piece may turn at b: left, straight on, or right by no more than
+// kStraightTurnSine. A straight vertex of a rotated plan is off its line by
+// the rounding of its coordinates; the ear clipper may cut an ear of no area
+// there, and only a merge that takes such a vertex as straight removes it.
+bool convex_up_to_rounding(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const int t = turn(a, b, c);
+  if (convex_turn(t)) return true;
+  const glm::dvec2 u = b - a, w = c - b;
+  return t == -1 && glm::dot(u, w) > 0.0 &&
+         -(u.x * w.y - u.y * w.x) <= kStraightTurnSine * glm::length(u) * glm::length(w);
+}
 
 class Partitioner {
  public:
@@ -339,7 +353,7 @@ class Partitioner {
     for (std::size_t k : {at_a, at_b}) {
       const glm::dvec2& prev = points_[merged[(k + n - 1) % n]];
       const glm::dvec2& next = points_[merged[(k + 1) % n]];
-      if (!convex_turn(turn(prev, points_[merged[k]], next))) return false;
+      if (!convex_up_to_rounding(prev, points_[merged[k]], next)) return false;
     }
     std::vector<Index> sorted = merged;
     std::sort(sorted.begin(), sorted.end());
@@ -364,7 +378,7 @@ bool is_convex(const std::vector<glm::dvec2>& loop) {
   const std::size_t n = loop.size();
   if (n < 3) return false;
   for (std::size_t k = 0; k < n; ++k)
-    if (!convex_turn(turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]))) return false;
+    if (!convex_up_to_rounding(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n])) return false;
   return true;
 }
 

@@ -14,15 +14,17 @@ namespace procex {
 // loops[0] is the outer boundary, counter-clockwise; loops[1..] are holes,
 // clockwise, inside it. A vertex is named by its position in the
 // concatenation of the loops (loop 0's vertices first). Each piece is
-// counter-clockwise; straight (collinear) vertices stay in the pieces, so
-// neighbouring faces still share them. Best effort on invalid input
+// counter-clockwise and convex as is_convex() says; straight (collinear)
+// vertices stay in the pieces, so neighbouring faces still share them. Best effort on invalid input
 // (self-intersecting loops, holes outside): always terminates, every vertex
 // of the input is used, but pieces may then overlap.
 // Throws std::invalid_argument if a hole cannot be bridged (it is not inside the outer loop).
 std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops);
 
 // Whether a single loop (counter-clockwise) is convex: no clockwise turn and
-// no reversal; straight vertices allowed.
+// no reversal; straight vertices allowed, and so are vertices that turn
+// clockwise by no more than kStraightTurnSine (straight up to the rounding of
+// a rotated plan's coordinates), as in the pieces convex_partition returns.
 bool is_convex(const std::vector<glm::dvec2>& loop);
 
 }  // namespace procex

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -81,6 +82,37 @@ TEST(ConvexPartition, RegularPolygonWithRegularHole) {
     hole.push_back({30 * std::cos(-t), 30 * std::sin(-t)});
   }
   expect_partition({outer, hole}, 128);
+}
+
+// A rotated grid plan: its straight vertices are off their lines by the
+// rounding of the rotation, and an ear cut at one would be a triangle of no
+// area (a face the validator cannot give a plane). Every piece must have an
+// area the size of the plan's cells.
+TEST(ConvexPartition, NoEarAtAVertexStraightUpToRounding) {
+  // A comb of four unit teeth on a unit base, with a vertex at every unit
+  // along its edges.
+  std::vector<glm::dvec2> grid;
+  for (int x = 0; x <= 8; ++x) grid.push_back({x, 0});
+  grid.push_back({8, 1});
+  for (int x = 8; x > 0; x -= 2) {
+    grid.push_back({x, 2});
+    grid.push_back({x - 1, 2});
+    grid.push_back({x - 1, 1});
+    grid.push_back({x - 2, 1});
+  }
+  for (double degrees : {30.0, 45.0, 60.0, 68.352018}) {
+    const double c = std::cos(degrees * std::numbers::pi / 180), s = std::sin(degrees * std::numbers::pi / 180);
+    std::vector<glm::dvec2> loop;
+    for (const glm::dvec2& p : grid) loop.push_back({1000 + c * p.x - s * p.y, -2000 + s * p.x + c * p.y});
+    SCOPED_TRACE(degrees);
+    expect_partition({loop}, loop.size());
+    const std::vector<glm::dvec2> pts = flatten({loop});
+    for (const auto& piece : convex_partition({loop})) {
+      std::vector<glm::dvec2> poly;
+      for (auto v : piece) poly.push_back(pts[v]);
+      EXPECT_GT(0.5 * twice_signed_area(poly), 0.25) << ::testing::PrintToString(piece);
+    }
+  }
 }
 
 TEST(ConvexPartition, HoleOutsideIsRefused) {

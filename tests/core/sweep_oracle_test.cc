@@ -110,6 +110,33 @@ TEST(CgalOracle, ComparisonNoticesAWrongRoof) {
   EXPECT_FALSE(compare_with_cgal(rect, renamed).empty());
 }
 
+// CGAL builds the skeleton of a plan far from the origin differently from
+// the skeleton of the same plan at the origin (nodes metres apart at a
+// rotated grid plan's coincident events, even with exact constructions), so
+// the oracle moves the plan near the origin first. Moving it back must give
+// the same nodes, and the same pairs of edges meeting, wherever it stands.
+TEST(CgalOracle, APlanGivesTheSameSkeletonWhereverItStands) {
+  // A rotated polyomino outline at (1e9, -1e9) (generated grid seed 9, minimised).
+  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/generated_grid_9_far.geojson");
+  ASSERT_EQ(read.features.size(), 1u);
+  const Footprint far = prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+  // The same plan near the origin: the move is exact (Sterbenz), so this is
+  // the plan itself, not a neighbour.
+  const glm::dvec2 by{999999980.0, -1e9};
+  Footprint here = far;
+  for (Loop& loop : here.loops)
+    for (glm::dvec2& p : loop.points) p -= by;
+  const CgalSkeleton there = CgalSkeletonInput(far).skeleton(1e-6);
+  const CgalSkeleton exact = CgalSkeletonInput(here).skeleton(1e-6);
+  ASSERT_EQ(there.nodes.size(), exact.nodes.size());
+  EXPECT_EQ(there.adjacent_edges, exact.adjacent_edges);
+  for (const glm::dvec3& n : exact.nodes) {
+    double nearest = 1e300;
+    for (const glm::dvec3& m : there.nodes) nearest = std::min(nearest, glm::distance(n + glm::dvec3(by, 0.0), m));
+    EXPECT_LT(nearest, 1e-5) << "node (" << n.x << ", " << n.y << ", " << n.z << ")";
+  }
+}
+
 // Events that coincide exactly (here two reflex corners meeting head-on while
 // two collinear edges' coplanar faces close a third): CGAL and the sweep put
 // the seam between the coplanar faces in different places, so nodes and

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
+
+#include <glm/common.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -48,6 +51,32 @@ bool loop_inside(const Loop& inner, const Loop& outer) {
   std::size_t inside = 0;
   for (const glm::dvec2& p : inner.points) inside += point_in_loop(outer, p) ? 1 : 0;
   return 2 * inside > inner.points.size();
+}
+
+// CGAL is given the footprint moved near the origin and its nodes are moved
+// back: far from the origin (x = 1e9) even its exact-construction kernel
+// builds a skeleton that differs from the one of the same plan at the origin
+// (nodes metres apart where events coincide). The shift is a multiple of a
+// power of two at least the footprint's extent, so subtracting it from a
+// coordinate is exact and the plan CGAL sees is the plan it was given.
+glm::dvec2 exact_origin(const Footprint& fp) {
+  glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+  for (const Loop& loop : fp.loops)
+    for (const glm::dvec2& p : loop.points) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(extent > 0.0) || !std::isfinite(extent)) return {0.0, 0.0};
+  const double step = std::exp2(std::ceil(std::log2(extent)));
+  const glm::dvec2 centre = 0.5 * lo + 0.5 * hi;
+  return {std::round(centre.x / step) * step, std::round(centre.y / step) * step};
+}
+
+Footprint shifted(Footprint fp, glm::dvec2 origin) {
+  for (Loop& loop : fp.loops)
+    for (glm::dvec2& p : loop.points) p -= origin;
+  return fp;
 }
 
 std::vector<PolygonWithHoles> split_by_nesting(const Footprint& fp) {
@@ -99,21 +128,25 @@ void for_each_skeleton(const std::vector<PolygonWithHoles>& polygons, Visit&& vi
   }
 }
 
-template <class Vertex>
-glm::dvec3 node(const Vertex& v) {
-  return {CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()), CGAL::to_double(v->time())};
-}
-
 }  // namespace
 
 struct CgalSkeletonInput::Impl {
+  glm::dvec2 origin;  // subtracted from the footprint (exact_origin)
   std::vector<PolygonWithHoles> polygons;
-  std::map<EdgeKey, std::int32_t> edge_ids;
+  std::map<EdgeKey, std::int32_t> edge_ids;  // by the shifted end points
+
+  template <class Vertex>
+  glm::dvec3 node(const Vertex& v) const {
+    return {CGAL::to_double(v->point().x()) + origin.x, CGAL::to_double(v->point().y()) + origin.y,
+            CGAL::to_double(v->time())};
+  }
 };
 
-CgalSkeletonInput::CgalSkeletonInput(const Footprint& footprint)
-    : impl_(std::make_unique<Impl>(Impl{split_by_nesting(footprint), {}})) {
-  for (const Loop& loop : footprint.loops)
+CgalSkeletonInput::CgalSkeletonInput(const Footprint& footprint) : impl_(std::make_unique<Impl>()) {
+  impl_->origin = exact_origin(footprint);
+  const Footprint local = shifted(footprint, impl_->origin);
+  impl_->polygons = split_by_nesting(local);
+  for (const Loop& loop : local.loops)
     for (std::size_t i = 0; i < loop.points.size(); ++i)
       impl_->edge_ids[edge_key(loop.points[i], loop.points[(i + 1) % loop.points.size()])] = loop.edges[i].id;
 }
@@ -137,19 +170,20 @@ CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge) const {
   for (const auto& [key, id] : impl_->edge_ids) faces[id] = 0;
   for_each_skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(impl_->polygons, [&](const auto& ss) {
     for (auto v = ss.vertices_begin(); v != ss.vertices_end(); ++v)
-      if (v->is_skeleton()) out.nodes.push_back(node(v));
+      if (v->is_skeleton()) out.nodes.push_back(impl_->node(v));
     // A skeleton face's own halfedge is its contour edge.
     const auto face_edge = [&](const auto& face) {
       const auto h = face->halfedge();
-      const glm::dvec3 a = node(h->vertex()), b = node(h->opposite()->vertex());
-      const auto it = impl_->edge_ids.find(edge_key({a.x, a.y}, {b.x, b.y}));
+      const auto a = h->vertex()->point(), b = h->opposite()->vertex()->point();
+      const auto it = impl_->edge_ids.find(
+          edge_key({CGAL::to_double(a.x()), CGAL::to_double(a.y())}, {CGAL::to_double(b.x()), CGAL::to_double(b.y())}));
       if (it == impl_->edge_ids.end()) throw std::runtime_error("cgal_skeleton: a contour edge is not a footprint edge");
       return it->second;
     };
     for (auto f = ss.faces_begin(); f != ss.faces_end(); ++f) ++faces[face_edge(f)];
     for (auto h = ss.halfedges_begin(); h != ss.halfedges_end(); ++h) {
       if (!h->is_bisector() || h->face() == nullptr || h->opposite()->face() == nullptr) continue;
-      const glm::dvec3 d = node(h->vertex()) - node(h->opposite()->vertex());
+      const glm::dvec3 d = impl_->node(h->vertex()) - impl_->node(h->opposite()->vertex());
       if (std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) <= min_ridge) continue;
       const std::int32_t i = face_edge(h->face()), j = face_edge(h->opposite()->face());
       if (i != j) adjacent.insert({std::min(i, j), std::max(i, j)});
