@@ -221,6 +221,20 @@ TEST(FootprintGeoJson, ReadsOneFeatureByIdOrIndex) {
   EXPECT_NE(no_file.messages().find("nowhere.geojson"), std::string::npos) << no_file.messages();
 }
 
+// A graph whose one output is a Footprint GeoJSON node reading `file` (and
+// the feature `id` when not empty).
+Graph footprint_file_graph(const std::string& file, const std::string& id) {
+  Graph g;
+  const NodeId n = g.add_node("Footprint GeoJSON").value();
+  EXPECT_TRUE(g.set_param(n, "file", Value::make(file)));
+  if (!id.empty()) {
+    EXPECT_TRUE(g.set_param(n, "id", Value::make(id)));
+  }
+  EXPECT_TRUE(g.add_output({"footprint", &value_type<Footprint>(), ""}));
+  EXPECT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  return g;
+}
+
 // An edited GeoJSON file is read again: its size and time are in the node's cache key.
 TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
   const auto dir = std::filesystem::temp_directory_path() / "procex_geojson_node_test";
@@ -229,11 +243,7 @@ TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
     std::ofstream(dir / "plan.geojson") << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
       "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[)" << x << R"(,0],[10,8],[0,8],[0,0]]]}}]})";
   };
-  Graph g;
-  const NodeId n = g.add_node("Footprint GeoJSON").value();
-  ASSERT_TRUE(g.set_param(n, "file", Value::make(std::string("plan.geojson"))));
-  ASSERT_TRUE(g.add_output({"footprint", &value_type<Footprint>(), ""}));
-  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  const Graph g = footprint_file_graph("plan.geojson", "");
   ResultCache cache(1 << 20);
   Evaluator ev(cache, "nodes test");
   EvalOptions options;
@@ -266,12 +276,7 @@ TEST(FootprintGeoJson, AnEditedShapefileSidecarChangesTheHash) {
     const std::string command = "ogr2ogr -a_srs EPSG:32632 " + (dir / id / "plan.shp").string() + " " + geojson.string();
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
   }
-  Graph g;
-  const NodeId n = g.add_node("Footprint GeoJSON").value();
-  ASSERT_TRUE(g.set_param(n, "file", Value::make(std::string("a/plan.shp"))));
-  ASSERT_TRUE(g.set_param(n, "id", Value::make(std::string("b"))));
-  ASSERT_TRUE(g.add_output({"footprint", &value_type<Footprint>(), ""}));
-  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  const Graph g = footprint_file_graph("a/plan.shp", "b");
   ResultCache cache(1 << 20);
   Evaluator ev(cache, "nodes test");
   EvalOptions options;
