@@ -112,9 +112,16 @@ TEST_F(CityJsonExport, EveryBuildingLoadsWithSemanticSurfacesWhereTheReportPutsI
     for (const char* type : {"RoofSurface", "WallSurface", "GroundSurface"})
       EXPECT_GT(lod1["area"].value(type, 0.0), 1.0) << type << ": " << lod1["area"].dump();
   }
-  // The features' properties are the buildings' attributes.
-  for (const json& f : json::parse(test::read_text(test::kSampleBlock))["features"])
-    EXPECT_EQ(file["CityObjects"][f["id"].get<std::string>()]["attributes"], f["properties"]) << f["id"];
+  // The features' properties are the buildings' attributes, with the party
+  // edges batch found for city.pxg's party_edges input. Kept in a name: a
+  // range-for over a member of a temporary read freed memory (ASan).
+  const json block = json::parse(test::read_text(test::kSampleBlock));
+  for (const json& f : block["features"]) {
+    json attributes = file["CityObjects"][f["id"].get<std::string>()]["attributes"];
+    EXPECT_TRUE(attributes["party_edges"].is_array()) << f["id"];
+    attributes.erase("party_edges");
+    EXPECT_EQ(attributes, f["properties"]) << f["id"];
+  }
 }
 
 TEST_F(CityJsonExport, ACrsWithNoEpsgCodeIsRefusedNamingTargetCrs) {
