@@ -231,7 +231,7 @@ Surface build_surface(const State& st) {
   return s;
 }
 
-void check_closed(const Surface& surface) {
+void close_surface(Surface& surface) {
   auto at = [&](std::uint32_t v) {
     const glm::dvec3 p = surface.vertices[v];
     std::ostringstream out;
@@ -242,7 +242,7 @@ void check_closed(const Surface& surface) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };
   // Each half-edge v -> to, with the vertex before v in its loop, grouped by
-  // v and sorted by `to` (then by when it was given).
+  // v and sorted by `to` (then by when it was given: `slot` finds v in its loop).
   struct Leaving {
     std::uint32_t to, before, given;
     bool operator<(const Leaving& o) const { return to != o.to ? to < o.to : given < o.given; }
@@ -254,13 +254,16 @@ void check_closed(const Surface& surface) {
       for (std::uint32_t v : loop) ++first[v + 1];
   for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
   std::vector<Leaving> leaving(first[n]);
+  std::vector<std::uint32_t*> slot(first[n]);
   {
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
     std::uint32_t given = 0;
-    for (const SurfaceFace& f : surface.faces)
-      for (const auto& loop : f.loops)
-        for (std::size_t i = 0; i < loop.size(); ++i)
+    for (SurfaceFace& f : surface.faces)
+      for (auto& loop : f.loops)
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          slot[given] = &loop[i];
           leaving[fill[loop[i]]++] = {loop[(i + 1) % loop.size()], loop[(i + loop.size() - 1) % loop.size()], given++};
+        }
   }
   auto from = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v]); };
   auto to = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v + 1]); };
@@ -278,19 +281,27 @@ void check_closed(const Surface& surface) {
   for (std::uint32_t v = 0; v < n; ++v)
     for (auto it = from(v); it != to(v); ++it)
       if (find(it->to, v) == to(it->to)) fail(v, "no face runs back along its edge to " + at(it->to));
-  // Round a vertex, the faces must form one fan: from v -> a, the face on
-  // its right holds v -> b, where b comes before v in the loop of v -> a.
+  // Round a vertex the faces form fans: from v -> a, the face on its right
+  // holds v -> b, where b comes before v in the loop of v -> a. Where a
+  // step's plan touches the plan below, or itself, only at a point (a ledge
+  // as deep as the wing it is on), the solid is two parts pinched together
+  // there and the vertex has a fan for each. The surface stays a closed
+  // 2-manifold (and the solid the same point set) when every fan after the
+  // first (the one holding v's lowest `to`) has a copy of v of its own.
+  std::vector<char> in_fan(leaving.size(), 0);
   for (std::uint32_t v = 0; v < n; ++v) {
-    const std::uint32_t count = first[v + 1] - first[v];
-    if (count == 0) continue;
-    std::uint32_t fan = 0;
-    const std::uint32_t start = from(v)->to;
-    std::uint32_t a = start;
-    do {
-      ++fan;
-      a = find(v, a)->before;
-    } while (a != start && fan <= count);
-    if (fan != count) fail(v, "the faces round it form more than one fan");
+    for (auto start = from(v); start != to(v); ++start) {
+      if (in_fan[start - leaving.begin()]) continue;
+      const bool copy = start != from(v);
+      const std::uint32_t id = copy ? static_cast<std::uint32_t>(surface.vertices.size()) : v;
+      if (copy) surface.vertices.push_back(surface.vertices[v]);
+      auto it = start;
+      do {
+        in_fan[it - leaving.begin()] = 1;
+        *slot[it->given] = id;
+        it = find(v, it->before);
+      } while (!in_fan[it - leaving.begin()]);
+    }
   }
 }
 

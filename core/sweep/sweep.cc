@@ -147,7 +147,7 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
     engine::cap_at(st, std::max(st.height, *options.max_height));
   }
   Surface surface = engine::build_surface(st);
-  engine::check_closed(surface);
+  engine::close_surface(surface);
   surface.anchors = anchors.finish();
   surface.plan_edits = plan_edits.finish();
   return surface;
