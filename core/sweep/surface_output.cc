@@ -163,12 +163,56 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
   }
 }
 
+// A loop of no area is the face of a plane that was made and eaten at one
+// height (an edge between straight-on neighbours, stepping or turning
+// differently, that the rule for straight runs gives to its neighbour): its
+// vertices run along one line and back. Dropped, it leaves its other sides
+// without its vertices: the faces of the old cross-section end at a vertex
+// in the middle of the new face's edge along that line. The rule: each half-
+// edge running back along a sliver's edge passes the sliver's vertices that
+// lie inside that edge, so every edge meets its reverse vertex to vertex.
+void pass_slivers(const State& st, const std::vector<std::vector<std::uint32_t>>& slivers, Surface& s) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> passes;  // half-edge -> vertices inside it
+  const double near = st.tol().position();
+  for (const auto& loop : slivers)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+      const glm::dvec3 pa = st.vertices[a], along = st.vertices[b] - pa;
+      const double length = glm::length(along);
+      if (!(length > near)) continue;
+      // Inside b -> a, in order from b.
+      std::vector<std::pair<double, std::uint32_t>> inside_edge;
+      for (std::uint32_t v : loop) {
+        const glm::dvec3 d = st.vertices[v] - pa;
+        const double t = glm::dot(d, along) / length;
+        if (t > near && t < length - near && glm::length(d - along * (t / length)) <= near)
+          inside_edge.push_back({-t, v});
+      }
+      if (inside_edge.empty()) continue;
+      std::sort(inside_edge.begin(), inside_edge.end());
+      auto& pass = passes[{b, a}];
+      for (const auto& [t, v] : inside_edge) pass.push_back(v);
+    }
+  if (passes.empty()) return;
+  for (SurfaceFace& f : s.faces)
+    for (auto& loop : f.loops) {
+      std::vector<std::uint32_t> out;
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        out.push_back(loop[i]);
+        const auto pass = passes.find({loop[i], loop[(i + 1) % loop.size()]});
+        if (pass != passes.end()) out.insert(out.end(), pass->second.begin(), pass->second.end());
+      }
+      loop = std::move(out);
+    }
+}
+
 }  // namespace
 
 Surface build_surface(const State& st) {
   Surface s;
   s.faces.reserve(st.faces.size() + st.faces.size() / 4);
   ChainScratch x;
+  std::vector<std::vector<std::uint32_t>> slivers;
   for (const FaceGroup& f : st.faces) {
     const FaceFrame fr = frame_of(f);
     chain_loops(st, f, x);
@@ -206,11 +250,13 @@ Surface build_surface(const State& st) {
       }
       if (best < 0) {
         // A clockwise loop with nothing around it: a sliver of no area.
+        slivers.push_back(std::move(x.loops[hole]));
         continue;
       }
       s.faces[first_face + static_cast<std::size_t>(best)].loops.push_back(std::move(x.loops[hole]));
     }
   }
+  pass_slivers(st, slivers, s);
   // Vertices no face uses (a plan edit's sliver absorbed by the face it grew
   // into, loops of no area) are left out, the rest keep their order.
   constexpr std::uint32_t kUnused = UINT32_MAX;
