@@ -75,30 +75,50 @@ void forget(const std::filesystem::path& temp) {
 
 // Writes every piece, syncs and closes; throws after removing temp on failure.
 void write_all(int fd, const std::filesystem::path& path, const std::filesystem::path& temp,
-               std::span<const std::string_view> pieces) {
+               std::span<const FilePiece> pieces) {
   auto give_up = [&](const std::string& what, int error) {
     ::close(fd);
     ::unlink(temp.c_str());
     forget(temp);
     fail(path, what, error);
   };
-  // Up to IOV_MAX pieces per writev; a short write resumes inside its piece.
+  // Bytes in memory up to IOV_MAX pieces per writev; a short write resumes inside its piece.
   std::vector<iovec> iov;
-  for (std::string_view piece : pieces)
-    if (!piece.empty()) iov.push_back({const_cast<char*>(piece.data()), piece.size()});
-  for (std::size_t first = 0; first < iov.size();) {
-    const int count = static_cast<int>(std::min<std::size_t>(iov.size() - first, IOV_MAX));
-    const ssize_t n = ::writev(fd, iov.data() + first, count);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) give_up("write failed", n < 0 ? errno : EIO);  // 0 for a non-empty request would loop forever
-    for (auto done = static_cast<std::size_t>(n); done > 0;) {
-      const std::size_t step = std::min(done, iov[first].iov_len);
-      iov[first].iov_base = static_cast<char*>(iov[first].iov_base) + step;
-      iov[first].iov_len -= step;
-      done -= step;
-      if (iov[first].iov_len == 0) ++first;
+  const auto write_iov = [&] {
+    for (std::size_t first = 0; first < iov.size();) {
+      const int count = static_cast<int>(std::min<std::size_t>(iov.size() - first, IOV_MAX));
+      const ssize_t n = ::writev(fd, iov.data() + first, count);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) give_up("write failed", n < 0 ? errno : EIO);  // 0 for a non-empty request would loop forever
+      for (auto done = static_cast<std::size_t>(n); done > 0;) {
+        const std::size_t step = std::min(done, iov[first].iov_len);
+        iov[first].iov_base = static_cast<char*>(iov[first].iov_base) + step;
+        iov[first].iov_len -= step;
+        done -= step;
+        if (iov[first].iov_len == 0) ++first;
+      }
+    }
+    iov.clear();
+  };
+  for (const FilePiece& piece : pieces) {
+    if (!piece.spool) {
+      if (!piece.bytes.empty()) iov.push_back({const_cast<char*>(piece.bytes.data()), piece.bytes.size()});
+      continue;
+    }
+    write_iov();
+    try {
+      piece.spool->read([&](std::string_view chunk) {
+        iov.push_back({const_cast<char*>(chunk.data()), chunk.size()});
+        write_iov();
+      });
+    } catch (const IoError& e) {
+      ::close(fd);
+      ::unlink(temp.c_str());
+      forget(temp);
+      throw IoError("cannot write '" + path.string() + "': " + e.what(), path.string());
     }
   }
+  write_iov();
   // On disk before the rename makes it the file: a crash then leaves the old
   // file or the new one, never an empty one.
   if (::fsync(fd) != 0) give_up("sync failed", errno);
@@ -132,6 +152,13 @@ void AtomicFileSet::add(const std::filesystem::path& path, std::string_view cont
 }
 
 void AtomicFileSet::add(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
+  std::vector<FilePiece> all;
+  all.reserve(pieces.size());
+  for (std::string_view piece : pieces) all.push_back({piece});
+  add(path, all);
+}
+
+void AtomicFileSet::add(const std::filesystem::path& path, std::span<const FilePiece> pieces) {
   // Unique per process and call, so concurrent writers never share a temp file.
   static std::atomic<unsigned> counter{0};
   std::filesystem::path temp = path;

@@ -13,8 +13,16 @@
 #include <vector>
 
 #include "base/io_error.h"
+#include "base/spool_file.h"
 
 namespace procex {
+
+// A piece of a file being written: bytes in memory, or all a spool holds
+// (copied from its file, never read into memory whole).
+struct FilePiece {
+  std::string_view bytes;
+  const SpoolFile* spool = nullptr;
+};
 
 class AtomicFileSet {
  public:
@@ -29,6 +37,7 @@ class AtomicFileSet {
   // the system's reason (nothing of this set is then left behind by the
   // destructor).
   void add(const std::filesystem::path& path, std::span<const std::string_view> pieces);
+  void add(const std::filesystem::path& path, std::span<const FilePiece> pieces);
   void add(const std::filesystem::path& path, std::string_view contents);
   // Renames every file into place, in the order added. Throws IoError if a
   // rename fails (the files renamed before it stay).

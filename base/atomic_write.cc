@@ -14,4 +14,10 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
   file.commit();
 }
 
+void write_file_atomically(const std::filesystem::path& path, std::span<const FilePiece> pieces) {
+  AtomicFileSet file;
+  file.add(path, pieces);
+  file.commit();
+}
+
 }  // namespace procex

@@ -8,6 +8,7 @@
 #include <span>
 #include <string_view>
 
+#include "base/atomic_file_set.h"
 #include "base/io_error.h"
 
 namespace procex {
@@ -18,5 +19,6 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 // The same for a file made of pieces, written in order without joining them
 // first (a .glb's binary chunk straight from each building's arrays).
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> pieces);
+void write_file_atomically(const std::filesystem::path& path, std::span<const FilePiece> pieces);
 
 }  // namespace procex

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cstdio>
 #include <chrono>
 #include <charconv>
 #include <mutex>
+#include <optional>
 #include <ostream>
 #include <set>
 #include <string_view>
@@ -26,6 +26,7 @@
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "base/read_file.h"
+#include "base/spool_file.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_crs.h"
 #include "core/io/gltf_write.h"
@@ -46,7 +47,7 @@ struct Building {
   std::string file;  // per-building output: its file name in the folder
   std::vector<std::string> warnings;
   MeshSet meshes;                     // dropped once converted for a single .glb
-  GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
+  GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel, streamed out with its window
   MeshSummary summary;
   double ms = 0;
 };
@@ -87,7 +88,8 @@ class FileNames {
 // What a batch into one file holds until it is written, counted as buildings
 // finish: a batch over its budget stops early and writes nothing, whatever the
 // order its buildings ran in, instead of running out of memory. (Per-building
-// files stream out as their window of buildings finishes: no budget.)
+// files and a single .glb stream out as their window of buildings finishes:
+// no budget.)
 struct BatchBudget {
   std::size_t max_faces, max_placed;
   std::atomic<std::size_t> faces{0}, placed{0};
@@ -197,40 +199,22 @@ std::string report_entry(const Building& b) {
   return out;
 }
 
-// The report's building entries, joined as the array holds them, in an
-// unnamed temporary file as buildings leave their window: read back once,
-// when the report is written, so they take no memory while buildings run.
+// The report's building entries, joined as the array holds them, in a
+// temporary file as buildings leave their window, copied from there into the
+// report: they take no memory however many buildings run.
 class EntrySpool {
  public:
-  EntrySpool() : file_(std::tmpfile()) {}
-  EntrySpool(const EntrySpool&) = delete;
-  EntrySpool& operator=(const EntrySpool&) = delete;
-  ~EntrySpool() {
-    if (file_) std::fclose(file_);
-  }
   void add(const std::string& entry) {
-    const std::string_view separator = count_ == 0 ? "\n" : ",\n";
-    if (!file_ || std::fwrite(separator.data(), 1, separator.size(), file_) != separator.size() ||
-        std::fwrite(entry.data(), 1, entry.size(), file_) != entry.size())
-      fail();
-    bytes_ += separator.size() + entry.size(), ++count_;
+    spool_.append(count_ == 0 ? "\n" : ",\n");
+    spool_.append(entry);
+    ++count_;
   }
   std::size_t count() const { return count_; }
-  std::string text() const {
-    std::string out(bytes_, '\0');
-    if (bytes_ > 0 && (std::fseek(file_, 0, SEEK_SET) != 0 || std::fread(out.data(), 1, bytes_, file_) != bytes_)) fail();
-    if (bytes_ > 0 && std::fseek(file_, 0, SEEK_END) != 0) fail();
-    return out;
-  }
+  const SpoolFile& file() const { return spool_; }
 
  private:
-  [[noreturn]] static void fail() {
-    throw IoError("the report's temporary file could not be written or read (is the temporary "
-                  "folder full? TMPDIR names it)",
-                  "");
-  }
-  std::FILE* file_;
-  std::size_t bytes_ = 0, count_ = 0;
+  SpoolFile spool_;
+  std::size_t count_ = 0;
 };
 
 bool is_folder_output(const std::filesystem::path& p) {
@@ -305,14 +289,15 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   Evaluator evaluator(cache, kEngineSalt);
   Progress progress(err, buildings.size(), options.progress);
   constexpr std::size_t kUnlimited = static_cast<std::size_t>(-1);
-  BatchBudget budget{per_building ? kUnlimited : options.max_faces, per_building ? kUnlimited : options.max_placed};
+  const bool streamed = per_building || one_glb;
+  BatchBudget budget{streamed ? kUnlimited : options.max_faces, streamed ? kUnlimited : options.max_placed};
   tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
   std::size_t ok = 0, refused = 0, failed = 0;
   ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
   std::chrono::steady_clock::time_point evaluated = start;
   // The report's text as pieces: its head and tail around the buildings'
   // entries, each made when its building left its window.
-  std::string head, tail, entries;
+  std::string head, tail;
   EntrySpool spool;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
@@ -330,11 +315,10 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     const std::string empty = "\n \"buildings\": []";
     const std::size_t at = text.find(empty) + empty.size() - 1;
     head = text.substr(0, at), tail = text.substr(at + 1);
-    entries = spool.text();
-    return std::vector<std::string_view>{head, entries, spool.count() == 0 ? "]" : "\n ]", tail};
+    return std::vector<FilePiece>{{head}, {{}, &spool.file()}, {spool.count() == 0 ? "]" : "\n ]"}, {tail}};
   };
   MeshSet all;
-  GltfScene all_gltf;
+  std::optional<GlbStreamWriter> glb;
   FileNames file_name(format);
   try {
     // Meshes and report both or neither: the report is staged (beside its
@@ -346,14 +330,17 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       stamp.recipe = file_hash(options.recipe), stamp.footprints = file_hash(options.footprints);
     if (!options.report.empty()) report_file.add(options.report, report(start));
     if (one_glb) {
-      all_gltf.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
-      set_gltf_crs(all_gltf, export_options.crs, options.output);
+      GltfScene head;
+      head.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
+      set_gltf_crs(head, export_options.crs, options.output);
+      glb.emplace(options.output, std::move(head.extras));
     }
     if (per_building) std::filesystem::create_directories(options.output);
     // Buildings run a window at a time and leave it in input order: a
-    // building's meshes are written (per-building files) or converted to what
-    // the single output keeps, then freed, so the meshes in memory at once are
-    // a window's, however many buildings the batch has.
+    // building's meshes are written (per-building files, the single .glb's
+    // temporary files) or converted to what the single output keeps, then
+    // freed, so the meshes in memory at once are a window's, however many
+    // buildings the batch has.
     const std::size_t window = 64 * static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
     for (std::size_t first = 0; first < buildings.size() && !budget.exceeded; first += window) {
       const std::size_t last = std::min(buildings.size(), first + window);
@@ -364,6 +351,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         });
       });
       if (budget.exceeded) break;
+      std::vector<GltfScene> window_gltf;
       for (std::size_t i = first; i < last; ++i) {
         Building& b = buildings[i];
         if (per_building) b.file = file_name(b);
@@ -377,10 +365,11 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         }
         ++ok;
         if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
-        else if (one_glb) append_scene(all_gltf, std::move(b.gltf));
+        else if (one_glb) window_gltf.push_back(std::move(b.gltf));
         else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
         b.meshes = {}, b.gltf = {};
       }
+      if (one_glb) arena.execute([&] { glb->add(std::move(window_gltf)); });  // renders in parallel: --jobs holds
     }
     if (budget.exceeded) {
       err << "procex batch: refused: the buildings would hold more than " << options.max_faces << " faces or "
@@ -391,9 +380,9 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     }
     cache.clear();  // per-building results are never asked for again: free them before the write's peak
     evaluated = std::chrono::steady_clock::now();
-    if (one_glb) arena.execute([&] { write_glb(options.output, all_gltf); });  // renders buildings in parallel: --jobs holds
+    if (one_glb) glb->finish();
     else if (!per_building) write_mesh_set(options.output, all, export_options);
-    all_gltf = {}, all = {};  // before the report's entries are read back
+    all = {};
     if (!options.report.empty()) {
       report_file.add(options.report, report(std::chrono::steady_clock::now()));
       report_file.commit();

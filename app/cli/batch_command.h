@@ -33,8 +33,9 @@ struct BatchCommandOptions {
   std::size_t shard = 0, shards = 1;
   std::vector<std::string> settings;  // name=value applied to every building
   std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
-  // What the whole batch may hold in memory (building faces plus placed
-  // meshes' faces; placed meshes): more is refused, exit 2, nothing written.
+  // What a batch into one .obj, .ply, .gpkg or CityJSON file may hold in
+  // memory (building faces plus placed meshes' faces; placed meshes): more
+  // is refused, exit 2, nothing written. A folder or a .glb streams out.
   std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
   ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)

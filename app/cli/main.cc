@@ -186,8 +186,9 @@ Runner add_batch(CLI::App& app) {
       },
       "Take only features whose index is i modulo N (e.g. $SLURM_ARRAY_TASK_ID/$N)");
   cmd->add_option("--set", options->settings, "name=value applied to every building (repeatable)");
-  cmd->add_option("--max-faces", options->max_faces, "Refuse a batch whose buildings hold more faces (placed meshes' "
-                                                     "included) than this: split it with --shard")
+  cmd->add_option("--max-faces", options->max_faces, "Refuse a batch into one .obj, .ply, .gpkg or CityJSON file whose "
+                                                     "buildings hold more faces (placed meshes' included) than this: "
+                                                     "split it with --shard (a folder or a .glb streams out)")
       ->capture_default_str();
   cmd->add_option("--max-placed", options->max_placed, "Refuse a batch with more placed meshes than this")
       ->capture_default_str();

@@ -21,6 +21,7 @@
 #include "core/geom/polygon3.h"
 #include "base/json_depth.h"
 #include "base/read_file.h"
+#include "base/spool_file.h"
 #include "core/io/atomic_write.h"
 #include "core/io/byte_range.h"
 #include "core/io/io_error.h"
@@ -214,6 +215,7 @@ WrittenPrototypes written_prototypes(const std::vector<GltfMeshData>& buildings,
 struct Item {
   const GltfMeshData* data = nullptr;
   bool placed = false;
+  bool deferred = false;  // a streamed building: numbers that depend on the placed meshes as markers (Ref)
   // Its first index in each array, and its first float in the position and
   // normal views, in the texture coordinate view, and first index in the index view.
   std::size_t accessor = 0, mesh = 0, node = 0, floats = 0, uv_floats = 0, indices = 0;
@@ -229,8 +231,8 @@ struct Totals {
   std::size_t accessors = 0, meshes = 0, nodes = 0, floats = 0, uv_floats = 0, indices = 0;
 };
 
-Totals place_items(std::vector<Item>& items) {
-  Totals t;
+// `t`: what the items before these hold.
+Totals place_items(std::vector<Item>& items, Totals t = {}) {
   for (Item& item : items) {
     const GltfMeshData& d = *item.data;
     item.accessor = t.accessors, item.mesh = t.meshes, item.node = t.nodes;
@@ -250,13 +252,40 @@ Totals place_items(std::vector<Item>& items) {
   return t;
 }
 
-void put_accessor(std::string& out, int view, std::size_t byte_offset, int component, const char* type,
-                  std::size_t count) {
+// Numbers in a building's JSON that depend on the placed meshes, which come
+// first in the file. GlbStreamWriter renders buildings before it knows them
+// all, so there they are markers counted from the first building, resolved
+// when the file is put together (resolve_refs): \x01, the kind, the value (8
+// bytes). JSON text holds no raw control character, so \x01 starts nothing else.
+enum class Ref : char {
+  kAccessor = 'a',
+  kMesh = 'm',
+  kMaterial = 'M',      // from the streamed buildings' own numbering of materials
+  kVertexOffset = 'p',  // a byte offset in the position or normal view
+  kIndexOffset = 'i',
+  kUvOffset = 'u',
+  kTagOffset = 't',
+  kTagView = 'v',  // the _TAG view's index: 3, or 4 after a texture coordinate view
+};
+constexpr char kRefMarker = '\x01';
+constexpr std::size_t kRefBytes = 2 + sizeof(std::uint64_t);
+
+void put_ref(std::string& out, bool deferred, Ref kind, std::size_t value) {
+  if (!deferred) return put_index(out, value);
+  out += kRefMarker;
+  out += static_cast<char>(kind);
+  const std::uint64_t v = value;
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+void put_accessor(std::string& out, bool deferred, int view, Ref offset_kind, std::size_t byte_offset, int component,
+                  const char* type, std::size_t count) {
   if (!out.empty()) out += ',';
   out += "{\"bufferView\":";
-  put_index(out, view);
+  if (offset_kind == Ref::kTagOffset) put_ref(out, deferred, Ref::kTagView, static_cast<std::size_t>(view));
+  else put_index(out, view);
   out += ",\"byteOffset\":";
-  put_index(out, byte_offset);
+  put_ref(out, deferred, offset_kind, byte_offset);
   out += ",\"componentType\":";
   put_index(out, component);
   out += ",\"count\":";
@@ -298,11 +327,25 @@ struct WrittenMaterials {
   }
 };
 
+// The tags in order of first use: their numbers (the _TAG attribute) and
+// their list in the asset's extras.
+struct TagNumbers {
+  std::map<std::string, std::size_t> ids;
+  std::string json;
+
+  void add(const std::string& tag) {
+    if (!ids.try_emplace(tag, ids.size()).second) return;
+    if (!json.empty()) json += ',';
+    put_string(json, tag);
+  }
+};
+
 // The item's mesh and accessors (the validator wants each position
 // accessor's exact bounds).
 void render_mesh(Item& item, const WrittenMaterials& materials, const std::map<std::string, std::size_t>& tag_ids,
                  int item_tag_view) {
   const GltfMeshData& d = *item.data;
+  const bool deferred = item.deferred;
   std::string& mesh = item.mesh_json;
   std::string& acc = item.accessors_json;
   std::size_t a = item.accessor, floats = item.floats, uv_floats = item.uv_floats, indices = item.indices;
@@ -315,19 +358,19 @@ void render_mesh(Item& item, const WrittenMaterials& materials, const std::map<s
     if (!first) mesh += ',';
     first = false;
     mesh += "{\"attributes\":{\"NORMAL\":";
-    put_index(mesh, a + 1);
+    put_ref(mesh, deferred, Ref::kAccessor, a + 1);
     mesh += ",\"POSITION\":";
-    put_index(mesh, a);
+    put_ref(mesh, deferred, Ref::kAccessor, a);
     if (!p.uvs.empty()) {
       mesh += ",\"TEXCOORD_0\":";
-      put_index(mesh, a + 3);
+      put_ref(mesh, deferred, Ref::kAccessor, a + 3);
     }
     mesh += ",\"_TAG\":";
-    put_index(mesh, a + (p.uvs.empty() ? 3 : 4));
+    put_ref(mesh, deferred, Ref::kAccessor, a + (p.uvs.empty() ? 3 : 4));
     mesh += "},\"indices\":";
-    put_index(mesh, a + 2);
+    put_ref(mesh, deferred, Ref::kAccessor, a + 2);
     mesh += ",\"material\":";
-    put_index(mesh, materials.index(p));
+    put_ref(mesh, deferred, Ref::kMaterial, materials.index(p));
     mesh += ",\"mode\":4,\"extras\":{\"tag\":";
     put_string(mesh, p.tag);
     mesh += "}}";
@@ -337,7 +380,7 @@ void render_mesh(Item& item, const WrittenMaterials& materials, const std::map<s
     for (std::size_t i = 0; i < p.positions.size(); i += 3)
       for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p.positions[i + k]), hi[k] = std::max(hi[k], p.positions[i + k]);
     const std::size_t n = p.positions.size() / 3;
-    put_accessor(acc, 0, floats * sizeof(float), kFloat, "VEC3", n);
+    put_accessor(acc, deferred, 0, Ref::kVertexOffset, floats * sizeof(float), kFloat, "VEC3", n);
     for (const auto& [key, bound] : {std::pair{",\"min\":[", lo}, std::pair{",\"max\":[", hi}}) {
       acc += key;
       for (std::size_t k = 0; k < 3; ++k) {
@@ -347,16 +390,16 @@ void render_mesh(Item& item, const WrittenMaterials& materials, const std::map<s
       acc += ']';
     }
     acc += '}';
-    put_accessor(acc, 1, floats * sizeof(float), kFloat, "VEC3", n);
+    put_accessor(acc, deferred, 1, Ref::kVertexOffset, floats * sizeof(float), kFloat, "VEC3", n);
     acc += '}';
-    put_accessor(acc, 2, indices * sizeof(std::uint32_t), kUint, "SCALAR", p.indices.size());
+    put_accessor(acc, deferred, 2, Ref::kIndexOffset, indices * sizeof(std::uint32_t), kUint, "SCALAR", p.indices.size());
     acc += '}';
     if (!p.uvs.empty()) {
-      put_accessor(acc, 3, uv_floats * sizeof(float), kFloat, "VEC2", n);
+      put_accessor(acc, deferred, 3, Ref::kUvOffset, uv_floats * sizeof(float), kFloat, "VEC2", n);
       acc += '}';
     }
     // Every vertex its face's tag, numbered as the asset's extras list them.
-    put_accessor(acc, item_tag_view, floats / 3 * sizeof(float), kFloat, "SCALAR", n);
+    put_accessor(acc, deferred, item_tag_view, Ref::kTagOffset, floats / 3 * sizeof(float), kFloat, "SCALAR", n);
     acc += '}';
     item.tag_values.insert(item.tag_values.end(), n, static_cast<float>(tag_ids.at(p.tag)));
     floats += p.positions.size();
@@ -381,7 +424,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   put_string(out, d.building);
   if (item.has_mesh) {
     out += ",\"mesh\":";
-    put_index(out, item.mesh);
+    put_ref(out, item.deferred, Ref::kMesh, item.mesh);
   }
   const bool moved = d.origin != std::array<double, 3>{0, 0, 0};
   if (moved) {
@@ -485,27 +528,37 @@ class Pieces {
  public:
   void add(std::string_view text) {
     if (text.empty()) return;
-    views_.push_back(text);
+    pieces_.push_back({text});
     size_ += text.size();
   }
   void add_own(std::string text) { add(owned_.emplace_back(std::move(text))); }
-  // `,"key":[` + the items' non-empty runs joined by commas + `]`, nothing if all are empty.
-  void add_array(std::string_view key, const std::vector<Item>& items, std::string Item::*run) {
+  void add_spool(const SpoolFile& spool) {
+    pieces_.push_back({{}, &spool});
+    size_ += spool.size();
+  }
+  // `,"key":[` + the items' non-empty runs, then the elements in `more`
+  // (streamed buildings'), joined by commas + `]`, nothing if all are empty.
+  void add_array(std::string_view key, const std::vector<Item>& items, std::string Item::*run,
+                 const SpoolFile* more = nullptr) {
     bool first = true;
-    for (const Item& item : items) {
-      if ((item.*run).empty()) continue;
+    const auto next = [&] {
       if (first) add_own(",\"" + std::string(key) + "\":[");
       else add(",");
-      add(item.*run);
       first = false;
+    };
+    for (const Item& item : items) {
+      if ((item.*run).empty()) continue;
+      next();
+      add(item.*run);
     }
+    if (more && more->size() > 0) next(), add_spool(*more);
     if (!first) add("]");
   }
   std::size_t size() const { return size_; }
-  const std::vector<std::string_view>& views() const { return views_; }
+  const std::vector<FilePiece>& pieces() const { return pieces_; }
 
  private:
-  std::vector<std::string_view> views_;
+  std::vector<FilePiece> pieces_;
   std::deque<std::string> owned_;
   std::size_t size_ = 0;
 };
@@ -514,73 +567,47 @@ void append_u32(std::string& out, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);  // little-endian, as GLB wants
 }
 
-void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
-                 const std::vector<GltfMeshData>& prototypes, const std::map<std::string, std::string>& extras) {
-  if (!are_json_members(extras))
-    throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
-                  path.string());
-  for (const GltfMeshData& data : meshes) check_instances(path, data, prototypes);
-  const WrittenPrototypes written = written_prototypes(meshes, prototypes);
-  std::vector<Item> items;
-  items.reserve(written.meshes.size() + meshes.size());
-  for (const GltfMeshData* p : written.meshes) items.emplace_back().data = p, items.back().placed = true;
-  for (const GltfMeshData& b : meshes) items.emplace_back().data = &b;
-  const Totals totals = place_items(items);
-  WrittenMaterials materials;
-  // The tags, numbered in order of first use for the _TAG attribute, and listed in the asset's extras.
-  std::map<std::string, std::size_t> tag_ids;
-  std::string tags_json;
-  for (const Item& item : items)
-    for (const GltfPrimitiveData& p : item.data->primitives) {
-      if (p.indices.empty()) continue;
-      materials.add(p);
-      if (tag_ids.try_emplace(p.tag, tag_ids.size()).second) {
-        if (!tags_json.empty()) tags_json += ',';
-        put_string(tags_json, p.tag);
-      }
-    }
-  const int tag_view = totals.uv_floats > 0 ? 4 : 3;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      Item& item = items[i];
-      check_mesh(path, *item.data);
-      if (item.has_mesh) render_mesh(item, materials, tag_ids, tag_view);
-      if (item.has_node) render_nodes(item, written);
-    }
-  });
-
-  Pieces json;
+// The JSON up to the scene's list of nodes.
+std::string scene_head(const std::string& tags_json) {
   std::string scene = "{\"asset\":{";
   if (!tags_json.empty()) scene += "\"extras\":{\"tags\":[" + tags_json + "]},";
   scene += "\"generator\":\"procex\",\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{";
-  bool first = true;
-  for (const Item& item : items) {
-    if (!item.has_node) continue;
-    scene += first ? "\"nodes\":[" : ",";
-    put_index(scene, item.node);
-    first = false;
-  }
-  if (!first) scene += ']';
+  return scene;
+}
+
+// The scene after its list of nodes (had_nodes: whether there was one).
+std::string scene_end(bool had_nodes, const std::map<std::string, std::string>& extras) {
+  std::string out = had_nodes ? "]" : "";
   if (!extras.empty()) {
-    scene += first ? "\"extras\":" : ",\"extras\":";
-    put_members(scene, extras);
+    out += had_nodes ? ",\"extras\":" : "\"extras\":";
+    put_members(out, extras);
   }
-  scene += "}]";
-  json.add(scene);
-  json.add_array("nodes", items, &Item::nodes_json);
-  json.add_array("meshes", items, &Item::mesh_json);
-  if (!materials.json.empty()) json.add_own(",\"materials\":[" + materials.json + "]");
-  json.add_array("accessors", items, &Item::accessors_json);
-  const std::size_t vertex_bytes = totals.floats * sizeof(float), index_bytes = totals.indices * sizeof(std::uint32_t);
-  const std::size_t uv_bytes = totals.uv_floats * sizeof(float);
-  // Each image in a view of its own after the arrays, 4-byte aligned.
+  return out + "}]";
+}
+
+// The binary chunk: five views of all items' arrays, then the images.
+struct BinLayout {
+  std::size_t vertex_bytes = 0, index_bytes = 0, uv_bytes = 0, tag_bytes = 0, bytes = 0;
   std::vector<std::size_t> image_offsets;
-  const std::size_t tag_bytes = totals.floats / 3 * sizeof(float);
-  std::size_t bin_bytes = 2 * vertex_bytes + index_bytes + uv_bytes + tag_bytes;
+};
+
+BinLayout bin_layout(const Totals& totals, const WrittenMaterials& materials) {
+  BinLayout l;
+  l.vertex_bytes = totals.floats * sizeof(float), l.index_bytes = totals.indices * sizeof(std::uint32_t);
+  l.uv_bytes = totals.uv_floats * sizeof(float);
+  l.tag_bytes = totals.floats / 3 * sizeof(float);
+  l.bytes = 2 * l.vertex_bytes + l.index_bytes + l.uv_bytes + l.tag_bytes;
+  // Each image in a view of its own after the arrays, 4-byte aligned.
   for (const std::string* image : materials.images) {
-    image_offsets.push_back(bin_bytes);
-    bin_bytes += (image->size() + 3) / 4 * 4;
+    l.image_offsets.push_back(l.bytes);
+    l.bytes += (image->size() + 3) / 4 * 4;
   }
+  return l;
+}
+
+// The JSON after the accessors (textures, images, buffer views, the buffer),
+// padded so that the JSON chunk, json_before bytes before it, ends 4-byte aligned.
+std::string render_tail(const BinLayout& bin, const WrittenMaterials& materials, int tag_view, std::size_t json_before) {
   std::string tail;
   if (!materials.images.empty()) {
     const int first_image_view = tag_view + 1;
@@ -600,20 +627,20 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     }
     tail += ']';
   }
-  if (bin_bytes > 0) {
+  if (bin.bytes > 0) {
     // Four or five views, each tightly packed: every position, then every
     // normal (vertex attributes, so a stride), every index, every texture
     // coordinate pair (if any), and every vertex's tag number. Views shared by
     // all primitives keep the JSON small for whole cities.
-    const std::size_t offsets[5] = {0, vertex_bytes, 2 * vertex_bytes, 2 * vertex_bytes + index_bytes,
-                                    2 * vertex_bytes + index_bytes + uv_bytes};
-    const std::size_t lengths[5] = {vertex_bytes, vertex_bytes, index_bytes, uv_bytes, tag_bytes};
+    const std::size_t offsets[5] = {0, bin.vertex_bytes, 2 * bin.vertex_bytes, 2 * bin.vertex_bytes + bin.index_bytes,
+                                    2 * bin.vertex_bytes + bin.index_bytes + bin.uv_bytes};
+    const std::size_t lengths[5] = {bin.vertex_bytes, bin.vertex_bytes, bin.index_bytes, bin.uv_bytes, bin.tag_bytes};
     static constexpr const char* kViewTails[5] = {
         ",\"byteStride\":12,\"target\":34962}", ",\"byteStride\":12,\"target\":34962}", ",\"target\":34963}",
         ",\"byteStride\":8,\"target\":34962}", ",\"byteStride\":4,\"target\":34962}"};
     tail += ",\"bufferViews\":[";
     for (int v = 0; v < 5; ++v) {
-      if (v == 3 && uv_bytes == 0) continue;
+      if (v == 3 && bin.uv_bytes == 0) continue;
       if (v > 0) tail += ',';
       tail += "{\"buffer\":0,\"byteOffset\":";
       put_index(tail, offsets[v]);
@@ -623,55 +650,118 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
     }
     for (std::size_t i = 0; i < materials.images.size(); ++i) {
       tail += ",{\"buffer\":0,\"byteOffset\":";
-      put_index(tail, image_offsets[i]);
+      put_index(tail, bin.image_offsets[i]);
       tail += ",\"byteLength\":";
       put_index(tail, materials.images[i]->size());
       tail += '}';
     }
     tail += "],\"buffers\":[{\"byteLength\":";
-    put_index(tail, bin_bytes);
+    put_index(tail, bin.bytes);
     tail += "}]";
   }
   tail += '}';
-  tail.append((4 - (json.size() + tail.size()) % 4) % 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
-  json.add(tail);
+  tail.append((4 - (json_before + tail.size()) % 4) % 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
+  return tail;
+}
 
-  const std::size_t total = 12 + 8 + json.size() + (bin_bytes > 0 ? 8 + bin_bytes : 0);  // bin_bytes: 4-byte multiple
+// The file's header with the JSON chunk's, and the binary chunk's header.
+// Throws IoError past what a .glb can hold.
+std::pair<std::string, std::string> chunk_headers(const std::filesystem::path& path, std::size_t json_bytes,
+                                                  std::size_t bin_bytes) {
+  const std::size_t total = 12 + 8 + json_bytes + (bin_bytes > 0 ? 8 + bin_bytes : 0);  // bin_bytes: 4-byte multiple
   if (total > UINT32_MAX)
     throw IoError("cannot write '" + path.string() + "': " + std::to_string(total) + " bytes, more than a .glb holds (4 GiB)",
                   path.string());
   std::string header = "glTF";
   append_u32(header, 2);
   append_u32(header, static_cast<std::uint32_t>(total));
-  append_u32(header, static_cast<std::uint32_t>(json.size()));
+  append_u32(header, static_cast<std::uint32_t>(json_bytes));
   header += "JSON";
   std::string bin_header;
   append_u32(bin_header, static_cast<std::uint32_t>(bin_bytes));
   bin_header += std::string_view("BIN\0", 4);
+  return {header, bin_header};
+}
 
-  std::vector<std::string_view> pieces = {header};
-  pieces.insert(pieces.end(), json.views().begin(), json.views().end());
-  if (bin_bytes > 0) {
-    pieces.push_back(bin_header);
-    const auto add = [&](const auto& data) {
-      pieces.emplace_back(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(data[0]));
-    };
+void add_images(std::vector<FilePiece>& pieces, const WrittenMaterials& materials) {
+  static constexpr char kZeros[3] = {0, 0, 0};
+  for (const std::string* image : materials.images) {
+    pieces.push_back({*image});
+    pieces.push_back({std::string_view(kZeros, (4 - image->size() % 4) % 4)});
+  }
+}
+
+template <class T>
+std::string_view bytes_of(const std::vector<T>& data) {
+  return {reinterpret_cast<const char*>(data.data()), data.size() * sizeof(T)};
+}
+
+void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes,
+                 const std::vector<GltfMeshData>& prototypes, const std::map<std::string, std::string>& extras) {
+  if (!are_json_members(extras))
+    throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
+                  path.string());
+  for (const GltfMeshData& data : meshes) check_instances(path, data, prototypes);
+  const WrittenPrototypes written = written_prototypes(meshes, prototypes);
+  std::vector<Item> items;
+  items.reserve(written.meshes.size() + meshes.size());
+  for (const GltfMeshData* p : written.meshes) items.emplace_back().data = p, items.back().placed = true;
+  for (const GltfMeshData& b : meshes) items.emplace_back().data = &b;
+  const Totals totals = place_items(items);
+  WrittenMaterials materials;
+  // The tags, numbered in order of first use for the _TAG attribute, and listed in the asset's extras.
+  TagNumbers tags;
+  for (const Item& item : items)
+    for (const GltfPrimitiveData& p : item.data->primitives) {
+      if (p.indices.empty()) continue;
+      materials.add(p);
+      tags.add(p.tag);
+    }
+  const int tag_view = totals.uv_floats > 0 ? 4 : 3;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      Item& item = items[i];
+      check_mesh(path, *item.data);
+      if (item.has_mesh) render_mesh(item, materials, tags.ids, tag_view);
+      if (item.has_node) render_nodes(item, written);
+    }
+  });
+
+  Pieces json;
+  std::string scene = scene_head(tags.json);
+  bool first = true;
+  for (const Item& item : items) {
+    if (!item.has_node) continue;
+    scene += first ? "\"nodes\":[" : ",";
+    put_index(scene, item.node);
+    first = false;
+  }
+  scene += scene_end(!first, extras);
+  json.add(scene);
+  json.add_array("nodes", items, &Item::nodes_json);
+  json.add_array("meshes", items, &Item::mesh_json);
+  if (!materials.json.empty()) json.add_own(",\"materials\":[" + materials.json + "]");
+  json.add_array("accessors", items, &Item::accessors_json);
+  const BinLayout bin = bin_layout(totals, materials);
+  json.add_own(render_tail(bin, materials, tag_view, json.size()));
+  const auto [header, bin_header] = chunk_headers(path, json.size(), bin.bytes);
+
+  std::vector<FilePiece> pieces = {{header}};
+  pieces.insert(pieces.end(), json.pieces().begin(), json.pieces().end());
+  if (bin.bytes > 0) {
+    pieces.push_back({bin_header});
     for (const auto member : {&GltfPrimitiveData::positions, &GltfPrimitiveData::normals})
       for (const Item& item : items)
         for (const GltfPrimitiveData& p : item.data->primitives)
-          if (!p.indices.empty()) add(p.*member);
+          if (!p.indices.empty()) pieces.push_back({bytes_of(p.*member)});
     for (const Item& item : items)
       for (const GltfPrimitiveData& p : item.data->primitives)
-        if (!p.indices.empty()) add(p.indices);
+        if (!p.indices.empty()) pieces.push_back({bytes_of(p.indices)});
     for (const Item& item : items)
       for (const GltfPrimitiveData& p : item.data->primitives)
-        if (!p.indices.empty()) add(p.uvs);
-    for (const Item& item : items) add(item.tag_values);
-    static constexpr char kZeros[3] = {0, 0, 0};
-    for (const std::string* image : materials.images) {
-      add(*image);
-      pieces.emplace_back(kZeros, (4 - image->size() % 4) % 4);
-    }
+        if (!p.indices.empty()) pieces.push_back({bytes_of(p.uvs)});
+    for (const Item& item : items) pieces.push_back({bytes_of(item.tag_values)});
+    add_images(pieces, materials);
   }
   write_file_atomically(path, pieces);
 }
@@ -896,6 +986,243 @@ void write_glb(const std::filesystem::path& path, const GltfScene& scene) {
 
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes) {
   write_scene(path, meshes, {}, {});
+}
+
+namespace {
+
+// The bases that turn a streamed building's markers (Ref) into the file's numbers.
+struct RefBases {
+  std::size_t accessor = 0, mesh = 0, vertex_bytes = 0, index_bytes = 0, uv_bytes = 0, tag_bytes = 0, tag_view = 0;
+  std::vector<std::size_t> material;  // the file's number of each of the buildings' own materials
+
+  std::size_t value(char kind, std::size_t v) const {
+    switch (static_cast<Ref>(kind)) {
+      case Ref::kAccessor: return accessor + v;
+      case Ref::kMesh: return mesh + v;
+      case Ref::kMaterial: return material.at(v);
+      case Ref::kVertexOffset: return vertex_bytes + v;
+      case Ref::kIndexOffset: return index_bytes + v;
+      case Ref::kUvOffset: return uv_bytes + v;
+      case Ref::kTagOffset: return tag_bytes + v;
+      case Ref::kTagView: return tag_view;
+    }
+    throw std::logic_error("a streamed .glb's JSON holds an unknown marker");
+  }
+};
+
+// Copies `from` into `to` a chunk at a time, each chunk's last `keep(chunk)`
+// bytes held back for the next (a marker or value cut by the chunk's end).
+template <class Convert>
+void convert_spool(const SpoolFile& from, SpoolFile& to, Convert convert) {
+  std::string carry, out;
+  from.read([&](std::string_view chunk) {
+    carry += chunk;
+    out.clear();
+    const std::size_t used = convert(std::string_view(carry), out);
+    to.append(out);
+    carry.erase(0, used);
+  });
+  if (!carry.empty()) throw std::logic_error("a streamed .glb's temporary file ends inside a value");
+}
+
+void resolve_refs(const SpoolFile& from, SpoolFile& to, const RefBases& bases) {
+  convert_spool(from, to, [&](std::string_view text, std::string& out) {
+    std::size_t from_at = 0;
+    for (std::size_t at; (at = text.find(kRefMarker, from_at)) != std::string_view::npos;) {
+      out.append(text.substr(from_at, at - from_at));
+      if (at + kRefBytes > text.size()) return at;
+      std::uint64_t v = 0;
+      std::memcpy(&v, text.data() + at + 2, sizeof v);
+      put_index(out, bases.value(text[at + 1], static_cast<std::size_t>(v)));
+      from_at = at + kRefBytes;
+    }
+    out.append(text.substr(from_at));
+    return text.size();
+  });
+}
+
+// Each vertex's tag number, from the buildings' own numbering to the file's.
+void renumber_tags(const SpoolFile& from, SpoolFile& to, const std::vector<float>& tag_of) {
+  convert_spool(from, to, [&](std::string_view bytes, std::string& out) {
+    const std::size_t whole = bytes.size() / sizeof(float) * sizeof(float);
+    out.resize(whole);
+    for (std::size_t i = 0; i < whole; i += sizeof(float)) {
+      float own = 0;
+      std::memcpy(&own, bytes.data() + i, sizeof own);
+      std::memcpy(out.data() + i, &tag_of.at(static_cast<std::size_t>(own)), sizeof(float));
+    }
+    return whole;
+  });
+}
+
+// Appends an element's JSON to an array's elements, comma-separated.
+void append_element(SpoolFile& spool, std::string_view json) {
+  if (spool.size() > 0) spool.append(",");
+  spool.append(json);
+}
+
+}  // namespace
+
+struct GlbStreamWriter::State {
+  std::filesystem::path path;
+  std::map<std::string, std::string> extras;
+  std::deque<GltfMeshData> placed;  // the placed meshes in order of first use, equal ones once
+  // The buildings' materials and tags, numbered in order of first use among
+  // the buildings: the file numbers the placed meshes' first.
+  std::deque<GltfPrimitiveData> material_keys;  // a tag and material each, what `materials` points at
+  WrittenMaterials materials;
+  TagNumbers tags;
+  Totals totals;  // the buildings' so far
+  SpoolFile scene_nodes, nodes, meshes, accessors, positions, normals, indices, uvs, tag_values;
+
+  // The placed mesh's slot, given it once more (a part's prototype).
+  std::size_t slot_of(const GltfMeshData& p) {
+    const auto same = std::find_if(placed.begin(), placed.end(), [&](const GltfMeshData& q) {
+      return q.building == p.building && q.primitives == p.primitives;
+    });
+    if (same != placed.end()) return static_cast<std::size_t>(same - placed.begin());
+    check_mesh(path, p);
+    placed.push_back(p);
+    return placed.size() - 1;
+  }
+};
+
+GlbStreamWriter::GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras)
+    : state_(std::make_unique<State>()) {
+  if (!are_json_members(extras))
+    throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
+                  path.string());
+  state_->path = std::move(path), state_->extras = std::move(extras);
+}
+
+GlbStreamWriter::~GlbStreamWriter() = default;
+
+void GlbStreamWriter::add(std::vector<GltfScene> parts) {
+  State& s = *state_;
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<Item> items;
+  for (GltfScene& part : parts) {
+    std::vector<std::size_t> slot(part.prototypes.size(), kNone);  // compared with the written ones once each
+    for (GltfMeshData& b : part.meshes) {
+      check_instances(s.path, b, part.prototypes);
+      for (GltfInstanceData& in : b.instances) {
+        if (slot[in.prototype] == kNone) slot[in.prototype] = s.slot_of(part.prototypes[in.prototype]);
+        in.prototype = slot[in.prototype];
+      }
+      Item& item = items.emplace_back();
+      item.data = &b, item.deferred = true;
+    }
+  }
+  s.totals = place_items(items, s.totals);
+  for (const Item& item : items)
+    for (const GltfPrimitiveData& p : item.data->primitives) {
+      if (p.indices.empty()) continue;
+      if (s.materials.index(p) == s.materials.keys.size()) {
+        GltfPrimitiveData& key = s.material_keys.emplace_back();
+        key.tag = p.tag, key.material = p.material;
+        s.materials.add(key);
+      }
+      s.tags.add(p.tag);
+    }
+  WrittenPrototypes written;
+  for (const GltfMeshData& p : s.placed) written.slot.push_back(written.meshes.size()), written.meshes.push_back(&p);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      Item& item = items[i];
+      check_mesh(s.path, *item.data);
+      if (item.has_mesh) render_mesh(item, s.materials, s.tags.ids, 0);  // the tag view: a marker
+      if (item.has_node) render_nodes(item, written);
+    }
+  });
+  for (const Item& item : items) {
+    if (item.has_node) {
+      std::string node;
+      put_index(node, item.node);
+      append_element(s.scene_nodes, node);
+      append_element(s.nodes, item.nodes_json);
+    }
+    if (item.has_mesh) append_element(s.meshes, item.mesh_json), append_element(s.accessors, item.accessors_json);
+    for (const GltfPrimitiveData& p : item.data->primitives) {
+      if (p.indices.empty()) continue;
+      s.positions.append(bytes_of(p.positions)), s.normals.append(bytes_of(p.normals));
+      s.indices.append(bytes_of(p.indices)), s.uvs.append(bytes_of(p.uvs));
+    }
+    s.tag_values.append(bytes_of(item.tag_values));
+  }
+  // Stop now, not after every building has run, when the file cannot hold them.
+  std::uint64_t bytes = 0;
+  for (const SpoolFile* spool : {&s.scene_nodes, &s.nodes, &s.meshes, &s.accessors, &s.positions, &s.normals,
+                                 &s.indices, &s.uvs, &s.tag_values})
+    bytes += spool->size();
+  if (bytes > UINT32_MAX)
+    throw IoError("cannot write '" + s.path.string() + "': more than " + std::to_string(bytes) +
+                      " bytes, more than a .glb holds (4 GiB)",
+                  s.path.string());
+}
+
+void GlbStreamWriter::finish() {
+  State& s = *state_;
+  // The placed meshes come first: their numbers are final, and the buildings' follow them.
+  std::vector<Item> placed(s.placed.size());
+  for (std::size_t i = 0; i < placed.size(); ++i) placed[i].data = &s.placed[i], placed[i].placed = true;
+  const Totals before = place_items(placed);
+  WrittenMaterials materials;
+  TagNumbers tags;
+  for (const Item& item : placed)
+    for (const GltfPrimitiveData& p : item.data->primitives)
+      if (!p.indices.empty()) materials.add(p), tags.add(p.tag);
+  RefBases bases;
+  for (const GltfPrimitiveData& key : s.material_keys) materials.add(key), bases.material.push_back(materials.index(key));
+  std::vector<const std::string*> own_tags(s.tags.ids.size());
+  for (const auto& [tag, id] : s.tags.ids) own_tags[id] = &tag;
+  std::vector<float> tag_of;
+  for (const std::string* tag : own_tags) tags.add(*tag), tag_of.push_back(static_cast<float>(tags.ids.at(*tag)));
+  Totals all = s.totals;
+  all.accessors += before.accessors, all.meshes += before.meshes, all.floats += before.floats;
+  all.uv_floats += before.uv_floats, all.indices += before.indices;
+  const int tag_view = all.uv_floats > 0 ? 4 : 3;
+  for (Item& item : placed) render_mesh(item, materials, tags.ids, tag_view);
+  bases.accessor = before.accessors, bases.mesh = before.meshes, bases.vertex_bytes = before.floats * sizeof(float);
+  bases.index_bytes = before.indices * sizeof(std::uint32_t), bases.uv_bytes = before.uv_floats * sizeof(float);
+  bases.tag_bytes = before.floats / 3 * sizeof(float), bases.tag_view = static_cast<std::size_t>(tag_view);
+  SpoolFile nodes, meshes, accessors, tag_values;
+  resolve_refs(s.nodes, nodes, bases);
+  resolve_refs(s.meshes, meshes, bases);
+  resolve_refs(s.accessors, accessors, bases);
+  renumber_tags(s.tag_values, tag_values, tag_of);
+
+  Pieces json;
+  const bool has_nodes = s.scene_nodes.size() > 0;
+  json.add_own(scene_head(tags.json) + (has_nodes ? "\"nodes\":[" : ""));
+  json.add_spool(s.scene_nodes);
+  json.add_own(scene_end(has_nodes, s.extras));
+  json.add_array("nodes", placed, &Item::nodes_json, &nodes);
+  json.add_array("meshes", placed, &Item::mesh_json, &meshes);
+  if (!materials.json.empty()) json.add_own(",\"materials\":[" + materials.json + "]");
+  json.add_array("accessors", placed, &Item::accessors_json, &accessors);
+  const BinLayout bin = bin_layout(all, materials);
+  json.add_own(render_tail(bin, materials, tag_view, json.size()));
+  const auto [header, bin_header] = chunk_headers(s.path, json.size(), bin.bytes);
+
+  std::vector<FilePiece> pieces = {{header}};
+  pieces.insert(pieces.end(), json.pieces().begin(), json.pieces().end());
+  if (bin.bytes > 0) {
+    pieces.push_back({bin_header});
+    const auto add_view = [&](auto member, const SpoolFile& buildings) {
+      for (const Item& item : placed)
+        for (const GltfPrimitiveData& p : item.data->primitives)
+          if (!p.indices.empty()) pieces.push_back({bytes_of(p.*member)});
+      pieces.push_back({{}, &buildings});
+    };
+    add_view(&GltfPrimitiveData::positions, s.positions);
+    add_view(&GltfPrimitiveData::normals, s.normals);
+    add_view(&GltfPrimitiveData::indices, s.indices);
+    add_view(&GltfPrimitiveData::uvs, s.uvs);
+    for (const Item& item : placed) pieces.push_back({bytes_of(item.tag_values)});
+    pieces.push_back({{}, &tag_values});
+    add_images(pieces, materials);
+  }
+  write_file_atomically(s.path, pieces);
 }
 
 namespace {

@@ -142,6 +142,31 @@ void append_to_gltf_mesh(GltfMeshData& mesh, const TaggedMeshView& view);
 // has no triangles, or its transform is not finite, affine and invertible.
 void write_glb(const std::filesystem::path& path, const std::vector<GltfMeshData>& meshes);
 void write_glb(const std::filesystem::path& path, const GltfScene& scene);
+// A .glb written as buildings come, in memory that does not grow with their
+// number: the bytes write_glb writes for the scene the parts make together
+// (append_scene in the order added; extras the scene's). Each part's
+// triangles go to temporary files (SpoolFile) with its buildings' JSON,
+// rendered in parallel (within the caller's TBB arena); what the file's JSON
+// needs of the placed meshes, materials and tags, which come first in it but
+// are known only at the end, is filled in when finish() puts the file together.
+class GlbStreamWriter {
+ public:
+  // Throws IoError if an extra's name is not UTF-8 or its value not JSON.
+  GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras);
+  GlbStreamWriter(const GlbStreamWriter&) = delete;
+  GlbStreamWriter& operator=(const GlbStreamWriter&) = delete;
+  ~GlbStreamWriter();
+  // Throws IoError as write_glb would for these buildings, or when the file
+  // would pass the 4 GiB a .glb holds.
+  void add(std::vector<GltfScene> parts);
+  // Writes the file atomically (nothing is written before).
+  void finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // Reads a .glb written by write_glb. Throws IoError naming the file and what
 // is not as write_glb writes it; read_glb also if the file holds placed-mesh
 // instances (they need read_glb_scene's prototypes).

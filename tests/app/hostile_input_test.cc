@@ -107,7 +107,7 @@ TEST_F(HostileInput, ABatchHasABudget) {
   BatchCommandOptions b;
   b.recipe = kSamples / "city.pxg";
   b.footprints = kBlock;
-  b.output = dir_ / "out.glb";
+  b.output = dir_ / "out.obj";
   b.report = dir_ / "report.json";
   b.progress = false;
   b.max_faces = 50;

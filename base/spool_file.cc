@@ -1,0 +1,83 @@
+#include "base/spool_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "base/io_error.h"
+
+namespace procex {
+namespace {
+
+// Large enough that appends and copies are few system calls, small enough
+// that a spool's memory does not matter beside what it saves.
+constexpr std::size_t kChunk = std::size_t{1} << 20;
+
+}  // namespace
+
+SpoolFile::SpoolFile() {
+  const char* tmpdir = std::getenv("TMPDIR");
+  folder_ = tmpdir && *tmpdir ? tmpdir : "/tmp";
+  fd_ = ::open(folder_.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  if (fd_ < 0) {  // a file system without O_TMPFILE: a named file, unlinked at once
+    std::string name = folder_ + "/procex-spool-XXXXXX";
+    fd_ = ::mkostemp(name.data(), O_CLOEXEC);
+    if (fd_ >= 0) ::unlink(name.c_str());
+  }
+  if (fd_ < 0)
+    throw IoError("cannot make a temporary file in '" + folder_ + "': " + std::strerror(errno) +
+                      " (TMPDIR names the folder)",
+                  folder_);
+  buffer_.reserve(kChunk);
+}
+
+SpoolFile::~SpoolFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void SpoolFile::append(std::string_view bytes) {
+  if (buffer_.size() + bytes.size() > kChunk) flush();
+  if (bytes.size() >= kChunk) {
+    buffer_ = bytes;
+    flush();
+    buffer_.shrink_to_fit(), buffer_.reserve(kChunk);
+  } else {
+    buffer_ += bytes;
+  }
+}
+
+void SpoolFile::flush() {
+  for (std::size_t done = 0; done < buffer_.size();) {
+    const ssize_t n = ::write(fd_, buffer_.data() + done, buffer_.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      throw IoError("cannot write a temporary file in '" + folder_ + "': " + std::strerror(n < 0 ? errno : ENOSPC) +
+                        " (is the folder full? TMPDIR names another)",
+                    folder_);
+    done += static_cast<std::size_t>(n);
+  }
+  written_ += buffer_.size();
+  buffer_.clear();
+}
+
+void SpoolFile::read(const std::function<void(std::string_view)>& each) const {
+  std::vector<char> chunk(written_ > 0 ? kChunk : 0);
+  for (std::uint64_t at = 0; at < written_;) {
+    const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, written_ - at));
+    const ssize_t n = ::pread(fd_, chunk.data(), want, static_cast<off_t>(at));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      throw IoError("cannot read back a temporary file in '" + folder_ + "': " + std::strerror(n < 0 ? errno : EIO),
+                    folder_);
+    each(std::string_view(chunk.data(), static_cast<std::size_t>(n)));
+    at += static_cast<std::uint64_t>(n);
+  }
+  if (!buffer_.empty()) each(buffer_);
+}
+
+}  // namespace procex

@@ -1,0 +1,36 @@
+// Bytes set aside while a long run goes on, to be copied into an output when
+// it ends without coming back into memory (a batch's report entries, a
+// streamed .glb's chunks): an unnamed temporary file in TMPDIR (else /tmp),
+// so it goes away with the process whatever happens.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace procex {
+
+class SpoolFile {
+ public:
+  SpoolFile();  // throws IoError naming the temporary folder
+  SpoolFile(const SpoolFile&) = delete;
+  SpoolFile& operator=(const SpoolFile&) = delete;
+  ~SpoolFile();
+
+  // Throws IoError (the temporary folder is full) naming the folder.
+  void append(std::string_view bytes);
+  std::uint64_t size() const { return written_ + buffer_.size(); }
+  // Hands every byte appended so far to each, in order, a bounded chunk at a
+  // time. Throws IoError if the file cannot be read back.
+  void read(const std::function<void(std::string_view)>& each) const;
+
+ private:
+  void flush();
+  std::string folder_;
+  int fd_ = -1;
+  std::string buffer_;  // appended, not yet in the file
+  std::uint64_t written_ = 0;
+};
+
+}  // namespace procex

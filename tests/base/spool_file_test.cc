@@ -1,0 +1,64 @@
+// SpoolFile: bytes set aside come back in order, whatever the sizes of the
+// appends (around and past its buffer), and go into a file written
+// atomically between pieces from memory.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "base/atomic_write.h"
+#include "base/spool_file.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Appends of sizes from 0 bytes to several megabytes, each byte telling its position.
+std::vector<std::string> appends() {
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  for (const std::size_t n : {0, 1, 7, 1000, (1 << 20) - 3, 5, (3 << 20) + 11, 0, 65536, 2}) {
+    std::string s(n, '\0');
+    for (char& c : s) c = static_cast<char>((at++ * 131) % 251);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+TEST(SpoolFile, GivesBackEveryByteInOrder) {
+  SpoolFile spool;
+  std::string expected;
+  for (const std::string& s : appends()) {
+    spool.append(s);
+    expected += s;
+    EXPECT_EQ(spool.size(), expected.size());
+    std::string back;
+    spool.read([&](std::string_view chunk) { back += chunk; });
+    ASSERT_EQ(back, expected);
+  }
+}
+
+TEST(SpoolFile, IsCopiedIntoAFileBetweenOtherPieces) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_spool_file_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  SpoolFile spool, empty;
+  std::string middle;
+  for (const std::string& s : appends()) spool.append(s), middle += s;
+  const FilePiece pieces[] = {{"head "}, {{}, &spool}, {{}, &empty}, {" tail"}};
+  write_file_atomically(dir / "out.bin", pieces);
+  std::ifstream in(dir / "out.bin", std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  EXPECT_EQ(s.str(), "head " + middle + " tail");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), {}), 1);  // no temporary file left beside it
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace procex
