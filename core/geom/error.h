@@ -42,6 +42,14 @@ class SweepBudgetError : public SweepError {
   using SweepError::SweepError;
 };
 
+// The roof does not close because the recipe says so: with no events left,
+// some edges rise forever (vertical or leaning out) and no maximum height caps
+// them. A refusal of the input, not a failure of the engine.
+class SweepOpenError : public SweepError {
+ public:
+  using SweepError::SweepError;
+};
+
 // Assembling or checking a mesh failed (a face OpenMesh refused, ...).
 class MeshError : public std::runtime_error {
  public:

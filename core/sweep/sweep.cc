@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
-#include <optional>
+#include <exception>
 #include <cmath>
 #include <sstream>
 
@@ -132,7 +132,7 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
   if (open) {
     if (!options.max_height && can_rise_forever(footprint))
-      throw SweepError(
+      throw SweepOpenError(
           "sweep: the roof does not close (vertical or outward-leaning edges rise forever); give a maximum height",
           st.height, {});
     if (!options.max_height) {
@@ -164,7 +164,7 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const Footprint local = moved(footprint, -frame.centre);
   engine::Tolerances tol{frame.extent};
   engine::Budget budget(options.budget);
-  std::optional<SweepError> first;
+  std::exception_ptr first;  // the first attempt's error, of its own type (an open roof stays one)
   int retries = 0;
   for (double relative : engine::Tolerances::retry_relative) {
     tol.relative = relative;
@@ -177,12 +177,12 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
       return s;
     } catch (const SweepBudgetError&) {
       throw;  // a runaway runs away at any tolerance
-    } catch (const SweepError& e) {
-      if (!first) first = e;
+    } catch (const SweepError&) {
+      if (!first) first = std::current_exception();
       ++retries;
     }
   }
-  throw *first;
+  std::rethrow_exception(first);
 }
 
 }  // namespace procex

@@ -1,6 +1,8 @@
 #include "tests/support/skeleton_oracle.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -33,6 +35,12 @@ std::string pair_text(std::pair<std::int32_t, std::int32_t> p) {
 }  // namespace
 
 Footprint without_straight_vertices(const Footprint& fp) {
+  double max_abs = 0.0;
+  for (const Loop& loop : fp.loops)
+    for (const glm::dvec2& p : loop.points) max_abs = std::max({max_abs, std::abs(p.x), std::abs(p.y)});
+  // A point off its exact place by a few units in the last place of the
+  // largest coordinate moves the cross product of its edges by this per metre.
+  const double rounding = 16.0 * std::numeric_limits<double>::epsilon() * max_abs;
   Footprint out = fp;
   for (Loop& loop : out.loops) {
     Loop kept;
@@ -40,8 +48,8 @@ Footprint without_straight_vertices(const Footprint& fp) {
     for (std::size_t i = 0; i < n; ++i) {
       const glm::dvec2 a = loop.points[(i + n - 1) % n], b = loop.points[i], c = loop.points[(i + 1) % n];
       const glm::dvec2 d1 = b - a, d2 = c - b;
-      const double turn = (d1.x * d2.y - d1.y * d2.x) / (glm::length(d1) * glm::length(d2));
-      if (std::abs(turn) < 1e-9 && glm::dot(d1, d2) > 0.0) continue;
+      const double l1 = glm::length(d1), l2 = glm::length(d2), cross = d1.x * d2.y - d1.y * d2.x;
+      if (std::abs(cross) < std::max(1e-9 * l1 * l2, rounding * (l1 + l2)) && glm::dot(d1, d2) > 0.0) continue;
       kept.points.push_back(b);
       kept.edges.push_back(loop.edges[i]);
     }

@@ -19,8 +19,11 @@ namespace procex::testing {
 // the same angle, in (0, 90).
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof);
 
-// The footprint without the vertices where a loop runs straight on (|sin| of
-// the turn below 1e-9). Such a vertex splits one plane into two coplanar
+// The footprint without the vertices where a loop runs straight on: |sin| of
+// the turn below 1e-9, or its cross product below what rounding of the
+// coordinates can make (a grid plan rotated and moved to 5e5: turns of 3e-9
+// between 8 cm edges, on which CGAL's exact kernel ran out of 8 GB, generated
+// grid seed 289). Such a vertex splits one plane into two coplanar
 // faces: the roof is the same without it, but its node is a matter of
 // convention. procex moves it perpendicular to the edges, as the limit of a
 // vanishing turn; CGAL moves it wherever rounding of the turn puts the

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <numeric>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/geom/nesting.h"
 #include "core/geom/prepare.h"
 #include "tests/support/roof_properties.h"
 #include "tests/support/skeleton_oracle.h"
@@ -73,6 +75,27 @@ std::optional<double> closed_form_volume(const Footprint& fp, const SweepOptions
                                 std::min(cap, inradius / s));
 }
 
+double plan_diagonal(const Footprint& fp) {
+  glm::dvec2 lo(INFINITY), hi(-INFINITY);
+  for (const Loop& loop : fp.loops)
+    for (const glm::dvec2& p : loop.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return glm::length(hi - lo);
+}
+
+// The area of a surface's top cap, seen from above.
+double cap_area(const Surface& s) {
+  double twice = 0.0;
+  for (const SurfaceFace& f : s.faces) {
+    if (f.kind != FaceKind::Cap) continue;
+    for (const std::vector<std::uint32_t>& loop : f.loops) {
+      std::vector<glm::dvec2> plan;
+      for (std::uint32_t v : loop) plan.emplace_back(s.vertices[v]);
+      twice += twice_signed_area(plan);
+    }
+  }
+  return 0.5 * twice;
+}
+
 void add(std::vector<std::string>& to, const std::string& prefix, const std::vector<std::string>& lines) {
   for (const std::string& line : lines) to.push_back(prefix + line);
 }
@@ -93,6 +116,22 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
   const auto sweep_guarded = [&](const Footprint& f, const SweepOptions& o, const std::string& what) -> std::optional<Surface> {
     try {
       return sweep(f, o);
+    } catch (const SweepOpenError& e) {
+      // The engine says edges rise forever once its last event is past. Then
+      // the plan capped well above that height is a valid solid, every face
+      // on its plane, with a top of some area: else the refusal hid lost events.
+      SweepOptions capped = o;
+      capped.max_height = e.height() + 10.0 * plan_diagonal(f);
+      try {
+        const Surface s = sweep(f, capped);
+        add(r.problems, what + "refused as rising forever, capped: ", check_valid_mesh(s));
+        add(r.problems, what + "refused as rising forever, capped: ", check_faces_on_planes(f, capped, s, tol));
+        if (!(cap_area(s) > tol * plan_diagonal(f)))
+          r.problems.push_back(what + "refused as rising forever, but capped above its last event its top is empty");
+      } catch (const std::exception& capped_error) {
+        r.problems.push_back(what + "refused as rising forever (" + e.what() + "), but capped it fails: " +
+                             capped_error.what());
+      }
     } catch (const SweepError& e) {
       std::string ids;
       for (int id : e.edge_ids()) ids += " " + std::to_string(id);
