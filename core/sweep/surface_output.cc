@@ -74,6 +74,8 @@ bool half_edge_equal(const HalfEdge& a, const HalfEdge& b) { return a.from == b.
 // Buffers reused from face to face (most faces have a handful of half-edges).
 struct ChainScratch {
   std::vector<HalfEdge> given, hs;
+  std::vector<std::pair<double, std::uint32_t>> corners, inside;  // (position, vertex)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> links;     // (vertex, a neighbour in the face)
   std::vector<char> used;
   std::vector<std::uint32_t> seen;  // vertex -> the last loop that passed it
   std::uint32_t loop_id = 0;
@@ -83,17 +85,97 @@ struct ChainScratch {
   std::vector<std::size_t> outer_from;            // outer loop i: its points from here in pts
   std::vector<double> outer_area;
   std::vector<std::size_t> holes;                 // into loops
+  bool runs_back = false;                         // a loop of the last face chained turned straight back
 };
+
+// Half-edges to cut, each with the vertices inside it in order from its start.
+using Cuts = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>;
+
+// A face whose boundary runs along itself passes a vertex of its own in the
+// middle of one of its half-edges: the face of a plane made and eaten at one
+// height (an edge between straight-on neighbours that the rule for straight
+// runs gives to its neighbour) is a loop of no area along one line and back;
+// a plan edit's front can run along the edge it was spliced into and back.
+// The rule: such a half-edge is cut at that vertex (where the face runs on
+// along the half-edge's line from it, not where it only touches the line at
+// a point, as near-touching parts of a plan do), and so is its reverse in the
+// face across, so both sides meet vertex to vertex; the parts that run back
+// along each other in one face are then a seam, which chaining drops.
+void add_own_vertex_cuts(const State& st, const FaceGroup& f, ChainScratch& x, Cuts& cuts) {
+  x.given.clear();
+  for (const HalfEdge& h : f.half_edges)
+    if (h.from != h.to) x.given.push_back(h);
+  if (x.given.size() < 3) return;
+  const FaceFrame fr = frame_of(f);
+  const double near = st.tol().position();
+  auto pos = [&](std::uint32_t v) { return fr.to2d(st.vertices[v]); };
+  x.corners.clear();
+  x.links.clear();
+  for (const HalfEdge& h : x.given) {
+    x.corners.push_back({pos(h.from).x, h.from});
+    x.links.push_back({h.from, h.to});
+    x.links.push_back({h.to, h.from});
+  }
+  std::sort(x.links.begin(), x.links.end());
+  std::sort(x.corners.begin(), x.corners.end());
+  x.corners.erase(std::unique(x.corners.begin(), x.corners.end()), x.corners.end());
+  for (const HalfEdge& h : x.given) {
+    const glm::dvec2 a = pos(h.from), along = pos(h.to) - a;
+    const double length = glm::length(along);
+    if (!(length > near)) continue;
+    x.inside.clear();
+    const auto first = std::lower_bound(x.corners.begin(), x.corners.end(),
+                                        std::pair{std::min(a.x, a.x + along.x) - near, std::uint32_t{0}});
+    auto on_line = [&](glm::dvec2 p) { return std::abs(cross(along, p - a)) <= near * length; };
+    auto runs_along = [&](std::uint32_t v) {
+      const glm::dvec2 p = pos(v);
+      for (auto l = std::lower_bound(x.links.begin(), x.links.end(), std::pair{v, std::uint32_t{0}});
+           l != x.links.end() && l->first == v; ++l)
+        if (glm::length(pos(l->second) - p) > near && on_line(pos(l->second))) return true;
+      return false;
+    };
+    for (auto it = first; it != x.corners.end() && it->first <= std::max(a.x, a.x + along.x) + near; ++it) {
+      const glm::dvec2 d = pos(it->second) - a;
+      const double t = glm::dot(d, along) / length;
+      if (t > near && t < length - near && on_line(a + d) && runs_along(it->second)) x.inside.push_back({t, it->second});
+    }
+    if (x.inside.empty()) continue;
+    std::sort(x.inside.begin(), x.inside.end());
+    std::vector<std::uint32_t>& cut = cuts[{h.from, h.to}];
+    for (const auto& [t, v] : x.inside) cut.push_back(v);
+  }
+}
+
+// The face's half-edges, cut where they or their reverses are (into x.given).
+void cut_half_edges(const FaceGroup& f, const Cuts& cuts, ChainScratch& x) {
+  x.given.clear();
+  for (const HalfEdge& h : f.half_edges) {
+    if (h.from == h.to) continue;
+    const auto ahead = cuts.find({h.from, h.to});
+    const auto back = ahead == cuts.end() ? cuts.find({h.to, h.from}) : cuts.end();
+    if (ahead == cuts.end() && back == cuts.end()) {
+      x.given.push_back(h);
+      continue;
+    }
+    std::uint32_t from = h.from;
+    auto step = [&](std::uint32_t v) {
+      x.given.push_back({from, v});
+      from = v;
+    };
+    if (ahead != cuts.end()) std::for_each(ahead->second.begin(), ahead->second.end(), step);
+    if (back != cuts.end()) std::for_each(back->second.rbegin(), back->second.rend(), step);
+    x.given.push_back({from, h.to});
+  }
+}
 
 // Chains a face's half-edges into closed loops (into x.loops). Where the face
 // touches itself at a vertex, the loop takes the sharpest turn, so each loop
 // stays simple.
-void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
+void chain_loops(const State& st, const FaceGroup& f, const Cuts& cuts, ChainScratch& x) {
   // Opposite half-edges inside one face are a zero-width seam: drop both.
   // Sorted by (from, to), the half-edges leaving a vertex are one run.
-  x.given.clear();
-  for (const HalfEdge& h : f.half_edges)
-    if (h.from != h.to) x.given.push_back(h);
+  x.runs_back = false;
+  cut_half_edges(f, cuts, x);
   std::sort(x.given.begin(), x.given.end(), half_edge_less);
   x.hs.clear();
   for (std::size_t i = 0; i < x.given.size();) {
@@ -110,6 +192,7 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
   if (hs.empty()) return;
   const FaceFrame fr = frame_of(f);
   auto pos = [&](std::uint32_t v) { return fr.to2d(st.vertices[v]); };
+  const double near = st.tol().position();
   x.used.assign(hs.size(), 0);
   if (x.seen.size() < st.vertices.size()) x.seen.resize(st.vertices.size(), 0);
   std::vector<std::uint32_t>& loop = x.loop;
@@ -132,6 +215,8 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
       // With one way on, the turn is only needed to refuse NaN positions.
       const glm::dvec2 back = pos(hs[h].from) - pos(v);
       const glm::dvec2 only = choices == 1 ? pos(hs[best].to) - pos(v) : glm::dvec2(0.0);
+      // Turning straight back along the way in: the face runs along itself.
+      x.runs_back = x.runs_back || (glm::dot(back, only) > 0.0 && std::abs(cross(back, only)) <= near * glm::length(only));
       if (choices > 1 || std::isnan(back.x + back.y + only.x + only.y)) {
         double best_turn = 1e300;
         best = -1;
@@ -163,59 +248,16 @@ void chain_loops(const State& st, const FaceGroup& f, ChainScratch& x) {
   }
 }
 
-// A loop of no area is the face of a plane that was made and eaten at one
-// height (an edge between straight-on neighbours, stepping or turning
-// differently, that the rule for straight runs gives to its neighbour): its
-// vertices run along one line and back. Dropped, it leaves its other sides
-// without its vertices: the faces of the old cross-section end at a vertex
-// in the middle of the new face's edge along that line. The rule: each half-
-// edge running back along a sliver's edge passes the sliver's vertices that
-// lie inside that edge, so every edge meets its reverse vertex to vertex.
-void pass_slivers(const State& st, const std::vector<std::vector<std::uint32_t>>& slivers, Surface& s) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> passes;  // half-edge -> vertices inside it
-  const double near = st.tol().position();
-  for (const auto& loop : slivers)
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-      const glm::dvec3 pa = st.vertices[a], along = st.vertices[b] - pa;
-      const double length = glm::length(along);
-      if (!(length > near)) continue;
-      // Inside b -> a, in order from b.
-      std::vector<std::pair<double, std::uint32_t>> inside_edge;
-      for (std::uint32_t v : loop) {
-        const glm::dvec3 d = st.vertices[v] - pa;
-        const double t = glm::dot(d, along) / length;
-        if (t > near && t < length - near && glm::length(d - along * (t / length)) <= near)
-          inside_edge.push_back({-t, v});
-      }
-      if (inside_edge.empty()) continue;
-      std::sort(inside_edge.begin(), inside_edge.end());
-      auto& pass = passes[{b, a}];
-      for (const auto& [t, v] : inside_edge) pass.push_back(v);
-    }
-  if (passes.empty()) return;
-  for (SurfaceFace& f : s.faces)
-    for (auto& loop : f.loops) {
-      std::vector<std::uint32_t> out;
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        out.push_back(loop[i]);
-        const auto pass = passes.find({loop[i], loop[(i + 1) % loop.size()]});
-        if (pass != passes.end()) out.insert(out.end(), pass->second.begin(), pass->second.end());
-      }
-      loop = std::move(out);
-    }
-}
-
-}  // namespace
-
-Surface build_surface(const State& st) {
+// The surface of the sweep's faces, their half-edges cut by `cuts`; the
+// faces whose loops turn straight back go to `runs_back`.
+Surface assemble(const State& st, const Cuts& cuts, ChainScratch& x, std::vector<std::size_t>& runs_back) {
   Surface s;
   s.faces.reserve(st.faces.size() + st.faces.size() / 4);
-  ChainScratch x;
-  std::vector<std::vector<std::uint32_t>> slivers;
-  for (const FaceGroup& f : st.faces) {
+  for (std::size_t fi = 0; fi < st.faces.size(); ++fi) {
+    const FaceGroup& f = st.faces[fi];
     const FaceFrame fr = frame_of(f);
-    chain_loops(st, f, x);
+    chain_loops(st, f, cuts, x);
+    if (x.runs_back) runs_back.push_back(fi);
     // Each outer loop (counter-clockwise) is a face of its own, in order.
     const std::size_t first_face = s.faces.size();
     x.pts.clear();
@@ -250,13 +292,11 @@ Surface build_surface(const State& st) {
       }
       if (best < 0) {
         // A clockwise loop with nothing around it: a sliver of no area.
-        slivers.push_back(std::move(x.loops[hole]));
         continue;
       }
       s.faces[first_face + static_cast<std::size_t>(best)].loops.push_back(std::move(x.loops[hole]));
     }
   }
-  pass_slivers(st, slivers, s);
   // Vertices no face uses (a plan edit's sliver absorbed by the face it grew
   // into, loops of no area) are left out, the rest keep their order.
   constexpr std::uint32_t kUnused = UINT32_MAX;
@@ -275,6 +315,21 @@ Surface build_surface(const State& st) {
     for (auto& loop : f.loops)
       for (std::uint32_t& v : loop) v = index[v];
   return s;
+}
+
+}  // namespace
+
+// Faces rarely run along themselves; only where one does are the cuts
+// looked for, and the surface assembled again with them.
+Surface build_surface(const State& st) {
+  ChainScratch x;
+  std::vector<std::size_t> runs_back;
+  Surface s = assemble(st, {}, x, runs_back);
+  Cuts cuts;
+  for (std::size_t f : runs_back) add_own_vertex_cuts(st, st.faces[f], x, cuts);
+  if (cuts.empty()) return s;
+  runs_back.clear();
+  return assemble(st, cuts, x, runs_back);
 }
 
 void close_surface(Surface& surface) {
