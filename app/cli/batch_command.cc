@@ -269,25 +269,27 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
 
-  std::vector<Building> buildings;
+  // The shard's features, readable or not, in input order: each window's
+  // building records are made from these as it starts, so records for every
+  // building are never held at once.
+  struct Source {
+    std::size_t index;
+    const GeoJsonFeature* feature;     // null: unreadable, see error
+    const GeoJsonFeatureError* error;
+  };
+  std::vector<Source> sources;
   for (const GeoJsonFeature& f : collection.features)
-    if (f.index % options.shards == options.shard) {
-      Building& b = buildings.emplace_back();
-      b.index = f.index, b.id = f.id, b.feature = &f;
-    }
+    if (f.index % options.shards == options.shard) sources.push_back({f.index, &f, nullptr});
   for (const GeoJsonFeatureError& e : collection.errors)
-    if (e.index % options.shards == options.shard) {
-      Building& b = buildings.emplace_back();
-      b.index = e.index, b.id = e.id, b.status = "refused", b.reason = e.message;
-    }
-  std::sort(buildings.begin(), buildings.end(), [](const Building& a, const Building& b) { return a.index < b.index; });
+    if (e.index % options.shards == options.shard) sources.push_back({e.index, nullptr, &e});
+  std::sort(sources.begin(), sources.end(), [](const Source& a, const Source& b) { return a.index < b.index; });
 
   // Shared by all workers: nodes that do not depend on the building (profiles) run once.
   // Per-building results are never asked for twice, so the cache stays small.
   ResultCache cache(std::size_t{32} << 20);
   const bool one_glb = !per_building && options.output.extension() == ".glb";
   Evaluator evaluator(cache, kEngineSalt);
-  Progress progress(err, buildings.size(), options.progress);
+  Progress progress(err, sources.size(), options.progress);
   constexpr std::size_t kUnlimited = static_cast<std::size_t>(-1);
   const bool streamed = per_building || one_glb;
   BatchBudget budget{streamed ? kUnlimited : options.max_faces, streamed ? kUnlimited : options.max_placed};
@@ -307,7 +309,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     j["shard"] = to_json(stamp);
     j["buildings"] = nlohmann::ordered_json::array();
     auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-    j["summary"] = {{"buildings", buildings.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
+    j["summary"] = {{"buildings", sources.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
                     {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
                     {"ms", ms(start, std::chrono::steady_clock::now())}};
     const std::string text = report_text(j);
@@ -342,21 +344,26 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     // freed, so the meshes in memory at once are a window's, however many
     // buildings the batch has.
     const std::size_t window = 64 * static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
-    for (std::size_t first = 0; first < buildings.size() && !budget.exceeded; first += window) {
-      const std::size_t last = std::min(buildings.size(), first + window);
+    for (std::size_t first = 0; first < sources.size() && !budget.exceeded; first += window) {
+      std::vector<Building> buildings(std::min(sources.size(), first + window) - first);
+      for (std::size_t i = 0; i < buildings.size(); ++i) {
+        const Source& from = sources[first + i];
+        Building& b = buildings[i];
+        b.index = from.index;
+        if (from.feature) b.id = from.feature->id, b.feature = from.feature;
+        else b.id = from.error->id, b.status = "refused", b.reason = from.error->message;
+      }
       arena.execute([&] {
-        tbb::parallel_for(first, last, [&](std::size_t i) {
+        tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
           if (buildings[i].feature && !budget.exceeded) evaluate_building(*recipe, evaluator, one_glb, budget, buildings[i]);
           progress.step();
         });
       });
       if (budget.exceeded) break;
       std::vector<GltfScene> window_gltf;
-      for (std::size_t i = first; i < last; ++i) {
-        Building& b = buildings[i];
+      for (Building& b : buildings) {
         if (per_building) b.file = file_name(b);
         spool.add(report_entry(b));
-        b.summary = {}, b.warnings = {};
         if (b.status != "ok") {
           ++(b.status == "refused" ? refused : failed);
           err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason
@@ -367,7 +374,6 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
         else if (one_glb) window_gltf.push_back(std::move(b.gltf));
         else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
-        b.meshes = {}, b.gltf = {};
       }
       if (one_glb) arena.execute([&] { glb->add(std::move(window_gltf)); });  // renders in parallel: --jobs holds
     }
@@ -391,7 +397,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     err << "procex batch: " << e.what() << "\n";
     return kExitUnusableInput;
   }
-  out << "procex batch: " << buildings.size() << " buildings: " << ok << " ok, " << refused << " refused, " << failed
+  out << "procex batch: " << sources.size() << " buildings: " << ok << " ok, " << refused << " refused, " << failed
       << " failed -> " << options.output.string() << "\n";
   // Nothing produced is no success, even when every building was only refused.
   return failed > 0 || ok == 0 ? kExitEvaluationFailed : 0;

@@ -1073,6 +1073,7 @@ struct GlbStreamWriter::State {
   WrittenMaterials materials;
   TagNumbers tags;
   Totals totals;  // the buildings' so far
+  std::uint64_t markers = 0;  // in the spooled JSON
   SpoolFile scene_nodes, nodes, meshes, accessors, positions, normals, indices, uvs, tag_values;
 
   // The placed mesh's slot, given it once more (a part's prototype).
@@ -1142,6 +1143,8 @@ void GlbStreamWriter::add(std::vector<GltfScene> parts) {
       append_element(s.nodes, item.nodes_json);
     }
     if (item.has_mesh) append_element(s.meshes, item.mesh_json), append_element(s.accessors, item.accessors_json);
+    for (const std::string* json : {&item.nodes_json, &item.mesh_json, &item.accessors_json})
+      s.markers += static_cast<std::uint64_t>(std::count(json->begin(), json->end(), kRefMarker));
     for (const GltfPrimitiveData& p : item.data->primitives) {
       if (p.indices.empty()) continue;
       s.positions.append(bytes_of(p.positions)), s.normals.append(bytes_of(p.normals));
@@ -1149,11 +1152,13 @@ void GlbStreamWriter::add(std::vector<GltfScene> parts) {
     }
     s.tag_values.append(bytes_of(item.tag_values));
   }
-  // Stop now, not after every building has run, when the file cannot hold them.
+  // Stop now, not after every building has run, when the file cannot hold
+  // them: its size is at least the spools' with each marker one digit.
   std::uint64_t bytes = 0;
   for (const SpoolFile* spool : {&s.scene_nodes, &s.nodes, &s.meshes, &s.accessors, &s.positions, &s.normals,
                                  &s.indices, &s.uvs, &s.tag_values})
     bytes += spool->size();
+  bytes -= s.markers * (kRefBytes - 1);
   if (bytes > UINT32_MAX)
     throw IoError("cannot write '" + s.path.string() + "': more than " + std::to_string(bytes) +
                       " bytes, more than a .glb holds (4 GiB)",
