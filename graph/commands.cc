@@ -1,6 +1,7 @@
 #include "graph/commands.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -375,6 +376,45 @@ class Ungroup final : public SnapshotCommand {
   std::vector<NodeId> created_;
 };
 
+class InGroup final : public Command {
+ public:
+  InGroup(std::vector<NodeId> path, std::unique_ptr<Command> inner) : path_(std::move(path)), inner_(std::move(inner)) {}
+  std::string label() const override { return inner_->label(); }
+  Status apply(Graph& g) override {
+    return edit(g, [this](Graph& body) { return inner_->apply(body); });
+  }
+  void revert(Graph& g) override {
+    (void)edit(g, [this](Graph& body) {
+      inner_->revert(body);
+      return Status::ok();
+    });
+  }
+  bool merge(const Command& next) override {
+    const auto* m = dynamic_cast<const InGroup*>(&next);
+    return m && m->path_ == path_ && inner_->merge(*m->inner_);
+  }
+
+ private:
+  // `change` made to a copy of the innermost group's graph, then each level's
+  // new graph set as its group's in a copy of the level above; `g` itself
+  // changes last, so a refusal on the way up changes nothing.
+  Status edit(Graph& g, const std::function<Status(Graph&)>& change) {
+    Result<std::vector<const Graph*>> levels = group_levels(g, path_, true);
+    if (!levels) return levels.status();
+    auto body = std::make_shared<Graph>(*(*levels).back());
+    if (Status s = change(*body); !s) return s;
+    for (std::size_t i = path_.size(); i-- > 1;) {
+      auto above = std::make_shared<Graph>(*(*levels)[i]);
+      if (Status s = above->set_group_body(above->node(path_[i])->group, std::move(body)); !s) return s;
+      body = std::move(above);
+    }
+    return g.set_group_body(std::string(g.node(path_[0])->group), std::move(body));
+  }
+
+  std::vector<NodeId> path_;
+  std::unique_ptr<Command> inner_;
+};
+
 class Macro final : public Command {
  public:
   explicit Macro(std::string label) : label_(std::move(label)) {}
@@ -418,6 +458,7 @@ void UndoStack::record(std::unique_ptr<Command> c) {
 }
 
 Status UndoStack::push(std::unique_ptr<Command> c) {
+  c = at_scope(std::move(c));
   Status s = c->apply(graph_);
   if (!s) return s;
   record(std::move(c));
@@ -431,6 +472,7 @@ bool UndoStack::undo() {
   undone_.push_back(std::move(done_.back()));
   done_.pop_back();
   merge_open_ = false;
+  trim_scope();
   return true;
 }
 
@@ -440,6 +482,7 @@ bool UndoStack::redo() {
   done_.push_back(std::move(undone_.back()));
   undone_.pop_back();
   merge_open_ = false;
+  trim_scope();
   return true;
 }
 
@@ -480,8 +523,8 @@ Result<NodeId> UndoStack::add_node(std::string_view type_name, EditorState edito
 }
 
 Result<NodeId> UndoStack::add_group_node(std::string_view group_name, EditorState editor) {
-  auto it = graph_.groups().find(group_name);
-  if (it == graph_.groups().end()) return Status::error("no group named '" + std::string(group_name) + "'");
+  auto it = scoped().groups().find(group_name);
+  if (it == scoped().groups().end()) return Status::error("no group named '" + std::string(group_name) + "'");
   auto c = std::make_unique<AddNode>(it->second.type, it->second.name, std::move(editor));
   AddNode& ref = *c;
   if (Status s = push(std::move(c)); !s) return s;
@@ -500,12 +543,12 @@ Status UndoStack::set_expression(NodeId id, std::string_view param, std::string_
 }
 
 Status UndoStack::move(NodeId id, double x, double y) {
-  const Node* n = graph_.node(id);
+  const Node* n = scoped().node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
   EditorState s = n->editor;
   s.x = x;
   s.y = y;
-  auto c = editor_state_command(id, std::move(s), "move");
+  auto c = at_scope(editor_state_command(id, std::move(s), "move"));
   if (Status st = c->apply(graph_); !st) return st;
   record(std::move(c));
   merge_open_ = true;
@@ -528,6 +571,38 @@ Result<std::vector<NodeId>> UndoStack::ungroup(NodeId instance) {
   return ref.created();
 }
 
+Status UndoStack::set_scope(std::vector<NodeId> path) {
+  if (Result<std::vector<const Graph*>> levels = group_levels(graph_, path, true); !levels) return levels.status();
+  scope_ = std::move(path);
+  merge_open_ = false;
+  return Status::ok();
+}
+
+const Graph& UndoStack::scoped() const { return *(*group_levels(graph_, scope_, false)).back(); }
+
+std::unique_ptr<Command> UndoStack::at_scope(std::unique_ptr<Command> c) const {
+  return scope_.empty() ? std::move(c) : in_group_command(scope_, std::move(c));
+}
+
+void UndoStack::trim_scope() {
+  while (!group_levels(graph_, scope_, true)) scope_.pop_back();
+}
+
+Result<std::vector<const Graph*>> group_levels(const Graph& g, const std::vector<NodeId>& path, bool editable) {
+  std::vector<const Graph*> levels{&g};
+  for (NodeId id : path) {
+    const Graph& at = *levels.back();
+    const Node* n = at.node(id);
+    if (!n || n->group.empty()) return Status::error("node " + std::to_string(id) + " is not a group node");
+    const std::string& file = at.groups().find(n->group)->second.file;
+    if (editable && !file.empty())
+      return Status::error("group '" + n->group + "' is read from " + file +
+                           ", which other recipes may use too: open that file to edit it, or Ungroup to edit a copy here");
+    levels.push_back(n->type->body.get());
+  }
+  return levels;
+}
+
 std::unique_ptr<Command> add_node_command(std::shared_ptr<const NodeType> type, std::string group, EditorState e) {
   return std::make_unique<AddNode>(std::move(type), std::move(group), std::move(e));
 }
@@ -548,5 +623,8 @@ std::unique_ptr<Command> group_command(std::vector<NodeId> nodes, std::string gr
   return std::make_unique<MakeGroup>(std::move(nodes), std::move(group_name));
 }
 std::unique_ptr<Command> ungroup_command(NodeId instance) { return std::make_unique<Ungroup>(instance); }
+std::unique_ptr<Command> in_group_command(std::vector<NodeId> path, std::unique_ptr<Command> inner) {
+  return std::make_unique<InGroup>(std::move(path), std::move(inner));
+}
 
 }  // namespace procex

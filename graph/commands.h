@@ -83,11 +83,27 @@ class UndoStack {
 
   Graph& graph() { return graph_; }
 
+  // ---- editing inside groups ----
+  // Edits from now on apply inside the group instances of `path` (ids,
+  // outermost first: path[0] a node of the graph, path[1] a node of its
+  // group's graph...; empty: the graph itself), changing that group for
+  // every instance of it. Refused, naming the node, when a step is no group
+  // instance or its group is read from a library file.
+  Status set_scope(std::vector<NodeId> path);
+  const std::vector<NodeId>& scope() const { return scope_; }
+  // The graph edits apply to: the body of the scope's innermost group.
+  const Graph& scoped() const;
+
  private:
   struct Macro;
   void record(std::unique_ptr<Command> c);
+  // `c` made to apply at the scope.
+  std::unique_ptr<Command> at_scope(std::unique_ptr<Command> c) const;
+  // After undo or redo: the scope cut back to the instances that still exist.
+  void trim_scope();
 
   Graph& graph_;
+  std::vector<NodeId> scope_;
   std::size_t limit_;
   std::vector<std::unique_ptr<Command>> done_, undone_;
   std::vector<std::unique_ptr<Macro>> macros_;
@@ -104,5 +120,14 @@ std::unique_ptr<Command> set_expression_command(NodeId id, std::string param, st
 std::unique_ptr<Command> editor_state_command(NodeId id, EditorState s, std::string label);
 std::unique_ptr<Command> group_command(std::vector<NodeId> nodes, std::string group_name);
 std::unique_ptr<Command> ungroup_command(NodeId instance);
+// `inner` applied to the graph of the group instance at `path` (see
+// UndoStack::set_scope); the group's new graph replaces the old one level by
+// level (Graph::set_group_body). Consecutive edits at one path merge as
+// `inner` does.
+std::unique_ptr<Command> in_group_command(std::vector<NodeId> path, std::unique_ptr<Command> inner);
+// The group graphs along `path` from `g`: [0] is &g, [i + 1] the body of
+// instance path[i] of [i]; an error names the first step that is no group
+// instance, or (`editable`) whose group is read from a library file.
+Result<std::vector<const Graph*>> group_levels(const Graph& g, const std::vector<NodeId>& path, bool editable);
 
 }  // namespace procex

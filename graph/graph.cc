@@ -95,7 +95,7 @@ Status Graph::set_param(NodeId id, std::size_t param, Value v) {
     params[param] = v;
     std::shared_ptr<const NodeType> variant = with_port_counts(n.type, params);
     std::map<PortRef, PortRef> relinked;
-    if (Status s = ports_kept(id, variant->decl, decl.name, port_count_of(v), relinked); !s) return s;
+    if (Status s = ports_kept(links_, id, variant->decl, q(decl.name) + " = " + std::to_string(port_count_of(v)), relinked); !s) return s;
     links_ = std::move(relinked);
     n.type = std::move(variant);
   }
@@ -158,13 +158,12 @@ Status Graph::set_expression(NodeId id, std::size_t param, std::string_view text
   return Status::ok();
 }
 
-Status Graph::ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count,
+Status Graph::ports_kept(const std::map<PortRef, PortRef>& links, NodeId id, const NodeDecl& next, const std::string& change,
                          std::map<PortRef, PortRef>& relinked) const {
   const NodeDecl& now = node(id)->decl();
   auto refuse = [&](const char* what, const std::string& port) {
-    return Status::error("node " + std::to_string(id) + " (" + now.type_name() + "): " + q(param) + " = " +
-                         std::to_string(count) + " would remove " + what + " " + q(port) +
-                         ", which is connected; disconnect it first");
+    return Status::error("node " + std::to_string(id) + " (" + now.type_name() + "): " + change + " would remove " + what + " " +
+                         q(port) + ", which is connected; disconnect it first");
   };
   // Where port i of `now` is in `next`, if it is still there.
   auto moved = [](const std::vector<PortDecl>& a, const std::vector<PortDecl>& b, std::uint32_t i) {
@@ -173,7 +172,7 @@ Status Graph::ports_kept(NodeId id, const NodeDecl& next, std::string_view param
     return it == b.end() ? std::optional<std::uint32_t>() : static_cast<std::uint32_t>(it - b.begin());
   };
   relinked.clear();
-  for (const auto& link : links_) {
+  for (const auto& link : links) {
     PortRef to = link.first, from = link.second;
     if (to.node == id) {
       const auto at = moved(now.inputs(), next.inputs(), to.port);
@@ -448,6 +447,53 @@ Status Graph::remove_group(std::string_view name) {
   for (const auto& [id, n] : nodes_)
     if (n.group == name) return Status::error("group " + q(name) + " is still used by node " + std::to_string(id));
   groups_.erase(it);
+  return Status::ok();
+}
+
+Status Graph::set_group_body(std::string_view name, std::shared_ptr<const Graph> body) {
+  auto it = groups_.find(name);
+  if (it == groups_.end()) return Status::error("no group named " + q(name));
+  if (!it->second.file.empty())
+    return Status::error("group " + q(name) + " is read from " + it->second.file + ": its graph is that file's, edited there");
+  auto type = make_group_type(it->second.name, std::move(body));
+  if (!type) return type.status();
+  const NodeDecl& next = (*type)->decl;
+  const std::string change = "the edit of group " + q(name);
+  // Everything is worked out before anything changes, so a refusal leaves the graph as it was.
+  std::map<PortRef, PortRef> links = links_;
+  std::map<NodeId, Node> instances;
+  for (const auto& [id, n] : nodes_) {
+    if (n.group != name) continue;
+    std::map<PortRef, PortRef> relinked;
+    if (Status s = ports_kept(links, id, next, change, relinked); !s) return s;
+    links = std::move(relinked);
+    Node& now = instances[id] = n;
+    now.type = *type;
+    now.params = next.default_params();
+    now.expressions.clear();
+    for (std::size_t j = 0; j < next.params().size(); ++j) {
+      const auto i = n.decl().param_index(next.params()[j].name);
+      if (!i || n.decl().params()[*i].type != next.params()[j].type) continue;
+      now.params[j] = n.params[*i];
+      if (auto e = n.expressions.find(static_cast<std::uint32_t>(*i)); e != n.expressions.end())
+        now.expressions[static_cast<std::uint32_t>(j)] = e->second;
+    }
+  }
+  std::vector<ExposedParam> exposed = exposed_;
+  for (ExposedParam& e : exposed) {
+    auto inst = instances.find(e.node);
+    if (inst == instances.end()) continue;
+    const ParamDecl& was = nodes_.at(e.node).decl().params()[e.param];
+    const auto j = next.param_index(was.name);
+    if (!j || next.params()[*j].type != was.type)
+      return Status::error("node " + std::to_string(e.node) + " (" + std::string(name) + "): " + change + " would remove parameter " +
+                           q(was.name) + ", which this graph exposes as " + q(e.name) + "; unexpose it first");
+    e.param = static_cast<std::uint32_t>(*j);
+  }
+  it->second.type = *type;
+  for (auto& [id, n] : instances) nodes_.at(id) = std::move(n);
+  links_ = std::move(links);
+  exposed_ = std::move(exposed);
   return Status::ok();
 }
 

@@ -191,6 +191,12 @@ class Graph {
   // came from, relative to the recipe's folder, or empty.
   Status add_group(std::string name, std::shared_ptr<const Graph> body, std::string file = {});
   Status remove_group(std::string_view name);  // refused while instances exist
+  // Gives group `name` a new graph (an edit made inside it): every instance
+  // takes the new declaration, keeping its links, parameter values,
+  // expressions and outward exposures by name. Refused, changing nothing,
+  // when a connected port or an exposed parameter would go, or when the group
+  // is read from a library file (its graph is that file's).
+  Status set_group_body(std::string_view name, std::shared_ptr<const Graph> body);
   const std::map<std::string, GroupDef, std::less<>>& groups() const { return groups_; }
 
   // Type of the port (output of `from` side or input of `to` side); null if no such port.
@@ -214,12 +220,11 @@ class Graph {
   // twice by the same node would otherwise be walked 2^depth times.
   using CarriedTypes = std::vector<std::pair<const ValueType*, PortRef>>;
   const CarriedTypes& carried_types(PortRef from, std::map<PortRef, CarriedTypes>& known) const;
-  // The links of node `id` with its ports renumbered for `next` (its
-  // declaration once `param` asks for `count` ports): a port keeps its links
-  // where `next` has one of the same name and type (a node with two variadic
-  // groups shifts the second when the first grows); an error if a connected
-  // port would go.
-  Status ports_kept(NodeId id, const NodeDecl& next, std::string_view param, std::size_t count,
+  // `links` with node `id`'s ports renumbered for `next` (its declaration
+  // after `change`, e.g. "'count' = 3"): a port keeps its links where `next`
+  // has one of the same name and type (a node with two variadic groups shifts
+  // the second when the first grows); an error if a connected port would go.
+  Status ports_kept(const std::map<PortRef, PortRef>& links, NodeId id, const NodeDecl& next, const std::string& change,
                     std::map<PortRef, PortRef>& relinked) const;
 
   std::map<NodeId, Node> nodes_;

@@ -147,6 +147,88 @@ TEST_F(Commands, UngroupRestoresTheWiringAndTheExposedValues) {
   EXPECT_EQ(stack.ungroup(d.c1).message(), "node 1 is not a group instance");
 }
 
+// Edits made inside a group (UndoStack::set_scope) change the group for
+// every instance of it, keep the instances' own values and links, and undo
+// and redo exactly from any level; a nested group is reached through both.
+TEST_F(Commands, EditsInsideAGroupChangeItForEveryInstanceAndUndoExactly) {
+  UndoStack stack(d.g);
+  ASSERT_TRUE(d.g.expose_param(ExposedParam{"left_scale", d.add1, 0}));
+  const std::string exposed = to_pxg(d.g);
+  const Result<NodeId> inst = stack.group({d.c2, d.add1}, "left");
+  ASSERT_TRUE(inst) << inst.message();
+  ASSERT_TRUE(stack.set_param(*inst, "left_scale", Value::make(3.0)));
+  const Result<NodeId> other = stack.add_group_node("left");
+  ASSERT_TRUE(other);
+  std::vector<std::string> states{to_pxg(d.g)};
+  auto step = [&](Status s) {
+    ASSERT_TRUE(s) << s.message();
+    states.push_back(to_pxg(d.g));
+  };
+  EXPECT_EQ(stack.set_scope({d.c1}).message(), "node 1 is not a group node");
+  ASSERT_TRUE(stack.set_scope({*inst}));
+  EXPECT_EQ(&stack.scoped(), d.g.node(*inst)->type->body.get());
+  step(stack.set_param(d.c2, "value", Value::make(7.0)));
+  const auto body = [&]() -> const Graph& { return *d.g.groups().at("left").type->body; };
+  EXPECT_EQ(body().node(d.c2)->params[0].get<double>(), 7.0);
+  EXPECT_EQ(d.g.node(*inst)->type, d.g.groups().at("left").type);
+  EXPECT_EQ(d.g.node(*other)->type, d.g.groups().at("left").type) << "every instance has the new graph";
+  EXPECT_EQ(d.g.node(*inst)->params[0].get<double>(), 3.0) << "the instance's own value stays";
+  EXPECT_EQ(d.g.source(PortRef{d.mul, 0}), (PortRef{*inst, 0})) << "and its links";
+  EXPECT_EQ(d.g.source(PortRef{*inst, 0}), (PortRef{d.c1, 0}));
+  // Two moves of one node in a row are one step, inside a group too.
+  ASSERT_TRUE(stack.move(d.c2, 10, 10));
+  step(stack.move(d.c2, 20, 30));
+  EXPECT_EQ(body().node(d.c2)->editor.x, 20);
+  const std::size_t outer_nodes = d.g.nodes().size();
+  const Result<NodeId> added = stack.add_node("test.Const");
+  ASSERT_TRUE(added);
+  states.push_back(to_pxg(d.g));
+  EXPECT_TRUE(body().node(*added));
+  EXPECT_EQ(d.g.nodes().size(), outer_nodes) << "added inside the group, not beside it";
+  step(stack.connect(PortRef{*added, 0}, PortRef{d.add1, 1}));
+  // The outer graph exposes the instance's left_scale: the inner parameter behind it cannot go.
+  const std::string before = to_pxg(d.g);
+  EXPECT_EQ(stack.remove_node(d.add1).message(),
+            "node " + std::to_string(*inst) + " (left): the edit of group 'left' would remove parameter 'left_scale', which this graph "
+            "exposes as 'left_scale'; unexpose it first");
+  EXPECT_EQ(to_pxg(d.g), before);
+  // A group inside the group, edited through both.
+  const Result<NodeId> inner = stack.group({d.c2}, "inner");
+  ASSERT_TRUE(inner) << inner.message();
+  states.push_back(to_pxg(d.g));
+  ASSERT_TRUE(stack.set_scope({*inst, *inner}));
+  step(stack.set_param(d.c2, "value", Value::make(9.0)));
+  EXPECT_EQ(body().groups().at("inner").type->body->node(d.c2)->params[0].get<double>(), 9.0);
+
+  for (std::size_t i = states.size() - 1; i > 0; --i) {
+    ASSERT_TRUE(stack.undo());
+    ASSERT_EQ(to_pxg(d.g), states[i - 1]) << "after undoing step " << i;
+  }
+  EXPECT_EQ(stack.scope(), std::vector<NodeId>{*inst}) << "the nested group node is gone: the scope backs out to it";
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    ASSERT_TRUE(stack.redo());
+    ASSERT_EQ(to_pxg(d.g), states[i]) << "after redoing step " << i;
+  }
+  // Undoing the grouping from inside: its node goes, and the scope with it.
+  while (stack.undo()) {
+  }
+  EXPECT_TRUE(stack.scope().empty());
+  EXPECT_EQ(to_pxg(d.g), exposed);
+}
+
+TEST_F(Commands, AGroupReadFromALibraryFileIsNotEditedInsideTheRecipe) {
+  auto body = std::make_shared<Graph>();
+  test::output(*body, "out", test::constant(*body, 5));
+  ASSERT_TRUE(d.g.add_group("facade", body, "lib/facade.pxg"));
+  UndoStack stack(d.g);
+  const Result<NodeId> inst = stack.add_group_node("facade");
+  ASSERT_TRUE(inst);
+  EXPECT_EQ(stack.set_scope({*inst}).message(),
+            "group 'facade' is read from lib/facade.pxg, which other recipes may use too: open that file to edit it, or Ungroup to edit a copy here");
+  EXPECT_TRUE(stack.scope().empty());
+  EXPECT_EQ(d.g.set_group_body("facade", body).message(), "group 'facade' is read from lib/facade.pxg: its graph is that file's, edited there");
+}
+
 TEST_F(Commands, HistoryIsBounded) {
   UndoStack stack(d.g, 3);
   for (int i = 0; i < 5; ++i) ASSERT_TRUE(stack.set_param(d.c1, "value", Value::make(static_cast<double>(i))));

@@ -183,6 +183,48 @@ TEST(Document, GroupSelectionMakesOneNodeAndUndoes) {
   EXPECT_EQ(s.doc.graph().nodes().size(), 3u);
 }
 
+// An opened group: graph() is its graph and edits there change the group,
+// the breadcrumb names the way down, leaving selects the group node, the
+// saved file holds the edited group, and undo reaches edits of any level.
+TEST(Document, EditsInsideAGroupAreSavedAndUndoneFromAnyLevel) {
+  const auto dir = temp_dir();
+  Small s;
+  s.doc.select({s.c1, s.c2}, false);
+  const Result<NodeId> g = s.doc.group_selection();
+  ASSERT_TRUE(g) << g.message();
+  EXPECT_EQ(s.doc.enter_group(s.add).message(), "node " + std::to_string(s.add) + " is not a group node");
+  ASSERT_TRUE(s.doc.enter_group(*g));
+  EXPECT_EQ(s.doc.scope(), std::vector<NodeId>{*g});
+  EXPECT_EQ(s.doc.breadcrumb(), (std::vector<std::string>{"untitled", "group1"}));
+  EXPECT_TRUE(s.doc.selection().empty());
+  EXPECT_EQ(s.doc.graph().nodes().size(), 2u) << "the two constants inside";
+  const auto inner = [&](NodeId id) { return s.doc.recipe().node(*g)->type->body->node(id); };
+  const std::uint64_t rev = s.doc.revision();
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(4.0)));
+  EXPECT_GT(s.doc.revision(), rev) << "the recipe changed: evaluated again";
+  EXPECT_EQ(inner(s.c1)->params[0].get<double>(), 4.0);
+  s.doc.select_only(s.c2);
+  ASSERT_TRUE(s.doc.move_selection(10, 0));
+  EXPECT_EQ(inner(s.c2)->editor.x, 10);
+  s.doc.leave_group(0);
+  EXPECT_TRUE(s.doc.scope().empty());
+  EXPECT_EQ(s.doc.selected(), *g);
+  s.doc.save_as(dir / "grouped.pxg");
+  EXPECT_EQ(load_pxg(dir / "grouped.pxg").groups().at("group1").type->body->node(s.c1)->params[0].get<double>(), 4.0);
+
+  ASSERT_TRUE(s.doc.undo());  // the move inside, from the recipe's level
+  EXPECT_EQ(inner(s.c2)->editor.x, 0);
+  ASSERT_TRUE(s.doc.enter_group(*g));
+  ASSERT_TRUE(s.doc.undo());  // the parameter
+  EXPECT_EQ(inner(s.c1)->params[0].get<double>(), 1.0);
+  ASSERT_TRUE(s.doc.undo());  // the grouping, from inside the group: back out to the recipe
+  EXPECT_TRUE(s.doc.scope().empty());
+  EXPECT_EQ(s.doc.graph().nodes().size(), 3u);
+  ASSERT_TRUE(s.doc.redo());
+  ASSERT_TRUE(s.doc.redo());
+  EXPECT_EQ(s.doc.recipe().node(*g)->type->body->node(s.c1)->params[0].get<double>(), 4.0);
+}
+
 TEST(Document, DirtyUntilSavedAndCleanAfterUndoingBack) {
   const auto dir = temp_dir();
   auto doc = Document::open(house_recipe());

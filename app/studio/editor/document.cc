@@ -87,7 +87,7 @@ void Document::save_as(const std::filesystem::path& file) {
 template <class R>
 R Document::changed(R r) {
   if (r) ++revision_;
-  std::erase_if(selection_, [this](NodeId id) { return graph_.node(id) == nullptr; });
+  std::erase_if(selection_, [this](NodeId id) { return graph().node(id) == nullptr; });
   return r;
 }
 
@@ -111,12 +111,12 @@ Result<NodeId> Document::add_node_wired(std::string_view name, bool group, doubl
     stack_.abort_macro();
     return changed(std::move(r));
   }
-  const Node* source = graph_.node(from);
-  const Node& added = *graph_.node(*r);
+  const Node* source = graph().node(from);
+  const Node& added = *graph().node(*r);
   bool wired = false;
   for (std::uint32_t o = 0; source && !wired && o < source->decl().outputs().size(); ++o)
     for (std::uint32_t i = 0; !wired && i < added.decl().inputs().size(); ++i)
-      if (graph_.can_connect({from, o}, {*r, i})) wired = static_cast<bool>(stack_.connect({from, o}, {*r, i}));
+      if (graph().can_connect({from, o}, {*r, i})) wired = static_cast<bool>(stack_.connect({from, o}, {*r, i}));
   stack_.end_macro();
   selection_ = {*r};
   return changed(std::move(r));
@@ -127,7 +127,7 @@ Status Document::connect(PortRef from, PortRef to) { return changed(stack_.conne
 Status Document::disconnect(PortRef to) { return changed(stack_.disconnect(to)); }
 
 Status Document::set_param(NodeId id, std::size_t param, Value v) {
-  const Node* n = graph_.node(id);
+  const Node* n = graph().node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
   if (param >= n->decl().params().size()) return Status::error("node " + std::to_string(id) + " has no parameter " + std::to_string(param));
   // Keeps drags that end where they began out of the history; the same value over an expression replaces it.
@@ -136,7 +136,7 @@ Status Document::set_param(NodeId id, std::size_t param, Value v) {
 }
 
 Status Document::set_expression(NodeId id, std::size_t param, std::string_view text) {
-  const Node* n = graph_.node(id);
+  const Node* n = graph().node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
   if (param >= n->decl().params().size()) return Status::error("node " + std::to_string(id) + " has no parameter " + std::to_string(param));
   const auto now = n->expressions.find(static_cast<std::uint32_t>(param));
@@ -146,7 +146,7 @@ Status Document::set_expression(NodeId id, std::size_t param, std::string_view t
 }
 
 Status Document::set_port_count(NodeId id, std::size_t param, std::size_t count) {
-  const Node* n = graph_.node(id);
+  const Node* n = graph().node(id);
   if (!n) return Status::error("no node " + std::to_string(id));
   if (param >= n->decl().params().size() || !n->decl().params()[param].sets_port_count)
     return Status::error("node " + std::to_string(id) + " has no port-count parameter " + std::to_string(param));
@@ -164,7 +164,7 @@ Status Document::move_selection(double dx, double dy) {
   if (selection_.empty() || (dx == 0 && dy == 0)) return Status::ok();
   stack_.begin_macro(selection_.size() == 1 ? "move node" : "move nodes");
   for (NodeId id : selection_) {
-    const Node* n = graph_.node(id);
+    const Node* n = graph().node(id);
     if (!n) continue;
     if (Status s = stack_.move(id, n->editor.x + dx, n->editor.y + dy); !s) {
       stack_.abort_macro();
@@ -197,7 +197,7 @@ Result<NodeId> Document::group_selection() {
 }
 
 std::string Document::free_group_name(const std::string& base, int first_number) const {
-  const auto free = [&](const std::string& name) { return !graph_.groups().count(name) && !NodeRegistry::global().find(name); };
+  const auto free = [&](const std::string& name) { return !graph().groups().count(name) && !NodeRegistry::global().find(name); };
   if (first_number > 1 && free(base)) return base;
   for (int i = first_number;; ++i)
     if (std::string name = base + std::to_string(i); free(name)) return name;
@@ -220,7 +220,7 @@ Result<std::filesystem::path> Document::library_folder(const std::string& what) 
 }
 
 Result<std::filesystem::path> Document::save_group_to_library() {
-  const Node* n = graph_.node(selected());
+  const Node* n = graph().node(selected());
   if (!n || n->group.empty()) return Status::error("select one group node to save its group to the library");
   Result<std::filesystem::path> folder = library_folder("the library is");
   if (!folder) return folder;
@@ -259,7 +259,7 @@ Result<NodeId> Document::place_library_group(const std::string& file, double x, 
 }
 
 Status Document::tidy_layout() {
-  const std::map<NodeId, glm::vec2> corners = layered_layout(graph_);
+  const std::map<NodeId, glm::vec2> corners = layered_layout(graph());
   end_gesture();
   stack_.begin_macro("tidy layout");
   for (const auto& [id, c] : corners) {
@@ -274,7 +274,7 @@ Status Document::tidy_layout() {
 }
 
 Result<std::vector<NodeId>> Document::ungroup_selection() {
-  const Node* n = graph_.node(selected());
+  const Node* n = graph().node(selected());
   if (!n || n->group.empty()) return Status::error("select one group node to ungroup");
   end_gesture();
   Result<std::vector<NodeId>> r = stack_.ungroup(n->id);
@@ -299,7 +299,7 @@ Status Document::expose(NodeId id, std::size_t param, ExposedParam p, Value defa
 
 Status Document::save_preset(const std::string& name) {
   Preset p{name, {}};
-  for (const ExposedParam& e : graph_.exposed_params()) p.values[e.name] = graph_.node(e.node)->params[e.param];
+  for (const ExposedParam& e : graph().exposed_params()) p.values[e.name] = graph().node(e.node)->params[e.param];
   if (p.values.empty()) return Status::error("expose a parameter first: a preset holds exposed values");
   return edit_recipe("save preset " + name, [p](Graph& g) { return g.set_preset(p); });
 }
@@ -308,14 +308,45 @@ Status Document::apply_preset(const std::string& name) {
   return edit_recipe("apply preset " + name, [name](Graph& g) { return g.apply_preset(name); });
 }
 
-bool Document::undo() {
+Status Document::enter_group(NodeId id) {
+  std::vector<NodeId> path = scope();
+  path.push_back(id);
   end_gesture();
-  return changed(stack_.undo());
+  if (Status s = stack_.set_scope(std::move(path)); !s) return s;
+  selection_.clear();
+  return Status::ok();
 }
 
-bool Document::redo() {
+void Document::leave_group(std::size_t depth) {
+  if (depth >= scope().size()) return;
   end_gesture();
-  return changed(stack_.redo());
+  const NodeId left = scope()[depth];
+  (void)stack_.set_scope(std::vector<NodeId>(scope().begin(), scope().begin() + static_cast<std::ptrdiff_t>(depth)));
+  selection_ = {left};
+}
+
+std::vector<std::string> Document::breadcrumb() const {
+  std::vector<std::string> out{title()};
+  const Graph* at = &graph_;
+  for (NodeId id : scope()) {
+    const Node& n = *at->node(id);
+    out.push_back(n.group);
+    at = n.type->body.get();
+  }
+  return out;
+}
+
+bool Document::undo() { return history_step(&UndoStack::undo); }
+
+bool Document::redo() { return history_step(&UndoStack::redo); }
+
+bool Document::history_step(bool (UndoStack::*step)()) {
+  end_gesture();
+  const std::size_t depth = scope().size();
+  const bool done = (stack_.*step)();
+  // Backed out of a group whose node went: the selected ids would name other nodes here.
+  if (scope().size() != depth) selection_.clear();
+  return changed(done);
 }
 
 void Document::begin_gesture(std::string label) {
@@ -340,7 +371,7 @@ void Document::abort_gesture() {
 std::string Document::copy_selection() const {
   Graph clip;
   for (NodeId id : selection_) {
-    const Node* n = graph_.node(id);
+    const Node* n = graph().node(id);
     if (!n) continue;
     Result<NodeId> added = NodeId{0};
     if (n->group.empty()) {
@@ -354,7 +385,7 @@ std::string Document::copy_selection() const {
     for (std::size_t p = 0; p < n->params.size(); ++p) (void)clip.set_param(id, p, n->params[p]);
     (void)clip.set_editor_state(id, n->editor);
   }
-  for (const auto& [to, from] : graph_.links())
+  for (const auto& [to, from] : graph().links())
     if (selection_.count(to.node) && selection_.count(from.node)) (void)clip.connect(from, to);
   return to_pxg(clip);
 }
@@ -378,12 +409,12 @@ Result<std::vector<NodeId>> Document::paste(std::string_view text, double dx, do
     EditorState e = n.editor;
     e.x += dx;
     e.y += dy;
-    if (!n.group.empty() && !graph_.groups().count(n.group))
+    if (!n.group.empty() && !graph().groups().count(n.group))
       return fail(Status::error("node " + std::to_string(old_id) + " is an instance of group '" + n.group + "', which this recipe does not define"));
     Result<NodeId> r = n.group.empty() ? stack_.add_node(n.type->name(), e) : stack_.add_group_node(n.group, e);
     if (!r) return fail(r.status());
     ids[old_id] = *r;
-    const Node& added = *graph_.node(*r);
+    const Node& added = *graph().node(*r);
     for (std::size_t p = 0; p < n.params.size() && p < added.params.size(); ++p) {
       if (added.params[p].same_content(n.params[p])) continue;
       if (Status s = stack_.set_param(*r, added.decl().params()[p].name, n.params[p]); !s) return fail(s);

@@ -37,7 +37,11 @@ class Document {
   Document(const Document&) = delete;
   Document& operator=(const Document&) = delete;
 
-  const Graph& graph() const { return graph_; }
+  // The whole recipe: what is evaluated, saved and exported.
+  const Graph& recipe() const { return graph_; }
+  // The graph being edited: the recipe, or the graph of the group entered
+  // (see enter_group). Edits, the selection and the clipboard are of this graph.
+  const Graph& graph() const { return stack_.scoped(); }
   const std::filesystem::path& path() const { return path_; }  // empty when untitled
   std::string title() const;                                    // file name or "untitled"
   std::uint64_t revision() const { return revision_; }
@@ -95,6 +99,19 @@ class Document {
   // Stores the current values of every exposed parameter as preset `name`.
   Status save_preset(const std::string& name);
   Status apply_preset(const std::string& name);
+  // ---- editing inside groups ----
+  // Opens group node `id` of graph(): graph() is then its group's graph, and
+  // edits there change the group (every instance of it). Refused, saying why,
+  // for a node that is no group, or whose group is read from a library file
+  // (other recipes may share that file: it is edited by opening it).
+  Status enter_group(NodeId id);
+  // Back out to `depth` groups deep (0: the recipe); the group node left is selected.
+  void leave_group(std::size_t depth);
+  // The group nodes entered, outermost first (their ids in the graph above each).
+  const std::vector<NodeId>& scope() const { return stack_.scope(); }
+  // The recipe's title, then the name of each group entered.
+  std::vector<std::string> breadcrumb() const;
+  // Undo and redo reach edits made at any depth; the view backs out of a group whose node they remove.
   bool undo();
   bool redo();
   bool can_undo() const { return stack_.can_undo(); }
@@ -130,6 +147,8 @@ class Document {
   std::string free_group_name(const std::string& base, int first_number) const;
   // The recipe's folder, refused while it has none (untitled).
   Result<std::filesystem::path> library_folder(const std::string& what) const;
+  // Undo or redo (`step`).
+  bool history_step(bool (UndoStack::*step)());
   // Every change ends here: bumps the revision and drops vanished nodes from the selection.
   template <class R>
   R changed(R r);

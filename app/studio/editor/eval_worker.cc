@@ -1,5 +1,6 @@
 #include "app/studio/editor/eval_worker.h"
 
+#include <algorithm>
 #include <set>
 #include <typeindex>
 
@@ -26,6 +27,28 @@ Bindings preview_bindings(const Graph& g, const Footprint& footprint) {
   for (const GraphInput& in : g.inputs())
     if (in.default_value.empty() && in.type && in.type->cpp_type() == std::type_index(typeid(Footprint))) b[in.name] = Value::make(footprint);
   return b;
+}
+
+EvalSnapshot inside_group(const EvalSnapshot& s, const NodePath& scope) {
+  EvalSnapshot in;
+  in.revision = s.revision;
+  in.preview = s.preview;
+  in.preview_current = s.preview_current;
+  in.seconds = s.seconds;
+  in.result.cancelled = s.result.cancelled;
+  const auto inner = [&](const NodePath& p) { return p.size() > scope.size() && std::equal(scope.begin(), scope.end(), p.begin()); };
+  const auto relative = [&](const NodePath& p) { return NodePath(p.begin() + static_cast<std::ptrdiff_t>(scope.size()), p.end()); };
+  for (const NodeStats& n : s.result.stats.nodes)
+    if (inner(n.path)) {
+      in.result.stats.nodes.push_back(n);
+      in.result.stats.nodes.back().path = relative(n.path);
+    }
+  for (const Diagnostic& d : s.result.diagnostics)
+    if (inner(d.node)) {
+      in.result.diagnostics.push_back(d);
+      in.result.diagnostics.back().node = relative(d.node);
+    }
+  return in;
 }
 
 EvalWorker::EvalWorker(std::size_t cache_bytes)

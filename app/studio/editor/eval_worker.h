@@ -47,6 +47,12 @@ struct EvalSnapshot {
   double seconds = 0.0;          // evaluation plus preview building
 };
 
+// What `s` says of the graph inside group node `scope` (Document::scope):
+// the statistics and diagnostics of the nodes in it, with paths relative to
+// it, so the canvas marks an inner node as it marks a recipe's. Port values
+// are left out: they are the recipe's ports.
+EvalSnapshot inside_group(const EvalSnapshot& s, const NodePath& scope);
+
 class EvalWorker {
  public:
   explicit EvalWorker(std::size_t cache_bytes = std::size_t{512} << 20);

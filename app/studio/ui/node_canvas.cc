@@ -140,8 +140,37 @@ std::string node_tooltip(const Graph& g, NodeId id, const EvalSnapshot* eval) {
 
 float NodeCanvas::legible_zoom() { return kMinTextPx / ImGui::GetFontSize(); }
 
+void NodeCanvas::breadcrumb(Document& doc) {
+  const std::vector<std::string> names = doc.breadcrumb();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) {
+      ImGui::SameLine();
+      ImGui::TextDisabled(">");
+      ImGui::SameLine();
+    }
+    ImGui::PushID(static_cast<int>(i));
+    // Every step but the last (the graph shown) backs out to its level.
+    const bool up = i + 1 < names.size() && ImGui::Button(names[i].c_str());
+    if (i + 1 == names.size()) ImGui::TextUnformatted(names[i].c_str());
+    crumbs_on_screen_.push_back(Rect{{ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y}, {ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y}});
+    ImGui::PopID();
+    if (up) doc.leave_group(i);
+  }
+}
+
+void NodeCanvas::open_group(Document& doc, NodeId id, std::string& status) {
+  if (Status s = doc.enter_group(id); !s) status = s.message();
+}
+
 void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& status) {
   ImGuiIO& io = ImGui::GetIO();
+  crumbs_on_screen_.clear();
+  if (!doc.scope().empty()) breadcrumb(doc);
+  if (doc.scope() != drawn_scope_) {  // another graph: frame it
+    drawn_scope_ = doc.scope();
+    frame_pending_ = true;
+    drag_ = Drag::kNone;
+  }
   const Graph& g = doc.graph();
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -292,7 +321,10 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
 
   // Gestures.
   const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && drag_ == Drag::kNone) {
+  const NodeId double_clicked = hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !pin_at(boxes, mouse, pick) ? node_at(boxes, mouse) : 0;
+  if (double_clicked && double_clicked <= kMaxNodeId && !g.node(double_clicked)->group.empty()) {
+    open_group(doc, double_clicked, status);
+  } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && drag_ == Drag::kNone) {
     if (auto pin = pin_at(boxes, mouse, pick)) {
       drag_ = Drag::kLink;
       link_from_ = *pin;
@@ -406,6 +438,9 @@ void NodeCanvas::draw(Document& doc, const EvalSnapshot* eval, std::string& stat
       if (Status s = doc.tidy_layout(); !s) status = s.message();
     if (ctrl && ImGui::IsKeyPressed('G'))
       if (auto r = doc.group_selection(); !r) status = r.message();
+    const Node* selected = g.node(doc.selected());
+    if (selected && !selected->group.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) open_group(doc, selected->id, status);
+    if (!ctrl && ImGui::IsKeyPressed('U') && !doc.scope().empty()) doc.leave_group(doc.scope().size() - 1);
   }
   draw_add_menu(doc, status);
 }

@@ -6,7 +6,9 @@
 // output to an input to connect (refusals explained), drag a connected input
 // away to disconnect, drag nodes to move them, click/ctrl-click/rubber band to
 // select, right click or Tab for the searchable add menu, wheel to zoom,
-// middle drag to pan, F to frame, L to lay the graph out, Delete, Ctrl+C / Ctrl+V / Ctrl+X, Ctrl+G to group.
+// middle drag to pan, F to frame, L to lay the graph out, Delete, Ctrl+C / Ctrl+V / Ctrl+X, Ctrl+G to group,
+// double-click or Enter on a group node to open it (its graph is then the one
+// drawn and edited, under a breadcrumb bar whose steps back out), U to go up.
 #pragma once
 
 #include <optional>
@@ -39,6 +41,8 @@ class NodeCanvas {
     glm::vec2 pos{0.0f};
   };
   const std::vector<PinOnScreen>& pins_on_screen() const { return pins_on_screen_; }
+  // The breadcrumb's steps (recipe, then each group entered), none at the recipe itself.
+  const std::vector<Rect>& crumbs_on_screen() const { return crumbs_on_screen_; }
   Rect screen_rect() const { return screen_rect_; }
   // Each node's outcome and time of the shown evaluation, where the last frame wrote it.
   struct TimingOnScreen {
@@ -58,6 +62,9 @@ class NodeCanvas {
 
  private:
   void draw_add_menu(Document& doc, std::string& status);
+  // "house.pxg > building > floor" above the canvas while inside a group.
+  void breadcrumb(Document& doc);
+  void open_group(Document& doc, NodeId id, std::string& status);
 
   CanvasView view_;
   bool frame_pending_ = true;
@@ -71,7 +78,9 @@ class NodeCanvas {
   char search_[64] = {};
   int highlight_ = 0;    // the search list's entry that Enter places
   NodeId wire_from_ = 0;  // the node selected when the search opened: the new node is wired from it
+  std::vector<NodeId> drawn_scope_;  // the group the last frame showed (Document::scope)
   std::vector<PinOnScreen> pins_on_screen_;
+  std::vector<Rect> crumbs_on_screen_;
   std::vector<TimingOnScreen> timings_on_screen_;
   Rect screen_rect_;
   float min_text_px_ = 0.0f;

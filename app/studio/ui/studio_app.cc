@@ -113,10 +113,11 @@ class App {
       submitted_ = doc_->revision();
       submitted_node_ = doc_->selected();
       // The selected node's outputs too, for the plan and profile editors (cached: cheap).
+      // (Those of a node inside a group are no ports of the recipe: inside a group there are none.)
       std::vector<PortRef> extra;
-      if (const Node* n = doc_->graph().node(submitted_node_))
+      if (const Node* n = doc_->scope().empty() ? doc_->graph().node(submitted_node_) : nullptr)
         for (std::uint32_t i = 0; i < n->decl().outputs().size(); ++i) extra.push_back({submitted_node_, i});
-      worker_.submit(submitted_, doc_->graph(), extra, preview_bindings(doc_->graph(), preview_footprint_),
+      worker_.submit(submitted_, doc_->recipe(), extra, preview_bindings(doc_->recipe(), preview_footprint_),
                      doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path());
     }
     // An edit of the recipe brings its preview back in place of a viewed .glb.
@@ -124,6 +125,10 @@ class App {
     if (auto latest = worker_.latest(); latest && latest != shown_) {
       shown_ = std::move(latest);
       if (!viewed_) preview_->set_mesh(shown_->preview);
+    }
+    if (here_of_ != std::pair(shown_, doc_->scope())) {
+      here_of_ = {shown_, doc_->scope()};
+      here_ = shown_ && !doc_->scope().empty() ? std::make_shared<const EvalSnapshot>(inside_group(*shown_, doc_->scope())) : shown_;
     }
     if (viewed_) preview_->set_mesh(viewed_->mesh);
     autosave();
@@ -258,7 +263,7 @@ class App {
       status_ = "the recipe is still evaluating: export when the preview is up to date";
       return;
     }
-    Result<std::size_t> written = studio::export_meshes(doc_->graph(), *shown_, file, export_options_, preview_feature_ ? &*preview_feature_ : nullptr);
+    Result<std::size_t> written = studio::export_meshes(doc_->recipe(), *shown_, file, export_options_, preview_feature_ ? &*preview_feature_ : nullptr);
     status_ = written ? "exported " + std::to_string(*written) + (*written == 1 ? " mesh to " : " meshes to ") + file.string() : written.message();
   }
 
@@ -273,7 +278,7 @@ class App {
     last_autosave_ = Clock::now();
     if (autosaved_ == doc_->revision() || !doc_->dirty()) return;
     try {
-      write_autosave(home_, doc_->path(), to_pxg(doc_->graph()));
+      write_autosave(home_, doc_->path(), to_pxg(doc_->recipe()));
       autosaved_ = doc_->revision();
     } catch (const std::exception& e) {
       status_ = std::string("autosave failed: ") + e.what();
@@ -405,14 +410,14 @@ class App {
     if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
       if (const Edges m = moved("nodes"); dragged(m.right)) set_x(placed.right + m.right);
       else if (!inspector_empty && dragged(m.bottom)) set_y(placed.bottom + m.bottom);
-      canvas_.draw(*doc_, shown_.get(), status_);
+      canvas_.draw(*doc_, here_.get(), status_);
     }
     ImGui::End();
     place(0, canvas_h, left_w, h - canvas_h);
     if (ImGui::Begin("Inspector", nullptr, fixed)) {
       if (const Edges m = moved("inspector"); dragged(m.right)) set_x(placed.right + m.right);
       else if (!inspector_empty && dragged(m.top)) set_y(placed.top + m.top);
-      inspector_.draw(*doc_, shown_.get(), status_);
+      inspector_.draw(*doc_, here_.get(), status_);
     }
     ImGui::End();
     place(left_w, 0, w - left_w, upper_h);
@@ -439,7 +444,7 @@ class App {
   void evaluation_panel() {
     if (!ImGui::BeginTabBar("eval")) return;
     if (ImGui::BeginTabItem("Plan / Profile")) {
-      shape_editor_.draw(*doc_, shown_.get(), status_);
+      shape_editor_.draw(*doc_, here_.get(), status_);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Recipe")) {
@@ -459,7 +464,7 @@ class App {
       if (shown_)
         for (const Diagnostic& d : shown_->result.diagnostics) {
           ImGui::PushStyleColor(ImGuiCol_Text, d.severity == Severity::kError ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(1, 0.8f, 0.3f, 1));
-          if (ImGui::Selectable(d.to_string().c_str()) && !d.node.empty() && doc_->graph().node(d.node[0])) doc_->select_only(d.node[0]);
+          if (ImGui::Selectable(d.to_string().c_str()) && !d.node.empty()) show_node(d.node);
           ImGui::PopStyleColor();
         }
       ImGui::EndTabItem();
@@ -491,6 +496,17 @@ class App {
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+  }
+
+  // Selects the node at `path`, opening the groups on the way (as far as they open).
+  void show_node(const NodePath& path) {
+    doc_->leave_group(0);
+    for (std::size_t i = 0; i + 1 < path.size(); ++i)
+      if (Status s = doc_->enter_group(path[i]); !s) {
+        status_ = s.message();
+        return;
+      }
+    if (doc_->graph().node(path.back())) doc_->select_only(path.back());
   }
 
   // The groups saved beside the recipe (lib/*.pxg), each placed at the canvas's centre by its button.
@@ -707,6 +723,8 @@ class App {
     j["settled"] = settled();
     j["dirty"] = doc_->dirty();
     j["selected"] = doc_->selected();
+    j["scope"] = doc_->scope();
+    j["breadcrumb"] = doc_->breadcrumb();
     const Rect c = canvas_.screen_rect();
     j["canvas"] = {c.min.x, c.min.y, c.max.x - c.min.x, c.max.y - c.min.y};
     j["canvas_zoom"] = canvas_.zoom();
@@ -724,6 +742,10 @@ class App {
     j["buttons"] = buttons_;
     for (const auto& [name, r] : shape_editor_.buttons()) j["buttons"][name] = r;
     for (const auto& [name, r] : recipe_panel_.widgets()) j["buttons"][name] = r;
+    for (std::size_t i = 0; i < canvas_.crumbs_on_screen().size(); ++i) {
+      const Rect& r = canvas_.crumbs_on_screen()[i];
+      j["buttons"]["crumb_" + std::to_string(i)] = {r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y};
+    }
     j["anchor_tool"] = shape_editor_.anchor_tool();
     j["links"] = nlohmann::json::array();
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
@@ -779,6 +801,9 @@ class App {
   ExportOptions export_options_;                   // kept between exports, as the format
   std::string export_extension_ = ".glb";
   std::shared_ptr<const EvalSnapshot> shown_;
+  // shown_ as the graph being edited sees it (inside_group), and what it was made from.
+  std::shared_ptr<const EvalSnapshot> here_;
+  std::pair<std::shared_ptr<const EvalSnapshot>, std::vector<NodeId>> here_of_;
   struct ViewedGlb {
     fs::path file;
     std::shared_ptr<const PreviewMesh> mesh;

@@ -2,7 +2,7 @@
 // groups selected, Edit > Save group to library writes lib/building.pxg
 // beside the recipe; the Evaluation panel's Library tab lists it, and its
 // Place button adds an instance read from that file, which the saved recipe
-// names.
+// names; opening that group to edit it inside the recipe is refused.
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -41,6 +41,15 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   map = click_until(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
                     [&](const json& j) { return j["node_positions"].size() == nodes_before + 1; });
   EXPECT_NE(map["status"].get<std::string>().find("placed lib/building.pxg"), std::string::npos) << map["status"];
+  // Its graph is the library file's, which other recipes may share: opening it here is refused, saying why.
+  const std::uint64_t placed = map["selected"].get<std::uint64_t>();
+  const auto refused = [](const json& j) { return j["status"].get<std::string>().find("is read from lib/building.pxg") != std::string::npos; };
+  map = double_click_until(studio, map, [&](const json& j) {
+    const auto [x, y] = pin(j, placed, 0, true);
+    return std::pair(x - 60, y);
+  }, "the library group refused", refused);
+  EXPECT_TRUE(refused(map)) << map["status"];
+  EXPECT_TRUE(map["scope"].empty());
   save_and_quit(studio);
 
   const Graph g = load_pxg(recipe);

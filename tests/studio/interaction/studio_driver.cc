@@ -134,6 +134,16 @@ json click_until(Studio& studio, const json& map, const std::function<std::pair<
   return studio.wait(what, [&](const json& j) { return changed(j) && done(j); });
 }
 
+json double_click_until(Studio& studio, json map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+                        const std::function<bool(const json&)>& done) {
+  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
+    const auto [x, y] = at(map);
+    xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.3 mousedown 1 sleep 0.04 mouseup 1 sleep 0.1 mousedown 1 sleep 0.04 mouseup 1 sleep 0.3");
+    map = studio.wait(what, done, 8s, attempt == 3);
+  }
+  return map;
+}
+
 json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {
   const auto shown = [&](const json& j) { return j["buttons"].contains(item); };
   for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {

@@ -62,6 +62,10 @@ std::uint64_t revision(const json& j);
 // recipe is never repeated.
 json click_until(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
                  const std::function<bool(const json&)>& done);
+// Double-clicks `at` until `done` (a double click that a loaded machine
+// saw as two clicks, or not at all, is given again).
+json double_click_until(Studio& studio, json map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+                        const std::function<bool(const json&)>& done);
 // Opens menu `menu` (a "buttons" entry: "menu_view") and clicks its item
 // `item` until `done`; a click a loaded machine lost is given again.
 json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done);
