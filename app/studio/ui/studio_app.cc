@@ -24,6 +24,7 @@
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
 #include "app/studio/editor/export_meshes.h"
+#include "app/studio/editor/glb_loader.h"
 #include "app/studio/editor/session_files.h"
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
@@ -65,12 +66,21 @@ const char* format_label(const std::string& extension) {
   return extension.c_str();
 }
 
+// "loading city.glb (120.0 MB): reading", then "...: making the preview".
+std::string glb_progress_text(const GlbLoader::Progress& p) {
+  char size[32];
+  std::snprintf(size, sizeof size, "%.1f MB", static_cast<double>(p.size) / 1e6);
+  return "loading " + p.file.filename().string() + " (" + size + "): " + (p.preparing ? "making the preview" : "reading");
+}
+
 }  // namespace
 
 class App {
  public:
-  App(GLFWwindow* window, const Options& options) : window_(window), options_(options), home_(studio_home()), recent_(home_ / "recent.txt") {
-    const bool interactive = options_.screenshot.empty() && options_.bench_edits == 0;
+  App(GLFWwindow* window, const Options& options)
+      : window_(window), options_(options), home_(studio_home()), recent_(home_ / "recent.txt"),
+        interactive_(options_.screenshot.empty() && options_.bench_edits == 0) {
+    const bool interactive = interactive_;
     canvas_.show_times(options_.screenshot.empty());
     // Screenshots and benchmarks show the default layout, whatever this user made of theirs.
     keep_layout_ = interactive;
@@ -88,9 +98,11 @@ class App {
       if (std::string failed = layout_.load(); !failed.empty()) status_ = std::move(failed);
   }
 
-  // Whether the last finished evaluation is of the current revision and its preview is on screen.
-  bool settled() const { return worker_.idle() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision(); }
-  bool busy() const { return !worker_.idle(); }
+  // Whether the last finished evaluation is of the current revision and its preview is on screen (and no .glb is loading).
+  bool settled() const {
+    return worker_.idle() && !glb_loader_.progress() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision();
+  }
+  bool busy() const { return !worker_.idle() || glb_loader_.progress(); }
   // Stops the evaluation; false if it is still running after `timeout` (a node that never polls cancellation).
   bool stop_evaluation(std::chrono::milliseconds timeout) {
     worker_.cancel();
@@ -130,6 +142,7 @@ class App {
       here_of_ = {shown_, doc_->scope()};
       here_ = shown_ && !doc_->scope().empty() ? std::make_shared<const EvalSnapshot>(inside_group(*shown_, doc_->scope())) : shown_;
     }
+    if (auto loaded = glb_loader_.take()) glb_loaded(*loaded);
     if (viewed_) preview_->set_mesh(viewed_->mesh);
     autosave();
     if (keep_layout_ && ImGui::GetIO().WantSaveIniSettings)
@@ -187,21 +200,27 @@ class App {
  private:
   // A .glb procex wrote, shown in the preview in place of the recipe's (read
   // only) until the recipe is edited or View > Recipe preview. The recipe
-  // stays open. A file the reader refuses changes nothing; the status says why.
+  // stays open. It is read on the loader's thread (glb_loaded takes it); a
+  // file the reader refuses changes nothing and the status says why.
   void view_glb(const fs::path& file) {
-    try {
-      const GltfScene scene = read_glb_scene(file);
-      auto mesh = std::make_shared<const PreviewMesh>(make_preview(scene));
-      status_ = "viewing " + file.string() + ": " + std::to_string(mesh->meshes) + (mesh->meshes == 1 ? " building, " : " buildings, ") +
-                std::to_string(mesh->faces) + " faces (read only; View > Recipe preview or an edit shows the recipe again)";
-      viewed_ = ViewedGlb{file, std::move(mesh), doc_->revision()};
-      if (preview_) preview_->frame_next_mesh();
-      load_failed_ = false;
-    } catch (const std::exception& e) {
-      status_ = e.what();
-      std::fprintf(stderr, "procex-studio: %s\n", e.what());
-      load_failed_ = !viewed_ && options_.recipe == file;
+    glb_loader_.load(file);
+    status_ = "loading " + file.string();
+  }
+
+  void glb_loaded(const GlbLoader::Loaded& loaded) {
+    if (!loaded.mesh) {
+      status_ = loaded.error;
+      std::fprintf(stderr, "procex-studio: %s\n", loaded.error.c_str());
+      load_failed_ = !viewed_ && options_.recipe == loaded.file;
+      return;
     }
+    const PreviewMesh& mesh = *loaded.mesh;
+    status_ = "viewing " + loaded.file.string() + ": " + std::to_string(mesh.meshes) + (mesh.meshes == 1 ? " building, " : " buildings, ") +
+              std::to_string(mesh.faces) + " faces (read only; View > Recipe preview or an edit shows the recipe again)";
+    viewed_ = ViewedGlb{loaded.file, loaded.mesh, doc_->revision()};
+    if (preview_) preview_->frame_next_mesh();
+    if (interactive_) recent_.add(loaded.file);
+    load_failed_ = false;
   }
 
   void close_glb() {
@@ -315,9 +334,18 @@ class App {
     if (file_menu) {
       if (ImGui::MenuItem("New", "Ctrl+N")) confirm_discard([this] { new_document(); });
       if (ImGui::MenuItem("Open...", "Ctrl+O")) confirm_discard([this] { prompt_ = {PathPrompt::Kind::kOpen, folder().string() + "/", true}; });
-      if (ImGui::BeginMenu("Open recent", !recent_.list().empty())) {
-        for (const fs::path& f : recent_.list())
-          if (ImGui::MenuItem(f.string().c_str())) confirm_discard([this, f] { load(f, true); });
+      const bool recent_menu = ImGui::BeginMenu("Open recent", !recent_.list().empty());
+      record_button("menu_open_recent");
+      if (recent_menu) {
+        for (std::size_t i = 0; i < recent_.list().size(); ++i) {
+          const fs::path f = recent_.list()[i];
+          // A .glb is viewed beside the recipe: nothing to discard.
+          if (ImGui::MenuItem(f.string().c_str())) {
+            if (f.extension() == ".glb") view_glb(f);
+            else confirm_discard([this, f] { load(f, true); });
+          }
+          record_button("recent_" + std::to_string(i));
+        }
         ImGui::EndMenu();
       }
       if (ImGui::MenuItem("Save", "Ctrl+S")) save(false);
@@ -562,7 +590,9 @@ class App {
   }
 
   void status_bar() {
-    if (busy()) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1.0f, 1.0f), "evaluating...");
+    if (const std::optional<GlbLoader::Progress> p = glb_loader_.progress())
+      ImGui::TextColored(ImVec4(0.5f, 0.8f, 1.0f, 1.0f), "%s", glb_progress_text(*p).c_str());
+    else if (busy()) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1.0f, 1.0f), "evaluating...");
     else if (shown_) {
       std::size_t errors = 0;
       for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;
@@ -754,6 +784,8 @@ class App {
     const PreviewMesh* shown_mesh = on_screen();
     j["preview_faces"] = shown_mesh ? shown_mesh->faces : 0;
     j["viewing"] = viewed_ ? viewed_->file.string() : "";
+    const std::optional<GlbLoader::Progress> loading = glb_loader_.progress();
+    j["loading"] = loading ? glb_progress_text(*loading) : "";
     j["preview_anchors"] = shown_mesh ? shown_mesh->anchors.size() - shown_mesh->absent_anchors() : 0;  // present ones, with markers
     j["preview_instances"] = shown_mesh ? shown_mesh->instances : 0;
     if (shown_mesh && !shown_mesh->empty())
@@ -810,6 +842,7 @@ class App {
     std::uint64_t revision = 0;  // the recipe's when it was opened
   };
   std::optional<ViewedGlb> viewed_;
+  GlbLoader glb_loader_;
   std::uint64_t submitted_ = 0, autosaved_ = 0;
   NodeId submitted_node_ = 0;
   ShapeEditor shape_editor_;
@@ -818,6 +851,7 @@ class App {
   Inspector inspector_;
   RecipePanel recipe_panel_;
   LayoutSettings layout_{layout_settings_path()};
+  const bool interactive_;  // a person's session: no screenshot or benchmark
   bool keep_layout_ = false;
   std::string status_, title_, ui_map_text_;
   std::uint64_t title_revision_ = 0;
@@ -926,7 +960,6 @@ int run_studio(const Options& options) {
   int exit_code = 0;
   {
     App app(window, options);
-    if (automated && app.load_failed()) exit_code = 1;
     EditBench bench(options.bench_edits);
     std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share;
     PartialRedraw redraw;
@@ -945,6 +978,10 @@ int run_studio(const Options& options) {
     const auto start = Clock::now();
     int settled_frames = 0;
     while (exit_code == 0) {
+      if (automated && app.load_failed()) {  // a recipe, or (once read) a .glb, that does not load
+        exit_code = 1;
+        break;
+      }
       const auto frame_start = Clock::now();
       if (automated) glfwPollEvents();
       else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);  // idle: no busy loop; evaluating: poll the worker

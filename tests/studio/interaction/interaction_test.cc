@@ -429,22 +429,6 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   fs::remove_all(dir);
 }
 
-// Drops `file` on the studio's window at its canvas, as a file manager would (XDND).
-void drop_file(const json& map, const fs::path& file) {
-  FILE* pipe = popen("xdotool search --name 'procex-studio$' | head -n 1", "r");
-  ASSERT_TRUE(pipe);
-  char id[64] = {};
-  const bool read = std::fgets(id, sizeof id, pipe) != nullptr;
-  pclose(pipe);
-  ASSERT_TRUE(read) << "no procex-studio window";
-  const auto canvas = map["canvas"];
-  const int x = map["window"][0].get<int>() + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.5);
-  const int y = map["window"][1].get<int>() + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.5);
-  const std::string cmd = std::string(PROCEX_XDND_DROP) + " " + std::string(id).substr(0, std::string(id).find('\n')) + " " + std::to_string(x) + " " +
-                          std::to_string(y) + " '" + file.string() + "'";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-}
-
 // Files dragged onto the window: a GeoJSON's first feature becomes the plan of
 // the recipe's footprint input; a recipe opens; anything else is explained.
 TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {

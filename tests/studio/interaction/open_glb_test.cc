@@ -2,6 +2,8 @@
 // the preview in place of the recipe's (its placed windows on screen, in
 // their tag's colour), View > Recipe preview brings the recipe's back, and a
 // file the glb reader refuses changes nothing and is named in the status bar.
+// The file read goes into File > Open recent, which opens it again; dropped
+// on the window (a real XDND drag from another X client) it opens too.
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -75,6 +77,31 @@ TEST(StudioOpenGlb, ShowsTheFileInThePreviewUntilAskedBack) {
   map = menu_item_until(studio, map, "menu_view", "menu_recipe_preview", back);
   map = studio.wait("the windows gone", [](const json& j) { return window_pixels(j) == 0; }, 20s);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "viewing a file does not change the recipe";
+
+  // File > Open recent > the .glb (the newest entry; the refused file is not listed).
+  const auto viewing = [&](const json& j) { return j["viewing"] == glb.string() && j["loading"] == ""; };
+  for (int attempt = 0; attempt < 4 && !viewing(map); ++attempt) {
+    click(button_centre(map, "menu_file"));
+    map = studio.wait("the File menu", [](const json& j) { return j["buttons"].contains("menu_open_recent"); }, 8s, attempt == 3);
+    if (!map["buttons"].contains("menu_open_recent")) continue;
+    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
+    const auto [x, y] = button_centre(studio.wait("the File menu", [](const json& j) { return j["buttons"].contains("menu_open_recent"); }), "menu_open_recent");
+    xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.5");  // hovered, the submenu opens
+    map = studio.wait("the recent files", [](const json& j) { return j["buttons"].contains("recent_1"); }, 8s, attempt == 3);
+    if (!map["buttons"].contains("recent_1")) continue;
+    std::this_thread::sleep_for(300ms);
+    click(button_centre(studio.wait("the recent files", [](const json& j) { return j["buttons"].contains("recent_1"); }), "recent_0"));
+    map = studio.wait("the .glb opened again", viewing, 8s, attempt == 3);
+  }
+  ASSERT_TRUE(viewing(map)) << map["status"];
+  EXPECT_NE(map["status"].get<std::string>().find("viewing " + glb.string()), std::string::npos) << map["status"];
+
+  // Back to the recipe, then the .glb dropped on the window.
+  map = menu_item_until(studio, map, "menu_view", "menu_recipe_preview", back);
+  ASSERT_TRUE(back(map));
+  drop_file(map, glb);
+  map = studio.wait("the dropped .glb viewed", viewing);
+  EXPECT_GT(map["preview_instances"].get<int>(), 0);
   press("ctrl+q");
   EXPECT_EQ(studio.wait_exit(20s), 0);
   fs::remove_all(dir);

@@ -158,6 +158,21 @@ json menu_item_until(Studio& studio, json map, const std::string& menu, const st
   return map;
 }
 
+void drop_file(const json& map, const fs::path& file) {
+  FILE* pipe = popen("xdotool search --name 'procex-studio$' | head -n 1", "r");
+  ASSERT_TRUE(pipe);
+  char id[64] = {};
+  const bool read = std::fgets(id, sizeof id, pipe) != nullptr;
+  pclose(pipe);
+  ASSERT_TRUE(read) << "no procex-studio window";
+  const auto canvas = map["canvas"];
+  const int x = map["window"][0].get<int>() + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.5);
+  const int y = map["window"][1].get<int>() + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.5);
+  const std::string cmd = std::string(PROCEX_XDND_DROP) + " " + std::string(id).substr(0, std::string(id).find('\n')) + " " + std::to_string(x) + " " +
+                          std::to_string(y) + " '" + file.string() + "'";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+}
+
 long Screen::count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const {
   const long x0 = origin.first + static_cast<long>(r[0].get<double>()), y0 = origin.second + static_cast<long>(r[1].get<double>());
   const long x1 = x0 + static_cast<long>(r[2].get<double>()), y1 = y0 + static_cast<long>(r[3].get<double>());

@@ -70,6 +70,10 @@ json double_click_until(Studio& studio, json map, const std::function<std::pair<
 // `item` until `done`; a click a loaded machine lost is given again.
 json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done);
 
+// Drops `file` on the studio's window at its canvas, as a file manager
+// would: a real XDND drag from another X client (PROCEX_XDND_DROP).
+void drop_file(const json& map, const fs::path& file);
+
 // The screen now (xwd | xwdtopnm), so a test sees what a person would.
 struct Screen {
   long w = 0, h = 0;
