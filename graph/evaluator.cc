@@ -72,8 +72,8 @@ struct Frame {
 
 class Run {
  public:
-  Run(ResultCache& cache, const Hash128& salt, const EvalOptions& options, EvalResult& result)
-      : cache_(cache), salt_(salt), options_(options), result_(result) {}
+  Run(ResultCache& cache, const Hash128& salt, const EvalOptions& options, int level, EvalResult& result)
+      : cache_(cache), salt_(salt), options_(options), level_(level), result_(result) {}
 
   // Phase 1: flattens and hashes what `ports` (outputs of the top graph) need.
   std::vector<Source> plan(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports) {
@@ -343,19 +343,34 @@ class Run {
     throw ExprError("no graph input or exposed parameter named " + q + " here");
   }
 
+  // Whether a node of this declaration may hand an input on: by its
+  // parameters, or below its level of detail.
+  bool hands_on(const NodeDecl& decl) const {
+    return decl.pass_through() || (decl.detail_level() > level_ && !decl.inputs().empty());
+  }
+  // The input output `o` hands on, if any. Below its level of detail a node's
+  // outputs of its first input's type hand that input on; its other outputs
+  // (Mesh Placement's counts) are still computed for whoever reads them.
+  std::optional<std::size_t> forwarded(const NodeDecl& decl, const std::vector<Value>& params, std::size_t o) const {
+    if (decl.detail_level() > level_ && !decl.inputs().empty() && decl.outputs()[o].type == decl.inputs()[0].type)
+      return 0;
+    if (decl.pass_through()) return decl.pass_through()(params, o);
+    return std::nullopt;
+  }
+
   // The input that every output of node `id` hands on, when its parameters
   // say so and that input is linked (a Switch): nothing upstream of its other
   // inputs is needed, so none of it is planned or hashed.
   std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) const {
     const Node* node = f.graph->node(id);
-    if (!node || node->type->is_group() || !node->decl().pass_through()) return std::nullopt;
+    if (!node || node->type->is_group() || !hands_on(node->decl())) return std::nullopt;
     std::vector<Value> storage;
     std::string error;
     const std::vector<Value>& params = params_in(f, *node, storage, error);
     if (!error.empty()) return std::nullopt;
     std::optional<std::size_t> only;
     for (std::size_t o = 0; o < node->decl().outputs().size(); ++o) {
-      const std::optional<std::size_t> p = node->decl().pass_through()(params, o);
+      const std::optional<std::size_t> p = forwarded(node->decl(), params, o);
       if (!p || (only && *p != *only)) return std::nullopt;
       only = p;
     }
@@ -418,8 +433,7 @@ class Run {
     n.out_hash.resize(outs);
     n.passes.resize(outs);
     for (std::uint32_t o = 0; o < outs; ++o) {
-      std::optional<std::size_t> pass;
-      if (decl.pass_through()) pass = decl.pass_through()(n.params(), o);
+      const std::optional<std::size_t> pass = forwarded(decl, n.params(), o);
       if (pass && *pass < n.inputs.size() &&
           (n.inputs[*pass].kind == Source::kNode || n.inputs[*pass].kind == Source::kValue)) {
         n.passes[o] = static_cast<std::uint32_t>(*pass);
@@ -599,6 +613,7 @@ class Run {
   ResultCache& cache_;
   Hash128 salt_;
   const EvalOptions& options_;
+  const int level_;  // of detail
   EvalResult& result_;
   std::vector<std::unique_ptr<PlanNode>> plan_;
   std::vector<NodeStats> pass_through_stats_;
@@ -624,13 +639,45 @@ bool EvalResult::ok() const {
 Evaluator::Evaluator(ResultCache& cache, std::string engine_salt)
     : cache_(cache), salt_(std::move(engine_salt)), salt_hash_(Hasher().str("procex-engine").str(salt_).result()) {}
 
+namespace {
+// The level of detail an evaluation shows (EvalOptions::lod). When the option
+// sets it for a graph that declares the input `lod`, `bound` becomes the
+// bindings with that input set to it.
+int level_of_detail(const Graph& g, const Bindings& bindings, const EvalOptions& options, Bindings& bound,
+                    std::vector<Diagnostic>& problems) {
+  const std::optional<std::size_t> input = g.input_index("lod");
+  const bool is_int = input && g.inputs()[*input].type == &value_type<std::int64_t>();
+  std::int64_t level = kFullDetail;
+  if (options.lod) {
+    level = *options.lod;
+    if (is_int) {
+      bound = bindings;
+      bound.insert_or_assign("lod", Value::make<std::int64_t>(level));
+    }
+  } else if (is_int) {
+    const auto it = bindings.find("lod");
+    const Value& v = it != bindings.end() ? it->second : g.inputs()[*input].default_value;
+    if (v.is<std::int64_t>()) level = v.get<std::int64_t>();
+  }
+  if (level < 0 || level > kFullDetail) {
+    problems.push_back({Severity::kError, {}, {}, "level of detail (lod) " + std::to_string(level) +
+                                                      ": levels are 0 (footprint), 1 (block at the roof's mean "
+                                                      "height), 2 (roof shapes) and 3 (everything)"});
+    level = std::clamp<std::int64_t>(level, 0, kFullDetail);
+  }
+  return static_cast<int>(level);
+}
+}  // namespace
+
 EvalResult Evaluator::run(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports,
                           std::vector<std::string> names, const EvalOptions& options, bool compute) {
   assert(!(compute && options.assume_inputs_bound) && "EvalOptions::assume_inputs_bound is for hash_outputs only");
   const auto t0 = Clock::now();
   EvalResult result;
-  Run run(cache_, salt_hash_, options, result);
-  std::vector<Source> wanted = run.plan(g, bindings, ports);
+  Bindings bound;
+  result.lod = level_of_detail(g, bindings, options, bound, result.diagnostics);
+  Run run(cache_, salt_hash_, options, result.lod, result);
+  std::vector<Source> wanted = run.plan(g, bound.empty() ? bindings : bound, ports);
   result.stats.hash_ns = ns_since(t0);
   if (compute) run.compute(wanted);
   else run.check(wanted);
@@ -678,6 +725,11 @@ EvalResult Evaluator::run_outputs(const Graph& g, const Bindings& bindings, cons
                                                       ": feed that node's chosen input a " + want->name()});
     out.value = {};
   }
+  if (r.lod < kFullDetail)
+    for (OutputResult& out : r.outputs) {
+      out.hash = Hasher().hash(out.hash).str("level of detail").u64(static_cast<std::uint64_t>(r.lod)).result();
+      if (!out.value.empty()) out.value = out.value.type()->at_level_of_detail(out.value, r.lod);
+    }
   r.diagnostics.insert(r.diagnostics.begin(), problems.begin(), problems.end());
   return r;
 }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -60,6 +61,11 @@ struct EvalOptions {
   // as text (a GeoJSON property's value). They reach a node's key through the
   // parameter values they give, so one recipe and one cache serve many features.
   std::map<std::string, std::string, std::less<>> attributes;
+  // The level of detail to show (NodeDecl::detail_level, ValueType::
+  // at_level_of_detail), 0 to kFullDetail. Unset: the graph input `lod` if
+  // the graph declares one, else kFullDetail; set, it also binds that input,
+  // so expressions read the same level.
+  std::optional<int> lod;
 };
 
 struct OutputResult {
@@ -73,6 +79,7 @@ struct EvalResult {
   std::vector<Diagnostic> diagnostics;
   EvalStats stats;
   bool cancelled = false;
+  int lod = kFullDetail;  // the level of detail shown (EvalOptions::lod)
 
   // Null if missing or failed.
   const Value* output(std::string_view name) const;

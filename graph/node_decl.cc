@@ -190,6 +190,9 @@ std::string NodeDecl::markdown() const {
   std::ostringstream md;
   md << "### " << type_name_ << " (v" << version_ << ")\n\n";
   if (!doc_.empty()) md << doc_ << "\n\n";
+  if (detail_level_ > 0)
+    md << "Shown from level of detail " << detail_level_ << " on: below it (`--lod`, the graph input `lod`) its "
+       << inputs_.front().name << " passes through unchanged.\n\n";
   auto ports = [&](const char* title, const std::vector<PortDecl>& list) {
     if (list.empty()) return;
     md << "**" << title << "**\n\n";

@@ -122,6 +122,11 @@ using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesy
 // modification time (a missing file hashes as such, and reading it fails later).
 void hash_file_stamp(const std::filesystem::path& file, Hasher& h);
 
+// Levels of detail, counted as CityGML counts them: 0 the footprint, 1 a
+// block, 2 the shape, kFullDetail everything. An evaluation shows one
+// (EvalOptions::lod, or the recipe's graph input `lod`).
+inline constexpr int kFullDetail = 3;
+
 class NodeDecl {
  public:
   NodeDecl() = default;
@@ -161,6 +166,13 @@ class NodeDecl {
     pass_through_ = fn;
     return *this;
   }
+  // The node adds detail first shown at level of detail `level` (windows at
+  // kFullDetail): evaluated below it, every output hands on input 0 as a
+  // pass-through, so nothing the node adds is computed, cached or shown.
+  NodeDecl& detail_level(int level) {
+    detail_level_ = level;
+    return *this;
+  }
   NodeDecl& upgrade(UpgradeFn fn) {
     upgrade_ = fn;
     return *this;
@@ -178,6 +190,7 @@ class NodeDecl {
   const std::vector<PortDecl>& outputs() const { return outputs_; }
   const std::vector<ParamDecl>& params() const { return params_; }
   PassThroughFn pass_through() const { return pass_through_; }
+  int detail_level() const { return detail_level_; }
   UpgradeFn upgrade() const { return upgrade_; }
   HashExtraFn hash_extra() const { return hash_extra_; }
 
@@ -211,6 +224,7 @@ class NodeDecl {
   std::vector<PortDecl> inputs_, outputs_;
   std::vector<ParamDecl> params_;
   PassThroughFn pass_through_ = nullptr;
+  int detail_level_ = 0;
   UpgradeFn upgrade_ = nullptr;
   HashExtraFn hash_extra_ = nullptr;
   std::map<std::string, std::size_t, std::less<>> counts_;

@@ -166,6 +166,8 @@ Value ValueType::from_json(const nlohmann::json& in) const {
   return from_json_(in);
 }
 
+Value ValueType::at_level_of_detail(const Value& v, int level) const { return detail_ ? detail_(v.raw(), level) : v; }
+
 Hash128 Value::content_hash() const {
   Hasher h;
   hash(h);

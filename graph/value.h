@@ -52,6 +52,7 @@ class ValueType {
   using ToJsonFn = std::function<void(const void*, nlohmann::json&)>;
   // Throws std::invalid_argument with a message naming what is wrong.
   using FromJsonFn = std::function<Value(const nlohmann::json&)>;
+  using DetailFn = std::function<Value(const void*, int level)>;
 
   const std::string& name() const { return name_; }
   const std::string& doc() const { return doc_; }
@@ -66,6 +67,10 @@ class ValueType {
   std::size_t memory_size(const void* data) const { return size_(data); }
   void to_json(const void* data, nlohmann::json& out) const;
   Value from_json(const nlohmann::json& in) const;
+  // `v` (of this type) as a graph output shows it at a level of detail below
+  // kFullDetail (node_decl.h): a mesh becomes its block or its footprint.
+  // Types without a reduction show `v` itself.
+  Value at_level_of_detail(const Value& v, int level) const;
 
   // Whether a link from an output of type `from` may feed an input of type `to`.
   static bool can_link(const ValueType& from, const ValueType& to) {
@@ -83,6 +88,7 @@ class ValueType {
   SizeFn size_;
   ToJsonFn to_json_;
   FromJsonFn from_json_;
+  DetailFn detail_;
 };
 
 // What a module provides to register type T.
@@ -94,6 +100,7 @@ struct ValueTypeSpec {
   std::size_t (*memory_size)(const T&) = nullptr;  // required: bytes owned, including sizeof(T)
   void (*to_json)(const T&, nlohmann::json&) = nullptr;  // optional: needed for parameters
   T (*from_json)(const nlohmann::json&) = nullptr;       // optional: throw std::invalid_argument on bad input
+  T (*at_level_of_detail)(const T&, int level) = nullptr;  // optional: ValueType::at_level_of_detail
 };
 
 class ValueTypeRegistry {
@@ -219,6 +226,8 @@ const ValueType& ValueTypeRegistry::add(const ValueTypeSpec<T>& spec) {
     t->to_json_ = [to](const void* p, nlohmann::json& j) { to(*static_cast<const T*>(p), j); };
     t->from_json_ = [from](const nlohmann::json& j) { return Value::make<T>(from(j)); };
   }
+  if (auto detail = spec.at_level_of_detail)
+    t->detail_ = [detail](const void* p, int level) { return Value::make<T>(detail(*static_cast<const T*>(p), level)); };
   return insert(std::move(t));
 }
 

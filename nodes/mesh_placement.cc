@@ -61,7 +61,8 @@ void declare(NodeDecl& d) {
         "behind, so the building stays closed (offset z = -cut_depth sets the mesh back into it); an outline not "
         "inside one face with wall around it, or whose recess would reach another face or recess, is not cut and a "
         "warning says so.")
-      .category("Geometry");
+      .category("Geometry")
+      .detail_level(kFullDetail);  // windows and doors are LOD3: below it the buildings pass through unplaced
   d.input<MeshSet>("mesh").doc("buildings with resolved anchors (Extrude)");
   par.file = d.param<std::string>("file").default_value(std::string()).doc("the mesh to place: an .obj, relative to the recipe's folder").index();
   par.name = d.param<std::string>("name").default_value(std::string()).doc("tags the mesh's faces without a material (empty: the file's name)").index();
@@ -200,15 +201,8 @@ CutReport cut_into(TaggedMesh& part, const std::vector<Opening>& outlines, const
     if (const ValidationReport v = validate(*mesh); !v.ok())
       throw MeshError("the mesh with its openings cut does not validate (" + std::to_string(v.problems.size()) +
                       " problems): " + (v.problems.empty() ? "no details" : v.problems.front()));
-  const auto tag_prop = face_tag_property(*mesh);
-  part.face_tags.clear();
-  for (Mesh::FaceHandle f : mesh->faces()) {
-    const std::string& tag = mesh->property(tag_prop, f);
-    auto it = std::find(part.tags.begin(), part.tags.end(), tag);
-    if (it == part.tags.end()) it = part.tags.insert(part.tags.end(), tag);
-    part.face_tags.push_back(static_cast<std::uint32_t>(it - part.tags.begin()));
-  }
   part.mesh = std::move(mesh);
+  face_tags_from_mesh(part);
   return report;
 }
 

@@ -2,7 +2,10 @@
 // each: the cache keys bound footprints by content and bounds itself in bytes).
 #include "nodes/values.h"
 
+#include <algorithm>
+
 #include "graph/value.h"
+#include "nodes/support/level_of_detail.h"
 
 namespace procex {
 namespace {
@@ -170,6 +173,8 @@ std::size_t mesh_set_size(const MeshSet& set) {
   return n;
 }
 
+MeshSet at_level_of_detail(const MeshSet& set, int level) { return mesh_set_at_level_of_detail(set, level); }
+
 const bool kRegistered = [] {
   ValueTypeRegistry& r = ValueTypeRegistry::global();
   r.add<Footprint>({"footprint", "Closed plan loops (outer CCW, holes CW), each edge with an angle or a profile",
@@ -187,9 +192,21 @@ const bool kRegistered = [] {
   r.add<MeshSet>({"mesh",
                   "Closed meshes with a tag per face and a building id per mesh, their resolved anchors and the "
                   "meshes placed on them",
-                  hash_mesh_set, mesh_set_size});
+                  hash_mesh_set, mesh_set_size, nullptr, nullptr, at_level_of_detail});
   return true;
 }();
 
 }  // namespace
+
+void face_tags_from_mesh(TaggedMesh& part) {
+  const auto tags = face_tag_property(*part.mesh);
+  part.face_tags.clear();
+  for (const Mesh::FaceHandle f : part.mesh->faces()) {
+    const std::string& tag = part.mesh->property(tags, f);
+    auto it = std::find(part.tags.begin(), part.tags.end(), tag);
+    if (it == part.tags.end()) it = part.tags.insert(part.tags.end(), tag);
+    part.face_tags.push_back(static_cast<std::uint32_t>(it - part.tags.begin()));
+  }
+}
+
 }  // namespace procex

@@ -68,6 +68,9 @@ struct PlanEditSpec {
   std::vector<Profile> profiles;
 };
 
+// Sets part.face_tags from its mesh's face tags, adding to part.tags those it lacks.
+void face_tags_from_mesh(TaggedMesh& part);
+
 // The tag of face f of a part.
 inline const std::string& face_tag(const TaggedMesh& part, std::size_t f) { return part.tags[part.face_tags[f]]; }
 

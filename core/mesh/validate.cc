@@ -133,6 +133,8 @@ void check_topology(const Mesh& mesh, const std::vector<std::uint32_t>& welded, 
   r.oriented = directions_ok;
 }
 
+}  // namespace
+
 double signed_volume(const Mesh& mesh) {
   // Relative to a vertex of the mesh: far from the origin (a building at
   // x = 1e9) the products of absolute coordinates would lose the volume.
@@ -151,6 +153,8 @@ double signed_volume(const Mesh& mesh) {
   }
   return six_v / 6.0;
 }
+
+namespace {
 
 struct Triangle {
   std::array<glm::dvec3, 3> p;

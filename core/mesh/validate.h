@@ -31,4 +31,7 @@ struct ValidationReport {
 
 ValidationReport validate(const Mesh& mesh, const ValidationOptions& options = {});
 
+// The volume a closed mesh encloses; positive when its faces point outwards.
+double signed_volume(const Mesh& mesh);
+
 }  // namespace procex
