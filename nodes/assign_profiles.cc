@@ -15,14 +15,14 @@ namespace {
 // Parameter handles, from the declaration.
 struct Params {
   std::size_t rules, selection, seed, draw, short_below, long_above, street, street_direction;
-  std::size_t party_edges_in;
+  std::size_t party_edges_in, street_edges_in;
 };
 Params par;
 
 void declare(NodeDecl& d) {
   d.doc("Gives each footprint edge a profile. `rules` are tried in order, the first whose labels all match an edge "
         "wins: `street = gable; back long = hip:0.7, mansard:0.3; #4 = 2; * = hip`. Labels: short / medium / long "
-        "(edge length), street / side / back (outward normal against the street direction), outer / inner (hole), "
+        "(edge length), street / side / back (outward normal against the street direction, or the `street_edges` input), outer / inner (hole), "
         "selected (`selection`), party (edges on the `party_edges` input: shared with a neighbouring footprint), #<edge id>, normal:<from>-<to> (compass degrees), * (any). Profiles are named by "
         "name or list position, with optional weights; a random pick depends only on `seed`, the building id and "
         "(with draw = per_edge) the edge, so a building looks the same in every run. Edges no rule matches keep "
@@ -34,6 +34,10 @@ void declare(NodeDecl& d) {
   par.party_edges_in = d.input<std::vector<std::int64_t>>("party_edges").optional()
       .doc("edge ids shared with a neighbouring footprint: the label `party`, never the street side (a graph input "
            "party_edges is bound per feature by procex batch and eval --footprints)").index();
+  par.street_edges_in = d.input<std::vector<std::int64_t>>("street_edges").optional()
+      .doc("edge ids facing a street line: when any, the label `street` is theirs alone, and the other edges are side "
+           "or back against them (a graph input street_edges is bound per feature by procex batch and eval "
+           "--footprints from the file's LineStrings and --streets)").index();
   par.rules = d.param<std::string>("rules").default_value(std::string("* = 0")).doc("see above").index();
   par.selection = d.param<std::vector<std::int64_t>>("selection").default_value(std::vector<std::int64_t>{})
       .doc("edge ids the label `selected` matches").index();
@@ -76,6 +80,9 @@ void evaluate(EvalContext& ctx) {
   if (ctx.has_input(par.party_edges_in))
     for (const std::int64_t id : ctx.input<std::vector<std::int64_t>>(par.party_edges_in))
       label_options.party.push_back(static_cast<std::int32_t>(id));
+  if (ctx.has_input(par.street_edges_in))
+    for (const std::int64_t id : ctx.input<std::vector<std::int64_t>>(par.street_edges_in))
+      label_options.street.push_back(static_cast<std::int32_t>(id));
 
   fp.profiles = profiles;
   std::size_t unmatched = 0;

@@ -249,16 +249,18 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         << ": use .obj, .ply, .glb, .gpkg or .json (CityJSON)\n";
     return kExitUnusableInput;
   }
-  if (const auto clash = output_clash({options.recipe, options.footprints},
+  if (const auto clash = output_clash({options.recipe, options.footprints, options.streets},
                                       {per_building ? std::filesystem::path() : options.output, options.report})) {
     err << "procex batch: " << *clash << "\n";
     return kExitUnusableInput;
   }
-  const std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, {},
-                                                                options.budget);
+  std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, {},
+                                                          options.budget);
   if (!recipe) return kExitUnusableInput;
+  recipe->options.lod = options.lod;
   FootprintReadOptions read;
   read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
+  read.streets = options.streets, read.streets_layer = options.streets_layer;
   const std::optional<GeoJsonCollection> opened =
       open_footprints(recipe->graph, options.recipe, options.footprints, read, "batch", err);
   if (!opened) return kExitUnusableInput;

@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct BatchCommandOptions {
   std::string target_crs;             // --target-crs
   BudgetSettings budget;              // set on every Extrude node
   std::string layer;                  // --layer (core/io/footprint_read.h)
+  std::optional<int> lod = std::nullopt;  // --lod: the level of detail (EvalOptions::lod)
+  std::filesystem::path streets = {};     // --streets: street lines (FootprintReadOptions::streets)
+  std::string streets_layer = {};         // --streets-layer
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

@@ -17,18 +17,20 @@ int run_eval(const EvalCommandOptions& options, std::ostream& out, std::ostream&
     err << "procex eval: " << options.output.string() << ": the output must end in .obj, .ply, .glb, .gpkg or .json (CityJSON)\n";
     return kExitUnusableInput;
   }
-  if (const auto clash = output_clash({options.recipe, options.footprints}, {options.output})) {
+  if (const auto clash = output_clash({options.recipe, options.footprints, options.streets}, {options.output})) {
     err << "procex eval: " << *clash << "\n";
     return kExitUnusableInput;
   }
   std::optional<MeshRecipe> recipe = open_mesh_recipe(options.recipe, options.settings, options.allowed_paths, err, options.preset,
                                                         options.budget);
   if (!recipe) return kExitUnusableInput;
+  recipe->options.lod = options.lod;
   std::optional<GeoJsonCollection> collection;
   const GeoJsonFeature* feature = nullptr;
   if (!options.footprints.empty()) {
     FootprintReadOptions read;
     read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
+    read.streets = options.streets, read.streets_layer = options.streets_layer;
     collection = open_footprints(recipe->graph, options.recipe, options.footprints, read, "eval", err);
     if (!collection) return kExitUnusableInput;
     const Result<const GeoJsonFeature*> found = find_feature(*collection, options.feature, options.footprints.string());

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct EvalCommandOptions {
   std::string target_crs;             // --target-crs
   BudgetSettings budget;              // set on every Extrude node
   std::string layer;                  // --layer (core/io/footprint_read.h)
+  std::optional<int> lod = std::nullopt;  // --lod: the level of detail (EvalOptions::lod)
+  std::filesystem::path streets = {};     // --streets: street lines (FootprintReadOptions::streets)
+  std::string streets_layer = {};         // --streets-layer
 };
 
 // 0: written; 1: a node failed (diagnostics on err, nothing written);

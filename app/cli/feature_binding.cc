@@ -10,6 +10,7 @@
 #include "app/cli/recipe_session.h"
 #include "core/geom/error.h"
 #include "core/geom/party_walls.h"
+#include "core/geom/street_edges.h"
 #include "core/geom/prepare.h"
 #include "core/io/io_error.h"
 #include "nodes/support/errors.h"
@@ -32,20 +33,31 @@ bool names_setting(const Graph& graph, const std::string& key) {
 
 }  // namespace
 
-void add_party_edges(const Graph& recipe, GeoJsonCollection& collection) {
-  if (!names_setting(recipe, std::string(kPartyEdgesProperty))) return;
-  std::vector<PlanLoops> plans;
-  for (const GeoJsonFeature& f : collection.features) plans.push_back(f.loops);
-  const std::vector<std::vector<std::int32_t>> party = party_edges(plans, kPartyWallDistance);
-  for (std::size_t i = 0; i < party.size(); ++i) {
+namespace {
+
+// Sets `property` of feature i to the JSON list ids[i], where it has none.
+void add_id_lists(GeoJsonCollection& collection, std::string_view property, const std::vector<std::vector<std::int32_t>>& ids) {
+  for (std::size_t i = 0; i < ids.size(); ++i) {
     std::string list = "[";
-    for (const std::int32_t id : party[i]) {
+    for (const std::int32_t id : ids[i]) {
       if (list.size() > 1) list += ',';
       list += std::to_string(id);
     }
     list += ']';
-    collection.features[i].properties.try_emplace(std::string(kPartyEdgesProperty), list);
+    collection.features[i].properties.try_emplace(std::string(property), list);
   }
+}
+
+}  // namespace
+
+void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection) {
+  const bool party = names_setting(recipe, std::string(kPartyEdgesProperty));
+  const bool street = names_setting(recipe, std::string(kStreetEdgesProperty));
+  if (!party && !street) return;
+  std::vector<PlanLoops> plans;
+  for (const GeoJsonFeature& f : collection.features) plans.push_back(f.loops);
+  if (party) add_id_lists(collection, kPartyEdgesProperty, party_edges(plans, kPartyWallDistance));
+  if (street) add_id_lists(collection, kStreetEdgesProperty, street_edges(plans, collection.lines, kStreetDistance));
 }
 
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
@@ -65,7 +77,7 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
   }
   try {
     GeoJsonCollection collection = read_footprints(footprints, read);
-    add_party_edges(recipe, collection);
+    add_edge_labels(recipe, collection);
     return collection;
   } catch (const IoError& e) {
     err << "procex " << command << ": " << e.what() << "\n";

@@ -29,9 +29,15 @@ namespace procex {
 inline constexpr std::string_view kPartyEdgesProperty = "party_edges";
 inline constexpr double kPartyWallDistance = 0.3;
 
-// Adds the property party_edges to every feature of `collection` that lacks
-// it, when `recipe` reads it (core/geom/party_walls.h); else does nothing.
-void add_party_edges(const Graph& recipe, GeoJsonCollection& collection);
+// Likewise street_edges: the ids of a feature's edges that face a street line
+// of collection.lines within kStreetDistance metres, over at least half their
+// length (core/geom/street_edges.h): Assign Profiles' label `street`.
+inline constexpr std::string_view kStreetEdgesProperty = "street_edges";
+inline constexpr double kStreetDistance = 20.0;
+
+// Adds the properties party_edges and street_edges to every feature of
+// `collection` that lacks them, when `recipe` reads them.
+void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection);
 
 // Ok, or why features cannot be bound to the recipe (no graph input named
 // `footprint` of type footprint), naming recipe_file.
@@ -40,7 +46,7 @@ Status check_footprint_input(const Graph& recipe, const std::filesystem::path& r
 // The features a recipe loaded from recipe_file is to be evaluated for: checks
 // that it has a graph input named `footprint` of type footprint, then reads
 // `footprints` (any file read_footprints reads, in the CRS `read` says), with
-// party_edges added when the recipe reads it.
+// party_edges and street_edges added when the recipe reads them.
 // nullopt after writing the problem to err ("procex <command>: ...").
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
                                                  const std::filesystem::path& footprints,

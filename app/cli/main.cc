@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -59,6 +60,25 @@ void add_footprint_options(CLI::App* cmd, std::string& crs, std::string& target_
   cmd->add_option("--layer", layer,
                   "The layer of the footprint file to read (a GeoPackage's table, an OSM file's layer); default: "
                   "the first (OSM: multipolygons). A name the file lacks is refused, listing its layers");
+}
+
+// --lod for the commands that evaluate a recipe into mesh files.
+void add_lod_option(CLI::App* cmd, std::optional<int>& lod) {
+  cmd->add_option_function<int>(
+         "--lod", [&lod](int level) { lod = level; },
+         "Level of detail: 0 the footprints, 1 blocks at the roof's mean height (volume over footprint area, so "
+         "a block holds its building's volume), 2 the roof shapes without placed meshes, 3 everything (default; "
+         "also the recipe's graph input `lod` if it has one)")
+      ->check(CLI::Range(0, kFullDetail));
+}
+
+// --streets and --streets-layer for the commands that bind footprints to a recipe.
+void add_streets_options(CLI::App* cmd, std::filesystem::path& streets, std::string& layer) {
+  cmd->add_option("--streets", streets,
+                  "A second file (any format --footprints reads) whose LineStrings are street centre lines, besides "
+                  "those of the footprint file itself: a footprint edge within 20 m of one, facing it over at least "
+                  "half its length, is in the recipe's input street_edges (Assign Profiles' label street)");
+  cmd->add_option("--streets-layer", layer, "The layer of --streets to read; default: the first");
 }
 
 // The sweep budget's options, the same on roof, eval and batch.
@@ -134,6 +154,9 @@ Runner add_eval(CLI::App& app) {
   add_up_option(cmd, options->export_options);
   add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
   add_budget_options(cmd, options->budget);
+  add_lod_option(cmd, options->lod);
+  add_streets_options(cmd, options->streets, options->streets_layer);
+  cmd->get_option("--streets")->needs(footprints);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
 
@@ -197,6 +220,8 @@ Runner add_batch(CLI::App& app) {
   add_up_option(cmd, options->export_options);
   add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
   add_budget_options(cmd, options->budget);
+  add_lod_option(cmd, options->lod);
+  add_streets_options(cmd, options->streets, options->streets_layer);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

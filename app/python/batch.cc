@@ -53,7 +53,7 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
   const MeshRecipe r = recipe->with(attributes);
   if (const Status s = check_footprint_input(r.graph, recipe->file()); !s) raise(ErrorKind::Recipe, s.message());
   GeoJsonCollection collection = collection_from_python(footprints);
-  add_party_edges(r.graph, collection);
+  add_edge_labels(r.graph, collection);
 
   std::vector<Building> buildings(collection.features.size() + collection.errors.size());
   std::vector<const GeoJsonFeature*> feature_of(buildings.size(), nullptr);

@@ -6,20 +6,16 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/vec2.hpp>
+#include "core/geom/edges_along.h"
 
 namespace procex {
-
-// The loops of one footprint, as read (any orientation).
-using PlanLoops = std::vector<std::vector<glm::dvec2>>;
 
 // For each plan, the ids of its edges (numbered 0, 1, 2, ... across its loops
 // in order, as to_footprint numbers them) of which at least half the length
 // lies within `distance` of edges of other plans that run along it (parallel
 // to within 10 degrees) and face it: their outward sides meet, as a wall
 // between two buildings has (the same plan twice in a file shares nothing).
-// Sorted. Plans are compared through a grid, so the
-// cost grows with the edges near each edge, not with all pairs.
+// Sorted.
 std::vector<std::vector<std::int32_t>> party_edges(const std::vector<PlanLoops>& plans, double distance);
 
 }  // namespace procex

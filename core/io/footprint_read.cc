@@ -147,6 +147,16 @@ void add_polygon(const OGRPolygon& polygon, std::size_t which, GeoJsonFeature& o
   for (int i = 0; i < polygon.getNumInteriorRings(); ++i) add(polygon.getInteriorRing(i));
 }
 
+void add_line(const OGRLineString& line, GeoJsonFeature& out) {
+  if (line.getNumPoints() < 2) throw FeatureProblem{"a LineString needs at least two points"};
+  std::vector<glm::dvec2>& points = out.lines.emplace_back();
+  for (int i = 0; i < line.getNumPoints(); ++i) {
+    points.emplace_back(line.getX(i), line.getY(i));
+    if (!std::isfinite(points.back().x) || !std::isfinite(points.back().y))
+      throw FeatureProblem{"a coordinate is not a finite number"};
+  }
+}
+
 void read_geometry(const OGRGeometry* g, GeoJsonFeature& out) {
   if (!g) throw FeatureProblem{"the feature has no geometry"};
   std::unique_ptr<OGRGeometry> linear;
@@ -159,9 +169,13 @@ void read_geometry(const OGRGeometry* g, GeoJsonFeature& out) {
       for (int i = 0; i < m.getNumGeometries(); ++i) add_polygon(*m.getGeometryRef(i), static_cast<std::size_t>(i), out);
       return;
     }
+    case wkbLineString: return add_line(*g->toLineString(), out);
+    case wkbMultiLineString:
+      for (const OGRLineString* line : *g->toMultiLineString()) add_line(*line, out);
+      return;
     default:
       throw FeatureProblem{std::string("geometry type '") + OGRGeometryTypeToName(g->getGeometryType()) +
-                           "' is not a Polygon or MultiPolygon"};
+                           "' is not a Polygon or MultiPolygon (a footprint) or a LineString (a street)"};
   }
 }
 
@@ -227,7 +241,7 @@ GeoJsonCollection read_with_gdal(const fs::path& path, const std::string& layer_
             add_other_tags(f->GetFieldAsString(i), feature.properties);
         }
       read_geometry(f->GetGeometryRef(), feature);
-      out.features.push_back(std::move(feature));
+      add_feature(std::move(feature), out);
     } catch (const FeatureProblem& p) {
       out.errors.push_back({index, feature.id, "", where + ": " + p.why});
     }
@@ -302,6 +316,8 @@ void settle_frame(GeoJsonCollection& c, const std::string& source, const std::st
   Box all;
   for (const GeoJsonFeature& f : c.features)
     if (const Box b = box_of(f); !b.empty()) all.add(b.low), all.add(b.high);
+  for (const auto& line : c.lines)
+    for (const glm::dvec2& p : line) all.add(p);
   if (all.empty()) {
     c.crs = target.empty() ? source : target;
     return;
@@ -330,6 +346,12 @@ void settle_frame(GeoJsonCollection& c, const std::string& source, const std::st
       c.errors.push_back({f.index, f.id, "", "PROJ cannot project it from '" + source + "' (" + gdal_reason() + ")"});
   }
   c.features = std::move(projected);
+  // A street PROJ cannot project is left out: it only labels the edges near it.
+  std::erase_if(c.lines, [&](std::vector<glm::dvec2>& line) {
+    bool ok = true;
+    for (glm::dvec2& p : line) ok = ok && project->Transform(1, &p.x, &p.y) && std::isfinite(p.x) && std::isfinite(p.y);
+    return !ok;
+  });
   std::sort(c.errors.begin(), c.errors.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   c.crs = frame;
 }
@@ -354,6 +376,12 @@ GeoJsonCollection read_footprints(const fs::path& path, const FootprintReadOptio
     c = read_with_gdal(path, options.layer, source);
   }
   settle_frame(c, source, options.target_crs, path);
+  if (!options.streets.empty()) {
+    FootprintReadOptions streets;
+    streets.crs = options.crs, streets.target_crs = c.crs, streets.layer = options.streets_layer;
+    GeoJsonCollection more = read_footprints(options.streets, streets);
+    c.lines.insert(c.lines.end(), std::make_move_iterator(more.lines.begin()), std::make_move_iterator(more.lines.end()));
+  }
   return c;
 }
 

@@ -34,9 +34,14 @@ struct FootprintReadOptions {
   std::string crs;             // the file's CRS, replacing what it declares (--crs)
   std::string target_crs;      // the metric CRS to build in (--target-crs); empty: as above
   std::string layer;           // the layer to read (--layer); empty: the first (OSM: multipolygons)
+  // A second file whose LineStrings are streets (--streets; its polygons are
+  // not read), in the CRS it declares or `crs`, brought to the footprints' frame.
+  std::filesystem::path streets;
+  std::string streets_layer;   // its layer (--streets-layer); empty: the first
 };
 
-// The footprints in `path`, GeoJsonCollection::crs naming the CRS their
+// The footprints in `path` (and its LineStrings, with those of options.streets,
+// as GeoJsonCollection::lines), GeoJsonCollection::crs naming the CRS their
 // coordinates are now in (empty when none is known). Throws IoError naming the
 // file if it cannot be read or its CRS used; a feature that cannot be read or
 // projected goes to GeoJsonCollection::errors, naming it.

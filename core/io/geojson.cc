@@ -28,6 +28,15 @@ std::vector<glm::dvec2> read_ring(const json& ring, const std::string& pointer) 
   return points;
 }
 
+std::vector<glm::dvec2> read_line(const json& line, const std::string& pointer) {
+  array_at(line, pointer);
+  if (line.size() < 2) throw ValueProblem{pointer, "a LineString needs at least two positions"};
+  std::vector<glm::dvec2> points;
+  points.reserve(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) points.push_back(io_detail::point_in(line, pointer, i));
+  return points;
+}
+
 void read_polygon(const json& rings, const std::string& pointer, std::size_t polygon, GeoJsonFeature& out) {
   array_at(rings, pointer);
   if (rings.empty()) throw ValueProblem{pointer, "a polygon needs at least one ring"};
@@ -52,8 +61,14 @@ void read_geometry(const json& geometry, const std::string& pointer, GeoJsonFeat
     array_at(*coords, cpointer);
     if (coords->empty()) throw ValueProblem{cpointer, "a MultiPolygon needs at least one polygon"};
     for (std::size_t p = 0; p < coords->size(); ++p) read_polygon((*coords)[p], cpointer + "/" + std::to_string(p), p, out);
+  } else if (t == "LineString") {
+    out.lines.push_back(read_line(*coords, cpointer));
+  } else if (t == "MultiLineString") {
+    array_at(*coords, cpointer);
+    for (std::size_t l = 0; l < coords->size(); ++l) out.lines.push_back(read_line((*coords)[l], cpointer + "/" + std::to_string(l)));
   } else {
-    throw ValueProblem{pointer + "/type", "geometry type '" + t + "' is not a Polygon or MultiPolygon"};
+    throw ValueProblem{pointer + "/type",
+                       "geometry type '" + t + "' is not a Polygon or MultiPolygon (a footprint) or a LineString (a street)"};
   }
 }
 
@@ -175,6 +190,11 @@ std::optional<double> GeoJsonFeature::property_number(const std::string& name) c
   return std::nullopt;
 }
 
+void add_feature(GeoJsonFeature f, GeoJsonCollection& c) {
+  if (f.lines.empty()) return c.features.push_back(std::move(f));
+  for (auto& line : f.lines) c.lines.push_back(std::move(line));
+}
+
 GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {
   const json doc = io_detail::parse_json(text, source);
   if (!doc.is_object()) throw IoError(source + ": the document is not a JSON object", source, "");
@@ -198,7 +218,7 @@ GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions&
     f.id = feature.is_object() ? feature_id(feature, i) : std::to_string(i);
     try {
       read_feature(feature, pointer, options, f);
-      out.features.push_back(std::move(f));
+      add_feature(std::move(f), out);
     } catch (const ValueProblem& problem) {
       out.errors.push_back({i, f.id, problem.pointer,
                             source + ": feature " + f.id + " at " + problem.pointer + ": " + problem.message});

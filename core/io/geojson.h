@@ -43,6 +43,9 @@ struct GeoJsonFeature {
   // Per-edge angles (degrees) when GeoJsonReadOptions::angles_property is set
   // and present: edge_angles[i].size() == loops[i].size().
   std::vector<std::vector<double>> edge_angles;
+  // A LineString's or MultiLineString's lines instead of loops: a street, not a
+  // footprint (the readers put it in GeoJsonCollection::lines).
+  std::vector<std::vector<glm::dvec2>> lines;
 
   // A property's value as plain text: a JSON string unquoted and unescaped,
   // any other value as its JSON text; nullopt if absent.
@@ -64,6 +67,8 @@ struct GeoJsonFeatureError {
 struct GeoJsonCollection {
   std::vector<GeoJsonFeature> features;  // the features that were read, in file order
   std::vector<GeoJsonFeatureError> errors;  // the features that were not, in file order
+  // The LineString and MultiLineString features' lines (streets: core/geom/street_edges.h).
+  std::vector<std::vector<glm::dvec2>> lines;
   // Top-level members other than "type" and "features" (e.g. "name", "stats"),
   // each as compact JSON text.
   std::map<std::string, std::string> members;
@@ -71,6 +76,9 @@ struct GeoJsonCollection {
   // by read_footprints (core/io/footprint_read.h); empty when none is known.
   std::string crs;
 };
+
+// Adds a feature just read to c: a street's lines to c.lines, a footprint to c.features.
+void add_feature(GeoJsonFeature f, GeoJsonCollection& c);
 
 // Throws IoError if the file cannot be read, is not JSON or is not a
 // FeatureCollection; per-feature problems go to GeoJsonCollection::errors.

@@ -44,7 +44,8 @@ std::vector<EdgeLabels> label_edges(const Footprint& fp, const LabelOptions& opt
       e.length_class = e.length < options.short_below ? LengthClass::Short
                        : e.length > options.long_above ? LengthClass::Long
                                                        : LengthClass::Medium;
-      if (!inner && !e.party && e.length > longest) longest = e.length, street = n;
+      const bool on_street = std::find(options.street.begin(), options.street.end(), e.id) != options.street.end();
+      if (!inner && !e.party && (on_street || options.street.empty()) && e.length > longest) longest = e.length, street = n;
       normals.push_back(n);
       out.push_back(e);
     }
@@ -56,7 +57,11 @@ std::vector<EdgeLabels> label_edges(const Footprint& fp, const LabelOptions& opt
   const double cos45 = std::sqrt(0.5);
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double c = glm::dot(normals[i], street);
-    out[i].orientation = c >= cos45 ? Orientation::Street : c <= -cos45 ? Orientation::Back : Orientation::Side;
+    const bool by_data = !options.street.empty();
+    const bool on_street = by_data && std::find(options.street.begin(), options.street.end(), out[i].id) != options.street.end();
+    out[i].orientation = on_street || (!by_data && c >= cos45) ? Orientation::Street
+                         : c <= -cos45                        ? Orientation::Back
+                                                              : Orientation::Side;
   }
   return out;
 }

@@ -36,6 +36,10 @@ struct LabelOptions {
   std::optional<double> street_deg;
   // Ids of the edges shared with neighbouring footprints (core/geom/party_walls.h).
   std::vector<std::int32_t> party;
+  // Ids of the edges that face a street line (core/geom/street_edges.h). When
+  // there are any, they are the street edges, and the others side or back
+  // against the longest one's outward normal (unless street_deg says).
+  std::vector<std::int32_t> street;
 };
 
 // One entry per edge, loops in order. Outward normals follow the nesting

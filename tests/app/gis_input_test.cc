@@ -251,15 +251,15 @@ TEST_F(GisInput, ABadFeatureIsReportedAndSkipped) {
   std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [
     {"type": "Feature", "properties": {"id": "a"}, "geometry": {"type": "Polygon",
      "coordinates": [[[7.4251, 43.7371], [7.4253, 43.7371], [7.4253, 43.7372], [7.4251, 43.7372], [7.4251, 43.7371]]]}},
-    {"type": "Feature", "properties": {"id": "road"}, "geometry": {"type": "LineString",
-     "coordinates": [[7.4251, 43.7371], [7.4253, 43.7372]]}}]})";
+    {"type": "Feature", "properties": {"id": "tree"}, "geometry": {"type": "Point",
+     "coordinates": [7.4252, 43.7371]}}]})";
   run("ogr2ogr -nlt GEOMETRY " + gpkg.string() + " " + geojson.string());
   EXPECT_EQ(batch(gpkg, "", "mixed"), 0) << err_.str();  // as for a GeoJSON feature: reported, the batch goes on
   const auto made = by_id(report("mixed"));
   EXPECT_EQ(made.at("a")["status"], "ok") << made.at("a")["reason"];
-  EXPECT_EQ(made.at("road")["status"], "refused");
-  EXPECT_NE(made.at("road")["reason"].get<std::string>().find("layer 'mixed' (FID 2)"), std::string::npos);
-  EXPECT_NE(made.at("road")["reason"].get<std::string>().find("'Line String' is not a Polygon"), std::string::npos);
+  EXPECT_EQ(made.at("tree")["status"], "refused");  // (a LineString would be a street: street_edges_batch_test)
+  EXPECT_NE(made.at("tree")["reason"].get<std::string>().find("layer 'mixed' (FID 2)"), std::string::npos);
+  EXPECT_NE(made.at("tree")["reason"].get<std::string>().find("'Point' is not a Polygon"), std::string::npos);
 }
 
 // GDAL cuts a Shapefile's field names to 10 characters: the OSM building keys

@@ -81,6 +81,25 @@ TEST(AssignProfiles, PartyWalls) {
   EXPECT_EQ(assigned(alone), (std::vector<int>{1, 2, 1, 1}));
 }
 
+// Streets from data: edge 1 (20 m, east) faces a street line. `street` is it
+// alone, edge 3 opposite is the back, edges 0 and 2 the sides.
+TEST(AssignProfiles, StreetEdgesFromData) {
+  const auto r = run_node("Assign Profiles",
+                          {{"rules", Value::make(std::string("street = gable_end; back = vertical_wall; * = hip"))}},
+                          {{"footprint", rectangle(6, 20)},
+                           {"profiles", presets()},
+                           {"street_edges", Value::make(std::vector<std::int64_t>{1})}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  EXPECT_EQ(assigned(r), (std::vector<int>{1, 2, 1, 0}));
+  // Two street edges (a corner lot): both street, the back against the longer.
+  const auto corner = run_node("Assign Profiles",
+                               {{"rules", Value::make(std::string("street = gable_end; back = vertical_wall; * = hip"))}},
+                               {{"footprint", rectangle(6, 20)},
+                                {"profiles", presets()},
+                                {"street_edges", Value::make(std::vector<std::int64_t>{0, 1})}});
+  EXPECT_EQ(assigned(corner), (std::vector<int>{2, 2, 1, 0}));
+}
+
 TEST(AssignProfiles, ByLengthSelectionAndIndex) {
   const auto r = run_node("Assign Profiles",
                           {{"rules", Value::make(std::string("#3 = 5; selected = 4; long = 1; short = 3; * = 0"))},
