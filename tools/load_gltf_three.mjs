@@ -1,7 +1,8 @@
 // Loads one .glb with three.js's GLTFLoader (as a browser would) and prints
 // what it found as JSON: the scene's top nodes (name, position, extras), and
 // one entry per primitive with its node's building id, its tag (extras),
-// material (its name, base colour and whether it shows a texture), triangle
+// material (its name, base colour, roughness, metalness, whether it shows a
+// texture and the texture's repeat), triangle
 // count, whether it has normals and texture coordinates,
 // and its world bounds (three.js is +Y up, as glTF). Exit code 1 if loading fails.
 import { readFileSync } from 'node:fs';
@@ -42,6 +43,10 @@ new GLTFLoader().parse(data, '', (gltf) => {
       texture: o.material.map != null,
       texture_size: o.material.map ? [o.material.map.image.width, o.material.map.image.height] : null,
       colour: o.material.color.toArray(),
+      roughness: o.material.roughness,
+      metalness: o.material.metalness,
+      // KHR_texture_transform's scale, as three.js applies it to the map.
+      texture_repeat: o.material.map ? o.material.map.repeat.toArray() : null,
       min: new Box3().setFromObject(o, true).min.toArray(),
       max: new Box3().setFromObject(o, true).max.toArray(),
     });

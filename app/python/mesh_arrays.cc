@@ -185,11 +185,15 @@ void bind_mesh(py::module_& m) {
             for (const auto& [tag, material] : mesh_materials(*a.mesh))
               out[py::str(tag)] = py::dict(
                   py::arg("colour") = py::make_tuple(material.colour[0], material.colour[1], material.colour[2]),
-                  py::arg("texture") = material.texture.empty() ? py::object(py::none()) : py::str(material.texture.string()));
+                  py::arg("roughness") = material.roughness, py::arg("metallic") = material.metallic,
+                  py::arg("texture") = material.texture.empty() ? py::object(py::none()) : py::str(material.texture.string()),
+                  py::arg("tile_size") = material.tile_size);
             return out;
           },
-          "A placed mesh's own materials by tag, from its OBJ's .mtl: {tag: {'colour': (r, g, b) linear, 'texture': "
-          "the absolute path of its image (map_Kd), or None}}; empty for a building's mesh (its tags have no material).")
+          "The mesh's materials by tag (a Material node's, or a placed mesh's own from its OBJ's .mtl): {tag: "
+          "{'colour': (r, g, b) linear, 'roughness': 0..1, 'metallic': 0..1, 'texture': the absolute path of its "
+          "image, or None, 'tile_size': the texture coordinates one repeat of the image covers (metres on a "
+          "building's faces)}}; tags without one are absent (they show their tag colour).")
       .def_property_readonly("placed", [](const MeshArrays& a) { return a.placed; },
                              "The meshes placed on this one, as a list of Placement (mesh, matrix).")
       .def_property_readonly("n_vertices", [](const MeshArrays& a) { return a.mesh->n_vertices(); })

@@ -156,6 +156,11 @@ void check_mesh(const std::filesystem::path& path, const GltfMeshData& mesh) {
     if (p.material) {
       if (!std::all_of(p.material->colour.begin(), p.material->colour.end(), [](double c) { return c >= 0.0 && c <= 1.0; }))
         refuse("has a material colour outside 0 to 1 in primitive '" + p.tag + "'");
+      if (!(p.material->roughness >= 0.0 && p.material->roughness <= 1.0 && p.material->metallic >= 0.0 &&
+            p.material->metallic <= 1.0))
+        refuse("has a material roughness or metalness outside 0 to 1 in primitive '" + p.tag + "'");
+      if (!(p.material->tile_size > 0.0 && std::isfinite(1.0 / p.material->tile_size)))
+        refuse("has a texture tile size that is not a positive number in primitive '" + p.tag + "'");
       if (p.material->image && image_mime_type(*p.material->image).empty())
         refuse("has a texture that is not a PNG or JPEG image in primitive '" + p.tag + "'");
       if (p.material->image && p.uvs.empty()) refuse("has a texture but no texture coordinates in primitive '" + p.tag + "'");
@@ -516,10 +521,24 @@ void put_material(std::string& out, const std::string& tag, const GltfMaterialDa
   if (own && own->image) {
     out += ",\"baseColorTexture\":{\"index\":";
     put_index(out, texture);
+    if (own->tile_size != 1.0) {
+      out += ",\"extensions\":{\"KHR_texture_transform\":{\"scale\":[";
+      put_number(out, 1.0 / own->tile_size);
+      out += ',';
+      put_number(out, 1.0 / own->tile_size);
+      out += "]}}";
+    }
     out += '}';
   }
-  out += ",\"metallicFactor\":0,\"roughnessFactor\":0.9}}";
+  out += ",\"metallicFactor\":";
+  put_number(out, own ? own->metallic : 0.0);
+  out += ",\"roughnessFactor\":";
+  put_number(out, own ? own->roughness : Material::kDefaultRoughness);
+  out += "}}";
 }
+
+// Whether a material uses KHR_texture_transform (put_material writes it).
+bool transforms_texture(const GltfMaterialData* m) { return m && m->image && m->tile_size != 1.0; }
 
 // A file as views of the text it is made of, in order, for
 // write_file_atomically: the items' JSON is never joined into one string.
@@ -568,10 +587,14 @@ void append_u32(std::string& out, std::uint32_t v) {
 }
 
 // The JSON up to the scene's list of nodes.
-std::string scene_head(const std::string& tags_json) {
+std::string scene_head(const std::string& tags_json, const WrittenMaterials& materials) {
   std::string scene = "{\"asset\":{";
   if (!tags_json.empty()) scene += "\"extras\":{\"tags\":[" + tags_json + "]},";
-  scene += "\"generator\":\"procex\",\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{";
+  scene += "\"generator\":\"procex\",\"version\":\"2.0\"},";
+  // Optional: a viewer without it shows the texture one tile per metre.
+  if (std::any_of(materials.keys.begin(), materials.keys.end(), [](const auto& k) { return transforms_texture(k.second); }))
+    scene += "\"extensionsUsed\":[\"KHR_texture_transform\"],";
+  scene += "\"scene\":0,\"scenes\":[{";
   return scene;
 }
 
@@ -728,7 +751,7 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   });
 
   Pieces json;
-  std::string scene = scene_head(tags.json);
+  std::string scene = scene_head(tags.json, materials);
   bool first = true;
   for (const Item& item : items) {
     if (!item.has_node) continue;
@@ -849,13 +872,25 @@ std::optional<GltfMaterialData> read_material(const tinygltf::Model& m, const ti
   GltfMaterialData out;
   if (pbr.baseColorFactor.size() != 4) bad(path, "material " + std::to_string(p.material) + "'s base colour is not 4 numbers");
   std::copy_n(pbr.baseColorFactor.begin(), 3, out.colour.begin());
+  out.roughness = pbr.roughnessFactor;
+  out.metallic = pbr.metallicFactor;
   if (const int t = pbr.baseColorTexture.index; t >= 0) {
     if (static_cast<std::size_t>(t) >= m.textures.size()) bad(path, "texture " + std::to_string(t) + " is missing");
     const int source = m.textures[static_cast<std::size_t>(t)].source;
     if (source < 0 || static_cast<std::size_t>(source) >= images.size()) bad(path, "texture " + std::to_string(t) + " has no image");
     out.image = images[static_cast<std::size_t>(source)];
+    if (const auto ext = pbr.baseColorTexture.extensions.find("KHR_texture_transform");
+        ext != pbr.baseColorTexture.extensions.end()) {
+      const tinygltf::Value& scale = ext->second.Get("scale");
+      if (!scale.IsArray() || scale.ArrayLen() != 2 || !scale.Get(0).IsNumber() ||
+          scale.Get(0).GetNumberAsDouble() != scale.Get(1).GetNumberAsDouble() || !(scale.Get(0).GetNumberAsDouble() > 0))
+        bad(path, "material " + std::to_string(p.material) + "'s texture transform is not one positive scale for u and v");
+      out.tile_size = 1.0 / scale.Get(0).GetNumberAsDouble();
+    }
   }
-  if (!out.image && out.colour == tag_colour(tag)) return std::nullopt;
+  GltfMaterialData plain;  // what a tag without a material of its own is written with
+  plain.colour = tag_colour(tag);
+  if (out == plain) return std::nullopt;
   return out;
 }
 
@@ -945,8 +980,10 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
       if (const auto m = materials.find(added.tag); m != materials.end()) {
         GltfMaterialData& material = added.material.emplace();
         material.colour = m->second.colour;
-        if (!m->second.texture.empty())
-          material.image = std::make_shared<const std::string>(read_texture_image(m->second.texture));
+        material.roughness = m->second.roughness;
+        material.metallic = m->second.metallic;
+        material.tile_size = m->second.tile_size;
+        if (!m->second.texture.empty()) material.image = shared_texture_image(m->second.texture);
       }
     }
     GltfPrimitiveData& prim = out.primitives[static_cast<std::size_t>(slot)];
@@ -1198,7 +1235,7 @@ void GlbStreamWriter::finish() {
 
   Pieces json;
   const bool has_nodes = s.scene_nodes.size() > 0;
-  json.add_own(scene_head(tags.json) + (has_nodes ? "\"nodes\":[" : ""));
+  json.add_own(scene_head(tags.json, materials) + (has_nodes ? "\"nodes\":[" : ""));
   json.add_spool(s.scene_nodes);
   json.add_own(scene_end(has_nodes, s.extras));
   json.add_array("nodes", placed, &Item::nodes_json, &nodes);

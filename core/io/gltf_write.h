@@ -36,6 +36,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 
 namespace procex {
@@ -49,15 +50,20 @@ struct TaggedMeshView {
   std::int64_t feature = -1;   // position of the building's feature in its GeoJSON file, -1 if none
 };
 
-// A primitive's own material (a placed mesh's, from its .mtl): the base
-// colour, times the image where there is one (embedded in the .glb, its
-// texture repeating).
+// A primitive's own material (a placed mesh's, from its .mtl, or a tag's from
+// the recipe's Material node: core/mesh/material.h): the base colour, times
+// the image where there is one (embedded in the .glb, its texture repeating
+// every tile_size texture coordinates through KHR_texture_transform), with
+// its roughness and metalness.
 struct GltfMaterialData {
   std::array<double, 3> colour{1, 1, 1};  // linear RGB
+  double roughness = Material::kDefaultRoughness, metallic = 0.0;
+  double tile_size = 1.0;
   std::shared_ptr<const std::string> image;  // PNG or JPEG bytes; null if none
 
   bool operator==(const GltfMaterialData& o) const {
-    return colour == o.colour && (image == o.image || (image && o.image && *image == *o.image));
+    return colour == o.colour && roughness == o.roughness && metallic == o.metallic && tile_size == o.tile_size &&
+           (image == o.image || (image && o.image && *image == *o.image));
   }
 };
 

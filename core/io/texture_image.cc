@@ -1,5 +1,9 @@
 #include "core/io/texture_image.h"
 
+#include <map>
+#include <mutex>
+#include <tuple>
+
 #include "base/read_file.h"
 #include "core/io/io_error.h"
 
@@ -18,6 +22,22 @@ std::string read_texture_image(const std::filesystem::path& path) {
                   "convert it to .png",
                   path.string());
   return bytes;
+}
+
+std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path) {
+  std::error_code size_error, time_error;
+  const auto size = std::filesystem::file_size(path, size_error);
+  const auto time = std::filesystem::last_write_time(path, time_error);
+  if (size_error || time_error) return std::make_shared<const std::string>(read_texture_image(path));  // it says why
+  using Key = std::tuple<std::string, std::uintmax_t, std::filesystem::file_time_type::rep>;
+  static std::mutex mutex;
+  static std::map<Key, std::shared_ptr<const std::string>> cache;
+  const Key key{path.string(), size, time.time_since_epoch().count()};
+  std::lock_guard lock(mutex);
+  if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  auto bytes = std::make_shared<const std::string>(read_texture_image(path));
+  if (cache.size() >= 64) cache.clear();  // edited files leave old versions behind
+  return cache.emplace(key, std::move(bytes)).first->second;
 }
 
 }  // namespace procex

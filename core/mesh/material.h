@@ -17,9 +17,22 @@ namespace procex {
 
 struct Material {
   std::array<double, 3> colour{0.8, 0.8, 0.8};  // linear RGB, each in [0, 1] (MTL Kd, glTF baseColorFactor)
+  // glTF's metallic-roughness model, each in [0, 1] (MTL's PBR extension
+  // Pr, Pm). The defaults are those procex's tag colours have always had:
+  // a matt, non-metal surface.
+  double roughness = kDefaultRoughness;
+  double metallic = 0.0;
   // A PNG or JPEG image (MTL map_Kd), resolved and confined to the recipe's
   // folder when read; empty if none.
   std::filesystem::path texture;
+  // How far one repeat of the texture reaches in texture coordinates: procex's
+  // own faces have them in metres, so this is metres per tile; a placed mesh's
+  // own coordinates address its image once per 1. The writers divide the
+  // coordinates by it (glTF KHR_texture_transform, MTL map_Kd -s), which
+  // leaves them in metres in the file.
+  double tile_size = 1.0;
+
+  static constexpr double kDefaultRoughness = 0.9;
 
   bool operator==(const Material&) const = default;
 };

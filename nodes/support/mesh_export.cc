@@ -45,6 +45,27 @@ void append_triple(std::string& out, const char* key, const glm::dvec3& p) {
   out += '\n';
 }
 
+// The look of a tag's faces in a mesh: its own material (a placed mesh's
+// library, a Material node's), else the tag's colour.
+Material look_of(const Mesh& mesh, const std::string& tag) {
+  if (const auto own = mesh_materials(mesh).find(tag); own != mesh_materials(mesh).end()) return own->second;
+  Material m;
+  m.colour = tag_colour(tag);
+  return m;
+}
+
+// The material name `look` is written under: `name`, or, where `materials`
+// already holds another look under it (two placed meshes' libraries each with
+// a "frame"), the first of name_2, name_3, ... free or holding this look.
+std::string material_name(const std::vector<std::pair<std::string, Material>>& materials, const std::string& name,
+                          const Material& look) {
+  for (int n = 1;; ++n) {
+    const std::string candidate = n == 1 ? name : name + "_" + std::to_string(n);
+    const auto it = std::find_if(materials.begin(), materials.end(), [&](const auto& m) { return m.first == candidate; });
+    if (it == materials.end() || it->second == look) return candidate;
+  }
+}
+
 // One object per part ("o building_id", as Blender, Maya and Houdini split
 // them), a material per face tag (a placed mesh's own colour and texture,
 // else the tag's colour), and per face its flat normal (vn) and its corners'
@@ -71,7 +92,7 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
     for (const auto f : mesh.faces())
       first_corner[static_cast<std::size_t>(f.idx()) + 1] = first_corner[static_cast<std::size_t>(f.idx())] + mesh.valence(f);
     for (std::uint32_t t = 0; t < part.tags.size(); ++t) {
-      const std::string name = obj_name(part.tags[t], "untagged");
+      const std::string name = material_name(materials, obj_name(part.tags[t], "untagged"), look_of(mesh, part.tags[t]));
       bool used = false;
       for (const auto f : mesh.faces()) {
         const auto fi = static_cast<std::size_t>(f.idx());
@@ -98,10 +119,8 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
         uvs += corner;
         normals += corner_normals ? corner : 1;
       }
-      if (used && std::none_of(materials.begin(), materials.end(), [&](const auto& m) { return m.first == name; })) {
-        const auto own = mesh_materials(mesh).find(part.tags[t]);
-        materials.emplace_back(name, own != mesh_materials(mesh).end() ? own->second : Material{tag_colour(part.tags[t]), {}});
-      }
+      if (used && std::none_of(materials.begin(), materials.end(), [&](const auto& m) { return m.first == name; }))
+        materials.emplace_back(name, look_of(mesh, part.tags[t]));
     }
     base += mesh.n_vertices();
   }
@@ -110,10 +129,26 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
   for (const auto& [name, material] : materials) {
     mtl_text += "newmtl " + name + "\nKd";
     for (double c : material.colour) mtl_text += ' ', append_number(mtl_text, c);
+    // Roughness and metalness as the PBR extension of MTL has them (Blender reads them).
+    mtl_text += "\nPr ";
+    append_number(mtl_text, material.roughness);
+    mtl_text += "\nPm ";
+    append_number(mtl_text, material.metallic);
     mtl_text += "\n";
-    // The texture where the placed mesh's library found it, relative to the
-    // .obj so the pair can move with its folder.
-    if (!material.texture.empty()) mtl_text += "map_Kd " + material.texture.lexically_relative(folder).generic_string() + "\n";
+    // The texture where the recipe's files gave it, relative to the .obj so
+    // the pair can move with its folder; -s scales the texture coordinates
+    // (metres) to tiles, as Blender's and three.js's readers apply it.
+    if (!material.texture.empty()) {
+      mtl_text += "map_Kd ";
+      if (material.tile_size != 1.0) {
+        mtl_text += "-s ";
+        append_number(mtl_text, 1.0 / material.tile_size);
+        mtl_text += ' ';
+        append_number(mtl_text, 1.0 / material.tile_size);
+        mtl_text += " 1 ";
+      }
+      mtl_text += material.texture.lexically_relative(folder).generic_string() + "\n";
+    }
   }
   AtomicFileSet files;  // both or neither: a failed .obj leaves no new .mtl beside the old one
   files.add(mtl, mtl_text);

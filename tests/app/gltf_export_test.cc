@@ -241,10 +241,106 @@ TEST_F(GltfExport, ObjLibraryNamesThePlacedMeshsTexture) {
   const fs::path obj = textured_house(".obj");
   std::ifstream in(dir_ / "out" / "house.mtl");
   const std::string mtl((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(mtl.find("newmtl door\nKd 1 1 1\nmap_Kd ../meshes/door_planks.png\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl door\nKd 1 1 1\nPr 0.9\nPm 0\nmap_Kd ../meshes/door_planks.png\n"), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("newmtl door_frame\nKd 0.2 0.25 0.3\n"), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("newmtl wall\nKd 0.82 0.78 0.7\n"), std::string::npos) << mtl;  // the building keeps its tag colours
   EXPECT_TRUE(fs::exists(obj.parent_path() / "../meshes/door_planks.png"));
+}
+
+}  // namespace
+}  // namespace procex
+
+namespace procex {
+namespace {
+
+// samples/textured_house.pxg made for batch (its Footprint Shape replaced by
+// the graph input `footprint`), in dir, its textures beside it.
+fs::path textured_batch_recipe(const fs::path& dir) {
+  fs::copy(kRoot / "samples" / "textures", dir / "textures", fs::copy_options::skip_existing);
+  json recipe = json::parse(std::ifstream(kRoot / "samples" / "textured_house.pxg"));
+  recipe["inputs"] = json::array({{{"name", "footprint"}, {"type", "footprint"}, {"doc", "bound by procex batch"}}});
+  for (json& link : recipe["links"])
+    if (link["from"] == "1.footprint") link["from"] = "@footprint";
+  json nodes = json::array(), exposed = json::array();
+  for (const json& n : recipe["nodes"])
+    if (n["id"] != 1) nodes.push_back(n);
+  for (const json& e : recipe["exposed"])
+    if (e["node"] != 1) exposed.push_back(e);
+  recipe["nodes"] = nodes;
+  recipe["exposed"] = exposed;
+  recipe["presets"] = json::array();
+  std::ofstream(dir / "textured_batch.pxg") << recipe.dump(1);
+  return dir / "textured_batch.pxg";
+}
+
+// The Material nodes' looks reach the .glb: the validator finds no error and
+// no warning in the sample's file nor in a batch's (every building's walls
+// sharing one embedded brick image), and three.js sees each tag's roughness,
+// metalness, texture and its repeat (KHR_texture_transform: 1 / tile_size).
+TEST_F(GltfExport, MaterialsReachTheValidatorAndThreeJs) {
+  const fs::path single = dir_ / "textured_house.glb";
+  std::ostringstream o, e;
+  ASSERT_EQ(run_eval({kRoot / "samples" / "textured_house.pxg", single, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+  BatchCommandOptions b;
+  b.recipe = textured_batch_recipe(dir_);
+  b.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+  b.output = dir_ / "textured_block.glb";
+  b.progress = false;
+  ASSERT_EQ(run_batch(b, o, e), 0) << e.str();
+  for (const fs::path& glb : {single, b.output}) {
+    SCOPED_TRACE(glb.filename().string());
+    const json report = node_json("validate_gltf.mjs", glb, 0);
+    EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+    EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+    EXPECT_EQ(report["info"]["resources"].size(), 3u) << report["info"].dump(1);  // the binary chunk, brick, roof tiles
+    EXPECT_EQ(report["info"]["extensionsUsed"], json::array({"KHR_texture_transform"}));
+
+    const json loaded = node_json("load_gltf_three.mjs", glb, 0);
+    std::map<std::string, int> seen;
+    for (const json& m : loaded["meshes"]) {
+      const std::string tag = m["tag"];
+      ++seen[tag];
+      SCOPED_TRACE(tag);
+      if (tag == "wall" || tag == "gable") {
+        EXPECT_NEAR(m["roughness"].get<double>(), 0.85, 1e-6);
+        EXPECT_EQ(m["metalness"], 0);
+        EXPECT_EQ(m["texture_size"], json::array({64, 64}));
+        EXPECT_NEAR(m["texture_repeat"][0].get<double>(), 1 / 0.8, 1e-6);
+        EXPECT_NEAR(m["texture_repeat"][1].get<double>(), 1 / 0.8, 1e-6);
+        EXPECT_EQ(m["colour"], json::array({1, 1, 1}));
+      } else if (tag == "roof") {
+        EXPECT_NEAR(m["roughness"].get<double>(), 0.6, 1e-6);
+        EXPECT_NEAR(m["texture_repeat"][0].get<double>(), 1 / 1.2, 1e-6);
+      } else if (tag == "soffit") {
+        EXPECT_FALSE(m["texture"].get<bool>());
+        EXPECT_NEAR(m["roughness"].get<double>(), 0.5, 1e-6);
+        EXPECT_NEAR(m["colour"][2].get<double>(), 0.85, 1e-6);
+      } else {
+        EXPECT_FALSE(m["texture"].get<bool>());
+        EXPECT_NEAR(m["roughness"].get<double>(), 0.9, 1e-6);  // a tag without a Material keeps procex's look
+      }
+    }
+    EXPECT_GT(seen["wall"], 0);
+    EXPECT_GT(seen["roof"], 0);
+    EXPECT_GT(seen["soffit"], 0);
+  }
+}
+
+// The .obj's library: each tag's colour, roughness and metalness (MTL's PBR
+// extension) and its texture scaled to tiles (-s 1/tile_size), named relative
+// to the .obj.
+TEST_F(GltfExport, ObjLibraryScalesTheTextureToItsTiles) {
+  fs::copy(kRoot / "samples" / "textures", dir_ / "textures");
+  fs::copy_file(kRoot / "samples" / "textured_house.pxg", dir_ / "textured_house.pxg");
+  fs::create_directories(dir_ / "out");
+  std::ostringstream o, e;
+  ASSERT_EQ(run_eval({dir_ / "textured_house.pxg", dir_ / "out" / "house.obj", {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0)
+      << e.str();
+  std::ifstream in(dir_ / "out" / "house.mtl");
+  const std::string mtl((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(mtl.find("newmtl wall\nKd 1 1 1\nPr 0.85\nPm 0\nmap_Kd -s 1.25 1.25 1 ../textures/brick.png\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl soffit\nKd 0.9 0.9 0.85\nPr 0.5\nPm 0\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl base\nKd "), std::string::npos) << mtl;
 }
 
 }  // namespace

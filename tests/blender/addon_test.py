@@ -242,6 +242,56 @@ corners = {(round(uv[i].uv[0], 6), round(uv[i].uv[1], 6)) for i in front[0].loop
 check(corners == {(0, 0), (1, 0), (1, 1), (0, 1)}, f"the door's face does not keep its own UVs: {corners}")
 shutil.rmtree(textured)
 
+# ---- Material nodes: each tag's Principled BSDF (colour, roughness, metalness) and its image seen
+# through a Mapping node scaling the UVs (metres) by 1 / tile_size; a new tile size makes a new material
+def looks(obj):
+    """The object's materials by tag (Blender's .001 suffix of a second look taken off)."""
+    return {m.name.split(".")[0][len("procex "):]: m for m in obj.data.materials}
+
+
+def principled(m):
+    return next(n for n in m.node_tree.nodes if n.type == "BSDF_PRINCIPLED")
+
+
+def image_and_scale(m):
+    """The image behind the base colour and the Mapping node's scale in front of it."""
+    bsdf = principled(m)
+    links = [l for l in m.node_tree.links if l.to_socket == bsdf.inputs["Base Color"]]
+    check(len(links) == 1 and links[0].from_node.type == "TEX_IMAGE", f"{m.name}: the base colour is not an image")
+    node = links[0].from_node
+    into = [l for l in m.node_tree.links if l.to_socket == node.inputs["Vector"]]
+    check(len(into) == 1 and into[0].from_node.type == "MAPPING", f"{m.name}: no Mapping node scales the UVs")
+    uv = [l for l in m.node_tree.links if l.to_socket == into[0].from_node.inputs["Vector"]]
+    check(len(uv) == 1 and uv[0].from_socket.name == "UV", f"{m.name}: the Mapping node does not read the UVs")
+    return node.image, tuple(round(c, 6) for c in into[0].from_node.inputs["Scale"].default_value)
+
+
+house_path = os.path.join(samples, "textured_house.pxg")
+check(bpy.ops.import_scene.procex_recipe(filepath=house_path) == {"FINISHED"}, "importing the textured house failed")
+textured_house = bpy.context.active_object
+tagged = looks(textured_house)
+check(set(tagged) == {"base", "wall", "gable", "roof", "soffit"}, f"textured house materials: {set(tagged)}")
+for tag, roughness, tile, image_name in (("wall", 0.85, 0.8, "brick.png"), ("gable", 0.85, 0.8, "brick.png"),
+                                         ("roof", 0.6, 1.2, "roof_tiles.png")):
+    m = tagged[tag]
+    close(principled(m).inputs["Roughness"].default_value, roughness, 1e-6, f"{tag} roughness")
+    close(principled(m).inputs["Metallic"].default_value, 0.0, 1e-6, f"{tag} metallic")
+    image, scale = image_and_scale(m)
+    check(os.path.samefile(bpy.path.abspath(image.filepath), os.path.join(samples, "textures", image_name)),
+          f"{tag}: the image is {image.filepath}")
+    check(tuple(image.size) == (64, 64), f"{tag}: the image did not load: size {tuple(image.size)}")
+    check(scale == (round(1 / tile, 6), round(1 / tile, 6), 1.0), f"{tag}: the UVs are scaled by {scale}")
+check(image_and_scale(tagged["wall"])[0] == image_and_scale(tagged["gable"])[0], "the brick image is loaded twice")
+soffit = principled(tagged["soffit"])
+check(tuple(round(c, 6) for c in soffit.inputs["Base Color"].default_value[:3]) == (0.9, 0.9, 0.85),
+      f"soffit colour: {tuple(soffit.inputs['Base Color'].default_value)}")
+close(soffit.inputs["Roughness"].default_value, 0.5, 1e-6, "soffit roughness")
+check(not [l for l in tagged["soffit"].node_tree.links if l.to_socket == soffit.inputs["Base Color"]],
+      "the soffit has an image")
+textured_house.procex.params["brick_size"].float_value = 0.5
+_, scale = image_and_scale(looks(textured_house)["wall"])
+check(scale == (2.0, 2.0, 1.0), f"after brick_size = 0.5 the wall's UVs are scaled by {scale}")
+
 # ---- batch: one object per building of the sample block
 block = os.path.join(samples, "footprints", "sample_block.geojson")
 city = os.path.join(samples, "city.pxg")

@@ -194,10 +194,27 @@ def test_placed_mesh_materials_and_own_uvs(tmp_path):
     (part,) = procex.Recipe.load(tmp_path / "doors.pxg").evaluate()
     assert part.materials == {}
     door = next(p.mesh for p in part.placed if p.mesh.name == "window")  # the node's `name`
+    plain = {"roughness": 0.9, "metallic": 0.0, "tile_size": 1.0}
     assert door.materials == {
-        "door": {"colour": (1.0, 1.0, 1.0), "texture": str((tmp_path / "meshes" / "door_planks.png").resolve())},
-        "door_frame": {"colour": (0.2, 0.25, 0.3), "texture": None},
+        "door": {"colour": (1.0, 1.0, 1.0), "texture": str((tmp_path / "meshes" / "door_planks.png").resolve()), **plain},
+        "door_frame": {"colour": (0.2, 0.25, 0.3), "texture": None, **plain},
     }
     front = list(door.face_tags).index(door.tags.index("door"))
     corners = door.uvs[door.face_offsets[front]:door.face_offsets[front + 1]]
     assert sorted(map(tuple, corners)) == [(0, 0), (0, 1), (1, 0), (1, 1)]
+
+
+def test_material_nodes_give_each_tag_its_look():
+    """samples/textured_house.pxg: each Material node's colour, roughness,
+    metalness, texture (an absolute path in the recipe's folder) and tile size,
+    on the building's mesh; a tag without one (the base) has none."""
+    (part,) = procex.Recipe.load(SAMPLES / "textured_house.pxg").evaluate()
+    brick = str((SAMPLES / "textures" / "brick.png").resolve())
+    assert part.materials["wall"] == {"colour": (1.0, 1.0, 1.0), "roughness": 0.85, "metallic": 0.0,
+                                      "texture": brick, "tile_size": 0.8}
+    assert part.materials["gable"] == part.materials["wall"]
+    assert part.materials["roof"]["tile_size"] == 1.2
+    assert part.materials["soffit"] == {"colour": (0.9, 0.9, 0.85), "roughness": 0.5, "metallic": 0.0,
+                                        "texture": None, "tile_size": 1.0}
+    assert set(part.materials) == {"wall", "gable", "roof", "soffit"}
+    assert "base" in part.tags

@@ -4,10 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/geom/footprint.h"
+#include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 #include "core/sweep/sweep.h"
 
@@ -177,6 +181,47 @@ TEST(PreviewMesh, PresentAnchorsGetMarkersAbsentOnesAreListed) {
   ASSERT_EQ(p.marker_lines.size(), 6 * PreviewMesh::kFloatsPerVertex);
   const float* out_tip = p.marker_lines.data() + 5 * PreviewMesh::kFloatsPerVertex;
   EXPECT_LT(out_tip[1], -0.3f);
+}
+
+// A tag with a textured material: its faces are one run drawn with the
+// decoded image, coloured by the material, their texture coordinates metres
+// divided by the tile size (u round the footprint, v up the wall); the other
+// faces one untextured run.
+TEST(PreviewMesh, TexturedMaterialsGetTheirImageAndTileScaledCoordinates) {
+  const TaggedMesh plain = l_block(3.0);
+  Mesh mesh = *plain.mesh;
+  Material brick;
+  brick.colour = {1.0, 0.5, 0.5};
+  brick.texture = std::filesystem::path(PROCEX_SAMPLES) / "textures" / "brick.png";
+  brick.tile_size = 2.0;
+  set_mesh_materials(mesh, {{"side", brick}});
+  TaggedMesh part = plain;
+  part.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  const PreviewMesh p = make_preview({&part});
+  ASSERT_EQ(p.textures.size(), 1u);
+  EXPECT_EQ(p.textures[0].width, 64);
+  EXPECT_EQ(p.textures[0].rgba.size(), 64u * 64u * 4u);
+  ASSERT_NE(p.tag("side"), nullptr);
+  EXPECT_EQ(p.tag("side")->texture, 0);
+  EXPECT_EQ(p.tag("side")->color, glm::vec3(1.0f, 0.5f, 0.5f));
+  EXPECT_EQ(p.tag("cap")->texture, -1);
+  ASSERT_EQ(p.ranges.size(), 2u);
+  EXPECT_EQ(p.ranges[0].texture, -1);
+  EXPECT_EQ(p.ranges[1].texture, 0);
+  EXPECT_EQ(p.ranges[0].count + p.ranges[1].count, p.vertex_count());
+  const std::size_t k = PreviewMesh::kFloatsPerVertex;
+  float u_max = -1e9f, v_max = -1e9f, v_min = 1e9f;
+  for (std::size_t v = p.ranges[1].first; v < p.ranges[1].first + p.ranges[1].count; ++v) {
+    const float* at = p.vertices.data() + v * k;
+    EXPECT_EQ(glm::vec3(at[6], at[7], at[8]), glm::vec3(1.0f, 0.5f, 0.5f));
+    u_max = std::max(u_max, at[9]);
+    v_min = std::min(v_min, at[10]);
+    v_max = std::max(v_max, at[10]);
+  }
+  EXPECT_NEAR(v_min, 0.0, 1e-6);
+  EXPECT_NEAR(v_max, 3.0 / 2.0, 1e-6);   // 3 m walls, 2 m a tile
+  EXPECT_NEAR(u_max, 36.0 / 2.0, 1e-5);  // round the 36 m footprint
+  for (std::size_t v = 0; v < p.ranges[0].count; ++v) EXPECT_EQ(p.vertices[v * k + 9], 0.0f);
 }
 
 TEST(TagColor, StableAndDistinguishableByChromaticity) {

@@ -6,7 +6,8 @@ one re-evaluates the recipe (only the nodes the change reaches) and replaces the
 mesh in place. File > Import > procex batch (.geojson) evaluates a recipe once
 per footprint: one object per building, named by its id, the feature's
 attributes as custom properties, placed meshes (windows, chimneys) as linked
-duplicates, one material per face tag, procex's texture coordinates (metres) as the
+duplicates, one material per face tag (a Material node's look: a Principled BSDF,
+its texture scaled to metres per tile), procex's texture coordinates (metres) as the
 UV map and its flat normals.
 """
 

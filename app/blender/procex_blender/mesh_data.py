@@ -1,8 +1,8 @@
 """procex meshes into Blender data: one Blender mesh from the parts of a
 building (NumPy arrays straight into foreach_set) with procex's texture
 coordinates (metres) as its UV map and procex's flat face normals as its
-custom normals, one material per face tag (a placed mesh's own colour and
-texture image from its .mtl), placed meshes as linked duplicates (objects
+custom normals, one material per face tag and look (a Material node's or a
+placed mesh's own .mtl: colour, roughness, metalness, texture image), placed meshes as linked duplicates (objects
 sharing one mesh datablock)."""
 import zlib
 
@@ -12,39 +12,58 @@ import numpy as np
 
 PLACED_KEY = "procex_placed"  # marks the objects the add-on placed (replaced on re-evaluation)
 UV_MAP = "UVMap"  # Blender's default name, which its texture nodes and exporters take first
+LOOK_KEY = "procex_look"  # on a material: the look it was made for
 
 
 def material(tag, own=None):
-    """The material of a face tag, made once per file: a placed mesh's own
-    (own: procex.Mesh.materials[tag], its colour and texture image) or a
-    colour of the tag's own."""
+    """The material of a face tag, made once per look: its own (own:
+    procex.Mesh.materials[tag], a Material node's or a placed mesh's .mtl) or
+    a colour of the tag's own. Two looks of one tag (two placed meshes'
+    "frame", or a look changed by re-evaluation) are two materials, the
+    second named with Blender's .001 suffix."""
     name = "procex " + (tag or "untagged")
-    m = bpy.data.materials.get(name)
-    if m is None:
-        m = bpy.data.materials.new(name)
-        if own is None:
-            h = zlib.crc32(name.encode())
-            m.diffuse_color = (0.35 + 0.6 * (h & 255) / 255, 0.35 + 0.6 * ((h >> 8) & 255) / 255,
-                               0.35 + 0.6 * ((h >> 16) & 255) / 255, 1.0)
-        else:
-            _own_look(m, own)
+    look = repr(sorted(own.items())) if own is not None else "tag colour"
+    for m in bpy.data.materials:
+        if m.get(LOOK_KEY) == look and (m.name == name or m.name.startswith(name + ".")):
+            return m
+    m = bpy.data.materials.new(name)
+    m[LOOK_KEY] = look
+    if own is None:
+        h = zlib.crc32(name.encode())
+        m.diffuse_color = (0.35 + 0.6 * (h & 255) / 255, 0.35 + 0.6 * ((h >> 8) & 255) / 255,
+                           0.35 + 0.6 * ((h >> 16) & 255) / 255, 1.0)
+    else:
+        _own_look(m, own)
     return m
 
 
 def _own_look(m, own):
-    """The .mtl's look in a node material: Kd as the base colour, times the
-    map_Kd image (procex resolved its path, confined to the recipe's folder)."""
+    """The look in a Principled BSDF: the colour as base colour, times the
+    image (procex resolved its path, confined to the recipe's folder) seen
+    through a Mapping node that scales the UVs (metres) by 1 / tile_size, and
+    the roughness and metalness."""
     m.diffuse_color = (*own["colour"], 1.0)
+    m.roughness = own["roughness"]
+    m.metallic = own["metallic"]
     m.use_nodes = True
     nodes = m.node_tree.nodes
     bsdf = next(n for n in nodes if n.type == "BSDF_PRINCIPLED")
     bsdf.inputs["Base Color"].default_value = (*own["colour"], 1.0)
+    bsdf.inputs["Roughness"].default_value = own["roughness"]
+    bsdf.inputs["Metallic"].default_value = own["metallic"]
     if own["texture"] is None:
         return
     image = nodes.new("ShaderNodeTexImage")
     image.image = bpy.data.images.load(own["texture"], check_existing=True)
+    if own["tile_size"] != 1.0:
+        coords = nodes.new("ShaderNodeTexCoord")
+        mapping = nodes.new("ShaderNodeMapping")
+        mapping.vector_type = "POINT"
+        mapping.inputs["Scale"].default_value = (1.0 / own["tile_size"], 1.0 / own["tile_size"], 1.0)
+        m.node_tree.links.new(coords.outputs["UV"], mapping.inputs["Vector"])
+        m.node_tree.links.new(mapping.outputs["Vector"], image.inputs["Vector"])
     colour = image.outputs["Color"]
-    if own["colour"] != (1.0, 1.0, 1.0):  # MTL: Kd multiplies the image
+    if own["colour"] != (1.0, 1.0, 1.0):  # the colour multiplies the image, as glTF's baseColorFactor does
         mix = nodes.new("ShaderNodeVectorMath")
         mix.operation = "MULTIPLY"
         mix.inputs[1].default_value = own["colour"]

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <tuple>
 #include <typeindex>
 
@@ -14,7 +15,11 @@
 #include <glm/vec2.hpp>
 
 #include "core/geom/convex_partition.h"
+#include "core/io/io_error.h"
+#include "core/io/texture_image.h"
 #include "core/io/up_axis.h"
+#include "core/mesh/material.h"
+#include "core/mesh/uv_frames.h"
 #include "core/placement/placement.h"
 
 namespace procex::studio {
@@ -100,11 +105,44 @@ void push(std::vector<float>& out, const glm::dvec3& p) {
   out.push_back(static_cast<float>(p.z));
 }
 
-void push_vertex(std::vector<float>& out, const glm::dvec3& p, const glm::dvec3& normal, const glm::vec3& color) {
+void push_vertex(std::vector<float>& out, const glm::dvec3& p, const glm::dvec3& normal, const glm::vec3& color,
+                 const glm::dvec2& uv = {0, 0}) {
   push(out, p);
   push(out, normal);
-  out.insert(out.end(), {color.r, color.g, color.b});
+  out.insert(out.end(), {color.r, color.g, color.b, static_cast<float>(uv.x), static_cast<float>(uv.y)});
 }
+
+// How a face looks: its colour, and its texture (an index into
+// PreviewMesh::textures, -1 for none) repeating every tile_size units of its
+// texture coordinates.
+struct Look {
+  glm::vec3 color{0.0f};
+  int texture = -1;
+  double tile_size = 1.0;
+};
+
+// Vertices by texture (bucket 0: none, bucket t + 1: texture t), joined into
+// one array of runs at the end so each texture is one draw.
+class Buckets {
+ public:
+  std::vector<float>& of(int texture) {
+    const auto b = static_cast<std::size_t>(texture + 1);
+    if (buckets_.size() <= b) buckets_.resize(b + 1);
+    return buckets_[b];
+  }
+  void join(std::vector<float>& vertices, std::vector<PreviewRange>& ranges) {
+    for (std::size_t b = 0; b < buckets_.size(); ++b) {
+      if (buckets_[b].empty()) continue;
+      ranges.push_back({vertices.size() / PreviewMesh::kFloatsPerVertex, buckets_[b].size() / PreviewMesh::kFloatsPerVertex,
+                        static_cast<int>(b) - 1});
+      vertices.insert(vertices.end(), buckets_[b].begin(), buckets_[b].end());
+    }
+    buckets_.clear();
+  }
+
+ private:
+  std::vector<std::vector<float>> buckets_;
+};
 
 std::vector<glm::dvec3> face_points(const Mesh& mesh, Mesh::FaceHandle f) {
   std::vector<glm::dvec3> pts;
@@ -131,11 +169,24 @@ glm::dvec3 unit_or_up(const glm::dvec3& n) {
   return len > 0 ? n / len : glm::dvec3(0, 0, 1);
 }
 
-// Appends the triangles of polygon `pts` (Newell normal `n`) coloured `color`.
-void append_face(std::vector<float>& out, const std::vector<glm::dvec3>& pts, const glm::dvec3& n, const glm::vec3& color) {
+// Appends the triangles of polygon `pts` (Newell normal `n`) with `look`,
+// its corners' texture coordinates at `uvs` (pts.size() of them) when it has
+// a texture.
+void append_face(Buckets& out, const std::vector<glm::dvec3>& pts, const glm::dvec3& n, const Look& look,
+                 const glm::dvec2* uvs) {
   const glm::dvec3 unit = unit_or_up(n);
+  const bool textured = look.texture >= 0 && uvs;
+  std::vector<float>& into = out.of(textured ? look.texture : -1);
   for (const auto& tri : triangulate(pts, unit))
-    for (std::size_t i : tri) push_vertex(out, pts[i], unit, color);
+    for (std::size_t i : tri) push_vertex(into, pts[i], unit, look.color, textured ? uvs[i] / look.tile_size : glm::dvec2(0.0));
+}
+
+// Where each face's corners start in SurfaceAttributes::corner_uvs.
+std::vector<std::size_t> first_corners(const Mesh& mesh) {
+  std::vector<std::size_t> first(mesh.n_faces() + 1, 0);
+  for (const auto f : mesh.faces())
+    first[static_cast<std::size_t>(f.idx()) + 1] = first[static_cast<std::size_t>(f.idx())] + mesh.valence(f);
+  return first;
 }
 
 class Builder {
@@ -166,13 +217,14 @@ class Builder {
   void add_building(const TaggedMesh& part) {
     const Mesh& mesh = *part.mesh;
     ++out_.meshes;
+    const MeshUvs uvs(mesh);
     for (Mesh::FaceHandle f : mesh.faces()) {
       const std::vector<glm::dvec3> pts = face_points(mesh, f);
       if (pts.size() < 3) continue;
       const glm::dvec3 n = newell(pts);
       TagSummary& t = tag(preview_tag(part, f));
       count_face(t, n);
-      append_face(out_.vertices, pts, n, t.color);
+      append_face(building_, pts, n, look(t, t.name, mesh), uvs.of(f));
       for (const glm::dvec3& p : pts) extend(p);
     }
     for (Mesh::EdgeHandle e : mesh.edges()) {
@@ -194,9 +246,10 @@ class Builder {
     const glm::dvec3 origin(building.origin[0], building.origin[1], building.origin[2]);
     for (const GltfPrimitiveData& prim : building.primitives) {
       TagSummary& t = tag(prim.tag.empty() ? "face" : prim.tag);
-      for_each_glb_face(prim, origin, [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n) {
+      const Look l = glb_look(t, prim);
+      for_each_glb_face(prim, origin, [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
         count_face(t, n);
-        append_triangles(out_.vertices, corners, n, t.color);
+        append_triangles(building_, corners, n, l, uvs);
         for (const glm::dvec3& p : corners) extend(p);
       }, out_.edge_points);
     }
@@ -218,6 +271,7 @@ class Builder {
     for (const PreviewAnchor& a : out_.anchors)
       if (a.anchor.present) add_marker(a.anchor.frame, size);
     for (auto& [name, t] : tags_) out_.tags.push_back(std::move(t));
+    building_.join(out_.vertices, out_.ranges);
   }
 
  private:
@@ -237,6 +291,67 @@ class Builder {
       }
     }
   };
+
+  // Each corner's texture coordinates of a mesh whose materials show a
+  // texture (core/mesh/uv_frames.h: metres, or a placed mesh's own), else none.
+  struct MeshUvs {
+    SurfaceAttributes surface;
+    std::vector<std::size_t> first;
+    explicit MeshUvs(const Mesh& mesh) {
+      const Materials& m = mesh_materials(mesh);
+      if (std::none_of(m.begin(), m.end(), [](const auto& e) { return !e.second.texture.empty(); })) return;
+      surface = surface_attributes(mesh, local_origin(mesh));  // small numbers for float32
+      first = first_corners(mesh);
+    }
+    const glm::dvec2* of(Mesh::FaceHandle f) const {
+      return first.empty() ? nullptr : surface.corner_uvs.data() + first[static_cast<std::size_t>(f.idx())];
+    }
+  };
+
+  // The look of faces shown as tag `t` whose material (if any) is the one
+  // `mesh` has for `material_tag`. A tag's summary takes the first material
+  // seen for it.
+  Look look(TagSummary& t, const std::string& material_tag, const Mesh& mesh) {
+    const Materials& materials = mesh_materials(mesh);
+    const auto m = materials.find(material_tag);
+    if (m == materials.end()) return {t.color, -1, 1.0};
+    const Material& mat = m->second;
+    Look l{glm::vec3(mat.colour[0], mat.colour[1], mat.colour[2]), -1, mat.tile_size};
+    if (!mat.texture.empty()) {
+      try {
+        l.texture = texture(shared_texture_image(mat.texture), l.color);
+      } catch (const IoError&) {
+        // The image went away since the evaluation read it: its colour alone.
+      }
+    }
+    return summarise(t, l);
+  }
+  Look glb_look(TagSummary& t, const GltfPrimitiveData& prim) {
+    if (!prim.material) return {t.color, -1, 1.0};
+    const GltfMaterialData& m = *prim.material;
+    Look l{glm::vec3(m.colour[0], m.colour[1], m.colour[2]), -1, m.tile_size};
+    if (m.image && !prim.uvs.empty()) l.texture = texture(m.image, l.color);
+    return summarise(t, l);
+  }
+  const Look& summarise(TagSummary& t, const Look& l) {
+    if (materials_seen_.insert(t.name).second) {
+      t.color = l.color;
+      t.texture = l.texture;
+    }
+    return l;
+  }
+  // The index of an image in PreviewMesh::textures, decoded on first use; -1 if it does not decode.
+  int texture(const std::shared_ptr<const std::string>& image, const glm::vec3& tint) {
+    const auto [it, fresh] = textures_.try_emplace(image, -1);
+    if (fresh) {
+      PreviewTexture decoded = decode_texture(*image, tint);
+      if (decoded.width > 0) {
+        it->second = static_cast<int>(out_.textures.size());
+        out_.textures.push_back(std::move(decoded));
+      }
+    }
+    return it->second;
+  }
 
   void add_instance(const PlaceableMesh& placed, const Instance& in) {
     if (!transform_problem(in.transform).empty()) return;  // Mesh Placement refuses these; never drawn
@@ -268,27 +383,34 @@ class Builder {
     Prototype& proto = it->second;
     if (!fresh) return proto;
     proto.group = out_.placed.size();
-    PreviewInstances& group = out_.placed.emplace_back();
+    out_.placed.emplace_back();
     const Mesh& mesh = *placed.mesh;
     const auto own_tags = face_tag_property(mesh);
+    const MeshUvs uvs(mesh);
+    Buckets vertices;
     for (Mesh::FaceHandle f : mesh.faces()) {
       const std::vector<glm::dvec3> pts = face_points(mesh, f);
       if (pts.size() < 3) continue;
-      // As core's flatten() tags an instance's faces: the instance's tag, the face's own, the mesh's name.
+      // As core's flatten() tags an instance's faces: the instance's tag, the face's own, the mesh's name;
+      // the look is the face's own material's, as the .glb shows it.
       const std::string* own = own_tags.is_valid() ? &mesh.property(own_tags, f) : nullptr;
-      TagSummary& t = tag(!instance_tag.empty() ? instance_tag : own && !own->empty() ? *own : placed.name);
+      const std::string& own_tag = own && !own->empty() ? *own : placed.name;
+      TagSummary& t = tag(!instance_tag.empty() ? instance_tag : own_tag);
       const glm::dvec3 n = newell(pts);
       proto.add_face(t, n, pts);
-      append_face(group.vertices, pts, n, t.color);
+      append_face(vertices, pts, n, look(t, own_tag, mesh), uvs.of(f));
     }
+    PreviewInstances& group = out_.placed[proto.group];
+    vertices.join(group.vertices, group.ranges);
     return proto;
   }
 
   // The triangles of one primitive grouped into the faces they were cut from
   // (the writer gives each face its own vertices, so triangles sharing a
   // vertex are one face), each with its corners' triangles (three points
-  // each, procex's frame) and its area vector; the faces' outlines (edges of
-  // one triangle only) go to `edges`.
+  // each, procex's frame), its area vector and its corners' texture
+  // coordinates (none if the primitive has none); the faces' outlines (edges
+  // of one triangle only) go to `edges`.
   template <class Fn>
   static void for_each_glb_face(const GltfPrimitiveData& prim, const glm::dvec3& origin, Fn&& fn, std::vector<float>& edges) {
     const std::size_t n_vertices = prim.positions.size() / 3;
@@ -310,14 +432,18 @@ class Builder {
     const auto at = [&](std::uint32_t v) {
       return from_file_axes(origin + glm::dvec3(prim.positions[3 * v], prim.positions[3 * v + 1], prim.positions[3 * v + 2]), UpAxis::Y);
     };
+    const bool has_uvs = prim.uvs.size() == 2 * n_vertices;
     for (const auto& [face_root, tris] : faces) {
       std::vector<glm::dvec3> corners;
+      std::vector<glm::dvec2> uvs;
       glm::dvec3 n(0.0);
       std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
       for (std::size_t i : tris) {
         const std::uint32_t v[3] = {prim.indices[i], prim.indices[i + 1], prim.indices[i + 2]};
         for (int k = 0; k < 3; ++k) {
           corners.push_back(at(v[k]));
+          // glTF's v runs down the image, the preview's up: (u, -v) is the same place, a whole tile apart.
+          if (has_uvs) uvs.emplace_back(prim.uvs[2 * v[k]], -prim.uvs[2 * v[k] + 1]);
           ++uses[std::minmax(v[k], v[(k + 1) % 3])];
         }
         n += glm::cross(corners[corners.size() - 2] - corners[corners.size() - 3], corners.back() - corners[corners.size() - 3]);
@@ -327,14 +453,18 @@ class Builder {
           push(edges, at(edge.first));
           push(edges, at(edge.second));
         }
-      fn(corners, n);
+      fn(corners, n, uvs);
     }
   }
 
   // Triangles given as corners, three by three, under one face's normal.
-  static void append_triangles(std::vector<float>& out, const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const glm::vec3& color) {
+  static void append_triangles(Buckets& out, const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const Look& look,
+                               const std::vector<glm::dvec2>& uvs) {
     const glm::dvec3 unit = unit_or_up(n);
-    for (const glm::dvec3& p : corners) push_vertex(out, p, unit, color);
+    const bool textured = look.texture >= 0 && uvs.size() == corners.size();
+    std::vector<float>& into = out.of(textured ? look.texture : -1);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      push_vertex(into, corners[i], unit, look.color, textured ? uvs[i] / look.tile_size : glm::dvec2(0.0));
   }
 
   // A .glb's placed mesh under an instance tag, made on first use.
@@ -343,15 +473,19 @@ class Builder {
     Prototype& proto = it->second;
     if (!fresh) return proto;
     proto.group = out_.placed.size();
-    PreviewInstances& group = out_.placed.emplace_back();
+    out_.placed.emplace_back();
     std::vector<float> unused_edges;
+    Buckets vertices;
     for (const GltfPrimitiveData& prim : placed.primitives) {
       TagSummary& t = tag(!instance_tag.empty() ? instance_tag : !prim.tag.empty() ? prim.tag : placed.building);
-      for_each_glb_face(prim, glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n) {
+      const Look l = glb_look(t, prim);
+      for_each_glb_face(prim, glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
         proto.add_face(t, n, corners);
-        append_triangles(group.vertices, corners, n, t.color);
+        append_triangles(vertices, corners, n, l, uvs);
       }, unused_edges);
     }
+    PreviewInstances& group = out_.placed[proto.group];
+    vertices.join(group.vertices, group.ranges);
     return proto;
   }
 
@@ -368,6 +502,9 @@ class Builder {
   }
 
   PreviewMesh& out_;
+  Buckets building_;  // the buildings' triangles, joined into out_.vertices by finish()
+  std::map<std::shared_ptr<const std::string>, int> textures_;  // images (by address: shared by the writers' caches) to indices
+  std::set<std::string> materials_seen_;  // tags whose summary has a material's colour
   std::map<std::string, TagSummary> tags_;  // std::map: references stay valid as tags are added
   std::map<std::tuple<const Mesh*, std::string, std::string>, Prototype> prototypes_;
   std::map<std::pair<std::size_t, std::string>, Prototype> glb_prototypes_;

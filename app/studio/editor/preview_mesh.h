@@ -1,5 +1,6 @@
 // preview_mesh.h -- evaluation results turned into what the 3D preview draws:
-// triangles coloured by face tag, the polygon edges for the wireframe, the
+// triangles coloured by face tag (or by their material: its colour, times its
+// texture where it has one), the polygon edges for the wireframe, the
 // meshes placed on the buildings (one set of triangles per distinct placed
 // mesh, drawn instanced) and markers at the resolved anchors. Built on the
 // evaluation thread so the UI thread only uploads buffers, once per result.
@@ -12,6 +13,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "app/studio/editor/preview_texture.h"
 #include "core/io/gltf_write.h"
 #include "core/mesh/mesh.h"
 #include "graph/value.h"
@@ -22,16 +24,24 @@ namespace procex::studio {
 // One face tag of the preview and how much of the mesh carries it.
 struct TagSummary {
   std::string name;
-  glm::vec3 color{0.0f};
+  glm::vec3 color{0.0f};   // the tag's colour, or its material's (the first mesh's with one)
+  int texture = -1;        // its material's texture: an index into PreviewMesh::textures, -1 for none
   std::size_t faces = 0;
   double area = 0.0;       // total area of its faces
   double area_up = 0.0;    // of which faces whose normal has a positive z component
+};
+
+// A run of triangle vertices drawn with one texture (or none).
+struct PreviewRange {
+  std::size_t first = 0, count = 0;  // vertices
+  int texture = -1;                  // an index into PreviewMesh::textures, -1 for none
 };
 
 // A mesh placed on the buildings (a window model), drawn instanced: its
 // triangles once, in its own coordinates, and a transform per placement.
 struct PreviewInstances {
   std::vector<float> vertices;    // as PreviewMesh::vertices, in the placed mesh's own coordinates
+  std::vector<PreviewRange> ranges;  // of vertices, by texture
   // Per instance: the model matrix (16 floats, column-major), then the matrix
   // that carries its normals (the inverse transpose of its 3x3 part, 9 floats).
   std::vector<float> transforms;
@@ -46,9 +56,14 @@ struct PreviewAnchor {
 };
 
 struct PreviewMesh {
-  // Interleaved per vertex: position xyz, normal xyz, colour rgb (flat shaded:
-  // every triangle has its own three vertices).
+  // Interleaved per vertex: position xyz, normal xyz, colour rgb, texture
+  // coordinates uv (flat shaded: every triangle has its own three vertices).
+  // The texture coordinates are in repeats of the face's texture (metres
+  // divided by its material's tile size; v up the image), zero where there is
+  // none.
   std::vector<float> vertices;
+  std::vector<PreviewRange> ranges;      // of vertices, by texture
+  std::vector<PreviewTexture> textures;  // each distinct image once
   // Polygon edges (not the triangulation's diagonals): pairs of xyz points.
   std::vector<float> edge_points;
   std::vector<TagSummary> tags;  // sorted by name; placed meshes' faces included
@@ -63,7 +78,7 @@ struct PreviewMesh {
   std::vector<float> marker_triangles, marker_lines;
   static constexpr glm::vec3 kAnchorColor{1.0f, 0.85f, 0.1f};  // no tag colour is this saturated a yellow
 
-  static constexpr std::size_t kFloatsPerVertex = 9;
+  static constexpr std::size_t kFloatsPerVertex = 11;
   std::size_t vertex_count() const { return vertices.size() / kFloatsPerVertex; }
   bool empty() const { return vertices.empty() && placed.empty(); }
   std::size_t absent_anchors() const;

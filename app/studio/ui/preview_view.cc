@@ -25,27 +25,36 @@ layout(location = 2) in vec3 color;
 // Placed meshes: one per instance; the buildings' own triangles get the identity (kIdentityModel).
 layout(location = 3) in mat4 model;
 layout(location = 7) in mat3 normal_matrix;
+layout(location = 10) in vec2 uv;
 uniform mat4 mvp;
 out vec3 v_normal;
 out vec3 v_color;
+out vec2 v_uv;
 void main() {
   v_normal = normal_matrix * normal;
   v_color = color;
+  v_uv = uv;
   gl_Position = mvp * model * vec4(pos, 1.0);
 })";
 
-constexpr GLuint kModelAttribute = 3, kNormalMatrixAttribute = 7;
+constexpr GLuint kModelAttribute = 3, kNormalMatrixAttribute = 7, kUvAttribute = 10;
 
-// Lighting only scales the tag colour, so its chromaticity stays recognisable.
+// Lighting only scales the tag colour (times the material's texture, sampled
+// at the face's texture coordinates, where it has one), so its chromaticity
+// stays recognisable.
 const char* kMeshFs = R"(#version 330 core
 in vec3 v_normal;
 in vec3 v_color;
+in vec2 v_uv;
+uniform bool textured;
+uniform sampler2D image;
 out vec4 frag;
 void main() {
   vec3 n = normalize(v_normal);
   float key = max(dot(n, normalize(vec3(0.4, 0.6, 0.8))), 0.0);
   float fill = max(dot(n, normalize(vec3(-0.6, -0.3, 0.2))), 0.0);
-  frag = vec4(v_color * (0.35 + 0.55 * key + 0.2 * fill), 1.0);
+  vec3 base = textured ? v_color * texture(image, v_uv).rgb : v_color;
+  frag = vec4(base * (0.35 + 0.55 * key + 0.2 * fill), 1.0);
 })";
 
 const char* kLineVs = R"(#version 330 core
@@ -101,6 +110,8 @@ struct ShadedBuffer {
       glEnableVertexAttribArray(a);
       glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(std::uintptr_t{a} * 3 * sizeof(float)));
     }
+    glEnableVertexAttribArray(kUvAttribute);
+    glVertexAttribPointer(kUvAttribute, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(9 * sizeof(float)));
     glBindVertexArray(0);
   }
   ~ShadedBuffer() {
@@ -111,11 +122,14 @@ struct ShadedBuffer {
   ShadedBuffer(const ShadedBuffer&) = delete;
   ShadedBuffer& operator=(const ShadedBuffer&) = delete;
 
-  void upload(const std::vector<float>& data) {
+  // ranges: runs of the vertices by texture (none: all of them, untextured).
+  void upload(const std::vector<float>& data, const std::vector<PreviewRange>& by_texture = {}) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     vertices = static_cast<GLsizei>(data.size() / PreviewMesh::kFloatsPerVertex);
+    ranges = by_texture;
+    if (ranges.empty()) ranges.push_back({0, static_cast<std::size_t>(vertices), -1});
   }
   // Makes this an instanced buffer: the model and normal matrices become per-instance attributes.
   void upload_instances(const std::vector<float>& transforms) {
@@ -139,17 +153,29 @@ struct ShadedBuffer {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     instances = static_cast<GLsizei>(transforms.size() / PreviewInstances::kFloatsPerInstance);
   }
-  void draw(GLenum mode) const {
+  // Each range with its texture bound (`textures`: GL names by PreviewMesh::textures' index) and the
+  // program's `textured` uniform (at `textured_uniform`) set to match.
+  void draw(GLenum mode, const std::vector<GLuint>& textures, GLint textured_uniform) const {
     glBindVertexArray(vao);
-    if (instance_vbo) {
-      glDrawArraysInstanced(mode, 0, vertices, instances);
-      return;
-    }
     // Attributes without arrays take these constants: the identity.
-    for (GLuint c = 0; c < 4; ++c) glVertexAttrib4f(kModelAttribute + c, c == 0, c == 1, c == 2, c == 3);
-    for (GLuint c = 0; c < 3; ++c) glVertexAttrib3f(kNormalMatrixAttribute + c, c == 0, c == 1, c == 2);
-    glDrawArrays(mode, 0, vertices);
+    if (!instance_vbo) {
+      for (GLuint c = 0; c < 4; ++c) glVertexAttrib4f(kModelAttribute + c, c == 0, c == 1, c == 2, c == 3);
+      for (GLuint c = 0; c < 3; ++c) glVertexAttrib3f(kNormalMatrixAttribute + c, c == 0, c == 1, c == 2);
+    }
+    for (const PreviewRange& r : ranges) {
+      const bool textured = r.texture >= 0 && static_cast<std::size_t>(r.texture) < textures.size();
+      glUniform1i(textured_uniform, textured);
+      if (textured) glBindTexture(GL_TEXTURE_2D, textures[static_cast<std::size_t>(r.texture)]);
+      const auto first = static_cast<GLint>(r.first);
+      const auto count = static_cast<GLsizei>(r.count);
+      if (instance_vbo)
+        glDrawArraysInstanced(mode, first, count, instances);
+      else
+        glDrawArrays(mode, first, count);
+    }
+    glUniform1i(textured_uniform, 0);
   }
+  std::vector<PreviewRange> ranges;
 };
 
 struct PreviewView::Gl {
@@ -158,7 +184,28 @@ struct PreviewView::Gl {
   GLsizei edge_vertices = 0, grid_vertices = 0;
   ShadedBuffer mesh, marker_triangles, marker_lines;
   std::vector<std::unique_ptr<ShadedBuffer>> placed;  // one per distinct placed mesh
+  std::vector<GLuint> textures;                       // PreviewMesh::textures, uploaded
   OffscreenImage image{true};
+
+  // Repeating, mipmapped: a brick texture seen from afar blends to its mean, not to noise.
+  void upload_textures(const std::vector<PreviewTexture>& images) {
+    if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+    textures.assign(images.size(), 0);
+    if (images.empty()) return;
+    glGenTextures(static_cast<GLsizei>(textures.size()), textures.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (std::size_t i = 0; i < images.size(); ++i) {
+      glBindTexture(GL_TEXTURE_2D, textures[i]);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, images[i].width, images[i].height, 0, GL_RGBA, GL_UNSIGNED_BYTE, images[i].rgba.data());
+      glGenerateMipmap(GL_TEXTURE_2D);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
 
   Gl() {
     mesh_program = program(kMeshVs, kMeshFs);
@@ -174,6 +221,7 @@ struct PreviewView::Gl {
     glBindVertexArray(0);
   }
   ~Gl() {
+    if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
     glDeleteProgram(mesh_program);
     glDeleteProgram(line_program);
     for (GLuint* v : {&edge_vao, &grid_vao}) glDeleteVertexArrays(1, v);
@@ -202,14 +250,17 @@ void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   mesh_ = std::move(mesh);
   stale_ = true;
   static const std::vector<float> kNone;
-  gl_->mesh.upload(mesh_ ? mesh_->vertices : kNone);
+  static const std::vector<PreviewRange> kNoRanges;
+  static const std::vector<PreviewTexture> kNoTextures;
+  gl_->upload_textures(mesh_ ? mesh_->textures : kNoTextures);
+  gl_->mesh.upload(mesh_ ? mesh_->vertices : kNone, mesh_ ? mesh_->ranges : kNoRanges);
   gl_->marker_triangles.upload(mesh_ ? mesh_->marker_triangles : kNone);
   gl_->marker_lines.upload(mesh_ ? mesh_->marker_lines : kNone);
   gl_->placed.clear();
   if (mesh_)
     for (const PreviewInstances& group : mesh_->placed) {
       auto& buffer = gl_->placed.emplace_back(std::make_unique<ShadedBuffer>());
-      buffer->upload(group.vertices);
+      buffer->upload(group.vertices, group.ranges);
       buffer->upload_instances(group.transforms);
     }
   gl_->upload(gl_->edge_vbo, mesh_ ? mesh_->edge_points : kNone);
@@ -265,15 +316,19 @@ void PreviewView::render(int width, int height) {
 
   glUseProgram(gl_->mesh_program);
   glUniformMatrix4fv(glGetUniformLocation(gl_->mesh_program, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+  glUniform1i(glGetUniformLocation(gl_->mesh_program, "image"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  const GLint textured = glGetUniformLocation(gl_->mesh_program, "textured");
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe in front of its own faces
-  gl_->mesh.draw(GL_TRIANGLES);
-  for (const auto& group : gl_->placed) group->draw(GL_TRIANGLES);
+  gl_->mesh.draw(GL_TRIANGLES, gl_->textures, textured);
+  for (const auto& group : gl_->placed) group->draw(GL_TRIANGLES, gl_->textures, textured);
+  glBindTexture(GL_TEXTURE_2D, 0);
   glDisable(GL_POLYGON_OFFSET_FILL);
   if (anchors) {  // over everything: a placed window would hide the anchor it sits on
     glDisable(GL_DEPTH_TEST);
-    gl_->marker_triangles.draw(GL_TRIANGLES);
-    gl_->marker_lines.draw(GL_LINES);
+    gl_->marker_triangles.draw(GL_TRIANGLES, gl_->textures, textured);
+    gl_->marker_lines.draw(GL_LINES, gl_->textures, textured);
     glEnable(GL_DEPTH_TEST);
   }
   if (wireframe) {

@@ -879,8 +879,13 @@ void write_screenshot_info(const fs::path& file, App& app, int width, int height
     for (const Diagnostic& d : s->result.diagnostics) errors += d.severity == Severity::kError;
   const PreviewMesh* shown = app.on_screen();
   if (shown)
-    for (const TagSummary& t : shown->tags)
+    for (const TagSummary& t : shown->tags) {
       j["tags"].push_back({{"name", t.name}, {"color", {t.color.r, t.color.g, t.color.b}}, {"faces", t.faces}, {"area", t.area}, {"area_up", t.area_up}});
+      // A textured tag shows its texture's colours (times its own), not one colour.
+      if (t.texture >= 0)
+        for (const glm::vec3& c : shown->textures.at(static_cast<std::size_t>(t.texture)).palette)
+          j["tags"].back()["texture_colours"].push_back({c.r, c.g, c.b});
+    }
   j["errors"] = errors;
   // How readable the node canvas is: its zoom and the smallest text it drew.
   j["canvas"] = {{"zoom", app.canvas().zoom()}, {"min_text_px", app.canvas().min_text_px()}, {"legible_zoom", NodeCanvas::legible_zoom()}};

@@ -1,9 +1,13 @@
-// studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-anchors] -- checks a procex-studio screenshot:
+// studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-texture NAME]... [--require-anchors] --
+// checks a procex-studio screenshot:
 // the image is not blank, and the 3D preview shows the geometry: enough
 // pixels differ from the preview's background, most of them carry a tag's
-// (lit) colour, and the tags seen cover most of the mesh's coloured area
+// (lit) colour (a textured tag's: its texture's mean or commonest colours),
+// and the tags seen cover most of the mesh's coloured area
 // (some faces may hide behind others), and each required tag is clearly
-// visible (a soffit seen from below the eaves), and with --require-anchors
+// visible (a soffit seen from below the eaves), each required texture is
+// drawn (two of its colours of clearly different hue each cover many
+// pixels: a face of one flat colour cannot), and with --require-anchors
 // that the anchors have markers (pixels of the marker colour). INFO.json is
 // what `procex-studio --screenshot-info` wrote beside the image. The node
 // canvas's text must be legible (at least 10 px) and its framing zoom no lower
@@ -44,14 +48,16 @@ void check(bool ok, const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-anchors]\n";
-  std::vector<std::string> required;
+  const char* usage = "usage: studio_png_check IMAGE.png INFO.json [--require-tag NAME]... [--require-texture NAME]... [--require-anchors]\n";
+  std::vector<std::string> required, required_textures;
   bool require_anchors = false;
   for (int i = 3; i < argc; ++i) {
     if (std::string(argv[i]) == "--require-anchors") {
       require_anchors = true;
     } else if (std::string(argv[i]) == "--require-tag" && i + 1 < argc) {
       required.push_back(argv[++i]);
+    } else if (std::string(argv[i]) == "--require-texture" && i + 1 < argc) {
+      required_textures.push_back(argv[++i]);
     } else {
       std::fprintf(stderr, "%s", usage);
       return 2;
@@ -99,12 +105,18 @@ int main(int argc, char** argv) {
   std::vector<Rgb> tag_colours;
   std::vector<std::string> tag_names;
   std::vector<double> tag_areas;
+  std::vector<std::vector<Rgb>> texture_colours;  // per tag: its texture's colours, none if untextured
   for (const auto& t : info["tags"]) {
     tag_colours.push_back({t["color"][0].get<float>(), t["color"][1].get<float>(), t["color"][2].get<float>()});
     tag_names.push_back(t["name"].get<std::string>());
     tag_areas.push_back(t["area"].get<double>());
+    texture_colours.emplace_back();
+    if (t.contains("texture_colours"))
+      for (const auto& c : t["texture_colours"]) texture_colours.back().push_back({c[0].get<float>(), c[1].get<float>(), c[2].get<float>()});
   }
   std::vector<long> tag_pixels(tag_colours.size(), 0);
+  std::vector<std::vector<long>> texture_pixels(texture_colours.size());
+  for (std::size_t i = 0; i < texture_colours.size(); ++i) texture_pixels[i].assign(texture_colours[i].size(), 0);
   const auto& ac = info["anchor_color"];
   const Rgb anchor_colour{ac[0].get<float>(), ac[1].get<float>(), ac[2].get<float>()};
   long geometry = 0, area = 0, anchor_pixels = 0;
@@ -117,15 +129,19 @@ int main(int argc, char** argv) {
       if (is_background || (grey && p.r < 0.35f)) continue;  // background or grid line
       ++geometry;
       anchor_pixels += same_chroma(p, anchor_colour);
-      for (std::size_t i = 0; i < tag_colours.size(); ++i)
-        if (chromatic(tag_colours[i]) && same_chroma(p, tag_colours[i])) ++tag_pixels[i];
+      for (std::size_t i = 0; i < tag_colours.size(); ++i) {
+        bool seen = chromatic(tag_colours[i]) && same_chroma(p, tag_colours[i]);
+        for (std::size_t k = 0; k < texture_colours[i].size(); ++k)
+          if (chromatic(texture_colours[i][k]) && same_chroma(p, texture_colours[i][k])) ++texture_pixels[i][k], seen = true;
+        tag_pixels[i] += seen;
+      }
     }
   check(area > 10000, "preview area " + std::to_string(area) + " pixels");
   check(geometry > area / 50, "geometry covers " + std::to_string(100.0 * geometry / std::max(area, 1L)) + "% of the preview");
   long tagged = 0;
   double coloured_area = 0, seen_area = 0;
   for (std::size_t i = 0; i < tag_colours.size(); ++i) {
-    if (!chromatic(tag_colours[i])) continue;
+    if (!chromatic(tag_colours[i]) && texture_colours[i].empty()) continue;
     tagged += tag_pixels[i];
     coloured_area += tag_areas[i];
     if (tag_pixels[i] >= 50) seen_area += tag_areas[i];
@@ -136,6 +152,27 @@ int main(int argc, char** argv) {
     const auto it = std::find(tag_names.begin(), tag_names.end(), name);
     const long pixels = it == tag_names.end() ? 0 : tag_pixels[static_cast<std::size_t>(it - tag_names.begin())];
     check(pixels >= 200, "required tag '" + name + "' " + (it == tag_names.end() ? "is not in the mesh" : "covers " + std::to_string(pixels) + " pixels (at least 200)"));
+  }
+  for (const std::string& name : required_textures) {
+    const auto it = std::find(tag_names.begin(), tag_names.end(), name);
+    const std::size_t i = static_cast<std::size_t>(it - tag_names.begin());
+    // Two of its colours, each on many pixels, whose hues differ as a texture's parts do.
+    bool two = false;
+    if (it != tag_names.end())
+      for (std::size_t a = 0; a < texture_colours[i].size(); ++a)
+        for (std::size_t b = a + 1; b < texture_colours[i].size(); ++b) {
+          const Rgb ca = texture_colours[i][a], cb = texture_colours[i][b];
+          const float sa = ca.r + ca.g + ca.b, sb = cb.r + cb.g + cb.b;
+          const bool apart = std::fabs(ca.r / sa - cb.r / sb) + std::fabs(ca.g / sa - cb.g / sb) + std::fabs(ca.b / sa - cb.b / sb) > 0.2f;
+          two = two || (apart && texture_pixels[i][a] >= 200 && texture_pixels[i][b] >= 200);
+        }
+    std::string counts;
+    if (it != tag_names.end())
+      for (long n : texture_pixels[i]) counts += " " + std::to_string(n);
+    check(two, "required texture of '" + name + "' " +
+                   (it == tag_names.end() ? "is not in the mesh"
+                    : texture_colours[i].empty() ? "is missing: the tag has no texture"
+                                                 : "shows two of its colours on 200 pixels each (pixels per colour:" + counts + ")"));
   }
   if (require_anchors) {
     const long present = info["anchors_present"].get<long>();

@@ -1,0 +1,141 @@
+// The Material node: a tag's faces take a PBR look on the buildings and on
+// the placed meshes that carry the tag, its texture confined to the recipe's
+// folder like every file a recipe names, and an edited texture read again.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/io/mesh_read.h"
+#include "core/mesh/material.h"
+#include "core/placement/placement.h"
+#include "graph/pxg.h"
+#include "nodes/values.h"
+#include "tests/app/command_test.h"
+#include "tests/nodes/node_runner.h"
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_node;
+const fs::path kSamples = PROCEX_SAMPLES;
+
+using MaterialNode = test::CommandTest;
+
+const MeshSet& mesh_of(const EvalResult& r) {
+  const Value* v = r.output("mesh");
+  if (!v) throw std::runtime_error("no mesh: " + (r.diagnostics.empty() ? std::string() : r.diagnostics[0].to_string()));
+  return v->get<MeshSet>();
+}
+
+// The sample's house: every tag it names has its look, the tags it does not
+// name (the base) have none, and the geometry is the house's own.
+TEST_F(MaterialNode, TexturedHouseGivesEachTagItsLook) {
+  const MeshSet set = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "textured_house.pxg"), kSamples));
+  ASSERT_EQ(set.parts.size(), 1u);
+  const Materials& materials = mesh_materials(*set.parts[0].mesh);
+  ASSERT_EQ(materials.size(), 4u);
+  const Material& wall = materials.at("wall");
+  EXPECT_EQ(wall.colour, (std::array<double, 3>{1, 1, 1}));
+  EXPECT_EQ(wall.roughness, 0.85);
+  EXPECT_EQ(wall.metallic, 0.0);
+  EXPECT_EQ(wall.tile_size, 0.8);
+  EXPECT_EQ(wall.texture, fs::canonical(kSamples / "textures" / "brick.png"));
+  EXPECT_EQ(materials.at("gable"), wall);
+  EXPECT_EQ(materials.at("roof").texture, fs::canonical(kSamples / "textures" / "roof_tiles.png"));
+  EXPECT_EQ(materials.at("roof").tile_size, 1.2);
+  EXPECT_EQ(materials.at("soffit").colour, (std::array<double, 3>{0.9, 0.9, 0.85}));
+  EXPECT_TRUE(materials.at("soffit").texture.empty());
+  EXPECT_FALSE(materials.contains("base"));
+
+  const MeshSet plain = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "house.pxg"), kSamples));
+  EXPECT_EQ(plain.parts[0].mesh->n_faces(), set.parts[0].mesh->n_faces());
+  EXPECT_TRUE(mesh_materials(*plain.parts[0].mesh).empty());
+}
+
+// A placed mesh's faces of the tag take the look, its own material of that
+// name replaced; every instance still shares one mesh, and the input's mesh
+// is left as it was (values are immutable).
+TEST_F(MaterialNode, PlacedMeshesOfTheTagTakeItAndStayShared) {
+  MeshSet in;
+  TaggedMesh& part = in.parts.emplace_back();
+  part.mesh = std::make_shared<const Mesh>(read_mesh_file(fs::path(PROCEX_TEST_DATA) / "mesh_window_frame.obj"));
+  part.face_tags.assign(part.mesh->n_faces(), 0);
+  part.tags = {"wall"};
+  const std::size_t window = part.placed.add_mesh({"window", part.mesh});
+  for (int i = 0; i < 3; ++i) part.placed.add_instance({window, glm::dmat4(1.0), "", -1});
+  const auto r = run_node("Material", {{"tag", Value::make(std::string("frame"))}, {"metallic", Value::make(1.0)},
+                                       {"roughness", Value::make(0.2)}},
+                          {{"mesh", Value::make(in)}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  const TaggedMesh& out = r.outputs.at(0).get<MeshSet>().parts.at(0);
+  EXPECT_EQ(out.mesh, part.mesh);  // the building has no face tagged frame: not copied
+  ASSERT_EQ(out.placed.meshes.size(), 1u);
+  const Material& frame = mesh_materials(*out.placed.meshes[0].mesh).at("frame");
+  EXPECT_EQ(frame.metallic, 1.0);
+  EXPECT_EQ(frame.roughness, 0.2);
+  EXPECT_TRUE(mesh_materials(*part.mesh).empty());
+
+  const auto none = run_node("Material", {{"tag", Value::make(std::string("chimney"))}}, {{"mesh", Value::make(in)}});
+  ASSERT_TRUE(none.ok()) << none.messages();
+  EXPECT_NE(none.messages().find("no face is tagged 'chimney'"), std::string::npos) << none.messages();
+}
+
+TEST_F(MaterialNode, RefusesAColourOutsideZeroToOneAndAMissingTag) {
+  MeshSet in;
+  const auto bright = run_node("Material", {{"colour", Value::make(Vec3{1.5, 0, 0})}}, {{"mesh", Value::make(in)}});
+  EXPECT_FALSE(bright.ok());
+  EXPECT_NE(bright.messages().find("colour:"), std::string::npos) << bright.messages();
+  const auto untagged = run_node("Material", {{"tag", Value::make(std::string())}}, {{"mesh", Value::make(in)}});
+  EXPECT_FALSE(untagged.ok());
+  EXPECT_NE(untagged.messages().find("tag:"), std::string::npos) << untagged.messages();
+}
+
+// A recipe whose texture leads out of its folder is refused, the error
+// naming the node, the parameter and the file; a file that is not an image
+// is refused too, inside the folder.
+TEST_F(MaterialNode, TextureOutsideTheRecipesFolderIsRefused) {
+  fs::create_directories(dir_ / "recipe");
+  fs::copy(kSamples / "textures", dir_ / "recipe" / "textures");
+  fs::copy_file(kSamples / "textures" / "brick.png", dir_ / "secret.png");
+  std::ifstream in(kSamples / "textured_house.pxg");
+  std::string recipe((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string brick = "\"textures/roof_tiles.png\"";
+  recipe.replace(recipe.find(brick), brick.size(), "\"../secret.png\"");
+  std::ofstream(dir_ / "recipe" / "escape.pxg") << recipe;
+  const EvalResult r = test::evaluate_mesh(load_pxg(dir_ / "recipe" / "escape.pxg"), dir_ / "recipe");
+  EXPECT_FALSE(r.ok());
+  std::string messages;
+  for (const Diagnostic& d : r.diagnostics) messages += d.to_string() + "\n";
+  EXPECT_NE(messages.find("error: node 9 (Material): texture: '../secret.png' lies outside the recipe's folder"),
+            std::string::npos)
+      << messages;
+
+  std::ofstream(dir_ / "recipe" / "notes.png") << "not an image";
+  const auto fake = run_node("Material", {{"texture", Value::make(std::string("notes.png"))}},
+                             {{"mesh", Value::make(MeshSet{})}}, dir_ / "recipe");
+  EXPECT_FALSE(fake.ok());
+  EXPECT_NE(fake.messages().find("is not a PNG or JPEG image"), std::string::npos) << fake.messages();
+}
+
+// The texture's size and time are in the node's key: an edited image is read
+// again, an unchanged one is not.
+TEST_F(MaterialNode, AnEditedTextureChangesTheKey) {
+  fs::create_directories(dir_ / "textures");
+  fs::copy_file(kSamples / "textures" / "brick.png", dir_ / "textures" / "brick.png");
+  fs::copy_file(kSamples / "textures" / "roof_tiles.png", dir_ / "textures" / "roof_tiles.png");
+  const Graph g = load_pxg(kSamples / "textured_house.pxg");
+  ResultCache cache(1 << 20);
+  Evaluator ev(cache, "material test");
+  EvalOptions options;
+  options.folder = dir_;
+  const auto key = [&] { return ev.hash_outputs(g, {}, {}, options).outputs.at(0).hash; };
+  const Hash128 before = key();
+  EXPECT_EQ(key(), before);
+  std::ofstream(dir_ / "textures" / "brick.png", std::ios::app) << "x";  // one byte longer
+  EXPECT_NE(key(), before);
+}
+
+}  // namespace
+}  // namespace procex
