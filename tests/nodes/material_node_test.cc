@@ -10,6 +10,7 @@
 #include "core/mesh/material.h"
 #include "core/placement/placement.h"
 #include "graph/pxg.h"
+#include "nodes/support/mesh_export.h"
 #include "nodes/values.h"
 #include "tests/app/command_test.h"
 #include "tests/nodes/node_runner.h"
@@ -135,6 +136,30 @@ TEST_F(MaterialNode, AnEditedTextureChangesTheKey) {
   EXPECT_EQ(key(), before);
   std::ofstream(dir_ / "textures" / "brick.png", std::ios::app) << "x";  // one byte longer
   EXPECT_NE(key(), before);
+}
+
+// Two meshes whose materials share a name but not a look (two placed
+// meshes' libraries each with a "frame") keep both looks in an OBJ's library:
+// the second under frame_2.
+TEST_F(MaterialNode, TwoLooksUnderOneNameAreTwoObjMaterials) {
+  MeshSet set;
+  for (const double red : {1.0, 0.0}) {
+    Mesh mesh = read_mesh_file(fs::path(PROCEX_TEST_DATA) / "mesh_window_frame.obj");
+    Material look;
+    look.colour = {red, 0.0, 1.0 - red};
+    set_mesh_materials(mesh, {{"frame", look}});
+    TaggedMesh& part = set.parts.emplace_back();
+    part.face_tags.assign(mesh.n_faces(), 0);
+    part.tags = {"frame"};
+    part.building = red > 0 ? "a" : "b";
+    part.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  }
+  write_mesh_set(dir_ / "frames.obj", set);
+  const std::string mtl = test::read_text(dir_ / "frames.mtl"), obj = test::read_text(dir_ / "frames.obj");
+  EXPECT_NE(mtl.find("newmtl frame\nKd 1 0 0\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl frame_2\nKd 0 0 1\n"), std::string::npos) << mtl;
+  EXPECT_LT(obj.find("usemtl frame\n"), obj.find("o b\n"));
+  EXPECT_GT(obj.find("usemtl frame_2\n"), obj.find("o b\n"));
 }
 
 }  // namespace
