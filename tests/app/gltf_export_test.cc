@@ -268,6 +268,7 @@ fs::path textured_batch_recipe(const fs::path& dir) {
     if (e["node"] != 1) exposed.push_back(e);
   recipe["nodes"] = nodes;
   recipe["exposed"] = exposed;
+  recipe["editor"]["nodes"].erase("1");
   recipe["presets"] = json::array();
   std::ofstream(dir / "textured_batch.pxg") << recipe.dump(1);
   return dir / "textured_batch.pxg";
