@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < texture_colours.size(); ++i) texture_pixels[i].assign(texture_colours[i].size(), 0);
   const auto& ac = info["anchor_color"];
   const Rgb anchor_colour{ac[0].get<float>(), ac[1].get<float>(), ac[2].get<float>()};
-  long geometry = 0, area = 0, anchor_pixels = 0;
+  long geometry = 0, area = 0, anchor_pixels = 0, tagged_pixels = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       ++area;
@@ -129,20 +129,21 @@ int main(int argc, char** argv) {
       if (is_background || (grey && p.r < 0.35f)) continue;  // background or grid line
       ++geometry;
       anchor_pixels += same_chroma(p, anchor_colour);
+      bool any = false;  // tags that share a texture both match its pixels: each pixel counts once below
       for (std::size_t i = 0; i < tag_colours.size(); ++i) {
         bool seen = chromatic(tag_colours[i]) && same_chroma(p, tag_colours[i]);
         for (std::size_t k = 0; k < texture_colours[i].size(); ++k)
           if (chromatic(texture_colours[i][k]) && same_chroma(p, texture_colours[i][k])) ++texture_pixels[i][k], seen = true;
         tag_pixels[i] += seen;
+        any = any || seen;
       }
+      tagged_pixels += any;
     }
   check(area > 10000, "preview area " + std::to_string(area) + " pixels");
   check(geometry > area / 50, "geometry covers " + std::to_string(100.0 * geometry / std::max(area, 1L)) + "% of the preview");
-  long tagged = 0;
   double coloured_area = 0, seen_area = 0;
   for (std::size_t i = 0; i < tag_colours.size(); ++i) {
     if (!chromatic(tag_colours[i]) && texture_colours[i].empty()) continue;
-    tagged += tag_pixels[i];
     coloured_area += tag_areas[i];
     if (tag_pixels[i] >= 50) seen_area += tag_areas[i];
     std::printf("     tag '%s': %ld pixels, %.1f m2\n", tag_names[i].c_str(), tag_pixels[i], tag_areas[i]);
@@ -168,7 +169,7 @@ int main(int argc, char** argv) {
         }
     std::string counts;
     if (it != tag_names.end())
-      for (long n : texture_pixels[i]) counts += " " + std::to_string(n);
+      for (long n : texture_pixels[i]) counts.append(1, ' ').append(std::to_string(n));
     check(two, "required texture of '" + name + "' " +
                    (it == tag_names.end() ? "is not in the mesh"
                     : texture_colours[i].empty() ? "is missing: the tag has no texture"
@@ -189,7 +190,7 @@ int main(int argc, char** argv) {
   } else {
     check(false, "INFO.json says how the node canvas was drawn");
   }
-  check(tagged > geometry / 2, std::to_string(tagged) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
+  check(tagged_pixels > geometry / 2, std::to_string(tagged_pixels) + " of " + std::to_string(geometry) + " geometry pixels have a tag colour");
   stbi_image_free(data);
   std::printf("%d failed\n", failures);
   return failures == 0 ? 0 : 1;
