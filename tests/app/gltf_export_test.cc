@@ -256,7 +256,7 @@ namespace {
 // samples/textured_house.pxg made for batch (its Footprint Shape replaced by
 // the graph input `footprint`), in dir, its textures beside it.
 fs::path textured_batch_recipe(const fs::path& dir) {
-  fs::copy(kRoot / "samples" / "textures", dir / "textures", fs::copy_options::skip_existing);
+  fs::copy(kRoot / "samples" / "textures", dir / "textures", fs::copy_options::recursive | fs::copy_options::skip_existing);
   json recipe = json::parse(std::ifstream(kRoot / "samples" / "textured_house.pxg"));
   recipe["inputs"] = json::array({{{"name", "footprint"}, {"type", "footprint"}, {"doc", "bound by procex batch"}}});
   for (json& link : recipe["links"])
