@@ -28,27 +28,29 @@ struct Node {
   bool removed = false;
 };
 
+// Whether a -> b -> c runs straight on or back along itself up to rounding:
+// a relative turn below kStraightTurnSine, or a cross product no larger than
+// the last bits of the coordinates can make (a grid plan rotated and moved to
+// (5e5, 5e6) puts vertices of one grid line 1e-11 off it, relative).
+bool straight_up_to_rounding(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const glm::dvec2 u = b - a, w = c - b;
+  const double lu = glm::length(u), lw = glm::length(w);
+  const double coordinate = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x),
+                                      std::abs(c.y)});
+  const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * coordinate;
+  return std::abs(u.x * w.y - u.y * w.x) <= kStraightTurnSine * lu * lw + rounding * (lu + lw);
+}
+
 // Turn at b on the way a -> b -> c: +1 left, -1 right, 0 straight on, and
-// 2 for a reversal (c back along b -> a), which is never convex.
+// 2 for a reversal (c back along b -> a), which is never convex. Straight and
+// back up to rounding count as such: a piece cut there (vertices of holes on
+// one grid line of a rotated plan) would have no area.
 int turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
-  const int o = orient2d(a, b, c);
-  if (o != 0) return o;
-  return glm::dot(b - a, c - b) > 0.0 ? 0 : 2;
+  if (straight_up_to_rounding(a, b, c)) return glm::dot(b - a, c - b) > 0.0 ? 0 : 2;
+  return orient2d(a, b, c);
 }
 
 bool convex_turn(int t) { return t == 0 || t == 1; }
-
-// Whether a piece may turn at b: left, straight on, or right by no more than
-// kStraightTurnSine. A straight vertex of a rotated plan is off its line by
-// the rounding of its coordinates; the ear clipper may cut an ear of no area
-// there, and only a merge that takes such a vertex as straight removes it.
-bool convex_up_to_rounding(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
-  const int t = turn(a, b, c);
-  if (convex_turn(t)) return true;
-  const glm::dvec2 u = b - a, w = c - b;
-  return t == -1 && glm::dot(u, w) > 0.0 &&
-         -(u.x * w.y - u.y * w.x) <= kStraightTurnSine * glm::length(u) * glm::length(w);
-}
 
 class Partitioner {
  public:
@@ -208,7 +210,7 @@ class Partitioner {
   bool is_ear(Index v) const {
     const Index p = nodes_[v].prev, n = nodes_[v].next;
     const glm::dvec2 a = pos(p), b = pos(v), c = pos(n);
-    if (orient2d(a, b, c) <= 0) return false;
+    if (orient2d(a, b, c) <= 0 || turn(a, b, c) == 0) return false;
     const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
     const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
     // Only a vertex that is not strictly convex can lie inside an ear.
@@ -353,7 +355,7 @@ class Partitioner {
     for (std::size_t k : {at_a, at_b}) {
       const glm::dvec2& prev = points_[merged[(k + n - 1) % n]];
       const glm::dvec2& next = points_[merged[(k + 1) % n]];
-      if (!convex_up_to_rounding(prev, points_[merged[k]], next)) return false;
+      if (!convex_turn(turn(prev, points_[merged[k]], next))) return false;
     }
     std::vector<Index> sorted = merged;
     std::sort(sorted.begin(), sorted.end());
@@ -378,7 +380,7 @@ bool is_convex(const std::vector<glm::dvec2>& loop) {
   const std::size_t n = loop.size();
   if (n < 3) return false;
   for (std::size_t k = 0; k < n; ++k)
-    if (!convex_up_to_rounding(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n])) return false;
+    if (!convex_turn(turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]))) return false;
   return true;
 }
 
