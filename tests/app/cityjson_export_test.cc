@@ -113,13 +113,15 @@ TEST_F(CityJsonExport, EveryBuildingLoadsWithSemanticSurfacesWhereTheReportPutsI
       EXPECT_GT(lod1["area"].value(type, 0.0), 1.0) << type << ": " << lod1["area"].dump();
   }
   // The features' properties are the buildings' attributes, with the party
-  // edges batch found for city.pxg's party_edges input. Kept in a name: a
-  // range-for over a member of a temporary read freed memory (ASan).
+  // and street edges batch found for city.pxg's inputs of those names. Kept
+  // in a name: a range-for over a member of a temporary read freed memory (ASan).
   const json block = json::parse(test::read_text(test::kSampleBlock));
   for (const json& f : block["features"]) {
     json attributes = file["CityObjects"][f["id"].get<std::string>()]["attributes"];
-    EXPECT_TRUE(attributes["party_edges"].is_array()) << f["id"];
-    attributes.erase("party_edges");
+    for (const char* found : {"party_edges", "street_edges"}) {
+      EXPECT_TRUE(attributes[found].is_array()) << f["id"] << " " << found;
+      attributes.erase(found);
+    }
     EXPECT_EQ(attributes, f["properties"]) << f["id"];
   }
 }

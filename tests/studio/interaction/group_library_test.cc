@@ -3,6 +3,7 @@
 // beside the recipe; the Evaluation panel's Library tab lists it, and its
 // Place button adds an instance read from that file, which the saved recipe
 // names; opening that group to edit it inside the recipe is refused.
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -44,9 +45,15 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   // Its graph is the library file's, which other recipes may share: opening it here is refused, saying why.
   const std::uint64_t placed = map["selected"].get<std::uint64_t>();
   const auto refused = [](const json& j) { return j["status"].get<std::string>().find("is read from lib/building.pxg") != std::string::npos; };
+  // It is placed over the city's first nodes: its last input row lies below
+  // them, where a double-click meets only it (beside its output, another
+  // node's input pin is within a few pixels).
   map = double_click_until(studio, map, [&](const json& j) {
-    const auto [x, y] = pin(j, placed, 0, true);
-    return std::pair(x - 60, y);
+    int last = 0;
+    for (const json& p : j["pins"])
+      if (p["node"] == placed && !p["output"].get<bool>()) last = std::max(last, p["port"].get<int>());
+    const auto [x, y] = pin(j, placed, last, false);
+    return std::pair(x + 60, y);
   }, "the library group refused", refused);
   EXPECT_TRUE(refused(map)) << map["status"];
   EXPECT_TRUE(map["scope"].empty());
