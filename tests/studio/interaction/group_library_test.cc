@@ -48,6 +48,12 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   // It is placed over the city's first nodes: its last input row lies below
   // them, where a double-click meets only it (beside its output, another
   // node's input pin is within a few pixels).
+  const auto pins_shown = [&](const json& j) {
+    for (const json& p : j["pins"])
+      if (p["node"] == placed && !p["output"].get<bool>()) return true;
+    return false;
+  };
+  map = studio.wait("the placed group drawn", pins_shown);  // a slow frame can list the node before its pins
   map = double_click_until(studio, map, [&](const json& j) {
     int last = 0;
     for (const json& p : j["pins"])
