@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <istream>
+#include <memory>
 #include <string>
 
 #include "base/io_error.h"
@@ -20,5 +22,11 @@ inline constexpr std::size_t kMaxDataFileBytes = std::size_t{1} << 30;
 // (no such file, permission denied, is a directory, not a regular file, more
 // than max_bytes), never blocking on a FIFO.
 std::string read_file(const std::filesystem::path& path, std::size_t max_bytes);
+
+// The same file, checked the same way, as a stream read a chunk at a time:
+// for a reader that takes what it needs as it goes instead of the file whole.
+// A read that fails later throws std::ios_base::failure from the stream's
+// buffer (readers that call it directly, as nlohmann's parser does, see it).
+std::unique_ptr<std::istream> open_file_stream(const std::filesystem::path& path, std::size_t max_bytes);
 
 }  // namespace procex

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
+#include <utility>
 
 #include "core/io/io_error.h"
 #include "core/io/json_read.h"
@@ -195,23 +197,22 @@ void add_feature(GeoJsonFeature f, GeoJsonCollection& c) {
   for (auto& line : f.lines) c.lines.push_back(std::move(line));
 }
 
-GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {
-  const json doc = io_detail::parse_json(text, source);
-  if (!doc.is_object()) throw IoError(source + ": the document is not a JSON object", source, "");
-  const auto type = doc.find("type");
-  if (type == doc.end() || *type != "FeatureCollection")
-    throw IoError(source + ": /type must be \"FeatureCollection\"", source, "/type");
-  const auto features = doc.find("features");
-  if (features == doc.end() || !features->is_array())
-    throw IoError(source + ": /features must be an array", source, "/features");
+namespace {
 
+// Reads a FeatureCollection from what `parse` parses (a text or a file, with
+// the callback given to it). Each element of the top-level "features" array
+// is read into the collection as the parser finishes it and then dropped from
+// the document, so the document held at once is the collection's members and
+// one feature, however many features the file has (a parsed feature takes
+// several times its text). Depth 1 is the root's members, 2 the elements of
+// its arrays.
+GeoJsonCollection read_collection(const std::function<json(json::parser_callback_t)>& parse,
+                                  const GeoJsonReadOptions& options, const std::string& source) {
   GeoJsonCollection out;
-  for (const auto& [key, value] : doc.items()) {
-    if (key != "type" && key != "features") out.members.emplace(key, value.dump());
-  }
-  out.features.reserve(features->size());
-  for (std::size_t i = 0; i < features->size(); ++i) {
-    const json& feature = (*features)[i];
+  std::string key;
+  bool in_features = false;
+  std::size_t i = 0;
+  auto read_element = [&](const json& feature) {
     const std::string pointer = "/features/" + std::to_string(i);
     GeoJsonFeature f;
     f.index = i;
@@ -223,12 +224,46 @@ GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions&
       out.errors.push_back({i, f.id, problem.pointer,
                             source + ": feature " + f.id + " at " + problem.pointer + ": " + problem.message});
     }
+    ++i;
+  };
+  using event = json::parse_event_t;
+  const json doc = parse([&](int depth, event e, json& parsed) {
+    if (depth == 1 && e == event::key) key = parsed.get<std::string>();
+    if (depth == 1 && (e == event::array_start || e == event::object_start)) {
+      in_features = e == event::array_start && key == "features";
+      if (in_features) out.features.clear(), out.errors.clear(), out.lines.clear(), i = 0;  // a repeated member: the last counts
+    }
+    if (depth == 1 && e == event::array_end) in_features = false;
+    if (in_features && depth == 2 && (e == event::object_end || e == event::array_end || e == event::value)) {
+      read_element(parsed);
+      return false;
+    }
+    return true;
+  });
+  if (!doc.is_object()) throw IoError(source + ": the document is not a JSON object", source, "");
+  const auto type = doc.find("type");
+  if (type == doc.end() || *type != "FeatureCollection")
+    throw IoError(source + ": /type must be \"FeatureCollection\"", source, "/type");
+  const auto features = doc.find("features");
+  if (features == doc.end() || !features->is_array())
+    throw IoError(source + ": /features must be an array", source, "/features");
+  for (const auto& [name, value] : doc.items()) {
+    if (name != "type" && name != "features") out.members.emplace(name, value.dump());
   }
   return out;
 }
 
+}  // namespace
+
+GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {
+  return read_collection([&](json::parser_callback_t take) { return io_detail::parse_json(text, source, std::move(take)); },
+                         options, source);
+}
+
+// Read a chunk at a time: a million footprints' text is not held whole either.
 GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options) {
-  return parse_geojson(io_detail::read_text_file(path), options, path.string());
+  return read_collection([&](json::parser_callback_t take) { return io_detail::parse_json_file(path, std::move(take)); },
+                         options, path.string());
 }
 
 Footprint to_footprint(const GeoJsonFeature& feature, double default_angle_deg) {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ios>
+#include <memory>
+#include <utility>
 
 #include "base/json_depth.h"
 #include "base/read_file.h"
@@ -59,13 +62,13 @@ std::size_t failing_byte(std::string_view text) {
 std::string read_text_file(const std::filesystem::path& path) { return read_file(path, kMaxDataFileBytes); }
 
 template <class Json>
-Json parse_json(std::string_view text, const std::string& source) {
+Json parse_json(std::string_view text, const std::string& source, typename Json::parser_callback_t callback) {
   if (const auto at = json_too_deep_at(text))
     throw IoError(source + ":" + line_column(text, *at) + ": nesting deeper than " + std::to_string(kMaxJsonDepth) +
                       " levels (no footprint or report needs that many)",
                   source);
   try {
-    return Json::parse(text);
+    return Json::parse(text, std::move(callback));
   } catch (const nlohmann::json::parse_error& e) {
     throw IoError(source + ":" + line_column(text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON (" + e.what() + ")",
                   source);
@@ -76,8 +79,35 @@ Json parse_json(std::string_view text, const std::string& source) {
   }
 }
 
-template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&);
-template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&);
+template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&, nlohmann::json::parser_callback_t);
+template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&,
+                                                                   nlohmann::ordered_json::parser_callback_t);
+
+namespace {
+struct TooDeep {};
+}  // namespace
+
+template <class Json>
+Json parse_json_file(const std::filesystem::path& path, typename Json::parser_callback_t callback) {
+  const std::unique_ptr<std::istream> in = open_file_stream(path, kMaxDataFileBytes);
+  try {
+    // The depth checked as the parser goes (level 1 is the root's), as
+    // json_too_deep_at checks text: nothing deeper is built or dropped.
+    return Json::parse(*in, [&](int depth, typename Json::parse_event_t e, Json& parsed) {
+      using event = typename Json::parse_event_t;
+      if ((e == event::object_start || e == event::array_start) && static_cast<std::size_t>(depth) + 1 > kMaxJsonDepth)
+        throw TooDeep{};
+      return !callback || callback(depth, e, parsed);
+    });
+  } catch (const TooDeep&) {
+  } catch (const nlohmann::json::exception&) {
+  } catch (const std::ios_base::failure&) {
+  }
+  parse_json<Json>(read_text_file(path), path.string());  // throws, naming where and why
+  throw IoError(path.string() + ": changed while it was read: read it again", path.string());
+}
+
+template nlohmann::json parse_json_file<nlohmann::json>(const std::filesystem::path&, nlohmann::json::parser_callback_t);
 
 std::string pointer_token(std::string_view key) {
   std::string out;

@@ -28,11 +28,24 @@ std::string read_text_file(const std::filesystem::path& path);
 
 // Parses text; throws IoError naming source, and line and column where there
 // is one, on a syntax error, nesting deeper than kMaxJsonDepth or a number
-// outside double range.
+// outside double range. `callback` as nlohmann's parse takes it: a value it
+// returns false for is left out of the document (a reader that takes each
+// element of a long array as it is parsed holds one at a time).
 template <class Json = nlohmann::json>
-Json parse_json(std::string_view text, const std::string& source);
-extern template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&);
-extern template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&);
+Json parse_json(std::string_view text, const std::string& source, typename Json::parser_callback_t callback = nullptr);
+extern template nlohmann::json parse_json<nlohmann::json>(std::string_view, const std::string&,
+                                                          nlohmann::json::parser_callback_t);
+extern template nlohmann::ordered_json parse_json<nlohmann::ordered_json>(std::string_view, const std::string&,
+                                                                          nlohmann::ordered_json::parser_callback_t);
+
+// The same for a whole file (at most kMaxDataFileBytes), read a chunk at a
+// time rather than whole: with a callback that drops what it has taken, the
+// memory is the document kept, not the file. On a failure the file is read
+// whole after all, to name the line and column as parse_json does.
+template <class Json = nlohmann::json>
+Json parse_json_file(const std::filesystem::path& path, typename Json::parser_callback_t callback);
+extern template nlohmann::json parse_json_file<nlohmann::json>(const std::filesystem::path&,
+                                                               nlohmann::json::parser_callback_t);
 
 // A JSON pointer reference token with '~' and '/' escaped (RFC 6901).
 std::string pointer_token(std::string_view key);

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "core/io/io_error.h"
@@ -116,6 +121,53 @@ TEST(GeoJson, SyntaxErrorNamesFileLineAndColumn) {
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("geojson_syntax_error.geojson:3:"), std::string::npos) << e.what();
   }
+}
+
+// Features are read as the parser finishes each (and dropped from the
+// document): members before and after them are kept whole, arrays among them
+// (a bbox) too, and a repeated "features" member counts once, the last, as a
+// parsed document would have it.
+TEST(GeoJson, FeaturesReadOneAtATimeAmongOtherMembers) {
+  const GeoJsonCollection c = parse_geojson(R"({"bbox": [0, 0, 9, 9], "features": [
+      {"type": "Feature", "id": "first", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1]]]}}],
+    "type": "FeatureCollection", "features": [7,
+      {"type": "Feature", "properties": {"features": [1]}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[2,0],[2,2],[0,0]]]}}],
+    "name": {"features": [[1, 2]]}})");
+  ASSERT_EQ(c.features.size(), 1u);
+  EXPECT_EQ(c.features[0].index, 1u);
+  EXPECT_EQ(c.features[0].id, "1");
+  EXPECT_EQ(c.features[0].loops, (std::vector<std::vector<glm::dvec2>>{{{0, 0}, {2, 0}, {2, 2}}}));
+  EXPECT_EQ(c.features[0].properties.at("features"), "[1]");
+  ASSERT_EQ(c.errors.size(), 1u);
+  EXPECT_EQ(c.errors[0].pointer, "/features/0");
+  EXPECT_EQ(c.members.at("bbox"), "[0,0,9,9]");
+  EXPECT_EQ(c.members.at("name"), R"({"features":[[1,2]]})");
+  EXPECT_EQ(c.members.size(), 2u);
+}
+
+// A file of several megabytes (read a chunk at a time) reads as its text does.
+TEST(GeoJson, AFileReadsAsItsText) {
+  std::string text = R"({"type": "FeatureCollection", "name": "grid", "features": [)";
+  for (int i = 0; i < 20000; ++i) {
+    const std::string x = std::to_string(i * 10) + ".125", x1 = std::to_string(i * 10 + 8) + ".5";
+    text += (i ? ",\n" : "") + std::string(R"({"type": "Feature", "id": "f)") + std::to_string(i) +
+            R"(", "properties": {"height": )" + std::to_string(i % 40) + R"(}, "geometry": {"type": "Polygon", "coordinates": [[[)" +
+            x + ",0],[" + x1 + ",0],[" + x1 + ",7.25],[" + x + ",7.25]]]}}";
+  }
+  text += "]}";
+  ASSERT_GT(text.size(), 3u << 20);
+  const auto file = std::filesystem::temp_directory_path() / ("procex_geojson_file_" + std::to_string(::getpid()) + ".geojson");
+  std::ofstream(file, std::ios::binary) << text;
+  const GeoJsonCollection from_file = read_geojson_file(file), from_text = parse_geojson(text, {}, file.string());
+  std::filesystem::remove(file);
+  ASSERT_EQ(from_file.features.size(), 20000u);
+  EXPECT_EQ(from_file.members, from_text.members);
+  for (std::size_t i = 0; i < from_file.features.size(); ++i) {
+    ASSERT_EQ(from_file.features[i].id, from_text.features[i].id);
+    ASSERT_EQ(from_file.features[i].loops, from_text.features[i].loops) << i;
+    ASSERT_EQ(from_file.features[i].properties, from_text.features[i].properties) << i;
+  }
+  EXPECT_EQ(from_file.features.back().loops[0][2], glm::dvec2(199998.5, 7.25));
 }
 
 TEST(GeoJson, RefusesWhatIsNotAFeatureCollection) {

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <utility>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -56,6 +58,30 @@ TEST(HostileJson, DeepNestingIsRefusedBeforeParsing) {
   const std::string multi = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"a": {"b": [1]}},
       "geometry": {"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[1,1],[0,1]]]]}}]})";
   EXPECT_EQ(parse_geojson(multi).features.size(), 1u);
+}
+
+// A footprint file is read a chunk at a time (read_geojson_file): the same
+// refusals, naming the file, line and column, as for its text.
+TEST(HostileJson, FilesReadAsTheyGoAreRefusedAlike) {
+  const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_stream_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string deep = std::string(80000, '[') + std::string(80000, ']');
+  const std::string head = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties":
+  )";
+  const std::pair<std::string, std::string> cases[] = {
+      {head + R"({"height": 1e400}, )" + kSquare + "}]}", ":2:14: a number beyond double range"},
+      {head + R"({"x": )" + deep + "}, " + kSquare + "}]}", ":2:69: nesting deeper than 64 levels"},
+      {head + R"({}, )" + kSquare + "}]} x", ": not valid JSON"},  // more after the end
+      {head + R"({}, )" + kSquare, ": not valid JSON"},            // cut short
+  };
+  for (const auto& [text, why] : cases) {
+    const auto file = dir / "hostile.geojson";
+    std::ofstream(file, std::ios::binary) << text;
+    const std::string got = error_of([&] { read_geojson_file(file); });
+    EXPECT_EQ(got, error_of([&] { parse_geojson(text, {}, file.string()); }));
+    EXPECT_NE(got.find(why), std::string::npos) << got;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(HostileJson, AFolderIsNotAFile) {
