@@ -10,6 +10,7 @@
 #include "app/cli/recipe_session.h"
 #include "core/geom/error.h"
 #include "core/geom/party_walls.h"
+#include "core/geom/plan_tiles.h"
 #include "core/geom/street_edges.h"
 #include "core/geom/prepare.h"
 #include "core/io/io_error.h"
@@ -35,18 +36,20 @@ bool names_setting(const Graph& graph, const std::string& key) {
 
 namespace {
 
-// Sets `property` of feature i to the JSON list ids[i], where it has none.
-void add_id_lists(GeoJsonCollection& collection, std::string_view property, const std::vector<std::vector<std::int32_t>>& ids) {
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    std::string list = "[";
-    for (const std::int32_t id : ids[i]) {
-      if (list.size() > 1) list += ',';
-      list += std::to_string(id);
-    }
-    list += ']';
-    collection.features[i].properties.try_emplace(std::string(property), list);
+// Sets `property` of f to the JSON list ids, where it has none.
+void add_id_list(GeoJsonFeature& f, std::string_view property, const std::vector<std::int32_t>& ids) {
+  std::string list = "[";
+  for (const std::int32_t id : ids) {
+    if (list.size() > 1) list += ',';
+    list += std::to_string(id);
   }
+  list += ']';
+  f.properties.try_emplace(std::string(property), list);
 }
+
+// Footprints per tile of the edge search: many, so that few are searched
+// again as another tile's neighbours; few, so that a tile takes little memory.
+constexpr std::size_t kFootprintsPerTile = 4096;
 
 }  // namespace
 
@@ -54,10 +57,36 @@ void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection) {
   const bool party = names_setting(recipe, std::string(kPartyEdgesProperty));
   const bool street = names_setting(recipe, std::string(kStreetEdgesProperty));
   if (!party && !street) return;
-  std::vector<PlanLoops> plans;
-  for (const GeoJsonFeature& f : collection.features) plans.push_back(f.loops);
-  if (party) add_id_lists(collection, kPartyEdgesProperty, party_edges(plans, kPartyWallDistance));
-  if (street) add_id_lists(collection, kStreetEdgesProperty, street_edges(plans, collection.lines, kStreetDistance));
+  // Tile by tile (core/geom/plan_tiles.h): the edges and search grid of
+  // every footprint of a large file at once take far more memory than the
+  // footprints. A footprint's labels depend only on what lies within the
+  // search distance of it, so they are those one search over all would give.
+  std::vector<PlanBox> boxes;
+  boxes.reserve(collection.features.size());
+  for (const GeoJsonFeature& f : collection.features) boxes.push_back(plan_box(f.loops));
+  std::vector<PlanBox> line_boxes;
+  for (const StreetLine& line : collection.lines) line_boxes.push_back(plan_box({line}));
+  for_each_plan_tile(boxes, kPartyWallDistance, kFootprintsPerTile, [&](const PlanTile& tile) {
+    std::vector<PlanLoops> plans;
+    for (const std::size_t i : tile.plans) plans.push_back(collection.features[i].loops);
+    if (party) {
+      const auto ids = party_edges(plans, kPartyWallDistance);
+      for (std::size_t k = 0; k < tile.own; ++k) add_id_list(collection.features[tile.plans[k]], kPartyEdgesProperty, ids[k]);
+    }
+    if (street) {
+      plans.resize(tile.own);
+      std::vector<StreetLine> near;
+      for (std::size_t l = 0; l < collection.lines.size(); ++l)
+        if (within(line_boxes[l], tile.extent, kStreetDistance)) near.push_back(collection.lines[l]);
+      const auto ids = street_edges(plans, near, kStreetDistance);
+      for (std::size_t k = 0; k < tile.own; ++k) add_id_list(collection.features[tile.plans[k]], kStreetEdgesProperty, ids[k]);
+    }
+  });
+  // A footprint without points is in no tile: none of its edges runs along anything.
+  for (GeoJsonFeature& f : collection.features) {
+    if (party) add_id_list(f, kPartyEdgesProperty, {});
+    if (street) add_id_list(f, kStreetEdgesProperty, {});
+  }
 }
 
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
