@@ -65,19 +65,40 @@ void SpoolFile::flush() {
   buffer_.clear();
 }
 
-void SpoolFile::read(const std::function<void(std::string_view)>& each) const {
-  std::vector<char> chunk(written_ > 0 ? kChunk : 0);
-  for (std::uint64_t at = 0; at < written_;) {
-    const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, written_ - at));
-    const ssize_t n = ::pread(fd_, chunk.data(), want, static_cast<off_t>(at));
+void SpoolFile::pread_all(std::uint64_t at, std::span<char> out) const {
+  for (std::size_t done = 0; done < out.size();) {
+    const ssize_t n = ::pread(fd_, out.data() + done, out.size() - done, static_cast<off_t>(at + done));
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0)
       throw IoError("cannot read back a temporary file in '" + folder_ + "': " + std::strerror(n < 0 ? errno : EIO),
                     folder_);
-    each(std::string_view(chunk.data(), static_cast<std::size_t>(n)));
-    at += static_cast<std::uint64_t>(n);
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+void SpoolFile::read(const std::function<void(std::string_view)>& each) const {
+  std::vector<char> chunk(written_ > 0 ? kChunk : 0);
+  for (std::uint64_t at = 0; at < written_;) {
+    const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, written_ - at));
+    pread_all(at, std::span(chunk.data(), want));
+    each(std::string_view(chunk.data(), want));
+    at += want;
   }
   if (!buffer_.empty()) each(buffer_);
+}
+
+std::string SpoolFile::read_at(std::uint64_t offset, std::size_t length) const {
+  if (offset > size() || length > size() - offset)
+    throw IoError("cannot read back bytes " + std::to_string(offset) + " to " + std::to_string(offset + length) +
+                      " of a temporary file of " + std::to_string(size()),
+                  folder_);
+  std::string out(length, '\0');
+  const std::size_t from_file = static_cast<std::size_t>(std::min<std::uint64_t>(length, written_ > offset ? written_ - offset : 0));
+  pread_all(offset, std::span(out.data(), from_file));
+  // The rest is still in the buffer, which starts at written_.
+  if (from_file < length)
+    std::copy_n(buffer_.data() + (offset + from_file - written_), length - from_file, out.data() + from_file);
+  return out;
 }
 
 }  // namespace procex

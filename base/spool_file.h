@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -24,9 +25,14 @@ class SpoolFile {
   // Hands every byte appended so far to each, in order, a bounded chunk at a
   // time. Throws IoError if the file cannot be read back.
   void read(const std::function<void(std::string_view)>& each) const;
+  // The `length` bytes appended from byte `offset` on (a record set aside and
+  // wanted back alone). Throws IoError as read does, or if they were never appended.
+  std::string read_at(std::uint64_t offset, std::size_t length) const;
 
  private:
   void flush();
+  // Fills out with the file's bytes from `at` (all within written_).
+  void pread_all(std::uint64_t at, std::span<char> out) const;
   std::string folder_;
   int fd_ = -1;
   std::string buffer_;  // appended, not yet in the file

@@ -1,6 +1,8 @@
 #include "app/cli/merge_command.h"
 
 #include <algorithm>
+#include <iterator>
+#include <map>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +13,7 @@
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "core/io/gltf_crs.h"
+#include "core/io/gltf_mesh_spool.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "core/io/json_read.h"
@@ -19,6 +22,10 @@ namespace procex {
 namespace {
 
 using json = nlohmann::ordered_json;
+
+// Buildings read back and written at a time: enough that the writer renders
+// them in parallel, few enough to take little memory.
+constexpr std::size_t kWindow = 256;
 
 // What the merged parts are together: the one shard of an unsharded run.
 ShardStamp whole(const ShardStamp& part) { return {0, 1, part.recipe, part.footprints}; }
@@ -92,9 +99,21 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
   try {
-    // Each part's placed meshes come along (renumbered); write_glb keeps one
-    // of equal ones, so the bytes are those of an unsharded run.
-    GltfScene all;
+    // Each part is read whole, one at a time, its buildings set aside on disk
+    // (GltfMeshSpool) and the part freed; they are then read back in feature
+    // order a window at a time into a streamed .glb: memory holds the largest
+    // part, not all of them. Each part's placed meshes come along (renumbered,
+    // as append_scene does); the writer keeps one of equal ones, so the bytes
+    // are those of an unsharded run.
+    GltfMeshSpool spool;
+    struct Building {
+      std::int64_t feature;
+      std::string id;
+      GltfMeshSpool::Place at;
+    };
+    std::vector<Building> buildings;
+    std::vector<GltfMeshData> prototypes;
+    std::map<std::string, std::string> extras;
     std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
     for (const auto& p : meshes) {
       if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
@@ -109,22 +128,26 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
       const auto crs = part.extras.find(kGltfCrsKey);
       const std::string part_crs = crs == part.extras.end() ? "" : crs->second;
       if (shards.size() == 1) {
-        if (!part_crs.empty()) all.extras[kGltfCrsKey] = part_crs;
-      } else if (part_crs != (all.extras.count(kGltfCrsKey) ? all.extras[kGltfCrsKey] : "")) {
+        if (!part_crs.empty()) extras[kGltfCrsKey] = part_crs;
+      } else if (part_crs != (extras.count(kGltfCrsKey) ? extras[kGltfCrsKey] : "")) {
         throw IoError(p.string() + ": its scene's CRS (extras.crs) is not that of " + shards.front().second.string() +
                           ": merge joins the parts of one run, all made in one CRS",
                       p.string());
       }
-      append_scene(all, std::move(part));
+      for (GltfMeshData& b : part.meshes) {
+        for (GltfInstanceData& in : b.instances) in.prototype += prototypes.size();
+        buildings.push_back({b.feature, b.building, spool.add(b)});
+      }
+      std::move(part.prototypes.begin(), part.prototypes.end(), std::back_inserter(prototypes));
     }
     check_whole(shards);
-    if (!shards.empty()) all.extras["shard"] = to_json(whole(shards.front().first)).dump();
-    std::stable_sort(all.meshes.begin(), all.meshes.end(),
-                     [](const GltfMeshData& a, const GltfMeshData& b) { return a.feature < b.feature; });
+    if (!shards.empty()) extras["shard"] = to_json(whole(shards.front().first)).dump();
+    std::stable_sort(buildings.begin(), buildings.end(),
+                     [](const Building& a, const Building& b) { return a.feature < b.feature; });
     // A feature in two parts: the same shard given twice, or parts of different splits.
-    for (std::size_t i = 1; i < all.meshes.size(); ++i)
-      if (all.meshes[i].feature >= 0 && all.meshes[i].feature == all.meshes[i - 1].feature)
-        throw IoError("feature " + std::to_string(all.meshes[i].feature) + " (" + all.meshes[i].building +
+    for (std::size_t i = 1; i < buildings.size(); ++i)
+      if (buildings[i].feature >= 0 && buildings[i].feature == buildings[i - 1].feature)
+        throw IoError("feature " + std::to_string(buildings[i].feature) + " (" + buildings[i].id +
                           ") is in two parts: give each shard once, all from one run",
                       options.output.string());
     if (!reports.empty() && reports.size() != meshes.size() && !meshes.empty())
@@ -136,15 +159,30 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     AtomicFileSet report_file;
     if (!options.report.empty()) {
       const json merged = merge_reports(reports);
-      if (!shards.empty() && merged.contains("shard") && merged["shard"].dump() != all.extras["shard"])
+      if (!shards.empty() && merged.contains("shard") && merged["shard"].dump() != extras["shard"])
         throw IoError("the reports and the .glb parts come from different runs: give the mesh and the report of "
                       "every shard of one run",
                       options.output.string());
       report_file.add(options.report, report_text(merged));
     }
-    write_glb(options.output, all);
+    GlbStreamWriter glb(options.output, std::move(extras));
+    for (std::size_t first = 0; first < buildings.size(); first += kWindow) {
+      // The window's buildings, with the placed meshes they show renumbered in order of first use.
+      GltfScene window;
+      std::map<std::size_t, std::size_t> shown;
+      for (std::size_t i = first; i < std::min(buildings.size(), first + kWindow); ++i) {
+        GltfMeshData& b = window.meshes.emplace_back(spool.get(buildings[i].at));
+        for (GltfInstanceData& in : b.instances) {
+          const auto [it, added] = shown.try_emplace(in.prototype, window.prototypes.size());
+          if (added) window.prototypes.push_back(prototypes[in.prototype]);
+          in.prototype = it->second;
+        }
+      }
+      glb.add({std::move(window)});
+    }
+    glb.finish();
     report_file.commit();
-    out << "procex merge: " << meshes.size() << " parts, " << all.meshes.size() << " meshes -> " << options.output.string() << "\n";
+    out << "procex merge: " << meshes.size() << " parts, " << buildings.size() << " meshes -> " << options.output.string() << "\n";
   } catch (const IoError& e) {
     err << "procex merge: " << e.what() << "\n";
     return kExitUnusableInput;

@@ -17,6 +17,7 @@
 #include "app/cli/feature_binding.h"
 #include "app/cli/merge_command.h"
 #include "app/cli/recipe_session.h"
+#include "app/cli/shard_stamp.h"
 #include "core/geom/party_walls.h"
 #include "core/io/footprint_read.h"
 #include "core/io/gltf_write.h"
@@ -160,9 +161,9 @@ TEST_F(Batch, StreamedOutputsAreNotHeldForTheBudget) {
 }
 
 // The .glb a batch streams window by window has the bytes write_glb writes
-// for the scene it holds (read back and written by procex merge of the one
-// part, as shards are: the bytes of one run), for the sample block and for 150 generated
-// footprints in three windows, one of them unreadable; the Khronos
+// for the scene it holds (read back and written whole), and so has procex
+// merge of the one part (streamed too), for the sample block and for 150
+// generated footprints in three windows, one of them unreadable; the Khronos
 // validator passes it.
 TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
   std::string features;
@@ -186,9 +187,13 @@ TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
     o.report = dir_ / "streamed.json";
     ASSERT_LE(run_batch(o, out_, err_), 1) << err_.str();
     ASSERT_EQ(read_glb(o.output).size(), footprints == kBlock ? 18u : 149u);
-    MergeCommandOptions merge;  // one part: the scene read back and written whole by write_glb
+    GltfScene scene = read_glb_scene(o.output);  // its stamp read back with its members in key order: as written
+    scene.extras["shard"] = to_json(read_shard_stamp(json::parse(scene.extras["shard"]), o.output, "")).dump();
+    write_glb(dir_ / "memory.glb", scene);
+    EXPECT_TRUE(read_text(o.output) == read_text(dir_ / "memory.glb"));
+    MergeCommandOptions merge;
     merge.parts = {o.output};
-    merge.output = dir_ / "memory.glb";
+    merge.output = dir_ / "merged.glb";
     ASSERT_EQ(run_merge(merge, out_, err_), 0) << err_.str();
     EXPECT_TRUE(read_text(o.output) == read_text(merge.output));
     const test::NodeScriptRun v = test::run_gltf_script("validate_gltf.mjs", o.output);

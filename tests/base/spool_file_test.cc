@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "base/atomic_write.h"
+#include "base/io_error.h"
 #include "base/spool_file.h"
 
 namespace procex {
@@ -42,6 +43,22 @@ TEST(SpoolFile, GivesBackEveryByteInOrder) {
     spool.read([&](std::string_view chunk) { back += chunk; });
     ASSERT_EQ(back, expected);
   }
+}
+
+// Each append read back alone, from the file, the buffer or across the two,
+// and a range past the end refused.
+TEST(SpoolFile, GivesBackARangeAlone) {
+  SpoolFile spool;
+  std::string all;
+  std::vector<std::pair<std::uint64_t, std::string>> records;
+  for (const std::string& s : appends()) {
+    records.emplace_back(spool.size(), s);
+    spool.append(s), all += s;
+    for (const auto& [at, bytes] : records) ASSERT_EQ(spool.read_at(at, bytes.size()), bytes) << at;
+  }
+  EXPECT_EQ(spool.read_at((1 << 20) - 100, 300), all.substr((1 << 20) - 100, 300));
+  EXPECT_EQ(spool.read_at(all.size() - 3, 3), all.substr(all.size() - 3));
+  EXPECT_THROW(spool.read_at(all.size() - 3, 4), IoError);
 }
 
 TEST(SpoolFile, IsCopiedIntoAFileBetweenOtherPieces) {
