@@ -45,10 +45,11 @@ constexpr int kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 // arrays. So the bytes do not depend on threads, and nothing is copied twice.
 
 // JSON numbers in their shortest round-trip form: reading the file gives back
-// the same doubles, so a merged file has the bytes of one run.
+// the same doubles, so a merged file has the bytes of one run. -0 is written
+// as 0 (+ 0.0 makes it so), as a reader gives it back.
 void put_number(std::string& out, double v) {
   char buf[32];
-  out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, v + 0.0).ptr);
 }
 
 template <std::integral T>
