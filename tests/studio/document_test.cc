@@ -225,6 +225,26 @@ TEST(Document, EditsInsideAGroupAreSavedAndUndoneFromAnyLevel) {
   EXPECT_EQ(s.doc.recipe().node(*g)->type->body->node(s.c1)->params[0].get<double>(), 4.0);
 }
 
+// The inspector reads a node of graph() after editing it in the same frame:
+// an edit inside a group replaces the group's graph, and the one read from
+// must outlive the edit until the frame ends (under ASan a use after free).
+TEST(Document, ANodeOfTheGroupEnteredOutlivesItsEditUntilTheFrameEnds) {
+  Small s;
+  s.doc.select({s.c1, s.c2}, false);
+  const Result<NodeId> g = s.doc.group_selection();
+  ASSERT_TRUE(g) << g.message();
+  ASSERT_TRUE(s.doc.enter_group(*g));
+  const Node& before = *s.doc.graph().node(s.c1);
+  const std::weak_ptr<const Graph> body = s.doc.recipe().node(*g)->type->body;
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(4.0)));
+  ASSERT_TRUE(s.doc.set_param(s.c1, 0, Value::make(5.0)));
+  EXPECT_FALSE(body.expired()) << "replaced by the edits, held until the frame ends";
+  EXPECT_EQ(before.params[0].get<double>(), 1.0);
+  EXPECT_EQ(s.doc.graph().node(s.c1)->params[0].get<double>(), 5.0);
+  s.doc.end_frame();
+  EXPECT_TRUE(body.expired()) << "no graph is kept past its frame";
+}
+
 TEST(Document, DirtyUntilSavedAndCleanAfterUndoingBack) {
   const auto dir = temp_dir();
   auto doc = Document::open(house_recipe());

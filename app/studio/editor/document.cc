@@ -84,6 +84,14 @@ void Document::save_as(const std::filesystem::path& file) {
   saved_revision_ = revision_;
 }
 
+const Graph& Document::graph() const {
+  if (scope().empty()) return graph_;
+  const std::vector<const Graph*> levels = *group_levels(graph_, scope(), false);
+  const std::shared_ptr<const Graph>& body = levels[levels.size() - 2]->node(scope().back())->type->body;
+  if (handed_out_.empty() || handed_out_.back() != body) handed_out_.push_back(body);
+  return *body;
+}
+
 template <class R>
 R Document::changed(R r) {
   if (r) ++revision_;

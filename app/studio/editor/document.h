@@ -41,7 +41,11 @@ class Document {
   const Graph& recipe() const { return graph_; }
   // The graph being edited: the recipe, or the graph of the group entered
   // (see enter_group). Edits, the selection and the clipboard are of this graph.
-  const Graph& graph() const { return stack_.scoped(); }
+  // References into it stay valid until end_frame(), across edits: an edit
+  // inside a group replaces the group's graph, so each one handed out is held.
+  const Graph& graph() const;
+  // The UI holds no reference into graph() any more: the replaced group graphs go.
+  void end_frame() { handed_out_.clear(); }
   const std::filesystem::path& path() const { return path_; }  // empty when untitled
   std::string title() const;                                    // file name or "untitled"
   std::uint64_t revision() const { return revision_; }
@@ -164,6 +168,8 @@ class Document {
   mutable bool dirty_ = false;
   bool gesture_open_ = false;
   std::set<NodeId> selection_;
+  // The group graphs graph() returned since end_frame (see graph()).
+  mutable std::vector<std::shared_ptr<const Graph>> handed_out_;
 };
 
 }  // namespace procex::studio

@@ -154,6 +154,7 @@ class App {
     modals();
     update_title();
     if (!options_.ui_map.empty()) write_ui_map();
+    doc_->end_frame();
   }
 
   // Files dropped onto the window: a .glb is viewed, a recipe opens (after
