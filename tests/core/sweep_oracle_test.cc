@@ -156,6 +156,26 @@ TEST(CgalOracle, ExactCoincidencesAreJudgedByTheirGenericNeighbours) {
   EXPECT_GT(testing::largest_height_difference(roof, raised, 4000, 1), 5e-3);
 }
 
+// The bottom of a narrow notch (both its corners reflex) has a face far wider
+// than itself: tilting that 1 m edge by moving its ends 0.2 mm apart moves its
+// face 7 m to the side by about 1.5 mm, more than compare_with_generic_neighbours
+// allows for a neighbour's moved ends. Divided by the lever of each point the
+// difference is within it, and a roof raised by 1 cm still is not.
+TEST(CgalOracle, AWideFaceOfAShortEdgeMovesByItsLever) {
+  const auto u_plan = [](double tilt) {
+    return make_footprint({{{0, 0}, {30, 0}, {30, 24}, {15.5, 24}, {15.5, 20 + tilt}, {14.5, 20 - tilt}, {14.5, 24}, {0, 24}}}, 45.0);
+  };
+  const Footprint fp = u_plan(0.0), near = u_plan(1e-4);
+  const Surface roof = sweep(fp), moved = sweep(near);
+  const double allowed = 4.0 * 1e-4 * (1.0 + 1.0);  // 4 delta (1 + rise), as for a neighbour moved by 1e-4 at 45 degrees
+  EXPECT_GT(testing::largest_height_difference(roof, moved, 4000, 1), allowed);
+  EXPECT_LT(testing::largest_levered_height_difference(fp, roof, moved, 4000, 1), allowed);
+  Surface raised = roof;
+  for (glm::dvec3& v : raised.vertices)
+    if (v.z > 0.3) v.z += 1e-2;
+  EXPECT_GT(testing::largest_levered_height_difference(fp, roof, raised, 4000, 1), 5e-3);
+}
+
 // ---- synthetic cases (shared/data/synthetic, see its README) ----
 
 std::vector<std::string> synthetic_cases() {

@@ -137,6 +137,7 @@ struct PlanFace {
   double perimeter = 0.0;
   glm::dvec3 normal{0.0};  // Newell normal (length twice the area)
   glm::dvec3 point{0.0};   // a vertex, relative to origin
+  std::int32_t edge = -1;  // the footprint edge of a side face
 };
 
 double shoelace(const std::vector<glm::dvec2>& loop) {
@@ -160,6 +161,7 @@ PlanFace plan_face(const Surface& s, const SurfaceFace& f, glm::dvec3 origin) {
     out.loops.push_back(std::move(plan));
   }
   if (!f.loops.empty() && !f.loops[0].empty()) out.point = s.vertices[f.loops[0][0]] - origin;
+  if (f.kind == FaceKind::Side) out.edge = f.source_edge;
   return out;
 }
 
@@ -407,19 +409,23 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
 
 namespace {
 
-// The height of the roof face over plan point p (relative to origin), or NaN.
-double height_over(const std::vector<PlanFace>& faces, glm::dvec2 p) {
-  for (const PlanFace& f : faces) {
-    if (f.loops.empty() || std::abs(f.normal.z) <= 1e-12 * glm::length(f.normal) || !inside_loops(f.loops, p)) continue;
-    return f.point.z - (f.normal.x * (p.x - f.point.x) + f.normal.y * (p.y - f.point.y)) / f.normal.z;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+// The face over plan point p (relative to origin) that is not vertical, or nullptr.
+const PlanFace* face_over(const std::vector<PlanFace>& faces, glm::dvec2 p) {
+  for (const PlanFace& f : faces)
+    if (!f.loops.empty() && std::abs(f.normal.z) > 1e-12 * glm::length(f.normal) && inside_loops(f.loops, p)) return &f;
+  return nullptr;
 }
 
-}  // namespace
+double height_on(const PlanFace& f, glm::dvec2 p) {
+  return f.point.z - (f.normal.x * (p.x - f.point.x) + f.normal.y * (p.y - f.point.y)) / f.normal.z;
+}
 
-double largest_height_difference(const Surface& a, const Surface& b, int samples, unsigned seed) {
-  if (a.vertices.empty()) return std::numeric_limits<double>::quiet_NaN();
+// Calls visit(p, face of a, face of b) at `samples` points drawn (by `seed`)
+// over a's bounding box where both roofs have a face that is not vertical;
+// p and the faces are relative to the box's corner `origin`.
+template <class Visit>
+void sample_both(const Surface& a, const Surface& b, int samples, unsigned seed, Visit visit) {
+  if (a.vertices.empty()) return;
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& v : a.vertices) {
     lo = glm::min(lo, glm::dvec2(v));
@@ -435,13 +441,40 @@ double largest_height_difference(const Surface& a, const Surface& b, int samples
   const std::vector<PlanFace> fa = plan(a), fb = plan(b);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  double worst = std::numeric_limits<double>::quiet_NaN();
   for (int i = 0; i < samples; ++i) {
     const glm::dvec2 p = glm::dvec2(u(rng), u(rng)) * (hi - lo);
-    const double za = height_over(fa, p), zb = height_over(fb, p);
-    if (std::isnan(za) || std::isnan(zb)) continue;
-    worst = std::isnan(worst) ? std::abs(za - zb) : std::max(worst, std::abs(za - zb));
+    const PlanFace *on_a = face_over(fa, p), *on_b = face_over(fb, p);
+    if (on_a != nullptr && on_b != nullptr) visit(origin, p, *on_a, *on_b);
   }
+}
+
+}  // namespace
+
+double largest_height_difference(const Surface& a, const Surface& b, int samples, unsigned seed) {
+  double worst = std::numeric_limits<double>::quiet_NaN();
+  sample_both(a, b, samples, seed, [&](glm::dvec3, glm::dvec2 p, const PlanFace& fa, const PlanFace& fb) {
+    const double d = std::abs(height_on(fa, p) - height_on(fb, p));
+    worst = std::isnan(worst) ? d : std::max(worst, d);
+  });
+  return worst;
+}
+
+double largest_levered_height_difference(const Footprint& footprint, const Surface& a, const Surface& b, int samples,
+                                         unsigned seed) {
+  const auto edges = edges_by_id(footprint, Ambiguity::MaximizeVolume);
+  double worst = std::numeric_limits<double>::quiet_NaN();
+  sample_both(a, b, samples, seed, [&](glm::dvec3 origin, glm::dvec2 p, const PlanFace& fa, const PlanFace& fb) {
+    const glm::dvec2 at = p + glm::dvec2(origin);
+    const auto lever = [&](const PlanFace& f) {
+      const auto e = edges.find(f.edge);
+      if (e == edges.end()) return 1.0;
+      const glm::dvec2 d = e->second.b - e->second.a;
+      const double l = glm::length(d);
+      return std::max(1.0, 2.0 * std::abs(glm::dot(at - 0.5 * (e->second.a + e->second.b), d / l)) / l);
+    };
+    const double difference = std::abs(height_on(fa, p) - height_on(fb, p)) / std::max(lever(fa), lever(fb));
+    worst = std::isnan(worst) ? difference : std::max(worst, difference);
+  });
   return worst;
 }
 

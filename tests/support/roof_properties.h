@@ -51,6 +51,15 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
 // covered by both.
 double largest_height_difference(const Surface& a, const Surface& b, int samples, unsigned seed);
 
+// The same for roof a of `footprint` and roof b of a neighbour of it (its
+// vertices moved), each difference divided by the lever of its point: moving
+// an edge's ends by up to d moves its line by up to max(1, 2|t| / l) d at a
+// point t along the edge from its middle (l the edge's length), so a face
+// wider than its edge moves more on its far parts. At a point, the larger
+// lever of the two faces over it.
+double largest_levered_height_difference(const Footprint& footprint, const Surface& a, const Surface& b, int samples,
+                                         unsigned seed);
+
 // The enclosed volume by the divergence theorem over the surface's faces.
 double surface_volume(const Surface& surface);
 

@@ -1,15 +1,19 @@
 // Runs a part of a generated class's budget inside a GoogleTest test: every
 // failing case is minimised (shrink.h) and reported with its fixture; with
 // PROCEX_FINDINGS_DIR set, the fixture is also written there as
-// <class>_<seed>.geojson. PROCEX_SOAK=1 selects the soak budget; under the
-// sanitizers (Debug, 20-100x slower) a fiftieth of the normal one runs.
+// <class>_<seed>.geojson. PROCEX_SOAK=1 selects the soak budget, PROCEX_SEEDS
+// given seeds; under the sanitizers (Debug, 20-100x slower) a fiftieth of the
+// normal budget runs.
 #pragma once
 
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -30,10 +34,29 @@ inline bool soak_run() {
   return s != nullptr && std::string(s) == "1";
 }
 
+// The seeds PROCEX_SEEDS names ("834" or "800-899", both ends in), to rerun a
+// reported failure; nullopt when unset.
+inline std::optional<std::pair<std::size_t, std::size_t>> seeds_asked() {
+  const char* s = std::getenv("PROCEX_SEEDS");
+  if (s == nullptr || *s == 0) return std::nullopt;
+  const std::string text(s);
+  const std::size_t dash = text.find('-');
+  const std::size_t first = std::stoull(text.substr(0, dash));
+  const std::size_t last = dash == std::string::npos ? first : std::stoull(text.substr(dash + 1));
+  return std::pair(first, std::max(first, last) + 1);
+}
+
 inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, const Budget& budget) {
   constexpr std::size_t kSanitizedShare = kSanitized ? 50 : 1;
-  const std::size_t total = soak_run() ? budget.soak : std::max<std::size_t>(parts, budget.normal / kSanitizedShare);
-  const std::size_t begin = total * part / parts, end = total * (part + 1) / parts;
+  std::size_t begin, end;
+  if (const auto asked = seeds_asked()) {
+    if (part != 0) return;  // the first part runs the seeds asked for
+    std::tie(begin, end) = *asked;
+  } else {
+    const std::size_t total = soak_run() ? budget.soak : std::max<std::size_t>(parts, budget.normal / kSanitizedShare);
+    begin = total * part / parts;
+    end = total * (part + 1) / parts;
+  }
   std::size_t failed = 0;
   for (std::size_t seed = begin; seed < end; ++seed) {
     const GeneratedCase c = generate_case(cls, seed);
@@ -48,7 +71,7 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
     const std::string fixture = fixture_geojson(small, problem);
     std::string lines;
     for (std::size_t i = 0; i < r.problems.size() && i < 6; ++i) lines += "\n  " + r.problems[i];
-    ADD_FAILURE() << c.description << lines << "\nminimised (" << small.description << "): " << problem << "\n" << fixture;
+    ADD_FAILURE() << c.description << " (rerun: PROCEX_SEEDS=" << seed << ")" << lines << "\nminimised (" << small.description << "): " << problem << "\n" << fixture;
     if (const char* dir = std::getenv("PROCEX_FINDINGS_DIR"))
       std::ofstream(std::string(dir) + "/" + class_name(cls) + "_" + std::to_string(seed) + ".geojson") << fixture;
   }
