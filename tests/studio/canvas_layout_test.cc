@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
 #include "app/studio/editor/document.h"
 
 namespace procex::studio {
@@ -102,6 +106,58 @@ TEST(Layout, GraphOutputsSitRightOfTheNodesAndAreNeverSelected) {
   EXPECT_EQ(out->inputs.size(), 1u);
   EXPECT_EQ(node_at(boxes, out->rect.min + glm::vec2(5, 5)), 0u);
   EXPECT_EQ(nodes_in(boxes, bounds(boxes)), std::vector<NodeId>{1});
+}
+
+// Whether `r` keeps at least kPlacementGap from `o` along some axis.
+bool apart(const Rect& r, const Rect& o) {
+  return r.max.x + kPlacementGap <= o.min.x || o.max.x + kPlacementGap <= r.min.x || r.max.y + kPlacementGap <= o.min.y ||
+         o.max.y + kPlacementGap <= r.min.y;
+}
+
+// Where a node placed from elsewhere (the library) goes: centred where it is
+// wanted when that is free, else at the nearest grid point from which it keeps
+// the gap from every box, the graph's input and output boxes included.
+TEST(Layout, FreeSpotIsTheWantedOneOrTheNearestThatCoversNoBox) {
+  const glm::vec2 size = node_size(2, 1);
+  EXPECT_EQ(free_spot({}, {100, 100}, size), glm::vec2(100, 100) - size * 0.5f);
+
+  // A block of 4 x 4 nodes packed with exactly the gap between them, and an output box beside it.
+  Graph g;
+  ASSERT_TRUE(g.add_output({"result", &value_type<double>(), ""}));
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col) {
+      const Result<NodeId> id = g.add_node("test.Const");
+      ASSERT_TRUE(id);
+      EditorState e;
+      e.x = col * (kNodeWidth + kPlacementGap);
+      e.y = row * (node_size(0, 1).y + kPlacementGap);
+      ASSERT_TRUE(g.set_editor_state(*id, e));
+    }
+  const std::vector<NodeBox> boxes = layout(g);
+  ASSERT_EQ(boxes.size(), 17u);
+  std::vector<NodeId> nodes;
+  for (const auto& [id, n] : g.nodes()) nodes.push_back(id);
+  const Rect block = bounds(boxes, nodes);
+  for (const NodeBox& wanted_on : boxes) {
+    const glm::vec2 centre = (wanted_on.rect.min + wanted_on.rect.max) * 0.5f;
+    const glm::vec2 corner = free_spot(boxes, centre, size);
+    const Rect placed{corner, corner + size};
+    for (const NodeBox& b : boxes) EXPECT_TRUE(apart(placed, b.rect)) << "wanted on node " << b.id << ", placed at " << corner.x << ", " << corner.y;
+    // No grid point nearer the wanted corner is free.
+    const glm::vec2 want = centre - size * 0.5f;
+    const float d2 = glm::dot(corner - want, corner - want);
+    for (int i = -60; i <= 60; ++i)
+      for (int j = -60; j <= 60; ++j) {
+        const glm::vec2 c = want + glm::vec2(i, j) * kPlacementGap;
+        if (glm::dot(c - want, c - want) >= d2) continue;
+        const Rect r{c, c + size};
+        EXPECT_FALSE(std::all_of(boxes.begin(), boxes.end(), [&](const NodeBox& b) { return apart(r, b.rect); }))
+            << "a nearer free spot at " << c.x << ", " << c.y;
+      }
+  }
+  // Within the block of nodes nothing is free: wanted at its middle, a node goes outside it.
+  const glm::vec2 corner = free_spot(boxes, (block.min + block.max) * 0.5f, size);
+  EXPECT_FALSE(Rect({corner, corner + size}).overlaps(block));
 }
 
 TEST(Layout, RubberBandSelectsOverlappingNodes) {

@@ -6,6 +6,7 @@
 
 #include <fstream>
 
+#include "app/studio/editor/canvas_layout.h"
 #include "graph/pxg.h"
 #include "tests/studio/studio_test_util.h"
 
@@ -427,12 +428,19 @@ TEST(Document, GroupLibrarySavesAGroupAndPlacesItFromItsFile) {
   EXPECT_NE(refused.message().find("broken.pxg"), std::string::npos) << refused.message();
   EXPECT_EQ(doc->revision(), rev) << "a refused file changes nothing";
 
-  const Result<NodeId> placed = doc->place_library_group("lib/building.pxg", 40, 60);
+  // Wanted on top of the first node: placed at the nearest spot where it covers none.
+  const NodeBox first = *find_box(layout(doc->graph()), 1);
+  const Result<NodeId> placed = doc->place_library_group("lib/building.pxg", first.rect.min.x + 40, first.rect.min.y + 30);
   ASSERT_TRUE(placed) << placed.message();
   const Node* n = doc->graph().node(*placed);
   ASSERT_TRUE(n);
   EXPECT_EQ(n->group, "building2") << "the recipe's own group keeps its name";
-  EXPECT_EQ(n->editor.x, 40);
+  const std::vector<NodeBox> boxes = layout(doc->graph());
+  const Rect at = find_box(boxes, *placed)->rect;
+  for (const NodeBox& b : boxes)
+    if (b.id != *placed) {
+      EXPECT_FALSE(at.overlaps(b.rect)) << "placed over node " << b.id;
+    }
   EXPECT_EQ(doc->graph().groups().at("building2").file, "lib/building.pxg");
   EXPECT_EQ(doc->selected(), *placed);
   ASSERT_TRUE(doc->undo());
@@ -440,6 +448,13 @@ TEST(Document, GroupLibrarySavesAGroupAndPlacesItFromItsFile) {
   EXPECT_FALSE(doc->graph().groups().count("building2"));
   ASSERT_TRUE(doc->redo());
   ASSERT_TRUE(doc->graph().node(*placed)) << "redo places the same node";
+  EXPECT_EQ(find_box(layout(doc->graph()), *placed)->rect, at) << "at the same spot";
+  // Where nothing is, it is centred where it is wanted.
+  const Result<NodeId> far = doc->place_library_group("lib/building.pxg", 20000, 10000);
+  ASSERT_TRUE(far) << far.message();
+  const Rect far_at = find_box(layout(doc->graph()), *far)->rect;
+  EXPECT_EQ((far_at.min + far_at.max) * 0.5f, glm::vec2(20000, 10000));
+  ASSERT_TRUE(doc->undo());
   doc->save();
   EXPECT_NE(read_text(dir / "city.pxg").find("\"file\": \"lib/building.pxg\""), std::string::npos);
   const Graph reloaded = load_pxg(dir / "city.pxg");

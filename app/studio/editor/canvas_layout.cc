@@ -1,6 +1,7 @@
 #include "app/studio/editor/canvas_layout.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <glm/common.hpp>
 
@@ -93,6 +94,33 @@ Rect bounds(const std::vector<NodeBox>& boxes, const std::vector<NodeId>& ids) {
     first = false;
   }
   return r;
+}
+
+glm::vec2 free_spot(const std::vector<NodeBox>& boxes, glm::vec2 centre, glm::vec2 size) {
+  const glm::vec2 want = centre - size * 0.5f;
+  const auto free = [&](glm::vec2 corner) {
+    // Grown by a little less than the gap: a box exactly the gap away is free (overlaps counts touching).
+    const Rect r{corner - glm::vec2(kPlacementGap - 0.5f), corner + size + glm::vec2(kPlacementGap - 0.5f)};
+    return std::none_of(boxes.begin(), boxes.end(), [&](const NodeBox& b) { return b.rect.overlaps(r); });
+  };
+  // Rings of grid points around `want`, nearest first by their square ring;
+  // the search stops once no farther ring can hold a nearer point. Outside the
+  // boxes' bounds every point is free, so it ends by the ring that leaves them.
+  std::optional<glm::vec2> best;
+  float best_d2 = 0.0f;
+  for (int ring = 0;; ++ring) {
+    const float ring_d = static_cast<float>(ring) * kPlacementGap;
+    if (best && ring_d * ring_d > best_d2) return *best;
+    for (int i = -ring; i <= ring; ++i)
+      for (int j = -ring; j <= ring; j += std::abs(i) == ring ? 1 : std::max(2 * ring, 1)) {  // the ring's points only
+        const glm::vec2 step(static_cast<float>(i) * kPlacementGap, static_cast<float>(j) * kPlacementGap);
+        const float d2 = step.x * step.x + step.y * step.y;
+        if ((!best || d2 < best_d2) && free(want + step)) {
+          best = want + step;
+          best_d2 = d2;
+        }
+      }
+  }
 }
 
 }  // namespace procex::studio

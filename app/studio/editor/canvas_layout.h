@@ -77,4 +77,13 @@ std::vector<NodeId> nodes_in(const std::vector<NodeBox>& boxes, const Rect& r);
 // Bounds of the given boxes (all when `ids` is empty).
 Rect bounds(const std::vector<NodeBox>& boxes, const std::vector<NodeId>& ids = {});
 
+// Space kept between a node placed by free_spot and every other box.
+inline constexpr float kPlacementGap = 20.0f;
+// The top-left corner for a new box of `size` whose centre is wanted at
+// `centre`: there if the box would keep kPlacementGap from every box of
+// `boxes` (nodes and the graph's input / output boxes), else the nearest
+// such corner (searched on a grid of kPlacementGap) -- a node placed from
+// elsewhere (the library) never covers another.
+glm::vec2 free_spot(const std::vector<NodeBox>& boxes, glm::vec2 centre, glm::vec2 size);
+
 }  // namespace procex::studio

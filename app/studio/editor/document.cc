@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "app/studio/editor/auto_layout.h"
+#include "app/studio/editor/canvas_layout.h"
 #include "graph/pxg.h"
 
 namespace procex::studio {
@@ -255,11 +256,14 @@ Result<NodeId> Document::place_library_group(const std::string& file, double x, 
   // Kept by the undo stack and run again by redo: everything by value, the node's id from the first run.
   auto placed = std::make_shared<NodeId>(0);
   Status s = edit_recipe("place " + name, [=](Graph& g) -> Status {
+    const std::vector<NodeBox> others = layout(g);
     if (Status added = g.add_group(name, body, file); !added) return added;
     Result<NodeId> r = g.add_group_node(name, *placed);
     if (!r) return r.status();
     *placed = *r;
-    return g.set_editor_state(*placed, editor_at(x, y));
+    const NodeDecl& decl = g.node(*placed)->decl();
+    const glm::vec2 corner = free_spot(others, {x, y}, node_size(decl.inputs().size(), decl.outputs().size()));
+    return g.set_editor_state(*placed, editor_at(corner.x, corner.y));
   });
   if (!s) return s;
   selection_ = {*placed};

@@ -86,7 +86,8 @@ class Document {
   Result<std::filesystem::path> save_group_to_library();
   // Adds library file `file` (as library_files lists it, e.g. "lib/facade.pxg")
   // as a group named after it (a number added if the name is taken), read from
-  // that file when the recipe loads, and places an instance at (x, y): one
+  // that file when the recipe loads, and places an instance centred at (x, y),
+  // or at the nearest spot where it covers no other node (free_spot): one
   // undo step. A file that does not load is refused, naming the file.
   Result<NodeId> place_library_group(const std::string& file, double x, double y);
   // Lays the whole graph out in layers from inputs to outputs (one undo step).

@@ -23,6 +23,7 @@
 
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
+#include "app/studio/editor/canvas_layout.h"
 #include "app/studio/editor/export_meshes.h"
 #include "app/studio/editor/glb_loader.h"
 #include "app/studio/editor/session_files.h"
@@ -538,7 +539,8 @@ class App {
     if (doc_->graph().node(path.back())) doc_->select_only(path.back());
   }
 
-  // The groups saved beside the recipe (lib/*.pxg), each placed at the canvas's centre by its button.
+  // The groups saved beside the recipe (lib/*.pxg), each placed by its button at the canvas's centre or,
+  // where nodes are, the nearest spot where it covers none.
   void library_panel() {
     if (doc_->path().empty()) {
       ImGui::TextDisabled("Save the recipe first: its library is the lib folder beside it.");
@@ -782,6 +784,9 @@ class App {
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
     for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
+    j["node_rects"] = nlohmann::json::object();  // canvas units, the graph's input / output boxes too
+    for (const NodeBox& b : layout(doc_->graph()))
+      j["node_rects"][std::to_string(b.id)] = {b.rect.min.x, b.rect.min.y, b.rect.max.x - b.rect.min.x, b.rect.max.y - b.rect.min.y};
     const PreviewMesh* shown_mesh = on_screen();
     j["preview_faces"] = shown_mesh ? shown_mesh->faces : 0;
     j["viewing"] = viewed_ ? viewed_->file.string() : "";

@@ -2,7 +2,8 @@
 // groups selected, Edit > Save group to library writes lib/building.pxg
 // beside the recipe; the Evaluation panel's Library tab lists it, and its
 // Place button adds an instance read from that file, which the saved recipe
-// names; opening that group to edit it inside the recipe is refused.
+// names, where it covers none of the city's nodes; opening that group to edit
+// it inside the recipe is refused.
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -42,12 +43,20 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   map = click_until(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
                     [&](const json& j) { return j["node_positions"].size() == nodes_before + 1; });
   EXPECT_NE(map["status"].get<std::string>().find("placed lib/building.pxg"), std::string::npos) << map["status"];
-  // Its graph is the library file's, which other recipes may share: opening it here is refused, saying why.
   const std::uint64_t placed = map["selected"].get<std::uint64_t>();
+  // Placed at the canvas's centre, where the city's nodes are, it covers none of them.
+  const json& rects = map["node_rects"];
+  ASSERT_TRUE(rects.contains(std::to_string(placed))) << rects;
+  const json& at = rects[std::to_string(placed)];
+  for (const auto& [id, r] : rects.items()) {
+    if (id == std::to_string(placed)) continue;
+    const bool apart = at[0].get<float>() + at[2].get<float>() < r[0].get<float>() || r[0].get<float>() + r[2].get<float>() < at[0].get<float>() ||
+                       at[1].get<float>() + at[3].get<float>() < r[1].get<float>() || r[1].get<float>() + r[3].get<float>() < at[1].get<float>();
+    EXPECT_TRUE(apart) << "placed at " << at << " over node " << id << " at " << r;
+  }
+  // Its graph is the library file's, which other recipes may share: opening it here is refused, saying why.
   const auto refused = [](const json& j) { return j["status"].get<std::string>().find("is read from lib/building.pxg") != std::string::npos; };
-  // It is placed over the city's first nodes: its last input row lies below
-  // them, where a double-click meets only it (beside its output, another
-  // node's input pin is within a few pixels).
+  // A double-click on its body, beside its last input's name, meets only it.
   const auto pins_shown = [&](const json& j) {
     for (const json& p : j["pins"])
       if (p["node"] == placed && !p["output"].get<bool>()) return true;
