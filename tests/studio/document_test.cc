@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "app/studio/editor/canvas_layout.h"
+#include "app/studio/editor/exposed_default.h"
 #include "graph/pxg.h"
 #include "tests/studio/studio_test_util.h"
 
@@ -402,6 +403,39 @@ TEST(Document, APresetForAnUnknownParameterIsALoadError) {
     EXPECT_EQ(e.where(), "/presets/1/values/colour");
     EXPECT_NE(e.message().find("no exposed parameter named 'colour'"), std::string::npos) << e.message();
   }
+}
+
+// Inside a group, a parameter the group exposes is only the group's default:
+// the inspector's note says so, naming the exposed name, the group and its instances.
+TEST(Document, AGroupsExposedParameterInsideItIsNotedAsTheGroupsDefault) {
+  auto doc = Document::open(std::filesystem::path(PROCEX_SAMPLES) / "city.pxg");
+  ASSERT_EQ(doc->graph().node(1)->group, "building");
+  const std::size_t switch_value = *doc->graph().node(6)->decl().param_index("value");
+  EXPECT_EQ(exposed_default_note(*doc, 6, switch_value), "") << "the recipe's exposed parameters are its interface, not a default";
+  const ExposedParam hip = doc->graph().node(1)->type->body->exposed_params().front();
+  ASSERT_EQ(hip.name, "hip");
+  const std::size_t hip_on_instance = *doc->graph().node(1)->decl().param_index("hip");
+  const Value instance_value = doc->graph().node(2)->params[hip_on_instance];
+  ASSERT_TRUE(doc->enter_group(1));
+  const std::string note = exposed_default_note(*doc, hip.node, hip.param);
+  EXPECT_NE(note.find("'hip'"), std::string::npos) << note;
+  EXPECT_NE(note.find("group's default"), std::string::npos) << note;
+  EXPECT_NE(note.find("5 instances"), std::string::npos) << note << " (the city's five buildings)";
+  EXPECT_NE(note.find("'building' node"), std::string::npos) << note;
+  // And it is so: set inside, the group's default changes and no instance's value does.
+  std::vector<Vec2> points = doc->graph().node(hip.node)->params[hip.param].get<std::vector<Vec2>>();
+  ASSERT_FALSE(points.empty());
+  points.back().x += 0.25;
+  ASSERT_TRUE(doc->set_param(hip.node, hip.param, Value::make(points)));
+  EXPECT_EQ(doc->recipe().groups().at("building").type->body->node(hip.node)->params[hip.param].get<std::vector<Vec2>>(), points);
+  EXPECT_EQ(doc->recipe().node(2)->params[hip_on_instance].get<std::vector<Vec2>>(), instance_value.get<std::vector<Vec2>>());
+  // A parameter it does not expose has no note.
+  for (std::size_t i = 0; i < doc->graph().node(hip.node)->decl().params().size(); ++i)
+    if (i != hip.param) {
+      EXPECT_EQ(exposed_default_note(*doc, hip.node, i), "");
+    }
+  doc->leave_group(0);
+  EXPECT_EQ(exposed_default_note(*doc, hip.node, hip.param), "") << "at the recipe's level, node " << hip.node << " is an instance";
 }
 
 // The group library: a group saved beside the recipe as lib/NAME.pxg, then

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/studio/editor/exposed_default.h"
 #include "graph/expression_value.h"
 
 namespace procex::studio {
@@ -206,6 +207,12 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
       ImGui::EndPopup();
     }
     expression_error(id, p);
+    if (const std::string note = exposed_default_note(doc, id, i); !note.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.75f, 1.0f, 1.0f));
+      ImGui::TextWrapped("%s", note.c_str());
+      ImGui::PopStyleColor();
+      record(p.name + ".default_note");
+    }
     ImGui::PopID();
   }
   expose_dialog(doc, status);

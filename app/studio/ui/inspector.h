@@ -8,7 +8,9 @@
 // unexposes it, and turns it into an expression (docs/expressions.md) or back
 // into a value. An expression shows as its text in a tinted field with the
 // value it gave in the last evaluation beside it; a refused one stays in the
-// field with the reason under it, and the recipe keeps what it had.
+// field with the reason under it, and the recipe keeps what it had. Inside a
+// group, a parameter the group exposes has a note under it: its value there
+// is only the group's default (editor/exposed_default.h).
 #pragma once
 
 #include <array>
