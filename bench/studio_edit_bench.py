@@ -1,8 +1,11 @@
 """The studio's frame time and re-evaluation latency on the sample recipes
 (BENCHMARKS.md, "Studio"): each recipe opened in procex-studio under Xvfb
-with --bench-edits, which sets the recipe's first ranged float parameter to
-a new value (nothing comes from the cache) and times each edit until the
-frame showing its result is swapped and glFinish'ed. Rounds run the recipes
+with --bench-edits, which sets the recipe's first ranged float parameter (or,
+when the recipe has none, that of the first group's nodes, edited inside the
+group) to a new value (nothing comes from the cache) and times each edit until
+the frame showing its result is swapped and glFinish'ed. samples/city.pxg runs
+with the 18 footprints of samples/footprints/sample_block.geojson bound
+(--footprints: every feature evaluated and shown at its place). Rounds run the recipes
 in turn; per recipe, the medians over rounds of each run's median (and 90th
 percentile), and the edit latency as a ratio to the house's in the same round.
 Frame time counts only frames that drew something (an unchanged frame is
@@ -23,8 +26,10 @@ studio = os.environ.get("PROCEX_STUDIO", "build/app/studio/procex-studio")
 rounds = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 edits = int(sys.argv[2]) if len(sys.argv) > 2 else 40
 reference = "samples/house.pxg"
+block = "samples/footprints/sample_block.geojson"
 recipes = [reference, "samples/barn.pxg", "samples/gallery_figure25.pxg",
-           "tests/studio/data/street100.pxg"]
+           "tests/studio/data/street100.pxg", "samples/city.pxg"]
+footprints = {"samples/city.pxg": block}
 
 
 def p90(xs):
@@ -35,15 +40,18 @@ def run(recipe):
     with tempfile.TemporaryDirectory() as tmp:
         report = os.path.join(tmp, "frames.json")
         env = dict(os.environ, PROCEX_STUDIO_HOME=os.path.join(tmp, "home"), XDG_CONFIG_HOME=os.path.join(tmp, "config"))
+        bind = ["--footprints", footprints[recipe]] if recipe in footprints else []
         subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x800x24", studio, recipe, "--bench-edits", str(edits),
-                        "--report-frames", report, "--timeout", "300"], check=True, env=env, capture_output=True)
+                        "--report-frames", report, "--timeout", "300"] + bind, check=True, env=env, capture_output=True)
         with open(report) as f:
             r = json.load(f)
     if not r["edit_to_screen_ms"]:
         sys.exit(f"{recipe}: no parameter to edit")
+    if recipe in footprints and r["preview_features"] != 18:
+        sys.exit(f"{recipe}: {r['preview_features']} of the 18 footprints evaluated")
     # Frames in which nothing changed are neither drawn nor swapped: a new frame is one that drew something.
     drawn = [ms for ms, share in zip(r["frame_ms"], r["redrawn_share"]) if share > 0]
-    return {"parameter": r["parameter"], "edit": statistics.median(r["edit_to_screen_ms"]), "edit_p90": p90(r["edit_to_screen_ms"]),
+    return {"parameter": r["parameter"], "bound": r["preview_features"] or "none", "edit": statistics.median(r["edit_to_screen_ms"]), "edit_p90": p90(r["edit_to_screen_ms"]),
             "evaluation": statistics.median(r["evaluation_ms"]), "frame": statistics.median(drawn), "frame_p90": p90(drawn)}
 
 
@@ -56,11 +64,11 @@ for _ in range(rounds):
         ratios[r].append(this_round[r]["edit"] / this_round[reference]["edit"])
 
 print(f"{rounds} rounds of {edits} edits; medians over rounds (90th percentiles in brackets)\n")
-print("| recipe | nodes | parameter edited | edit to screen | evaluation of the edit | new frame | edit to screen / house's |")
-print("|---|---|---|---|---|---|---|")
+print("| recipe | nodes | footprints bound | parameter edited | edit to screen | evaluation of the edit | new frame | edit to screen / house's |")
+print("|---|---|---|---|---|---|---|---|")
 for r in recipes:
     with open(r) as f:
         nodes = len(json.load(f)["nodes"])
     m = lambda k: statistics.median(x[k] for x in results[r])
-    print(f"| `{r}` | {nodes} | `{results[r][0]['parameter']}` | {m('edit'):.1f} ms ({m('edit_p90'):.1f}) | {m('evaluation'):.1f} ms | "
+    print(f"| `{r}` | {nodes} | {results[r][0]['bound']} | `{results[r][0]['parameter']}` | {m('edit'):.1f} ms ({m('edit_p90'):.1f}) | {m('evaluation'):.1f} ms | "
           f"{m('frame'):.1f} ms ({m('frame_p90'):.1f}) | {statistics.median(ratios[r]):.2f} ({min(ratios[r]):.2f}-{max(ratios[r]):.2f}) |")

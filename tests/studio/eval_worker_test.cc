@@ -4,7 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
 #include "app/studio/editor/document.h"
+#include "app/cli/feature_binding.h"
+#include "core/io/footprint_read.h"
 #include "graph/pxg.h"
 #include "tests/studio/studio_test_util.h"
 
@@ -117,6 +122,65 @@ TEST(EvalWorker, BatchRecipeShowsTheStandInPlan) {
   EXPECT_TRUE(worker->latest()->result.ok());
   ASSERT_TRUE(worker->latest()->preview);
   EXPECT_GT(worker->latest()->preview->faces, 4u);
+}
+
+// A footprint file given to the preview: the recipe evaluated for every
+// feature, bound as procex batch binds it, each building where its feature
+// stands; an edit evaluates again only what it changed; a feature that cannot
+// be bound is named and the others still shown.
+TEST(EvalWorker, EveryFeatureOfAFootprintFileAtItsPlace) {
+  const std::filesystem::path samples = PROCEX_SAMPLES;
+  const Graph city = load_pxg(samples / "city.pxg");
+  GeoJsonCollection block = read_footprints(samples / "footprints" / "sample_block.geojson");
+  ASSERT_EQ(block.features.size(), 18u);
+  add_edge_labels(city, block);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const GeoJsonFeature& f : block.features)
+    for (const auto& loop : f.loops)
+      for (const glm::dvec2& p : loop) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+  const auto features = std::make_shared<const std::vector<GeoJsonFeature>>(block.features);
+  EvalWorker worker;
+  worker.submit(1, city, {}, preview_bindings(city, preview_footprint()), samples, features);
+  ASSERT_TRUE(worker.wait_idle(120s));
+  auto snap = worker.latest();
+  ASSERT_TRUE(snap && snap->preview);
+  EXPECT_EQ(snap->features, 18u);
+  EXPECT_EQ(snap->feature_meshes.size(), 18u);
+  for (const Diagnostic& d : snap->result.diagnostics) EXPECT_NE(d.severity, Severity::kError) << d.to_string();
+  EXPECT_TRUE(snap->preview_current);
+  // The preview spans the block: every plan at its own place, none at the origin of its own.
+  const PreviewMesh& p = *snap->preview;
+  EXPECT_NEAR(p.min.x, lo.x, 1e-3);
+  EXPECT_NEAR(p.min.y, lo.y, 1e-3);
+  EXPECT_NEAR(p.max.x, hi.x, 1e-3);
+  EXPECT_NEAR(p.max.y, hi.y, 1e-3);
+  EXPECT_GT(p.max.z, 3.0) << "buildings, not plans";
+  EXPECT_GE(p.meshes, 18u);
+
+  // Submitted again unchanged: every feature's buildings come from the cache.
+  worker.submit(2, city, {}, preview_bindings(city, preview_footprint()), samples, features);
+  ASSERT_TRUE(worker.wait_idle(120s));
+  EXPECT_EQ(worker.latest()->result.stats.computed(), 0u) << "an unchanged recipe comes from the cache";
+  EXPECT_EQ(worker.latest()->features, 18u);
+
+  // A bow-tie among them is refused, by its id, as procex batch refuses it; the rest are shown.
+  std::vector<GeoJsonFeature> with_bad = block.features;
+  GeoJsonFeature bad = with_bad.front();
+  bad.id = "bow-tie";
+  bad.loops = {{{0, 0}, {10, 10}, {10, 0}, {0, 10}}};
+  with_bad.push_back(bad);
+  worker.submit(3, city, {}, preview_bindings(city, preview_footprint()), samples,
+                std::make_shared<const std::vector<GeoJsonFeature>>(with_bad));
+  ASSERT_TRUE(worker.wait_idle(120s));
+  snap = worker.latest();
+  EXPECT_EQ(snap->feature_meshes.size(), 18u);
+  ASSERT_TRUE(snap->preview_current);
+  bool named = false;
+  for (const Diagnostic& d : snap->result.diagnostics) named |= d.severity == Severity::kError && d.message.starts_with("feature bow-tie: ");
+  EXPECT_TRUE(named) << "the refused feature is named";
 }
 
 }  // namespace

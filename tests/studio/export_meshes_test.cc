@@ -1,10 +1,13 @@
 // File > Export without a window: the shown meshes written by procex eval's
-// writer, labelled with the dropped feature and the recipe's exposed values;
+// writer, labelled with the features of a footprint file given to the preview
+// and the recipe's exposed values;
 // what cannot be written says why and writes nothing.
 #include "app/studio/editor/export_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include "app/cli/feature_binding.h"
+#include "core/io/footprint_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
 #include "graph/pxg.h"
@@ -22,21 +25,40 @@ std::shared_ptr<const EvalSnapshot> evaluated(const Graph& g) {
   return worker.latest();
 }
 
-TEST(ExportMeshes, WritesTheShownMeshLabelledWithTheFeature) {
+TEST(ExportMeshes, WritesTheShownMesh) {
   const auto dir = test::temp_dir();
   const Graph g = load_pxg(test::house_recipe());
   const auto shown = evaluated(g);
   ASSERT_TRUE(shown && shown->preview);
-  GeoJsonFeature plot;
-  plot.id = "plot-7";
-  plot.properties["roof"] = "\"hip\"";
-  const Result<std::size_t> obj = export_meshes(g, *shown, dir / "house.obj", {}, &plot);
+  const Result<std::size_t> obj = export_meshes(g, *shown, dir / "house.obj", {});
   ASSERT_TRUE(obj) << obj.message();
   EXPECT_EQ(*obj, 1u);
   EXPECT_EQ(read_mesh_file(dir / "house.obj").n_faces(), shown->preview->faces);
-  EXPECT_NE(test::read_text(dir / "house.obj").find("o plot-7"), std::string::npos) << "one object per building, named by its id";
-  ASSERT_TRUE(export_meshes(g, *shown, dir / "house.glb", {}, &plot));
-  EXPECT_NE(test::read_text(dir / "house.glb").find("\"roof\":\"hip\""), std::string::npos) << "the feature's properties in extras";
+}
+
+// With a footprint file given to the preview: every feature's buildings,
+// each labelled with its feature's id and properties, as procex batch writes them.
+TEST(ExportMeshes, WritesEveryFeaturesBuildingsLabelledWithIt) {
+  const auto dir = test::temp_dir();
+  const std::filesystem::path samples = PROCEX_SAMPLES;
+  const Graph city = load_pxg(samples / "city.pxg");
+  GeoJsonCollection terrace = read_footprints(samples / "footprints" / "terrace.geojson");
+  ASSERT_EQ(terrace.features.size(), 3u);  // and three streets
+  add_edge_labels(city, terrace);
+  EvalWorker worker;
+  worker.submit(1, city, {}, preview_bindings(city, preview_footprint()), samples,
+                std::make_shared<const std::vector<GeoJsonFeature>>(terrace.features));
+  ASSERT_TRUE(worker.wait_idle(60s));
+  const auto shown = worker.latest();
+  ASSERT_TRUE(shown && shown->preview);
+  ASSERT_EQ(shown->feature_meshes.size(), 3u);
+  const Result<std::size_t> obj = export_meshes(city, *shown, dir / "terrace.obj", {});
+  ASSERT_TRUE(obj) << obj.message();
+  EXPECT_EQ(read_mesh_file(dir / "terrace.obj").n_faces(), shown->preview->faces) << "every building";
+  const std::string text = test::read_text(dir / "terrace.obj");
+  for (const char* id : {"a", "b", "c"}) EXPECT_NE(text.find(std::string("\no ") + id), std::string::npos) << "an object named by feature " << id;
+  ASSERT_TRUE(export_meshes(city, *shown, dir / "terrace.glb", {}));
+  EXPECT_NE(test::read_text(dir / "terrace.glb").find("\"building\":\"house\""), std::string::npos) << "the features' properties in extras";
 }
 
 TEST(ExportMeshes, RefusalsSayWhyAndWriteNothing) {
@@ -44,16 +66,16 @@ TEST(ExportMeshes, RefusalsSayWhyAndWriteNothing) {
   const Graph g = load_pxg(test::house_recipe());
   const auto shown = evaluated(g);
   ASSERT_TRUE(shown);
-  const Result<std::size_t> unknown = export_meshes(g, *shown, dir / "house.stl", {}, nullptr);
+  const Result<std::size_t> unknown = export_meshes(g, *shown, dir / "house.stl", {});
   ASSERT_FALSE(unknown);
   EXPECT_NE(unknown.message().find("unknown mesh format '.stl'"), std::string::npos) << unknown.message();
   ExportOptions geographic;
   geographic.crs = "EPSG:4326";
-  const Result<std::size_t> gpkg = export_meshes(g, *shown, dir / "house.gpkg", geographic, nullptr);
+  const Result<std::size_t> gpkg = export_meshes(g, *shown, dir / "house.gpkg", geographic);
   ASSERT_FALSE(gpkg);
   EXPECT_NE(gpkg.message().find("geographic"), std::string::npos) << gpkg.message();
   EXPECT_TRUE(std::filesystem::is_empty(dir));
-  const Result<std::size_t> nothing = export_meshes(g, EvalSnapshot{}, dir / "house.obj", {}, nullptr);
+  const Result<std::size_t> nothing = export_meshes(g, EvalSnapshot{}, dir / "house.obj", {});
   ASSERT_FALSE(nothing);
   EXPECT_NE(nothing.message().find("nothing to export"), std::string::npos);
 }
@@ -72,7 +94,7 @@ TEST(ExportMeshes, AWrittenGlbPreviewsAsTheRecipeDid) {
     const auto shown = worker.latest();
     ASSERT_TRUE(shown && shown->preview && !shown->preview->empty());
     const std::filesystem::path glb = dir / (std::string(name) + ".glb");
-    ASSERT_TRUE(export_meshes(g, *shown, glb, {}, nullptr));
+    ASSERT_TRUE(export_meshes(g, *shown, glb, {}));
     const PreviewMesh& want = *shown->preview;
     if (std::string(name) == "windows.pxg") {
       EXPECT_GT(want.instances, 0u) << "the placed windows are instanced";

@@ -31,7 +31,7 @@ std::filesystem::path house_glb(const std::filesystem::path& dir) {
   const Graph g = load_pxg(test::house_recipe());
   worker.submit(1, g);
   EXPECT_TRUE(worker.wait_idle(60s));
-  EXPECT_TRUE(export_meshes(g, *worker.latest(), dir / "house.glb", {}, nullptr));
+  EXPECT_TRUE(export_meshes(g, *worker.latest(), dir / "house.glb", {}));
   return dir / "house.glb";
 }
 

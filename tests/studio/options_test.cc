@@ -17,6 +17,7 @@ TEST(Options, ParsesTheCommandLine) {
   EXPECT_EQ(o.height, 600);
   EXPECT_EQ(o.autosave_s, 0);
   EXPECT_TRUE(parse_options({"--help"}).help);
+  EXPECT_EQ(parse_options({"city.pxg", "--footprints", "block.geojson"}).footprints, "block.geojson");
   const Options view = parse_options({"--view", "-60,-12.5"});
   ASSERT_TRUE(view.view);
   EXPECT_EQ((*view.view)[0], -60.0f);

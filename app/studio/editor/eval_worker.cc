@@ -4,6 +4,9 @@
 #include <set>
 #include <typeindex>
 
+#include "app/cli/feature_binding.h"
+#include "nodes/support/mesh_labels.h"
+
 namespace procex::studio {
 
 std::vector<PortRef> preview_ports(const Graph& g) {
@@ -65,10 +68,10 @@ EvalWorker::~EvalWorker() {
 }
 
 void EvalWorker::submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports, Bindings bindings,
-                        std::filesystem::path folder) {
+                        std::filesystem::path folder, PreviewFeatures features) {
   {
     std::lock_guard lock(mutex_);
-    pending_ = Job{revision, std::move(graph), std::move(extra_ports), std::move(bindings), std::move(folder)};
+    pending_ = Job{revision, std::move(graph), std::move(extra_ports), std::move(bindings), std::move(folder), std::move(features)};
     running_cancel_.cancel();
   }
   changed_.notify_all();
@@ -118,6 +121,7 @@ void EvalWorker::run() {
 }
 
 std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate(Job& job, const CancelToken& cancel) {
+  if (job.features && !job.features->empty()) return evaluate_features(job, cancel);
   const auto start = std::chrono::steady_clock::now();
   std::vector<PortRef> ports = preview_ports(job.graph);
   const std::size_t n_preview = ports.size();
@@ -139,17 +143,76 @@ std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate(Job& job, const CancelT
     if (v.empty()) complete = false;
     for (const TaggedMesh* m : meshes_in(v)) meshes.push_back(m);
   }
-  if (complete && !meshes.empty()) {
-    snap->preview = std::make_shared<const PreviewMesh>(make_preview(meshes));
-    snap->preview_current = true;
-  } else if (complete) {
-    snap->preview_current = true;  // a good result without meshes: nothing to show
-  } else {
-    std::lock_guard lock(mutex_);
-    if (latest_) snap->preview = latest_->preview;
-  }
+  finish_preview(*snap, meshes, complete);
   snap->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return snap;
+}
+
+std::shared_ptr<const EvalSnapshot> EvalWorker::evaluate_features(Job& job, const CancelToken& cancel) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<PortRef> preview = preview_ports(job.graph);
+  std::vector<PortRef> first_ports = preview;  // the selected node's outputs: of the first feature only
+  first_ports.insert(first_ports.end(), job.extra_ports.begin(), job.extra_ports.end());
+  auto snap = std::make_shared<EvalSnapshot>();
+  snap->revision = job.revision;
+  // As procex batch does, a feature refused or failed is reported (by its id) and the others are
+  // shown; only when none gives its meshes does the preview keep the last good one.
+  bool any_complete = false;
+  for (const GeoJsonFeature& f : *job.features) {
+    const bool first = snap->features == 0;  // the first feature evaluated
+    Graph graph = job.graph;
+    Bindings bindings = job.bindings;
+    EvalOptions options;
+    options.cancel = cancel;
+    options.folder = job.folder;
+    const std::vector<std::string> problems = bind_feature(graph, bindings, options, f);
+    for (const std::string& p : problems) snap->result.diagnostics.push_back({Severity::kError, {}, "", "feature " + f.id + ": " + p});
+    if (!problems.empty()) continue;
+    const std::vector<PortRef>& ports = first ? first_ports : preview;
+    EvalResult r = evaluator_.evaluate_ports(graph, bindings, ports, options);
+    if (r.cancelled || cancel.cancelled()) return nullptr;
+    ++snap->features;
+    for (Diagnostic& d : r.diagnostics) {
+      d.message = "feature " + f.id + ": " + d.message;
+      snap->result.diagnostics.push_back(std::move(d));
+    }
+    MeshSet meshes;
+    bool complete = true;
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+      const Value v = i < r.outputs.size() ? r.outputs[i].value : Value();
+      if (first && !v.empty()) snap->values[ports[i]] = v;
+      if (i >= preview.size()) continue;
+      if (v.empty()) complete = false;
+      if (const MeshSet* m = v.get_if<MeshSet>()) meshes.parts.insert(meshes.parts.end(), m->parts.begin(), m->parts.end());
+    }
+    if (first) {
+      snap->result.stats = std::move(r.stats);
+      snap->result.outputs = std::move(r.outputs);
+    }
+    if (!complete) continue;
+    any_complete = true;
+    label_parts(meshes, f);
+    snap->feature_meshes.push_back(std::move(meshes));
+  }
+  std::vector<const TaggedMesh*> meshes;
+  for (const MeshSet& set : snap->feature_meshes)
+    for (const TaggedMesh& part : set.parts)
+      if (part.mesh) meshes.push_back(&part);
+  finish_preview(*snap, meshes, any_complete);
+  snap->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return snap;
+}
+
+void EvalWorker::finish_preview(EvalSnapshot& snap, const std::vector<const TaggedMesh*>& meshes, bool complete) {
+  if (complete && !meshes.empty()) {
+    snap.preview = std::make_shared<const PreviewMesh>(make_preview(meshes));
+    snap.preview_current = true;
+  } else if (complete) {
+    snap.preview_current = true;  // a good result without meshes: nothing to show
+  } else {
+    std::lock_guard lock(mutex_);
+    if (latest_) snap.preview = latest_->preview;
+  }
 }
 
 }  // namespace procex::studio

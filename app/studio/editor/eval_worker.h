@@ -21,7 +21,9 @@
 #include "graph/cache.h"
 #include "graph/evaluator.h"
 #include "core/geom/footprint.h"
+#include "core/io/geojson.h"
 #include "graph/graph.h"
+#include "nodes/values.h"
 
 namespace procex::studio {
 
@@ -38,6 +40,13 @@ Bindings preview_bindings(const Graph& g, const Footprint& footprint);
 // The stand-in plan for an unbound footprint input: a 14 m x 10 m rectangle, edges at 45 degrees.
 Footprint preview_footprint();
 
+// The features of a footprint file given to the preview (dropped on the
+// window, or --footprints): the recipe is evaluated once per feature, each
+// bound as procex batch binds it (app/cli/feature_binding.h: the plan at its
+// real position, its id, its properties as settings), and the preview shows
+// them all together.
+using PreviewFeatures = std::shared_ptr<const std::vector<GeoJsonFeature>>;
+
 struct EvalSnapshot {
   std::uint64_t revision = 0;    // the document revision this evaluation saw
   EvalResult result;             // diagnostics and per-node statistics
@@ -45,6 +54,13 @@ struct EvalSnapshot {
   std::shared_ptr<const PreviewMesh> preview;  // the last good meshes, maybe of an earlier revision
   bool preview_current = false;  // whether `preview` comes from this revision
   double seconds = 0.0;          // evaluation plus preview building
+  // With preview features: `result` and `values` are the first feature's
+  // evaluation (what the canvas and the plan editor show), `result.diagnostics`
+  // every feature's, each naming its feature; feature_meshes holds the meshes
+  // of each feature that gave them all, labelled as procex batch labels them
+  // (what File > Export writes), and `features` how many were evaluated.
+  std::vector<MeshSet> feature_meshes;
+  std::size_t features = 0;
 };
 
 // What `s` says of the graph inside group node `scope` (Document::scope):
@@ -62,9 +78,10 @@ class EvalWorker {
 
   // Evaluates `graph` (the preview ports plus `extra_ports`, e.g. the selected
   // node's outputs for the plan editor), cancelling whatever runs. Relative
-  // file paths in parameters resolve against `folder` (the recipe's).
+  // file paths in parameters resolve against `folder` (the recipe's). With
+  // `features`, the recipe is evaluated for each of them (see PreviewFeatures).
   void submit(std::uint64_t revision, Graph graph, std::vector<PortRef> extra_ports = {}, Bindings bindings = {},
-              std::filesystem::path folder = {});
+              std::filesystem::path folder = {}, PreviewFeatures features = {});
   // The newest finished (not cancelled) evaluation, or null before the first.
   std::shared_ptr<const EvalSnapshot> latest() const;
   // Drops the pending evaluation and asks the running one to stop.
@@ -81,9 +98,13 @@ class EvalWorker {
     std::vector<PortRef> extra_ports;
     Bindings bindings;
     std::filesystem::path folder;
+    PreviewFeatures features;
   };
   void run();
   std::shared_ptr<const EvalSnapshot> evaluate(Job& job, const CancelToken& cancel);
+  std::shared_ptr<const EvalSnapshot> evaluate_features(Job& job, const CancelToken& cancel);
+  // The preview of `meshes` into `snap` (`complete`: every preview port gave a value), else the last good one.
+  void finish_preview(EvalSnapshot& snap, const std::vector<const TaggedMesh*>& meshes, bool complete);
 
   ResultCache cache_;
   Evaluator evaluator_;

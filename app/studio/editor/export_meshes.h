@@ -9,7 +9,6 @@
 #include <filesystem>
 
 #include "app/studio/editor/eval_worker.h"
-#include "core/io/geojson.h"
 #include "graph/graph.h"
 #include "graph/status.h"
 #include "nodes/support/mesh_export.h"
@@ -17,12 +16,13 @@
 namespace procex::studio {
 
 // Writes the meshes `shown` (an evaluation of `graph` as it is now) holds at
-// the preview ports to `file`, in the format its extension names, atomically.
-// `feature`: the footprint the preview was given (a dropped GeoJSON's), whose
-// id and properties label the buildings; null for none. Returns how many
-// meshes were written, or why nothing was (no mesh evaluated, an unknown
-// extension, a CRS a GeoPackage cannot take, a file that cannot be written).
+// the preview ports to `file`, in the format its extension names, atomically:
+// with preview features (a footprint file given to the preview), every
+// feature's buildings, labelled with its id and properties as procex batch
+// labels them. Returns how many meshes were written, or why nothing was (no
+// mesh evaluated, an unknown extension, a CRS a GeoPackage cannot take, a
+// file that cannot be written).
 Result<std::size_t> export_meshes(const Graph& graph, const EvalSnapshot& shown, const std::filesystem::path& file,
-                                  const ExportOptions& options, const GeoJsonFeature* feature);
+                                  const ExportOptions& options);
 
 }  // namespace procex::studio

@@ -16,6 +16,7 @@ std::string usage() {
          "  --report-frames FILE        on exit, write frame and evaluation timings as JSON\n"
          "  --bench-edits N             benchmark: make N parameter edits, time each to the screen, exit\n"
          "  --select NODE               select this node id at start\n"
+         "  --footprints FILE           preview the recipe on every feature of this footprint file, as if dropped\n"
          "  --view YAW,PITCH            the 3D preview's direction in degrees (pitch below 0: from below)\n"
          "  --full-redraw               draw the whole window every frame, not only what changed\n"
          "  --ui-map FILE               keep a JSON map of the pins and widgets on screen (for input-driving tests)\n"
@@ -52,6 +53,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.select = static_cast<unsigned>(parse_int(value(), "--select"));
     } else if (a == "--ui-map") {
       o.ui_map = value();
+    } else if (a == "--footprints") {
+      o.footprints = value();
     } else if (a == "--report-frames") {
       o.frame_report = value();
     } else if (a == "--size") {

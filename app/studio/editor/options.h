@@ -3,7 +3,7 @@
 //   procex-studio [RECIPE.pxg | FILE.glb] [--screenshot OUT.png [--screenshot-info OUT.json]]
 //                 [--size WxH] [--timeout SECONDS] [--autosave SECONDS]
 //                 [--report-frames FILE] [--bench-edits N] [--ui-map FILE] [--select NODE]
-//                 [--view YAW,PITCH] [--full-redraw]
+//                 [--view YAW,PITCH] [--full-redraw] [--footprints FILE]
 #pragma once
 
 #include <array>
@@ -19,6 +19,7 @@ struct Options {
   std::filesystem::path screenshot;      // render once evaluated, save this PNG, exit
   std::filesystem::path screenshot_info; // with --screenshot: JSON about what the image shows
   std::filesystem::path frame_report;    // write per-frame timings here on exit (benchmarks)
+  std::filesystem::path footprints;      // a footprint file whose features the preview binds (as if dropped)
   std::filesystem::path ui_map;          // keep a JSON map of pins and widgets on screen here (input-driving tests)
   int width = 1280, height = 800;
   double timeout_s = 60.0;               // --screenshot: give up waiting for the evaluation

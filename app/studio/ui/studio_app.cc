@@ -16,14 +16,16 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "app/studio/editor/canvas_layout.h"
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
-#include "app/studio/editor/canvas_layout.h"
 #include "app/studio/editor/export_meshes.h"
 #include "app/studio/editor/glb_loader.h"
 #include "app/studio/editor/session_files.h"
@@ -36,6 +38,7 @@
 #include "app/studio/ui/recipe_panel.h"
 #include "app/studio/ui/screenshot.h"
 #include "app/studio/ui/shape_editor.h"
+#include "app/cli/feature_binding.h"
 #include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_write.h"
@@ -95,6 +98,10 @@ class App {
       doc_ = std::make_unique<Document>();
       if (interactive && find_recovery(home_, {})) recovery_ = fs::path();
     }
+    if (!options_.footprints.empty() && !bind_footprints(options_.footprints)) {
+      std::fprintf(stderr, "procex-studio: %s\n", status_.c_str());
+      load_failed_ = !interactive;  // a screenshot or benchmark of other buildings would mislead
+    }
     if (keep_layout_)
       if (std::string failed = layout_.load(); !failed.empty()) status_ = std::move(failed);
   }
@@ -130,8 +137,8 @@ class App {
       std::vector<PortRef> extra;
       if (const Node* n = doc_->scope().empty() ? doc_->graph().node(submitted_node_) : nullptr)
         for (std::uint32_t i = 0; i < n->decl().outputs().size(); ++i) extra.push_back({submitted_node_, i});
-      worker_.submit(submitted_, doc_->recipe(), extra, preview_bindings(doc_->recipe(), preview_footprint_),
-                     doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path());
+      worker_.submit(submitted_, doc_->recipe(), extra, preview_bindings(doc_->recipe(), preview_footprint()),
+                     doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path(), preview_features_);
     }
     // An edit of the recipe brings its preview back in place of a viewed .glb.
     if (viewed_ && viewed_->revision != doc_->revision()) close_glb();
@@ -159,9 +166,7 @@ class App {
   }
 
   // Files dropped onto the window: a .glb is viewed, a recipe opens (after
-  // asking about unsaved changes); any other file is read as footprints (core/io/footprint_read.h:
-  // GeoJSON, Shapefile, GeoPackage, FlatGeobuf, OSM), its first feature the
-  // preview's footprint.
+  // asking about unsaved changes); any other file is read as footprints (bind_footprints).
   void open_dropped(const fs::path& file) {
     if (file.extension() == ".glb") {
       view_glb(file);
@@ -171,19 +176,33 @@ class App {
       confirm_discard([this, file] { load(file, true); });
       return;
     }
+    if (!bind_footprints(file)) status_ += " (drop a recipe (.pxg) to open it, a .glb to view it, or a footprint file to preview its buildings)";
+  }
+
+  // A footprint file (core/io/footprint_read.h: GeoJSON, Shapefile,
+  // GeoPackage, FlatGeobuf, OSM) as the preview's input: every feature read,
+  // with the party and street edges procex batch finds when the recipe reads
+  // them, each bound to the recipe and shown where it stands. False, with the
+  // reason in the status bar, when no feature could be read.
+  bool bind_footprints(const fs::path& file) {
     try {
-      const GeoJsonCollection c = read_footprints(file);
+      GeoJsonCollection c = read_footprints(file);
       if (c.features.empty()) {
         status_ = file.string() + ": no feature could be read" + (c.errors.empty() ? "" : " (" + c.errors.front().message + ")");
-        return;
+        return false;
       }
-      preview_footprint_ = to_footprint(c.features.front(), 45.0);
-      preview_feature_ = c.features.front();
-      preview_footprint_source_ = file.string() + "#" + c.features.front().id;
-      submitted_ = 0;  // evaluate again with the new plan
-      status_ = "footprint input: feature " + c.features.front().id + " of " + file.string();
+      add_edge_labels(doc_->recipe(), c);
+      const std::size_t n = c.features.size();
+      preview_footprint_source_ = n == 1 ? file.string() + "#" + c.features.front().id : file.string() + " (" + std::to_string(n) + " features)";
+      preview_features_ = std::make_shared<const std::vector<GeoJsonFeature>>(std::move(c.features));
+      submitted_ = 0;  // evaluate again with the new plans
+      if (preview_) preview_->frame_next_mesh();  // the buildings stand elsewhere than the stand-in did
+      status_ = "footprint input: " + preview_footprint_source_ +
+                (c.errors.empty() ? "" : "; " + std::to_string(c.errors.size()) + " features not read (" + c.errors.front().message + ")");
+      return true;
     } catch (const std::exception& e) {
-      status_ = std::string(e.what()) + " (drop a recipe (.pxg) to open it, a .glb to view it, or a footprint file to preview its first feature)";
+      status_ = e.what();
+      return false;
     }
   }
 
@@ -284,7 +303,7 @@ class App {
       status_ = "the recipe is still evaluating: export when the preview is up to date";
       return;
     }
-    Result<std::size_t> written = studio::export_meshes(doc_->recipe(), *shown_, file, export_options_, preview_feature_ ? &*preview_feature_ : nullptr);
+    Result<std::size_t> written = studio::export_meshes(doc_->recipe(), *shown_, file, export_options_);
     status_ = written ? "exported " + std::to_string(*written) + (*written == 1 ? " mesh to " : " meshes to ") + file.string() : written.message();
   }
 
@@ -765,6 +784,9 @@ class App {
     j["canvas_min_text_px"] = canvas_.min_text_px();
     j["node_positions"] = nlohmann::json::object();
     for (const auto& [id, n] : doc_->graph().nodes()) j["node_positions"][std::to_string(id)] = {n.editor.x, n.editor.y};
+    j["node_rects"] = nlohmann::json::object();  // canvas units, the graph's input / output boxes too
+    for (const NodeBox& b : layout(doc_->graph()))
+      j["node_rects"][std::to_string(b.id)] = {b.rect.min.x, b.rect.min.y, b.rect.max.x - b.rect.min.x, b.rect.max.y - b.rect.min.y};
     j["pins"] = nlohmann::json::array();
     for (const auto& p : canvas_.pins_on_screen())
       j["pins"].push_back({{"node", p.port.node}, {"port", p.port.port}, {"output", p.is_output}, {"x", p.pos.x}, {"y", p.pos.y}});
@@ -784,9 +806,6 @@ class App {
     for (const auto& [to, from] : doc_->graph().links()) j["links"].push_back({from.node, from.port, to.node, to.port});
     j["params"] = nlohmann::json::object();
     for (const auto& [name, r] : inspector_.widgets()) j["params"][name] = r;
-    j["node_rects"] = nlohmann::json::object();  // canvas units, the graph's input / output boxes too
-    for (const NodeBox& b : layout(doc_->graph()))
-      j["node_rects"][std::to_string(b.id)] = {b.rect.min.x, b.rect.min.y, b.rect.max.x - b.rect.min.x, b.rect.max.y - b.rect.min.y};
     const PreviewMesh* shown_mesh = on_screen();
     j["preview_faces"] = shown_mesh ? shown_mesh->faces : 0;
     j["viewing"] = viewed_ ? viewed_->file.string() : "";
@@ -803,6 +822,7 @@ class App {
     j["errors"] = errors;
     j["status"] = status_;
     j["preview_footprint"] = preview_footprint_source_;
+    j["preview_features"] = shown_ ? shown_->features : 0;
     if (prompt_.kind != PathPrompt::Kind::kNone) j["prompt"] = {{"path", prompt_.path}, {"crs", export_options_.crs}, {"up_z", export_options_.up == UpAxis::Z}};
     std::string text = j.dump();
     if (text == ui_map_text_) return;
@@ -833,9 +853,8 @@ class App {
   RecentFiles recent_;
   std::unique_ptr<Document> doc_;
   EvalWorker worker_;
-  Footprint preview_footprint_ = preview_footprint();
-  std::string preview_footprint_source_;  // the dropped GeoJSON and feature, or empty for the stand-in
-  std::optional<GeoJsonFeature> preview_feature_;  // that feature: its id and properties label exported buildings
+  std::string preview_footprint_source_;  // the footprint file (and its feature when it has one), or empty for the stand-in
+  PreviewFeatures preview_features_;      // its features, bound to the recipe one by one; null: the stand-in
   ExportOptions export_options_;                   // kept between exports, as the format
   std::string export_extension_ = ".glb";
   std::shared_ptr<const EvalSnapshot> shown_;
@@ -916,20 +935,36 @@ class EditBench {
       ++done_;
     }
     if (waiting_ || done() || !app.settled()) return;
-    // The first float parameter with a range: each edit a new value, so nothing comes from the cache.
-    for (const auto& [id, n] : app.doc().graph().nodes()) {
-      for (std::size_t i = 0; i < n.params.size(); ++i) {
-        const ParamDecl& p = n.decl().params()[i];
-        if (!n.params[i].is<double>() || !p.min || !p.max) continue;
-        const double v = *p.min + (*p.max - *p.min) * (0.3 + 0.4 * (done_ + 1) / (edits_ + 1));
-        edit_time_ = Clock::now();
-        waiting_ = true;
-        if (Status s = app.doc().set_param(id, i, Value::make(v)); !s) std::fprintf(stderr, "procex-studio: bench edit refused: %s\n", s.message().c_str());
-        param_ = n.decl().type_name() + "." + p.name;
-        return;
-      }
+    // The first float parameter with a range, of the recipe's nodes or else inside its first group
+    // (entered as a person would: an edit there changes every instance). Each edit a new value, so
+    // nothing comes from the cache.
+    const auto ranged = [](const Graph& g) -> std::optional<std::pair<NodeId, std::size_t>> {
+      for (const auto& [id, n] : g.nodes())
+        for (std::size_t i = 0; i < n.params.size(); ++i)
+          if (const ParamDecl& p = n.decl().params()[i]; n.params[i].is<double>() && p.min && p.max) return std::pair(id, i);
+      return std::nullopt;
+    };
+    std::optional<std::pair<NodeId, std::size_t>> found = ranged(app.doc().graph());
+    if (!found && app.doc().scope().empty())
+      for (const auto& [id, n] : app.doc().graph().nodes())
+        if (!n.group.empty() && app.doc().enter_group(id)) {
+          found = ranged(app.doc().graph());
+          break;
+        }
+    if (!found) {
+      done_ = edits_;  // nothing to edit
+      return;
     }
-    done_ = edits_;  // nothing to edit
+    const auto [id, i] = *found;
+    const ParamDecl& p = app.doc().graph().node(id)->decl().params()[i];
+    const double v = *p.min + (*p.max - *p.min) * (0.3 + 0.4 * (done_ + 1) / (edits_ + 1));
+    edit_time_ = Clock::now();
+    waiting_ = true;
+    const std::vector<std::string> crumbs = app.doc().breadcrumb();
+    param_.clear();
+    for (std::size_t c = 1; c < crumbs.size(); ++c) param_ += crumbs[c] + " > ";  // the groups entered
+    param_ += app.doc().graph().node(id)->decl().type_name() + "." + p.name;
+    if (Status s = app.doc().set_param(id, i, Value::make(v)); !s) std::fprintf(stderr, "procex-studio: bench edit refused: %s\n", s.message().c_str());
   }
   nlohmann::json report() const { return {{"parameter", param_}, {"edit_to_screen_ms", latencies_}, {"evaluation_ms", evaluation_ms_}}; }
 
@@ -1055,6 +1090,7 @@ int run_studio(const Options& options) {
     }
     if (!options.frame_report.empty()) {
       nlohmann::json j = bench.report();
+      j["preview_features"] = app.shown() ? app.shown()->features : 0;  // buildings of a footprint file (--footprints)
       j["frame_ms"] = frame_ms;
       j["frame_ms_while_evaluating"] = busy_frame_ms;
       j["ui_build_ms"] = build_ms;

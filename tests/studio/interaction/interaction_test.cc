@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -429,8 +430,9 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   fs::remove_all(dir);
 }
 
-// Files dragged onto the window: a GeoJSON's first feature becomes the plan of
-// the recipe's footprint input; a recipe opens; anything else is explained.
+// Files dragged onto the window: each feature of a GeoJSON is bound to the
+// recipe's footprint input and its building shown where the feature stands; a
+// recipe opens; anything else is explained.
 TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   const fs::path dir = fresh_dir("drop");
   const fs::path recipe = dir / "block.pxg";
@@ -448,7 +450,13 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   {"type": "Feature", "id": "plot-7", "properties": {}, "geometry": {"type": "Polygon",
    "coordinates": [[[0, 0], [20, 0], [20, 8], [8, 8], [8, 16], [0, 16], [0, 0]]]}},
   {"type": "Feature", "id": "plot-8", "properties": {}, "geometry": {"type": "Polygon",
-   "coordinates": [[[0, 0], [5, 0], [5, 5], [0, 5], [0, 0]]]}}]})";
+   "coordinates": [[[30, 0], [35, 0], [35, 5], [30, 5], [30, 0]]]}}]})";
+  // Both buildings, each at its place: together they span 35 m by 16 m.
+  const auto both_in_place = [](const json& j) {
+    if (!j.contains("preview_bounds") || j["preview_features"] != 2) return false;
+    const json& b = j["preview_bounds"];
+    return std::abs(b[3].get<double>() - b[0].get<double>() - 35.0) < 1e-3 && std::abs(b[4].get<double>() - b[1].get<double>() - 16.0) < 1e-3;
+  };
   const fs::path other = copy_test_recipe("house.pxg", dir);
   std::ofstream(dir / "notes.txt") << "not a recipe\n";
   Studio studio(recipe, dir);
@@ -457,8 +465,8 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   EXPECT_EQ(map["preview_footprint"], "");
 
   drop_file(map, footprints);
-  map = studio.wait("the dropped plan evaluated", [&](const json& j) {
-    return j["settled"] && j["preview_footprint"].get<std::string>().ends_with("#plot-7") && j["preview_faces"] > rectangle;
+  map = studio.wait("the dropped plans evaluated", [&](const json& j) {
+    return j["settled"] && j["preview_footprint"] == footprints.string() + " (2 features)" && j["preview_faces"] > rectangle && both_in_place(j);
   });
   EXPECT_EQ(map["errors"], 0);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "the preview's plan is not an edit of the recipe";
@@ -468,7 +476,7 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   ASSERT_EQ(std::system(("ogr2ogr -a_srs EPSG:32632 " + shapefile.string() + " " + footprints.string()).c_str()), 0);
   drop_file(map, shapefile);
   map = studio.wait("the dropped Shapefile evaluated", [&](const json& j) {
-    return j["settled"] && j["preview_footprint"] == shapefile.string() + "#plot-7" && j["preview_faces"] > rectangle;
+    return j["settled"] && j["preview_footprint"] == shapefile.string() + " (2 features)" && both_in_place(j);
   });
   EXPECT_EQ(map["errors"], 0);
 
