@@ -15,5 +15,6 @@ shoot() {  # shoot NAME RECIPE [studio options...]
 shoot studio_house samples/house.pxg
 shoot studio_house_inspector samples/house.pxg --select 2
 shoot studio_city samples/city.pxg
+shoot studio_city_block samples/city.pxg --footprints samples/footprints/sample_block.geojson
 shoot studio_windows_grid samples/windows_grid.pxg
 shoot studio_bay_windows samples/bay_windows.pxg
