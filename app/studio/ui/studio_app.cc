@@ -100,7 +100,7 @@ class App {
     }
     if (!options_.footprints.empty() && !bind_footprints(options_.footprints)) {
       std::fprintf(stderr, "procex-studio: %s\n", status_.c_str());
-      load_failed_ = !interactive;  // a screenshot or benchmark of other buildings would mislead
+      if (!interactive) load_failed_ = true;  // a screenshot or benchmark of other buildings would mislead
     }
     if (keep_layout_)
       if (std::string failed = layout_.load(); !failed.empty()) status_ = std::move(failed);
