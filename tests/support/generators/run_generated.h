@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -17,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/sweep/sweep.h"
 #include "tests/support/generators/check_case.h"
 #include "tests/support/generators/shrink.h"
 #include "tests/support/sanitizers.h"
@@ -58,6 +60,7 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
     end = total * (part + 1) / parts;
   }
   std::size_t failed = 0;
+  const std::uint64_t retried_before = sweeps_retried();
   for (std::size_t seed = begin; seed < end; ++seed) {
     const GeneratedCase c = generate_case(cls, seed);
     const CaseResult r = check_case(c);
@@ -76,7 +79,8 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
       std::ofstream(std::string(dir) + "/" + class_name(cls) + "_" + std::to_string(seed) + ".geojson") << fixture;
   }
   std::cout << "class " << class_name(cls) << " seeds " << begin << ".." << end - 1 << ": " << end - begin
-            << " cases, " << failed << " failed\n";
+            << " cases, " << failed << " failed, " << sweeps_retried() - retried_before
+            << " sweeps closed after a retry at a looser clustering scale\n";
 }
 
 }  // namespace procex::testing

@@ -1,0 +1,26 @@
+// Class (a) of issue 12 item 2, exact grid and letter plans with one angle
+// (tests/support/generators/): every case of the budget must pass every
+// property check_case applies, and a failure is reported minimised, as a
+// fixture to keep in tests/data. The class runs in parts, so that ctest
+// spreads it over the cores. Classes (b) and (c) are in tests/soak.
+#include <cstddef>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/generators/run_generated.h"
+
+namespace procex::testing {
+namespace {
+
+constexpr std::size_t kParts = 8;
+
+class GeneratedGrid : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedGrid, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::Grid, GetParam(), kParts, {.normal = 2000, .soak = 100000, .shrink_tries = 400});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedGrid, ::testing::Range<std::size_t>(0, kParts));
+
+}  // namespace
+}  // namespace procex::testing
