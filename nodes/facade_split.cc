@@ -1,5 +1,7 @@
 // Facade split: the walls of every mesh divided into floors and bays, each
 // tile an anchor for Mesh Placement (core/placement/facade_split.h).
+#include <set>
+
 #include "core/placement/facade_split.h"
 #include "core/placement/placement_error.h"
 #include "graph/registry.h"
@@ -10,7 +12,7 @@ namespace {
 
 // Parameter and output handles, from the declaration.
 struct Handles {
-  std::size_t name, tag, floors, bays, z_from;
+  std::size_t mesh_in, edges_in, name, tag, which_edges, floors, bays, z_from;
   std::size_t mesh_out, tiles_out, dropped_out;
 };
 Handles h;
@@ -23,11 +25,16 @@ void declare(NodeDecl& d) {
         "height on every plane. Only tiles the faces cover wholly are kept: none above the roof line, across a "
         "set-back or past a corner; `dropped` counts the others. Sizes: `3` metres, `~3` flexible (the flexible "
         "cells stretch to fill the length), `_1` a gap that is no tile (a margin, a plinth), `{...}*` a group "
-        "repeated as often as it fits, `{...}*4` exactly four times.")
+        "repeated as often as it fits, `{...}*4` exactly four times. `which_edges` with the `edges` input splits only "
+        "the street fronts (listed) or every other wall (unlisted).")
       .category("Geometry");
-  d.input<MeshSet>("mesh").doc("buildings (Extrude)");
+  h.mesh_in = d.input<MeshSet>("mesh").doc("buildings (Extrude)").index();
+  h.edges_in = d.input<std::vector<std::int64_t>>("edges").optional()
+      .doc("footprint edge ids `which_edges` selects by (street_edges: the street fronts)").index();
   h.name = d.param<std::string>("name").default_value(std::string("tile")).doc("the tiles' name, for Mesh Placement").index();
   h.tag = d.param<std::string>("tag").default_value(std::string("wall")).doc("the faces to split (empty: every vertical face)").index();
+  h.which_edges = d.param_enum("which_edges", {"all", "listed", "unlisted"})
+      .doc("whose faces are split: every edge's, only the edges on the `edges` input, or every edge but those").index();
   h.floors = d.param<std::string>("floors").default_value(std::string("{3}*")).doc("floor heights, up from z_from").index();
   h.bays = d.param<std::string>("bays").default_value(std::string("_0.5 {~3}* _0.5")).doc("bay widths, across each face").index();
   h.z_from = d.param<double>("z_from").default_value(0.0).range(-1000, 10000).unit("m").doc("the height the first floor starts").index();
@@ -47,14 +54,20 @@ void evaluate(EvalContext& ctx) {
     return ctx.error(e.what());
   }
   const std::string& tag = ctx.param<std::string>(h.tag);
-  MeshSet out = ctx.input<MeshSet>(0);
+  const std::string& which = ctx.choice(h.which_edges);
+  std::set<std::int32_t> listed;
+  if (ctx.has_input(h.edges_in))
+    for (const std::int64_t id : ctx.input<std::vector<std::int64_t>>(h.edges_in)) listed.insert(static_cast<std::int32_t>(id));
+  MeshSet out = ctx.input<MeshSet>(h.mesh_in);
   std::int64_t tiles = 0, dropped = 0;
   for (TaggedMesh& part : out.parts) {
     ctx.throw_if_cancelled();
     if (!part.mesh) continue;
+    const auto edge_of = source_edge_property(*part.mesh);
     const auto wall = [&](Mesh::FaceHandle f) {
       const auto i = static_cast<std::size_t>(f.idx());
-      return tag.empty() || (i < part.face_tags.size() && part.tags[part.face_tags[i]] == tag);
+      if (!tag.empty() && !(i < part.face_tags.size() && part.tags[part.face_tags[i]] == tag)) return false;
+      return which == "all" || (listed.count(part.mesh->property(edge_of, f)) > 0) == (which == "listed");
     };
     try {
       FacadeTiles split = split_facades(*part.mesh, wall, spec);

@@ -51,7 +51,8 @@ void declare(NodeDecl& d) {
         "seen along the face's normal, is not wholly on the anchor's face (above the roof line, across a set-back, "
         "past a corner) are dropped and counted in `dropped`. A grid's z_to may be an expression of the recipe's "
         "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
-        "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot. The meshes "
+        "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot (a building without "
+        "such tiles gets none: a split keeps no tile where its walls are absent or too small). The meshes "
         "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. The mesh keeps its own "
         "texture coordinates and normals (`vt`, `vn`) and its `mtllib` materials (colour `Kd`, texture `map_Kd`, a PNG "
         "or JPEG image; library and image confined to the recipe's folder as the mesh is): .glb files embed the image, "
@@ -263,14 +264,16 @@ void evaluate(EvalContext& ctx) {
       return ctx.error(building + e.what());
     }
   }
-  if (!placed_any) {
+  // A split may keep no tile of its name on a building (no street front, walls too small), so in
+  // tiles mode other tiles do not make the name a misspelling: nothing is placed.
+  if (!placed_any && !(tiles && !names.empty())) {
     if (names.empty()) {
       ctx.warning("anchor '" + spec.anchor + "': the input carries no " + (tiles ? "facade tiles" : "resolved anchors") +
                   ", nothing is placed");
     } else {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
-      return ctx.error("anchor: no " + std::string(tiles ? "tiles" : "anchor") + " named '" + spec.anchor +
+      return ctx.error("anchor: no anchor named '" + spec.anchor +
                        "' on the input (there are " + list + ")");
     }
   }

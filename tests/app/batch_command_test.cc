@@ -65,6 +65,7 @@ TEST_F(Batch, CitySampleMatchesStoredSummary) {
     ASSERT_TRUE(got.contains(id));
     const json& g = got[id];
     EXPECT_EQ(w["faces_per_tag"], g["faces_per_tag"]);
+    EXPECT_EQ(w.value("placed", json::object()), g.value("placed", json::object()));  // windows and doors
     for (const char* end : {"min", "max"})
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(w["bounds"][end][k].get<double>(), g["bounds"][end][k].get<double>(), length);
     EXPECT_NEAR(w["volume"].get<double>(), g["volume"].get<double>(), rel * std::abs(w["volume"].get<double>()));
@@ -117,7 +118,7 @@ TEST_F(Batch, ShardsMergeIntoTheUnshardedBytes) {
 TEST_F(Batch, GlbCarriesBuildingIdsAndTags) {
   BatchCommandOptions o = options("city.glb");
   ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
-  const std::vector<GltfMeshData> meshes = read_glb(o.output);
+  const std::vector<GltfMeshData> meshes = read_glb_scene(o.output).meshes;
   ASSERT_EQ(meshes.size(), 18u);  // walls and roof of a building in one mesh
   EXPECT_EQ(meshes[0].building, "w49209546");
   EXPECT_EQ(meshes[0].feature, 0);
@@ -147,7 +148,7 @@ TEST_F(Batch, StreamedOutputsAreNotHeldForTheBudget) {
   BatchCommandOptions glb = options("city.glb");
   glb.max_faces = 10;
   ASSERT_EQ(run_batch(glb, out_, err_), 0) << err_.str();
-  EXPECT_EQ(read_glb(glb.output).size(), 18u);
+  EXPECT_EQ(read_glb_scene(glb.output).meshes.size(), 18u);
   BatchCommandOptions folder = options("per_building/");
   folder.max_faces = 10;
   folder.report = dir_ / "report.json";
@@ -186,7 +187,7 @@ TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
     o.footprints = footprints, o.jobs = 1;  // windows of 64
     o.report = dir_ / "streamed.json";
     ASSERT_LE(run_batch(o, out_, err_), 1) << err_.str();
-    ASSERT_EQ(read_glb(o.output).size(), footprints == kBlock ? 18u : 149u);
+    ASSERT_EQ(read_glb_scene(o.output).meshes.size(), footprints == kBlock ? 18u : 149u);
     GltfScene scene = read_glb_scene(o.output);  // its stamp read back with its members in key order: as written
     scene.extras["shard"] = to_json(read_shard_stamp(json::parse(scene.extras["shard"]), o.output, "")).dump();
     write_glb(dir_ / "memory.glb", scene);

@@ -38,11 +38,15 @@ inline nlohmann::ordered_json summary_json(const MeshSummary& s) {
   return j;
 }
 
-// Per building of a batch report: its faces per tag, bounds and volume.
+// Per building of a batch report: its faces per tag, bounds and volume, and
+// its placed meshes (instances per mesh name) where it has some.
 inline nlohmann::ordered_json city_buildings(const nlohmann::ordered_json& report) {
   nlohmann::ordered_json got = nlohmann::ordered_json::object();
-  for (const auto& b : report["buildings"])
-    got[b["id"].get<std::string>()] = {{"faces_per_tag", b["faces_per_tag"]}, {"bounds", b["bounds"]}, {"volume", b["volume"]}};
+  for (const auto& b : report["buildings"]) {
+    nlohmann::ordered_json one = {{"faces_per_tag", b["faces_per_tag"]}, {"bounds", b["bounds"]}, {"volume", b["volume"]}};
+    if (b.contains("placed") && !b["placed"].empty()) one["placed"] = b["placed"];
+    got[b["id"].get<std::string>()] = std::move(one);
+  }
   return got;
 }
 

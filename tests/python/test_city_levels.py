@@ -1,0 +1,91 @@
+"""samples/city.pxg over samples/footprints/terrace.geojson, checked on the
+geometry procex.batch returns: each house is as many floors high as its
+building:levels, every wall that is neither shared nor on a street has one
+row of windows per floor at the floor heights, and each street-facing wall a
+door on the ground floor, its sill at ground level, with windows above."""
+import collections
+import json
+
+import numpy as np
+import pytest
+
+import procex
+from conftest import SAMPLES
+
+TERRACE = SAMPLES / "footprints" / "terrace.geojson"
+FLOOR = 3.0  # city.pxg's floor height (Levels, Facade Split)
+
+# terrace.geojson: three 10 x 12 m houses in a row along a street to the south (edge 0 of
+# each); a lane behind the first (its edge 2); neighbours share edges 1 and 3.
+STREET = {"a": {0, 2}, "b": {0}, "c": {0}}
+PARTY = {"a": {1}, "b": {1, 3}, "c": {3}}
+
+
+def city():
+    return procex.Recipe.load(SAMPLES / "city.pxg")
+
+
+def terrace(levels):
+    collection = json.loads(TERRACE.read_text())
+    for f in collection["features"]:
+        if f["id"] in levels:
+            f["properties"]["building:levels"] = levels[f["id"]]
+    return collection
+
+
+def world_z(placement):
+    """Lowest and highest height of a placed mesh in the building's frame."""
+    v = placement.mesh.vertices
+    z = (np.c_[v, np.ones(len(v))] @ placement.matrix.T)[:, 2]
+    return z.min(), z.max()
+
+
+def placed_by_edge(building, name):
+    out = collections.defaultdict(list)
+    for p in building.meshes[0].placed:
+        if p.mesh.name == name:
+            out[p.source_edge].append(world_z(p))
+    return out
+
+
+def wall_top(building):
+    m = building.meshes[0]
+    wall = m.tags.index("wall")
+    idx = m.face_indices
+    tops = [m.vertices[idx[m.face_offsets[f]:m.face_offsets[f + 1]]][:, 2].max()
+            for f in range(m.n_faces) if m.face_tags[f] == wall]
+    return max(tops)
+
+
+def test_floors_windows_and_doors_follow_levels_and_streets():
+    levels = {"a": 2, "b": 3, "c": 5}
+    buildings = procex.batch(city(), terrace(levels))
+    assert [b.id for b in buildings] == ["a", "b", "c"]
+    for b in buildings:
+        assert b.status == "ok", b.reason
+        n = levels[b.id]
+        assert wall_top(b) == pytest.approx(n * FLOOR, abs=1e-9), b.id
+        windows, doors = placed_by_edge(b, "window"), placed_by_edge(b, "door")
+        assert set(doors) == STREET[b.id], b.id
+        assert not (set(windows) & PARTY[b.id]), b.id  # party walls stay blank
+        for edge in range(4):
+            if edge in PARTY[b.id]:
+                continue
+            rows = sorted({round(lo, 6) for lo, _ in windows[edge]})
+            floors = [int(z // FLOOR) for z in rows]
+            street = edge in STREET[b.id]
+            # One row per level, one per floor, each within its floor; a street wall's ground floor has the door.
+            assert floors == list(range(1 if street else 0, n)), (b.id, edge, rows)
+            assert all(hi < (int(lo // FLOOR) + 1) * FLOOR for lo, hi in windows[edge]), (b.id, edge)
+            assert len({round(z - f * FLOOR, 6) for z, f in zip(rows, floors)}) == 1  # the same sill on every floor
+            if street:
+                assert len(doors[edge]) == 1, (b.id, edge)  # one door, in the middle of the wall
+                lo, hi = doors[edge][0]
+                assert lo == pytest.approx(0.0, abs=1e-9) and hi == pytest.approx(2.1, abs=1e-9), (b.id, edge)
+
+
+def test_levels_from_height_else_the_type():
+    collection = terrace({})
+    collection["features"][0]["properties"]["height"] = "12.4"  # OSM heights are text: round(12.4 / 3) = 4 floors
+    buildings = procex.batch(city(), collection)
+    assert [wall_top(b) for b in buildings] == pytest.approx([4 * FLOOR, 2 * FLOOR, 2 * FLOOR])  # houses: 2
