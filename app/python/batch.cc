@@ -49,10 +49,11 @@ void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeatu
 }
 
 py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int jobs, py::handle progress,
-               py::handle attributes) {
+               py::handle attributes, py::handle streets) {
   const MeshRecipe r = recipe->with(attributes);
   if (const Status s = check_footprint_input(r.graph, recipe->file()); !s) raise(ErrorKind::Recipe, s.message());
   GeoJsonCollection collection = collection_from_python(footprints);
+  add_streets(collection, streets);
   add_edge_labels(r.graph, collection);
 
   std::vector<Building> buildings(collection.features.size() + collection.errors.size());
@@ -137,11 +138,14 @@ void bind_batch(py::module_& m) {
         return "<procex.Building " + b.id + " " + b.status + ", " + std::to_string(py::len(b.wrapped)) + " meshes>";
       });
   m.def("batch", &batch, py::arg("recipe"), py::arg("footprints"), py::arg("jobs") = 0,
-        py::arg("progress") = py::none(), py::arg("attributes") = py::none(),
+        py::arg("progress") = py::none(), py::arg("attributes") = py::none(), py::arg("streets") = py::none(),
         "Evaluates the recipe once per footprint, in parallel, as procex batch does: each feature is bound to the "
         "graph input footprint, its id to building_id, its properties to the parameters of the same name. "
         "footprints: a footprint file's path (GeoJSON, Shapefile, GeoPackage, FlatGeobuf or OSM, longitude/latitude projected "
-        "as procex batch projects it), a FeatureCollection dict, or a sequence of features or of loops. jobs: worker "
+        "as procex batch projects it), a FeatureCollection dict, or a sequence of features or of loops. streets: as "
+        "procex batch --streets, a second file whose LineStrings are streets (brought into the footprints' frame), or a "
+        "FeatureCollection dict of them in the footprints' coordinates; a recipe that reads street_edges gets each "
+        "feature's edges facing one, as it does from the footprint file's own lines. jobs: worker "
         "threads (0: one per core). progress(done, total) is called from this thread as buildings finish. The GIL "
         "is released while the buildings are evaluated; an exception in progress (or Ctrl+C) stops the rest. "
         "Returns one Building per footprint, in order: a building that fails does not stop the others.");

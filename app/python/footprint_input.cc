@@ -117,4 +117,25 @@ GeoJsonCollection collection_from_python(py::handle footprints) {
   return c;
 }
 
+void add_streets(GeoJsonCollection& c, py::handle streets) {
+  if (streets.is_none()) return;
+  GeoJsonCollection more;
+  if (is_path(streets)) {
+    FootprintReadOptions read;
+    read.target_crs = c.crs;
+    try {
+      more = read_footprints(std::string(py::str(py::module_::import("os").attr("fspath")(streets))), read);
+    } catch (const IoError& e) {
+      raise(ErrorKind::Footprint, e.what());
+    }
+  } else {
+    py::handle source = py::hasattr(streets, "__geo_interface__") ? streets.attr("__geo_interface__") : streets;
+    if (!py::isinstance<py::dict>(source))
+      raise(ErrorKind::Footprint, "streets must be a file's path or a FeatureCollection of LineStrings, not a " +
+                                      type_name(streets));
+    more = parse(json_text(source), "streets");
+  }
+  c.lines.insert(c.lines.end(), std::make_move_iterator(more.lines.begin()), std::make_move_iterator(more.lines.end()));
+}
+
 }  // namespace procex::python

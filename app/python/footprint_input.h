@@ -20,6 +20,12 @@ GeoJsonFeature feature_from_python(pybind11::handle footprint);
 // Features that cannot be read are in the result's errors (a batch reports them and goes on).
 GeoJsonCollection collection_from_python(pybind11::handle footprints);
 
+// Adds the street lines of `streets` to c.lines, as procex batch --streets
+// does: a file's path (any format read_footprints reads; its polygons are not
+// read), brought into c's frame, or a FeatureCollection dict in c's own
+// coordinates. None adds nothing.
+void add_streets(GeoJsonCollection& c, pybind11::handle streets);
+
 // Loops as a sequence of (n, 2) array-likes, in order.
 std::vector<std::vector<glm::dvec2>> loops_from_python(pybind11::handle loops);
 

@@ -2,7 +2,8 @@
 geometry procex.batch returns: each house is as many floors high as its
 building:levels, every wall that is neither shared nor on a street has one
 row of windows per floor at the floor heights, and each street-facing wall a
-door on the ground floor, its sill at ground level, with windows above."""
+door on the ground floor, its sill at ground level, with windows above;
+street lines come from the footprint file and from batch(streets=...)."""
 import collections
 import json
 
@@ -13,6 +14,7 @@ import procex
 from conftest import SAMPLES
 
 TERRACE = SAMPLES / "footprints" / "terrace.geojson"
+EAST_STREET = SAMPLES / "footprints" / "terrace_east_street.geojson"
 FLOOR = 3.0  # city.pxg's floor height (Levels, Facade Split)
 
 # terrace.geojson: three 10 x 12 m houses in a row along a street to the south (edge 0 of
@@ -89,3 +91,23 @@ def test_levels_from_height_else_the_type():
     collection["features"][0]["properties"]["height"] = "12.4"  # OSM heights are text: round(12.4 / 3) = 4 floors
     buildings = procex.batch(city(), collection)
     assert [wall_top(b) for b in buildings] == pytest.approx([4 * FLOOR, 2 * FLOOR, 2 * FLOOR])  # houses: 2
+
+
+def test_streets_file_adds_the_edges_facing_its_lines():
+    levels = {"a": 2, "b": 2, "c": 2}
+    alone = procex.batch(city(), terrace(levels))
+    assert set(placed_by_edge(alone[2], "door")) == {0}
+    # terrace_east_street.geojson: a street 12 m east of c faces its edge 1; one 25 m west of a is too far.
+    for streets in (EAST_STREET, str(EAST_STREET), json.loads(EAST_STREET.read_text())):
+        with_east = procex.batch(city(), terrace(levels), streets=streets)
+        assert [set(placed_by_edge(b, "door")) for b in with_east] == [{0, 2}, {0}, {0, 1}]
+    # The same as procex batch --streets gives for the file's path.
+    by_path = procex.batch(city(), TERRACE, streets=EAST_STREET)
+    assert [set(placed_by_edge(b, "door")) for b in by_path] == [{0, 2}, {0}, {0, 1}]
+
+
+def test_unreadable_streets_are_a_footprint_error(tmp_path):
+    with pytest.raises(procex.FootprintError, match="no_such_streets.geojson"):
+        procex.batch(city(), TERRACE, streets=tmp_path / "no_such_streets.geojson")
+    with pytest.raises(procex.FootprintError, match="streets must be"):
+        procex.batch(city(), TERRACE, streets=42)
