@@ -27,6 +27,7 @@
 #include "base/atomic_file_set.h"
 #include "base/read_file.h"
 #include "base/spool_file.h"
+#include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_crs.h"
 #include "core/io/gltf_write.h"
@@ -53,9 +54,22 @@ struct Building {
 };
 
 // What identifies a run's inputs in its report, so that merge can tell the
-// shards of one run from those of another.
-std::string file_hash(const std::filesystem::path& path) {
-  return Hasher().str(read_file(path, kMaxDataFileBytes)).result().hex();
+// shards of one run from those of another: the bytes of `files`, and which
+// of them are there. The footprints are every file read with them
+// (footprint_files): a Shapefile's heights are in its .dbf, its CRS in its
+// .prj, its text encoding in its .cpg, and the .shp alone says none of it.
+std::string file_hash(const std::vector<std::filesystem::path>& files) {
+  Hasher h;
+  for (const std::filesystem::path& f : files) {
+    std::error_code error;
+    if (!std::filesystem::exists(f, error)) {
+      h.u64(0);
+      continue;
+    }
+    const std::string bytes = read_file(f, kMaxDataFileBytes);
+    h.u64(bytes.size() + 1).str(bytes);
+  }
+  return h.result().hex();
 }
 
 // Per-building file names: the id with characters other than [A-Za-z0-9._-]
@@ -331,7 +345,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     // final numbers once the meshes are.
     AtomicFileSet report_file;
     if (!options.report.empty() || one_glb)
-      stamp.recipe = file_hash(options.recipe), stamp.footprints = file_hash(options.footprints);
+      stamp.recipe = file_hash({options.recipe}), stamp.footprints = file_hash(footprint_files(options.footprints));
     if (!options.report.empty()) report_file.add(options.report, report(start));
     if (one_glb) {
       GltfScene head;

@@ -211,6 +211,26 @@ TEST_F(GisInput, TheGlbCrsRefusesDegreesAndSurvivesMerge) {
   EXPECT_FALSE(fs::exists(dir_ / "mixed.glb"));
 }
 
+// A Shapefile is several files: shards made while a sidecar changed (here
+// its .cpg, the encoding its .dbf's text is read in) are no one run, though
+// the .shp is the same.
+TEST_F(GisInput, ShardsOfAShapefileWhoseSidecarChangedAreNoOneRun) {
+  const fs::path shp = lon_lat("block.shp");
+  ASSERT_EQ(batch(shp, "", "part0", "", ".glb", 0, 2), 0) << err_.str();
+  ASSERT_EQ(batch(shp, "", "part1", "", ".glb", 1, 2), 0) << err_.str();
+  MergeCommandOptions merge;
+  merge.parts = {dir_ / "part0.glb", dir_ / "part1.glb"};
+  merge.output = dir_ / "merged.glb";
+  ASSERT_EQ(run_merge(merge, out_, err_), 0) << err_.str();  // one run: they merge
+  std::ofstream(dir_ / "block.cpg") << "ISO-8859-1";
+  ASSERT_EQ(batch(shp, "", "edited1", "", ".glb", 1, 2), 0) << err_.str();
+  merge.parts = {dir_ / "part0.glb", dir_ / "edited1.glb"};
+  merge.output = dir_ / "mixed.glb";
+  EXPECT_EQ(run_merge(merge, out_, err_), 2);
+  EXPECT_NE(err_.str().find("another recipe or footprint file"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(merge.output));
+}
+
 TEST_F(GisInput, LonLatThatDeclaresNoCrsIsRefusedNotTakenAsMetres) {
   const fs::path lonlat = lon_lat("block_lonlat.geojson");
   EXPECT_EQ(batch(lonlat, "", "refused"), 2);
