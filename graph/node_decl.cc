@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/file_version.h"
 #include "graph/hash.h"
 
 namespace procex {
@@ -223,9 +224,8 @@ std::string NodeDecl::markdown() const {
 }
 
 void hash_file_stamp(const std::filesystem::path& file, Hasher& h) {
-  std::error_code ec;
-  h.u64(std::filesystem::file_size(file, ec));
-  h.i64(std::filesystem::last_write_time(file, ec).time_since_epoch().count());
+  const FileVersion v = file_version(file);
+  h.u64(v.size).i64(v.time).u64(v.content);
 }
 
 }  // namespace procex

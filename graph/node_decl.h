@@ -118,8 +118,9 @@ using UpgradeFn = void (*)(int saved_version, nlohmann::json& params);
 // EvalOptions::folder). Must be cheap: it runs whenever the graph is hashed.
 using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h);
 
-// What a HashExtraFn usually adds for a file it reads: its size and
-// modification time (a missing file hashes as such, and reading it fails later).
+// What a HashExtraFn usually adds for a file it reads: its version
+// (base/file_version.h: size, modification time and a hash of its bytes; a
+// missing file hashes as such, and reading it fails later).
 void hash_file_stamp(const std::filesystem::path& file, Hasher& h);
 
 // Levels of detail, counted as CityGML counts them: 0 the footprint, 1 a

@@ -7,8 +7,8 @@
 #include <mutex>
 #include <optional>
 #include <set>
-#include <tuple>
 
+#include "base/file_version.h"
 #include "core/geom/error.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
@@ -18,6 +18,7 @@
 #include "core/placement/frame_transform.h"
 #include "core/placement/place_mesh.h"
 #include "core/placement/placement_error.h"
+#include "graph/hash.h"
 #include "graph/registry.h"
 #include "nodes/values.h"
 
@@ -35,9 +36,35 @@ struct Params {
 };
 Params par;
 
-// An edited mesh file is read again.
+// The files `file` names, by what `names` finds in it, read once per version
+// of the file (base/file_version.h): the graph is hashed for every building
+// of a batch.
+std::vector<fs::path> named_in(const fs::path& file, std::vector<fs::path> (*names)(const fs::path&)) {
+  using Key = std::pair<std::string, FileVersion>;
+  static std::mutex mutex;
+  static std::map<Key, std::vector<fs::path>> cache;
+  const Key key{fs::absolute(file).string(), file_version(file)};
+  std::lock_guard lock(mutex);
+  if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  if (cache.size() >= 256) cache.clear();  // edited files leave old versions behind
+  return cache.emplace(key, names(file)).first->second;
+}
+
+// The version of the mesh file and of every file it is read with (its
+// material libraries, their textures): an edit to any of them reads the mesh
+// again and makes a new key.
+Hash128 mesh_files_stamp(const fs::path& obj) {
+  Hasher h;
+  hash_file_stamp(obj, h);
+  for (const fs::path& library : named_in(obj, obj_material_libraries)) {
+    hash_file_stamp(library, h);
+    for (const fs::path& texture : named_in(library, material_library_textures)) hash_file_stamp(texture, h);
+  }
+  return h.result();
+}
+
 void hash_file(const std::vector<Value>& params, const fs::path& folder, Hasher& h) {
-  hash_file_stamp(folder / params[par.file].get<std::string>(), h);
+  h.hash(mesh_files_stamp(folder / params[par.file].get<std::string>()));
 }
 
 void declare(NodeDecl& d) {
@@ -107,8 +134,9 @@ void declare(NodeDecl& d) {
   d.hash_extra(hash_file);
 }
 
-// A mesh file is read once per version (path, size, time) and shared by every
-// building that places it: a batch puts the same window on thousands.
+// A mesh file is read once per version (of it and the files it names:
+// mesh_files_stamp) and shared by every building that places it: a batch puts
+// the same window on thousands.
 struct SharedMesh {
   std::shared_ptr<const Mesh> mesh;
   std::vector<std::string> warnings;
@@ -117,18 +145,16 @@ struct SharedMesh {
 // Files the OBJ names (its material library, textures) are confined as the
 // recipe's own.
 SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve) {
-  std::error_code size_error, time_error;
-  const auto size = fs::file_size(path, size_error);
-  const auto time = fs::last_write_time(path, time_error);
-  if (size_error || time_error) {  // read_mesh_file says what is wrong
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {  // read_mesh_file says what is wrong
     SharedMesh m;
     m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve));
     return m;
   }
-  using Key = std::tuple<std::string, std::uintmax_t, fs::file_time_type::rep>;
+  using Key = std::pair<std::string, Hash128>;
   static std::mutex mutex;
   static std::map<Key, SharedMesh> cache;
-  const Key key{fs::absolute(path).string(), size, time.time_since_epoch().count()};
+  const Key key{fs::absolute(path).string(), mesh_files_stamp(path)};
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   SharedMesh m;

@@ -204,6 +204,29 @@ void restore_precision(Mesh& mesh, const std::vector<Mesh::Point>& exact) {
   }
 }
 
+// The names the file's `keyword` statements give (their words, or the rest of
+// the line), joined to its folder; none if it is no regular file or cannot be read.
+std::vector<Path> named_files(const Path& path, std::string_view keyword, bool words_are_names) {
+  std::vector<Path> out;
+  try {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return out;
+    const std::string text = read_file(path, kMaxDataFileBytes);
+    for_each_statement(text, [&](std::size_t, std::string_view, std::string_view content,
+                                 const std::vector<std::string_view>& words) {
+      if (words[0] != keyword) return;
+      if (words_are_names) {
+        for (std::size_t k = 1; k < words.size(); ++k) out.push_back(path.parent_path() / std::string(words[k]));
+      } else if (const std::string name = rest_of_line(content, words); !name.empty()) {
+        out.push_back(path.parent_path() / name);
+      }
+    });
+  } catch (const std::exception&) {
+    // Reading the file for the mesh says what is wrong.
+  }
+  return out;
+}
+
 // A material library (MTL): per 'newmtl' its 'Kd' colour and 'map_Kd'
 // texture, the texture resolved against the library's folder. Other
 // statements (Ka, Ks, Ns, d, illum, other maps) are left out: glTF's base
@@ -332,5 +355,9 @@ Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::st
   if (!materials.empty()) set_mesh_materials(mesh, std::move(materials));
   return mesh;
 }
+
+std::vector<Path> obj_material_libraries(const Path& obj) { return named_files(obj, "mtllib", true); }
+
+std::vector<Path> material_library_textures(const Path& library) { return named_files(library, "map_Kd", false); }
 
 }  // namespace procex

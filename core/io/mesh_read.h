@@ -50,4 +50,13 @@ Mesh read_mesh_file(const std::filesystem::path& path, std::vector<std::string>*
 Mesh parse_obj_mesh(std::string_view text, const std::filesystem::path& path,
                     std::vector<std::string>* warnings = nullptr, const ReferencedFileResolver& resolve = {});
 
+// The files an OBJ names: its material libraries ('mtllib'), and the
+// textures a library names ('map_Kd'), each joined to the naming file's
+// folder as read_mesh_file joins them before `resolve` confines them. What a
+// cache key stamps beside the OBJ, so an edited library or texture is read
+// again. Never throws: a file that is not there, no regular file or
+// unreadable names nothing (reading it says why).
+std::vector<std::filesystem::path> obj_material_libraries(const std::filesystem::path& obj);
+std::vector<std::filesystem::path> material_library_textures(const std::filesystem::path& library);
+
 }  // namespace procex

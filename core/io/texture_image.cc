@@ -2,8 +2,9 @@
 
 #include <map>
 #include <mutex>
-#include <tuple>
+#include <utility>
 
+#include "base/file_version.h"
 #include "base/read_file.h"
 #include "core/io/io_error.h"
 
@@ -25,14 +26,12 @@ std::string read_texture_image(const std::filesystem::path& path) {
 }
 
 std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path) {
-  std::error_code size_error, time_error;
-  const auto size = std::filesystem::file_size(path, size_error);
-  const auto time = std::filesystem::last_write_time(path, time_error);
-  if (size_error || time_error) return std::make_shared<const std::string>(read_texture_image(path));  // it says why
-  using Key = std::tuple<std::string, std::uintmax_t, std::filesystem::file_time_type::rep>;
+  const FileVersion version = file_version(path);
+  if (version.content == 0) return std::make_shared<const std::string>(read_texture_image(path));  // it says why
+  using Key = std::pair<std::string, FileVersion>;
   static std::mutex mutex;
   static std::map<Key, std::shared_ptr<const std::string>> cache;
-  const Key key{path.string(), size, time.time_since_epoch().count()};
+  const Key key{path.string(), version};
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   auto bytes = std::make_shared<const std::string>(read_texture_image(path));

@@ -19,8 +19,8 @@ std::string_view image_mime_type(std::string_view bytes);
 // The image's bytes. Throws IoError naming the file if it cannot be read, is
 // larger than kMaxTextureBytes or is not a PNG or JPEG image.
 std::string read_texture_image(const std::filesystem::path& path);
-// The same, read once per version of the file (path, size, modification
-// time) and shared: a batch's every building shows the same roof texture, and
+// The same, read once per version of the file (base/file_version.h) and
+// shared: a batch's every building shows the same roof texture, and
 // the glTF writer then finds it embedded already by its address.
 // Thread-safe.
 std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path);

@@ -1,6 +1,7 @@
 // The Material node: a tag's faces take a PBR look on the buildings and on
 // the placed meshes that carry the tag, its texture confined to the recipe's
 // folder like every file a recipe names, and an edited texture read again.
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -160,6 +161,59 @@ TEST_F(MaterialNode, TwoLooksUnderOneNameAreTwoObjMaterials) {
   EXPECT_NE(mtl.find("newmtl frame_2\nKd 0 0 1\n"), std::string::npos) << mtl;
   EXPECT_LT(obj.find("usemtl frame\n"), obj.find("o b\n"));
   EXPECT_GT(obj.find("usemtl frame_2\n"), obj.find("o b\n"));
+}
+
+// A placed mesh's material library and the texture it names are read again
+// when edited, though the OBJ is not: the evaluation that follows (one cache,
+// as the studio keeps) shows the library's new colour, and the .glb written
+// from it embeds the new image. Each edit keeps the file's size.
+TEST_F(MaterialNode, AnEditedLibraryOrItsTextureIsReadAgain) {
+  fs::copy(kSamples / "meshes", dir_ / "meshes", fs::copy_options::recursive);
+  std::ifstream in(kSamples / "windows_grid.pxg");
+  std::string recipe((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string window = "\"file\": \"meshes/window_frame.obj\"";
+  ASSERT_NE(recipe.find(window), std::string::npos);
+  recipe.replace(recipe.find(window), window.size(), "\"file\": \"meshes/door_textured.obj\"");
+  std::ofstream(dir_ / "doors.pxg") << recipe;
+  const Graph g = load_pxg(dir_ / "doors.pxg");
+  ResultCache cache(64 << 20);
+  Evaluator ev(cache, "material test");
+  EvalOptions options;
+  options.folder = dir_;
+  // The door's look of `tag` after an evaluation, and the .glb written from it.
+  const auto door = [&](const std::string& tag) {
+    const EvalResult r = ev.evaluate(g, {}, {"mesh"}, options);
+    const MeshSet& set = mesh_of(r);
+    write_mesh_set(dir_ / "doors.glb", set);
+    for (const PlaceableMesh& m : set.parts.at(0).placed.meshes)
+      if (const auto it = mesh_materials(*m.mesh).find(tag); it != mesh_materials(*m.mesh).end()) return it->second;
+    ADD_FAILURE() << "no placed mesh has a material " << tag;
+    return Material{};
+  };
+  const auto key = [&] { return ev.hash_outputs(g, {}, {"mesh"}, options).outputs.at(0).hash; };
+  const Hash128 first = key();
+  EXPECT_EQ(door("door_frame").colour, (std::array{0.2, 0.25, 0.3}));
+  EXPECT_EQ(key(), first);
+  const std::string planks = test::read_text(dir_ / "meshes" / "door_planks.png");
+  EXPECT_NE(test::read_text(dir_ / "doors.glb").find(planks), std::string::npos);
+
+  const fs::path library = dir_ / "meshes" / "door_textured.mtl";
+  std::string text = test::read_text(library);
+  ASSERT_NE(text.find("Kd 0.2 0.25 0.3"), std::string::npos);
+  text.replace(text.find("Kd 0.2 0.25 0.3"), 15, "Kd 0.7 0.25 0.3");
+  std::ofstream(library) << text;
+  const Hash128 second = key();
+  EXPECT_NE(second, first);
+  EXPECT_EQ(door("door_frame").colour, (std::array{0.7, 0.25, 0.3}));
+
+  std::string edited = planks;
+  edited[edited.size() - 20] ^= 0x55;  // a byte of the last chunk, the PNG signature kept
+  std::ofstream(dir_ / "meshes" / "door_planks.png", std::ios::binary) << edited;
+  EXPECT_NE(key(), second);
+  door("door");
+  const std::string glb = test::read_text(dir_ / "doors.glb");
+  EXPECT_NE(glb.find(edited), std::string::npos);
+  EXPECT_EQ(glb.find(planks), std::string::npos);
 }
 
 }  // namespace
