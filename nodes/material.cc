@@ -39,7 +39,9 @@ void declare(NodeDecl& d) {
         "(glTF's metallic-roughness model). procex's texture coordinates are metres on the face, so the texture "
         "repeats every `tile_size` metres on every building alike (a placed mesh's own coordinates repeat every "
         "`tile_size` units). The faces may be a building's (wall, roof, soffit, ...) or a placed mesh's (its "
-        "`usemtl` names, else its name); a placed mesh's own material of that name is replaced. .glb files get "
+        "`usemtl` names, else its name); a placed mesh's own material of that name is replaced. Meshes a Mesh "
+        "Placement gave a `tag` keep their own materials under it, unless a Material names that tag: then all their "
+        "faces take it. .glb files get "
         "the material (pbrMetallicRoughness, the image embedded once, KHR_texture_transform for the tile size), "
         "OBJ's .mtl gets Kd, Pr, Pm and map_Kd -s; the studio's preview and Blender show it. Chain one node per "
         "tag; a later node's material for a tag replaces an earlier one's.")
@@ -78,6 +80,31 @@ bool carries_tag(const PlaceableMesh& placed, const std::string& tag) {
   return false;
 }
 
+// A copy of `mesh` whose every face is tagged `tag` with `material`: what an
+// instance tagged `tag` shows once a Material names its tag (its faces are
+// the tag's, core/placement flatten, and .glb prototypes carry their faces'
+// own tags).
+std::shared_ptr<const Mesh> all_in_material(const Mesh& mesh, const std::string& tag, const Material& material) {
+  auto out = std::make_shared<Mesh>(mesh);
+  add_face_properties(*out);
+  const auto tags = face_tag_property(*out);
+  for (const auto f : out->faces()) out->property(tags, f) = tag;
+  set_mesh_materials(*out, {{tag, material}});
+  return out;
+}
+
+// Drops the meshes no instance places any more, renumbering the instances.
+void drop_unplaced(PlacementResult& placed) {
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> index(placed.meshes.size(), kNone);
+  std::vector<PlaceableMesh> kept;
+  for (Instance& in : placed.instances) {
+    if (index[in.mesh] == kNone) index[in.mesh] = kept.size(), kept.push_back(placed.meshes[in.mesh]);
+    in.mesh = index[in.mesh];
+  }
+  placed.meshes = std::move(kept);
+}
+
 void evaluate(EvalContext& ctx) {
   const std::string& tag = ctx.param<std::string>(par.tag);
   if (tag.empty()) return ctx.error("tag: no tag given (the tag of the faces that take the material, e.g. wall or roof)");
@@ -101,6 +128,7 @@ void evaluate(EvalContext& ctx) {
   MeshSet out = ctx.input<MeshSet>(0);
   // Each placed mesh copied once, so its instances stay instances of one mesh.
   std::map<const Mesh*, std::shared_ptr<const Mesh>> placed_copies;
+  std::map<const Mesh*, std::shared_ptr<const Mesh>> tagged_copies;  // of meshes placed with the tag
   bool found = false;
   for (TaggedMesh& part : out.parts) {
     ctx.throw_if_cancelled();
@@ -116,6 +144,16 @@ void evaluate(EvalContext& ctx) {
         found = true;
       }
     }
+    bool retagged = false;
+    for (Instance& in : part.placed.instances) {
+      if (in.tag != tag) continue;
+      const PlaceableMesh placed = part.placed.meshes[in.mesh];
+      std::shared_ptr<const Mesh>& copy = tagged_copies[placed.mesh.get()];
+      if (!copy) copy = all_in_material(*placed.mesh, tag, material);
+      in.mesh = part.placed.add_mesh({placed.name, copy});
+      retagged = found = true;
+    }
+    if (retagged) drop_unplaced(part.placed);
   }
   if (!found) ctx.warning("tag: no face is tagged '" + tag + "', so nothing takes the material");
   ctx.set_output(0, std::move(out));

@@ -1,7 +1,8 @@
 # Imports mesh files into Blender (headless) as an artist would, with the
 # importers' default settings, and writes what Blender made of each as JSON:
 # per mesh object its name, world bounds (Blender's Z up), UV maps, material
-# names, and the highest point of the faces of each material.
+# names and looks (base colour, image), and the highest point of the faces
+# of each material.
 #
 #   blender -b --factory-startup --python tools/blender_import.py -- OUT.json FILE.glb FILE.obj ...
 import json
@@ -20,6 +21,21 @@ if not hasattr(numpy, 'bool'):
 
 def clear_scene():
     bpy.ops.wm.read_factory_settings(use_empty=True)
+
+
+def look(material):
+    """A material's base colour (where no texture feeds it) and the file name
+    of the image texture it shows (None if none)."""
+    colour, image = None, None
+    if material.use_nodes:
+        for node in material.node_tree.nodes:
+            if node.type == 'TEX_IMAGE' and node.image:
+                image = bpy.path.basename(node.image.filepath)
+            if node.type == 'BSDF_PRINCIPLED' and not node.inputs['Base Color'].is_linked:
+                colour = list(node.inputs['Base Color'].default_value)[:3]
+    else:
+        colour = list(material.diffuse_color)[:3]
+    return {'colour': colour, 'image': image}
 
 
 def describe():
@@ -41,6 +57,7 @@ def describe():
             'max': [max(c[k] for c in corners) for k in range(3)],
             'uv_maps': [uv.name for uv in mesh.uv_layers],
             'materials': [s.material.name for s in o.material_slots if s.material],
+            'looks': {s.material.name: look(s.material) for s in o.material_slots if s.material},
             'top_by_material': top_by_material,
             'faces': len(mesh.polygons),
         })

@@ -1,6 +1,7 @@
 // Loads one .glb with three.js's GLTFLoader (as a browser would) and prints
 // what it found as JSON: the scene's top nodes (name, position, extras), and
-// one entry per primitive with its node's building id, its tag (extras),
+// one entry per primitive with its node's building id, its tag (extras), its
+// instance's tag if placed with one,
 // material (its name, base colour, roughness, metalness, whether it shows a
 // texture and the texture's repeat), triangle
 // count, whether it has normals and texture coordinates,
@@ -32,6 +33,9 @@ new GLTFLoader().parse(data, '', (gltf) => {
       name: o.name,
       building: o.userData.building ?? o.parent?.userData?.building,
       tag: o.geometry.userData.tag,
+      // A placed mesh's instance tag (its node's extras; a node of several
+      // primitives is the parent of their meshes).
+      node_tag: o.userData.tag ?? o.parent?.userData?.tag ?? null,
       material: o.material.name,
       triangles: o.geometry.index ? o.geometry.index.count / 3 : 0,
       vertices: o.geometry.attributes.position.count,

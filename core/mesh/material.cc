@@ -37,6 +37,22 @@ void set_mesh_materials(Mesh& mesh, Materials materials) {
   mesh.property(h) = std::move(materials);
 }
 
+FaceMaterials::FaceMaterials(const Mesh& mesh)
+    : mesh_(mesh), materials_(mesh_materials(mesh)), own_(find<OpenMesh::FPropHandleT<std::string>>(mesh, kFaceMaterialProperty)) {}
+
+const Material* FaceMaterials::of(Mesh::FaceHandle f, const std::string& tag) const {
+  if (materials_.empty()) return nullptr;
+  const std::string& key = own_.is_valid() && !mesh_.property(own_, f).empty() ? mesh_.property(own_, f) : tag;
+  const auto it = materials_.find(key);
+  return it == materials_.end() ? nullptr : &it->second;
+}
+
+OpenMesh::FPropHandleT<std::string> add_face_materials(Mesh& mesh) {
+  auto h = find<OpenMesh::FPropHandleT<std::string>>(mesh, kFaceMaterialProperty);
+  if (!h.is_valid()) mesh.add_property(h, kFaceMaterialProperty);
+  return h;
+}
+
 OpenMesh::HPropHandleT<OpenMesh::Vec2d> corner_uv_property(const Mesh& mesh) {
   return find<OpenMesh::HPropHandleT<OpenMesh::Vec2d>>(mesh, kCornerUvProperty);
 }

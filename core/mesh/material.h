@@ -47,10 +47,31 @@ inline constexpr const char* kMaterialsProperty = "procex:materials";        // 
 inline constexpr const char* kCornerUvProperty = "procex:corner_uv";          // OpenMesh::Vec2d (halfedge)
 inline constexpr const char* kCornerNormalProperty = "procex:corner_normal";  // OpenMesh::Vec3d (halfedge)
 
+// A face whose material is not its tag's names it here: a placed mesh's own
+// material on a face its placement tagged otherwise (core/placement
+// flatten). "" or no property: its tag's.
+inline constexpr const char* kFaceMaterialProperty = "procex:material";  // std::string (face)
+
 // The mesh's materials; empty if it has none.
 const Materials& mesh_materials(const Mesh& mesh);
 // Sets them (the property is added if missing).
 void set_mesh_materials(Mesh& mesh, Materials materials);
+
+// Each face's material: mesh_materials(mesh) at the face's
+// kFaceMaterialProperty, else at its tag; null if there is none. Looks the
+// properties up once, for a walk over the faces.
+class FaceMaterials {
+ public:
+  explicit FaceMaterials(const Mesh& mesh);
+  const Material* of(Mesh::FaceHandle f, const std::string& tag) const;
+
+ private:
+  const Mesh& mesh_;
+  const Materials& materials_;
+  OpenMesh::FPropHandleT<std::string> own_;
+};
+// The property, added (every face "") if missing.
+OpenMesh::FPropHandleT<std::string> add_face_materials(Mesh& mesh);
 
 // The corner properties, invalid if the mesh has none. A face without its
 // own texture coordinates (or normals) holds NaN at its corners.

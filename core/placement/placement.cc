@@ -132,6 +132,7 @@ Mesh flatten(const PlacementResult& result) {
   const auto edge_prop = source_edge_property(out);
   const auto kind_prop = face_kind_property(out);
   const CornerAttributes corners = prepare_corner_attributes(out, result);
+  OpenMesh::FPropHandleT<std::string> material_prop;  // added with the first face that needs it
 
   std::vector<Mesh::VertexHandle> handles, face;
   for (std::size_t i = 0; i < result.instances.size(); ++i) {
@@ -157,7 +158,14 @@ Mesh flatten(const PlacementResult& result) {
         throw MeshError("instance " + std::to_string(i) + " (" + placed.name + "): OpenMesh refused its face " +
                         std::to_string(f.idx()));
       const std::string* own = own_tags.is_valid() ? &mesh.property(own_tags, f) : nullptr;
-      out.property(tag_prop, g) = !in.tag.empty() ? in.tag : own && !own->empty() ? *own : placed.name;
+      const std::string& own_tag = own && !own->empty() ? *own : placed.name;
+      out.property(tag_prop, g) = !in.tag.empty() ? in.tag : own_tag;
+      // Tagged otherwise, the face keeps its own material (a Material naming
+      // the instance's tag made its mesh's faces that tag's: nodes/material.cc).
+      if (!in.tag.empty() && own_tag != in.tag && mesh_materials(mesh).count(own_tag)) {
+        if (!material_prop.is_valid()) material_prop = add_face_materials(out);
+        out.property(material_prop, g) = own_tag;
+      }
       out.property(edge_prop, g) = in.source_edge;
       out.property(kind_prop, g) = FaceKind::Side;
       out.property(instance_prop, g) = static_cast<int>(i);

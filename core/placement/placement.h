@@ -68,7 +68,8 @@ double linear_determinant(const glm::dmat4& transform);
 // Everything in one mesh: the building's faces as they are, then each
 // instance's vertices transformed and its faces added, in order. An instance
 // face's tag is the instance's tag if set, else the face's own tag, else the
-// mesh's name; its source edge is the instance's, its kind Side, and
+// mesh's name; a face tagged by its instance keeps the material of its own
+// tag (or name) where its mesh has one (kFaceMaterialProperty); its source edge is the instance's, its kind Side, and
 // kInstanceProperty gives the instance. A mirroring transform (negative
 // determinant) reverses every face of its instance, so outward faces stay
 // outward and a closed 2-manifold part stays one. The placed meshes' own

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <numeric>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -45,10 +46,10 @@ void append_triple(std::string& out, const char* key, const glm::dvec3& p) {
   out += '\n';
 }
 
-// The look of a tag's faces in a mesh: its own material (a placed mesh's
-// library, a Material node's), else the tag's colour.
-Material look_of(const Mesh& mesh, const std::string& tag) {
-  if (const auto own = mesh_materials(mesh).find(tag); own != mesh_materials(mesh).end()) return own->second;
+// The look of faces tagged `tag` with material `own` (FaceMaterials: a
+// placed mesh's library, a Material node's), else the tag's colour.
+Material look_of(const Material* own, const std::string& tag) {
+  if (own) return *own;
   Material m;
   m.colour = tag_colour(tag);
   return m;
@@ -91,12 +92,28 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
     std::vector<std::size_t> first_corner(mesh.n_faces() + 1, 0);
     for (const auto f : mesh.faces())
       first_corner[static_cast<std::size_t>(f.idx()) + 1] = first_corner[static_cast<std::size_t>(f.idx())] + mesh.valence(f);
-    for (std::uint32_t t = 0; t < part.tags.size(); ++t) {
-      const std::string name = material_name(materials, obj_name(part.tags[t], "untagged"), look_of(mesh, part.tags[t]));
+    // Faces by tag, and within a tag by look (a placed mesh's own materials
+    // under the tag its placement gave it).
+    const FaceMaterials own(mesh);
+    std::vector<std::pair<std::uint32_t, const Material*>> groups;  // tag, own material
+    std::vector<std::size_t> group_of(mesh.n_faces());
+    for (const auto f : mesh.faces()) {
+      const auto fi = static_cast<std::size_t>(f.idx());
+      const std::pair<std::uint32_t, const Material*> group{part.face_tags[fi], own.of(f, part.tags[part.face_tags[fi]])};
+      group_of[fi] = static_cast<std::size_t>(std::find(groups.begin(), groups.end(), group) - groups.begin());
+      if (group_of[fi] == groups.size()) groups.push_back(group);
+    }
+    std::vector<std::size_t> order(groups.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return groups[a].first < groups[b].first; });
+    for (const std::size_t g : order) {
+      const std::uint32_t t = groups[g].first;
+      const Material look = look_of(groups[g].second, part.tags[t]);
+      const std::string name = material_name(materials, obj_name(part.tags[t], "untagged"), look);
       bool used = false;
       for (const auto f : mesh.faces()) {
         const auto fi = static_cast<std::size_t>(f.idx());
-        if (part.face_tags[fi] != t) continue;
+        if (group_of[fi] != g) continue;
         if (!used) obj += "usemtl " + name + "\n", used = true;
         const bool corner_normals = !surface.corner_normals.empty();
         if (!corner_normals) append_triple(obj, "vn", to_file_axes(surface.face_normals[fi], up));
@@ -120,7 +137,7 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
         normals += corner_normals ? corner : 1;
       }
       if (used && std::none_of(materials.begin(), materials.end(), [&](const auto& m) { return m.first == name; }))
-        materials.emplace_back(name, look_of(mesh, part.tags[t]));
+        materials.emplace_back(name, look);
     }
     base += mesh.n_vertices();
   }

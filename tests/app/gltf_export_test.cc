@@ -19,6 +19,7 @@
 
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
+#include "tests/app/command_test.h"
 
 namespace procex {
 namespace {
@@ -346,6 +347,129 @@ TEST_F(GltfExport, ObjLibraryScalesTheTextureToItsTiles) {
   EXPECT_NE(mtl.find("newmtl wall\nKd 1 1 1\nPr 0.85\nPm 0\nmap_Kd -s 1.25 1.25 1 ../textures/brick.png\n"), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("newmtl soffit\nKd 0.9 0.9 0.85\nPr 0.5\nPm 0\n"), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("newmtl base\nKd "), std::string::npos) << mtl;
+}
+
+}  // namespace
+}  // namespace procex
+
+namespace procex {
+namespace {
+
+// samples/windows_grid.pxg with the sample's textured door (door_textured.obj:
+// `door` planks from an image, a painted `door_frame`) placed in its grid
+// with the tag `entrance`; the attic keeps its window (frame, glass, sill).
+// With `material`, a Material node after the placements names `entrance`:
+// green, roughness 0.4. Written by procex eval to dir/out/doors<extension>.
+fs::path tagged_doors(const fs::path& dir, bool material, const std::string& extension) {
+  fs::copy(kRoot / "samples" / "meshes", dir / "meshes", fs::copy_options::recursive | fs::copy_options::skip_existing);
+  json recipe = json::parse(std::ifstream(kRoot / "samples" / "windows_grid.pxg"));
+  for (json& n : recipe["nodes"])
+    if (n["id"] == 9) n["params"]["file"] = "meshes/door_textured.obj", n["params"]["tag"] = "entrance";
+  if (material) {
+    recipe["nodes"].push_back({{"id", 11}, {"type", "Material"}, {"version", 1},
+                               {"params", {{"tag", "entrance"}, {"colour", {0.1, 0.5, 0.2}}, {"roughness", 0.4}}}});
+    for (json& link : recipe["links"])
+      if (link["to"] == "@mesh") link["to"] = "11.mesh";
+    recipe["links"].push_back({{"from", "11.mesh"}, {"to", "@mesh"}});
+  }
+  const fs::path pxg = dir / (material ? "green_doors.pxg" : "doors.pxg");
+  std::ofstream(pxg) << recipe.dump(1);
+  fs::create_directories(dir / "out");
+  const fs::path output = dir / "out" / (pxg.stem().string() + extension);
+  std::ostringstream o, e;
+  EXPECT_EQ(run_eval({pxg, output, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+  return output;
+}
+
+// What Blender (headless, tools/blender_import.py) makes of `file`: its objects.
+json blender_objects(const fs::path& dir, const fs::path& file) {
+  const fs::path report = dir / "blender.json";
+  const ProcessRun r = run("blender -b --factory-startup --python " + (kTools / "blender_import.py").string() + " -- " +
+                           report.string() + " " + file.string());
+  EXPECT_EQ(r.code, 0) << "blender (scripts/install-deps.sh installs it) failed:\n" << r.out;
+  return json::parse(std::ifstream(report)).at(file.string());
+}
+
+// The placed doors' looks in three.js, by their primitive's tag: of the
+// meshes placed under the instance tag `entrance`.
+std::map<std::string, json> entrance_looks(const json& loaded) {
+  std::map<std::string, json> looks;
+  for (const json& m : loaded["meshes"])
+    if (m["node_tag"] == "entrance") looks[m["tag"].get<std::string>()] = m;
+  return looks;
+}
+
+// A placement's tag does not take the placed mesh's own materials away: the
+// doors placed as `entrance` keep their planks image and painted frame in the
+// .glb (the validator content, three.js showing them) and in the .obj's
+// library (two looks under the tag: entrance, entrance_2), which Blender reads.
+TEST_F(GltfExport, APlacementsTagKeepsThePlacedMeshsOwnMaterials) {
+  const fs::path glb = tagged_doors(dir_, false, ".glb");
+  const json report = node_json("validate_gltf.mjs", glb, 0);
+  EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["info"]["resources"].size(), 2u) << report["info"].dump(1);  // the binary chunk and the planks
+  const auto looks = entrance_looks(node_json("load_gltf_three.mjs", glb, 0));
+  ASSERT_TRUE(looks.count("door") && looks.count("door_frame")) << json(looks).dump(1);
+  EXPECT_TRUE(looks.at("door")["texture"].get<bool>());
+  EXPECT_EQ(looks.at("door")["texture_size"], json::array({16, 32}));
+  EXPECT_FALSE(looks.at("door_frame")["texture"].get<bool>());
+  EXPECT_NEAR(looks.at("door_frame")["colour"][2].get<double>(), 0.3, 1e-6);
+
+  const fs::path obj = tagged_doors(dir_, false, ".obj");
+  const std::string mtl = test::read_text(dir_ / "out" / "doors.mtl");
+  EXPECT_NE(mtl.find("newmtl entrance\nKd 1 1 1\nPr 0.9\nPm 0\nmap_Kd ../meshes/door_planks.png\n"), std::string::npos) << mtl;
+  EXPECT_NE(mtl.find("newmtl entrance_2\nKd 0.2 0.25 0.3\n"), std::string::npos) << mtl;
+  EXPECT_EQ(mtl.find("newmtl door"), std::string::npos) << mtl;      // the doors' faces are the entrance's
+  std::map<std::string, json> blender;
+  for (const json& o : blender_objects(dir_, obj))
+    for (const auto& [name, look] : o["looks"].items()) blender[name] = look;
+  ASSERT_TRUE(blender.count("entrance") && blender.count("entrance_2")) << json(blender).dump(1);
+  EXPECT_EQ(blender.at("entrance")["image"], "door_planks.png");
+  EXPECT_TRUE(blender.at("entrance_2")["image"].is_null());
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(blender.at("entrance_2")["colour"][k].get<double>(), (std::array{0.2, 0.25, 0.3}[k]), 1e-6);
+}
+
+// A Material naming the placement's tag reaches the placed faces: the doors
+// placed as `entrance` are green and no longer show their planks in the .glb
+// (validator, three.js) nor in the .obj (its library, Blender), while the
+// attic's untagged window keeps its own materials.
+TEST_F(GltfExport, AMaterialNamingAPlacementsTagReachesItsFaces) {
+  const fs::path glb = tagged_doors(dir_, true, ".glb");
+  const json report = node_json("validate_gltf.mjs", glb, 0);
+  EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"]["messages"].dump(1);
+  EXPECT_EQ(report["info"]["resources"].size(), 1u) << report["info"].dump(1);  // no image left
+  const json loaded = node_json("load_gltf_three.mjs", glb, 0);
+  const auto looks = entrance_looks(loaded);
+  ASSERT_EQ(looks.size(), 1u) << json(looks).dump(1);
+  const json& green = looks.begin()->second;
+  EXPECT_EQ(looks.begin()->first, "entrance");
+  EXPECT_EQ(green["material"], "entrance");
+  EXPECT_FALSE(green["texture"].get<bool>());
+  EXPECT_NEAR(green["roughness"].get<double>(), 0.4, 1e-6);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(green["colour"][k].get<double>(), (std::array{0.1, 0.5, 0.2}[k]), 1e-6);
+  std::set<std::string> attic;
+  for (const json& m : loaded["meshes"])
+    if (m["tag"] == "frame" || m["tag"] == "glass" || m["tag"] == "sill") attic.insert(m["tag"].get<std::string>());
+  EXPECT_EQ(attic, (std::set<std::string>{"frame", "glass", "sill"}));
+
+  const fs::path obj = tagged_doors(dir_, true, ".obj");
+  const std::string mtl = test::read_text(dir_ / "out" / "green_doors.mtl");
+  const std::string green_entrance = "newmtl entrance\nKd 0.1 0.5 0.2\nPr 0.4\nPm 0\n";
+  const std::size_t at = mtl.find(green_entrance);
+  ASSERT_NE(at, std::string::npos) << mtl;
+  EXPECT_NE(mtl.substr(at + green_entrance.size(), 6), "map_Kd") << mtl;
+  EXPECT_EQ(mtl.find("entrance_2"), std::string::npos) << mtl;
+  EXPECT_EQ(mtl.find("door_planks"), std::string::npos) << mtl;
+  std::map<std::string, json> blender;
+  for (const json& o : blender_objects(dir_, obj))
+    for (const auto& [name, look] : o["looks"].items()) blender[name] = look;
+  ASSERT_TRUE(blender.count("entrance")) << json(blender).dump(1);
+  EXPECT_TRUE(blender.at("entrance")["image"].is_null());
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(blender.at("entrance")["colour"][k].get<double>(), (std::array{0.1, 0.5, 0.2}[k]), 1e-6);
 }
 
 }  // namespace
