@@ -72,6 +72,15 @@ std::string file_hash(const std::vector<std::filesystem::path>& files) {
   return h.result().hex();
 }
 
+// The files the buildings' plans come from: the footprints, and the streets
+// that decide which of their edges face one.
+std::vector<std::filesystem::path> plan_files(const BatchCommandOptions& options) {
+  std::vector<std::filesystem::path> files = footprint_files(options.footprints);
+  if (!options.streets.empty())
+    for (const std::filesystem::path& f : footprint_files(options.streets)) files.push_back(f);
+  return files;
+}
+
 // Per-building file names: the id with characters other than [A-Za-z0-9._-]
 // as '_', cut to a length every file system takes, and made unique (ignoring
 // case, for file systems that fold it) with the feature's index after a '~',
@@ -345,7 +354,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     // final numbers once the meshes are.
     AtomicFileSet report_file;
     if (!options.report.empty() || one_glb)
-      stamp.recipe = file_hash({options.recipe}), stamp.footprints = file_hash(footprint_files(options.footprints));
+      stamp.recipe = file_hash({options.recipe}), stamp.footprints = file_hash(plan_files(options));
     if (!options.report.empty()) report_file.add(options.report, report(start));
     if (one_glb) {
       GltfScene head;

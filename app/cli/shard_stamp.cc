@@ -49,7 +49,7 @@ void check_whole(const std::vector<std::pair<ShardStamp, std::filesystem::path>>
       refuse("shard " + std::to_string(id.index) + " of " + std::to_string(id.count) + ", but " + first_file.string() +
              " is one of " + std::to_string(first.count));
     if (id.recipe != first.recipe || id.footprints != first.footprints)
-      refuse("made from another recipe or footprint file than " + first_file.string());
+      refuse("made from another recipe, footprint file or streets file than " + first_file.string());
     if (const auto [it, fresh] = seen.emplace(id.index, &file); !fresh)
       refuse("shard " + std::to_string(id.index) + " again (also " + it->second->string() + ")");
   }

@@ -161,7 +161,7 @@ TEST_F(DataLoss, MergeRefusesASetThatIsNotOneWhole) {
   EXPECT_NE(err_.str().find("shard 1 of 2 is missing"), std::string::npos) << err_.str();
   EXPECT_EQ(merge({a, c}), kExitUnusableInput);
   EXPECT_EQ(merge({a, d}), kExitUnusableInput);
-  EXPECT_NE(err_.str().find("another recipe or footprint file"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("another recipe, footprint file or streets file"), std::string::npos) << err_.str();
   // The .glb parts carry the same stamp in their scene's extras: without
   // reports the set is checked as strictly.
   auto meshes_only = [&](std::vector<std::vector<fs::path>> parts) {
@@ -175,7 +175,7 @@ TEST_F(DataLoss, MergeRefusesASetThatIsNotOneWhole) {
            {{a, a}, "shard 0 again"},
            {{a}, "shard 1 of 2 is missing"},
            {{a, c}, "but " + a[0].string() + " is one of 2"},
-           {{a, d}, "another recipe or footprint file"}}) {
+           {{a, d}, "another recipe, footprint file or streets file"}}) {
     EXPECT_EQ(meshes_only(parts), kExitUnusableInput) << said;
     EXPECT_NE(err_.str().find(said), std::string::npos) << err_.str();
   }

@@ -227,7 +227,7 @@ TEST_F(GisInput, ShardsOfAShapefileWhoseSidecarChangedAreNoOneRun) {
   merge.parts = {dir_ / "part0.glb", dir_ / "edited1.glb"};
   merge.output = dir_ / "mixed.glb";
   EXPECT_EQ(run_merge(merge, out_, err_), 2);
-  EXPECT_NE(err_.str().find("another recipe or footprint file"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("another recipe, footprint file or streets file"), std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(merge.output));
 }
 

@@ -1,11 +1,14 @@
 // procex batch binds street_edges from data: samples/footprints/terrace.geojson's
 // street lines and those of --streets (core/geom/street_edges.h has the closed
 // forms), beside party_edges, for samples/city.pxg, which reads both.
+#include <fstream>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "app/cli/batch_command.h"
 #include "app/cli/feature_binding.h"
+#include "app/cli/merge_command.h"
 #include "app/cli/recipe_session.h"
 #include "tests/app/command_test.h"
 
@@ -50,6 +53,35 @@ TEST_F(StreetEdgesBatch, TheStreetsAreNotBuildings) {
   o.streets = dir_ / "no_such_streets.geojson";
   EXPECT_EQ(run_batch(o, out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("no_such_streets.geojson"), std::string::npos) << err_.str();
+}
+
+// The streets decide the doors: shards made with other streets are no one run.
+TEST_F(StreetEdgesBatch, ShardsMadeWithOtherStreetsAreNoOneRun) {
+  const fs::path streets = dir_ / "streets.geojson";
+  fs::copy_file(kSamples / "footprints" / "terrace_east_street.geojson", streets);
+  const auto shard = [&](std::size_t i, const std::string& name) {
+    BatchCommandOptions o;
+    o.recipe = kSamples / "city.pxg";
+    o.footprints = kTerrace;
+    o.streets = streets;
+    o.output = dir_ / (name + ".glb");
+    o.progress = false;
+    o.shard = i, o.shards = 2;
+    return run_batch(o, out_, err_);
+  };
+  ASSERT_EQ(shard(0, "part0"), 0) << err_.str();
+  ASSERT_EQ(shard(1, "part1"), 0) << err_.str();
+  MergeCommandOptions merge;
+  merge.parts = {dir_ / "part0.glb", dir_ / "part1.glb"};
+  merge.output = dir_ / "merged.glb";
+  ASSERT_EQ(run_merge(merge, out_, err_), 0) << err_.str();
+  std::ofstream(streets, std::ios::app) << "\n";
+  ASSERT_EQ(shard(1, "edited1"), 0) << err_.str();
+  merge.parts = {dir_ / "part0.glb", dir_ / "edited1.glb"};
+  merge.output = dir_ / "mixed.glb";
+  EXPECT_EQ(run_merge(merge, out_, err_), 2);
+  EXPECT_NE(err_.str().find("another recipe, footprint file or streets file"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(merge.output));
 }
 
 }  // namespace
