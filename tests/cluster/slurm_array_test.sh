@@ -96,6 +96,7 @@ merge_cmd=$(sed -n '/^# then: sbatch/,$ s/^#[[:space:]]*//p' "$script" | sed -e 
 [ -n "$merge_cmd" ] || fail "no dependent merge found in the README's script"
 
 cp "$repo/samples/city.pxg" "$work/run/city.pxg"
+cp -r "$repo/samples/meshes" "$work/run/meshes"  # the windows and doors city.pxg places
 cp "$repo/samples/footprints/sample_block.geojson" "$work/run/city.geojson"
 mkdir -p "$work/bin"
 ln -s "$procex" "$work/bin/procex"
@@ -108,7 +109,7 @@ array=$(sbatch --parsable --array=0-$((shards - 1)) --cpus-per-task=1 --output="
 merge=$(sbatch --parsable --dependency=afterok:"$array" --output="$work/run/merge.out" --wrap "$merge_cmd")
 
 # Meanwhile the one-machine run the merged file must equal.
-(cd "$work/single" && cp ../run/city.pxg ../run/city.geojson . &&
+(cd "$work/single" && cp -r ../run/city.pxg ../run/city.geojson ../run/meshes . &&
   procex batch city.pxg --footprints city.geojson -o city.glb --report city.json --no-progress >/dev/null)
 
 deadline=$((SECONDS + 600))

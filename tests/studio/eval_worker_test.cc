@@ -113,7 +113,8 @@ TEST(PreviewBindings, UnboundFootprintInputsGetTheStandInPlan) {
 TEST(EvalWorker, BatchRecipeShowsTheStandInPlan) {
   const Graph city = load_pxg(std::filesystem::path(PROCEX_SAMPLES) / "city.pxg");
   auto worker = std::make_unique<EvalWorker>();
-  worker->submit(1, city, {}, preview_bindings(city, preview_footprint()));
+  // The recipe's folder: its windows and doors are meshes beside it.
+  worker->submit(1, city, {}, preview_bindings(city, preview_footprint()), PROCEX_SAMPLES);
   if (!worker->wait_idle(std::chrono::seconds(60))) {
     // A node that never returns cannot be joined: leave its thread be, fail.
     (void)worker.release();
