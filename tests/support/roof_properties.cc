@@ -420,7 +420,7 @@ double height_on(const PlanFace& f, glm::dvec2 p) {
   return f.point.z - (f.normal.x * (p.x - f.point.x) + f.normal.y * (p.y - f.point.y)) / f.normal.z;
 }
 
-// Calls visit(p, face of a, face of b) at `samples` points drawn (by `seed`)
+// Calls visit(origin, p, face of a, face of b) at `samples` points drawn (by `seed`)
 // over a's bounding box where both roofs have a face that is not vertical;
 // p and the faces are relative to the box's corner `origin`.
 template <class Visit>
