@@ -44,7 +44,8 @@ class Reader {
   template <class T>
   std::vector<T> get_array() {
     std::vector<T> v(get<std::uint64_t>());
-    std::memcpy(v.data(), at_, v.size() * sizeof(T));
+    // An empty vector's data() may be null, which memcpy must never be given.
+    if (!v.empty()) std::memcpy(v.data(), at_, v.size() * sizeof(T));
     at_ += v.size() * sizeof(T);
     return v;
   }
