@@ -32,6 +32,7 @@
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
 #include "app/studio/ui/layout_settings.h"
+#include "app/studio/ui/mouse_input.h"
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/partial_redraw.h"
 #include "app/studio/ui/preview_view.h"
@@ -1000,6 +1001,7 @@ int run_studio(const Options& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder: LayoutSettings keeps it per user
   ImGui::StyleColorsDark();
+  auto mouse = std::make_unique<MouseInput>(window);  // first: ImGui's backend chains its button callback after it
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -1029,8 +1031,9 @@ int run_studio(const Options& options) {
         break;
       }
       const auto frame_start = Clock::now();
-      if (automated) glfwPollEvents();
-      else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);  // idle: no busy loop; evaluating: poll the worker
+      // Idle: no busy loop; evaluating: poll the worker; mouse changes queued: show the next at once.
+      if (automated || mouse->pending()) glfwPollEvents();
+      else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
       for (const fs::path& f : events.dropped) app.open_dropped(f);
@@ -1038,7 +1041,9 @@ int run_studio(const Options& options) {
       const bool busy = app.busy();
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      mouse->before_new_frame();
       ImGui::NewFrame();
+      mouse->after_new_frame();
       const auto build_start = Clock::now();
       app.frame();
       ImGui::Render();
@@ -1112,6 +1117,7 @@ int run_studio(const Options& options) {
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
+  mouse.reset();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
   glfwTerminate();

@@ -40,7 +40,7 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
     click(button_centre(map, "tab_library"));
     map = studio.wait("the library listed", listed, 8s, attempt == 3);
   }
-  map = click_until(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
+  map = click_and_wait(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
                     [&](const json& j) { return j["node_positions"].size() == nodes_before + 1; });
   EXPECT_NE(map["status"].get<std::string>().find("placed lib/building.pxg"), std::string::npos) << map["status"];
   const std::uint64_t placed = map["selected"].get<std::uint64_t>();
@@ -63,7 +63,7 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
     return false;
   };
   map = studio.wait("the placed group drawn", pins_shown);  // a slow frame can list the node before its pins
-  map = double_click_until(studio, map, [&](const json& j) {
+  map = double_click_and_wait(studio, map, [&](const json& j) {
     int last = 0;
     for (const json& p : j["pins"])
       if (p["node"] == placed && !p["output"].get<bool>()) last = std::max(last, p["port"].get<int>());

@@ -122,26 +122,18 @@ void click(std::pair<int, int> at) { xdo("mousemove " + std::to_string(at.first)
 
 std::uint64_t revision(const json& j) { return j["revision"].get<std::uint64_t>(); }
 
-json click_until(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at,
+json click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at,
                  const std::string& what, const std::function<bool(const json&)>& done) {
   const std::uint64_t rev = revision(map);
-  const auto changed = [&](const json& j) { return revision(j) > rev; };
-  json now = map;
-  for (int attempt = 0; attempt < 4 && !changed(now); ++attempt) {
-    click(at(now));
-    now = studio.wait(what + " (any change)", changed, 8s, attempt == 3);
-  }
-  return studio.wait(what, [&](const json& j) { return changed(j) && done(j); });
+  click(at(map));
+  return studio.wait(what, [&](const json& j) { return revision(j) > rev && done(j); });
 }
 
-json double_click_until(Studio& studio, json map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
-                        const std::function<bool(const json&)>& done) {
-  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
-    const auto [x, y] = at(map);
-    xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.3 mousedown 1 sleep 0.04 mouseup 1 sleep 0.1 mousedown 1 sleep 0.04 mouseup 1 sleep 0.3");
-    map = studio.wait(what, done, 8s, attempt == 3);
-  }
-  return map;
+json double_click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+                           const std::function<bool(const json&)>& done) {
+  const auto [x, y] = at(map);
+  xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.3 mousedown 1 sleep 0.04 mouseup 1 sleep 0.1 mousedown 1 sleep 0.04 mouseup 1 sleep 0.3");
+  return studio.wait(what, done);
 }
 
 json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {

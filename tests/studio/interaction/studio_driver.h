@@ -56,16 +56,15 @@ void drag(std::pair<int, int> from, std::pair<int, int> to);
 void type_into_slider(std::pair<int, int> at, const std::string& value);
 void click(std::pair<int, int> at);
 std::uint64_t revision(const json& j);
-// Clicks `at` (a widget on `map`, the studio's newest map) and waits until
-// `done`. A click that a loaded machine lost between two frames changes
-// nothing (the revision stays), so it is given again; one that changed the
-// recipe is never repeated.
-json click_until(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+// Clicks `at` (a widget on `map`, the studio's newest map) once and waits until `done`.
+// The studio shows every press and release in a frame of its own
+// (editor/mouse_queue.h), so a loaded machine makes it slower, never loses the click.
+json click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
                  const std::function<bool(const json&)>& done);
-// Double-clicks `at` until `done` (a double click that a loaded machine
-// saw as two clicks, or not at all, is given again).
-json double_click_until(Studio& studio, json map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
-                        const std::function<bool(const json&)>& done);
+// Double-clicks `at` once and waits until `done`: the studio counts clicks by
+// their event times, so a double click registers at any frame rate.
+json double_click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
+                           const std::function<bool(const json&)>& done);
 // Opens menu `menu` (a "buttons" entry: "menu_view") and clicks its item
 // `item` until `done`; a click a loaded machine lost is given again.
 json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done);
