@@ -43,6 +43,10 @@ bool consecutive_fold(const Segment2& i, const Segment2& j, double within) {
 
 }  // namespace
 
+bool segments_meet(const Segment2& i, const Segment2& j, double within) {
+  return segments_intersect(i.a, i.b, j.a, j.b) || (within > 0.0 && segment_gap(i, j) <= within);
+}
+
 void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit) {
   const std::size_t n = boxes.size();
   if (n < 2) return;
@@ -126,7 +130,7 @@ std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(cons
     } else if (j_then_i) {
       hit = consecutive_fold(sj, si, within);
     } else {
-      hit = segments_intersect(si.a, si.b, sj.a, sj.b) || (within > 0.0 && segment_gap(si, sj) <= within);
+      hit = segments_meet(si, sj, within);
     }
     if (hit) out.push_back({i, j});
     return out.size() < max_pairs;

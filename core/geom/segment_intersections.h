@@ -26,6 +26,11 @@ struct Box2 {
 // (touching counts), until it returns false.
 void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit);
 
+// Whether segments i and j share a point or, with within > 0, come within
+// that distance of each other: what is apart by less than a tolerance is not
+// apart at that tolerance.
+bool segments_meet(const Segment2& i, const Segment2& j, double within);
+
 // Pairs (i, j), i < j, of segments that share at least one point. Segments
 // that follow each other (next[i] == j: segment i ends where j starts, as in
 // a loop) share that endpoint by design and are reported only if they also

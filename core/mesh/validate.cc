@@ -15,6 +15,7 @@
 
 #include "core/geom/convex_partition.h"
 #include "core/geom/polygon3.h"
+#include "core/geom/round_edge.h"
 #include "core/geom/segment_intersections.h"
 #include "core/geom/tolerances.h"
 
@@ -108,15 +109,32 @@ void check_topology(const Mesh& mesh, const std::vector<std::uint32_t>& welded, 
   }
 
   // Directed edges between welded positions: each must be used once, and
-  // each undirected edge by exactly two faces.
+  // each undirected edge by exactly two faces, unless parts of the solid
+  // touch along it (round_edge.h): as many faces each way, alternating round it.
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<int>> directed;
+  std::vector<glm::dvec3> position(mesh.n_vertices());
+  for (const auto v : mesh.vertices()) position[welded[v.idx()]] = to_glm(mesh.point(v));
   for (const auto f : mesh.faces())
     for (const auto h : mesh.fh_range(f))
       directed[{welded[mesh.from_vertex_handle(h).idx()], welded[mesh.to_vertex_handle(h).idx()]}].push_back(f.idx());
+  auto normal = [&](int f) {
+    std::vector<glm::dvec3> pts;
+    for (const auto v : mesh.fv_range(mesh.face_handle(f))) pts.push_back(to_glm(mesh.point(v)));
+    return glm::normalize(newell_normal(pts));
+  };
+  auto touching_along = [&](std::pair<std::uint32_t, std::uint32_t> edge, const std::vector<int>& ahead,
+                            const std::vector<int>& back) {
+    if (ahead.size() != back.size()) return false;
+    std::vector<FaceAtEdge> round;
+    for (int f : ahead) round.push_back({normal(f), true});
+    for (int f : back) round.push_back({normal(f), false});
+    return twins_round_edge(position[edge.second] - position[edge.first], round).has_value();
+  };
   bool edges_ok = true, directions_ok = true;
   for (const auto& [edge, faces] : directed) {
     const auto back = directed.find({edge.second, edge.first});
     const std::size_t total = faces.size() + (back == directed.end() ? 0 : back->second.size());
+    if (total > 2 && back != directed.end() && touching_along(edge, faces, back->second)) continue;
     if (total > 2 && edge.first < edge.second) {
       edges_ok = false;
       problems.add("manifold", "edge between welded vertices " + std::to_string(edge.first) + " and " +

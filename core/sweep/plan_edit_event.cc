@@ -123,9 +123,12 @@ std::vector<int> emit_lobes(State& st, int e, const std::vector<StepPoint>& pts,
 
 // Where the step's polyline (in world coordinates) would meet the live loops
 // outside the part of span c it replaces, or itself: a loop that is not
-// simple. Empty if it meets nothing.
+// simple. Empty if it meets nothing. Meeting is within the clustering
+// distance: a step that exactly touches the outline (as on a grid plan) is
+// refused wherever rounding puts its corner, so a move of the plan cannot
+// turn a refusal into a pinched solid.
 std::string crossing(State& st, int c, const std::vector<glm::dvec2>& w) {
-  const double z = st.height;
+  const double z = st.height, near = st.tol().position();
   const std::size_t m = w.size() - 1;
   const int d = st.corners[c].next;
   // The host span's parts on either side of the step, then every other span.
@@ -139,12 +142,12 @@ std::string crossing(State& st, int c, const std::vector<glm::dvec2>& w) {
     for (std::size_t o = 0; o < others.size(); ++o) {
       if ((o == 0 && j == 0) || (o == 1 && j + 1 == m)) continue;  // they meet where the step starts or ends
       const Segment2& s = others[o].first;
-      if (segments_intersect(w[j], w[j + 1], s.a, s.b))
+      if (segments_meet({w[j], w[j + 1]}, s, near))
         return o < 2 ? "runs back across the edge it stands on"
                      : "crosses the building's outline (edge " + std::to_string(others[o].second) + ")";
     }
     for (std::size_t k = j + 2; k < m; ++k)
-      if (segments_intersect(w[j], w[j + 1], w[k], w[k + 1])) return "crosses itself";
+      if (segments_meet({w[j], w[j + 1]}, {w[k], w[k + 1]}, near)) return "crosses itself";
   }
   return {};
 }

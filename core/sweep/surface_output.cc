@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -11,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/geom/round_edge.h"
 #include "core/geom/turn.h"
 
 namespace procex::engine {
@@ -342,67 +342,88 @@ void close_surface(Surface& surface) {
   auto fail = [&](std::uint32_t v, const std::string& what) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };
-  // Each half-edge v -> to, with the vertex before v in its loop, grouped by
-  // v and sorted by `to` (then by when it was given: `slot` finds v in its loop).
-  struct Leaving {
-    std::uint32_t to, before, given;
-    bool operator<(const Leaving& o) const { return to != o.to ? to < o.to : given < o.given; }
+  // Every half-edge, with the one before it in its loop.
+  struct Half {
+    std::uint32_t from, to, prev, face;
+    std::uint32_t* slot;  // `from` in its loop
   };
-  const std::size_t n = surface.vertices.size();
-  std::vector<std::uint32_t> first(n + 1, 0);
-  for (const SurfaceFace& f : surface.faces)
-    for (const auto& loop : f.loops)
-      for (std::uint32_t v : loop) ++first[v + 1];
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  std::vector<Leaving> leaving(first[n]);
-  std::vector<std::uint32_t*> slot(first[n]);
-  {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    std::uint32_t given = 0;
-    for (SurfaceFace& f : surface.faces)
-      for (auto& loop : f.loops)
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-          slot[given] = &loop[i];
-          leaving[fill[loop[i]]++] = {loop[(i + 1) % loop.size()], loop[(i + loop.size() - 1) % loop.size()], given++};
-        }
-  }
-  auto from = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v]); };
-  auto to = [&](std::uint32_t v) { return leaving.begin() + static_cast<std::ptrdiff_t>(first[v + 1]); };
-  for (std::uint32_t v = 0; v < n; ++v) std::sort(from(v), to(v));
-  // The first half-edge (in the order given) that repeats another.
-  std::optional<std::pair<std::uint32_t, Leaving>> twice;
-  for (std::uint32_t v = 0; v < n; ++v)
-    for (auto it = from(v); it != to(v); ++it)
-      if (it != from(v) && it->to == (it - 1)->to && (!twice || it->given < twice->second.given)) twice = {v, *it};
-  if (twice) fail(twice->first, "two faces run the same way along its edge to " + at(twice->second.to));
-  auto find = [&](std::uint32_t v, std::uint32_t a) {
-    const auto it = std::lower_bound(from(v), to(v), Leaving{a, 0, 0});
-    return it != to(v) && it->to == a ? it : to(v);
-  };
-  for (std::uint32_t v = 0; v < n; ++v)
-    for (auto it = from(v); it != to(v); ++it)
-      if (find(it->to, v) == to(it->to)) fail(v, "no face runs back along its edge to " + at(it->to));
-  // Round a vertex the faces form fans: from v -> a, the face on its right
-  // holds v -> b, where b comes before v in the loop of v -> a. Where a
-  // step's plan touches the plan below, or itself, only at a point (a ledge
-  // as deep as the wing it is on), the solid is two parts pinched together
-  // there and the vertex has a fan for each. The surface stays a closed
-  // 2-manifold (and the solid the same point set) when every fan after the
-  // first (the one holding v's lowest `to`) has a copy of v of its own.
-  std::vector<char> in_fan(leaving.size(), 0);
-  for (std::uint32_t v = 0; v < n; ++v) {
-    for (auto start = from(v); start != to(v); ++start) {
-      if (in_fan[start - leaving.begin()]) continue;
-      const bool copy = start != from(v);
-      const std::uint32_t id = copy ? static_cast<std::uint32_t>(surface.vertices.size()) : v;
-      if (copy) surface.vertices.push_back(surface.vertices[v]);
-      auto it = start;
-      do {
-        in_fan[it - leaving.begin()] = 1;
-        *slot[it->given] = id;
-        it = find(v, it->before);
-      } while (!in_fan[it - leaving.begin()]);
+  std::vector<Half> halves;
+  for (std::uint32_t f = 0; f < surface.faces.size(); ++f)
+    for (auto& loop : surface.faces[f].loops) {
+      const auto first = static_cast<std::uint32_t>(halves.size()), m = static_cast<std::uint32_t>(loop.size());
+      for (std::uint32_t i = 0; i < m; ++i)
+        halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, f, &loop[i]});
     }
+  // The half-edges grouped by `from`, sorted by `to`, then in the order given.
+  auto key = [&](std::uint32_t g) { return std::pair{halves[g].from, halves[g].to}; };
+  std::vector<std::uint32_t> order(halves.size());
+  for (std::uint32_t g = 0; g < order.size(); ++g) order[g] = g;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  auto run = [&](std::uint32_t v, std::uint32_t a) {
+    const auto lo = std::lower_bound(order.begin(), order.end(), std::pair{v, a},
+                                     [&](std::uint32_t g, const auto& k) { return key(g) < k; });
+    const auto hi = std::upper_bound(lo, order.end(), std::pair{v, a},
+                                     [&](const auto& k, std::uint32_t g) { return k < key(g); });
+    return std::span<const std::uint32_t>(order).subspan(static_cast<std::size_t>(lo - order.begin()),
+                                                          static_cast<std::size_t>(hi - lo));
+  };
+  std::vector<glm::dvec3> normals;  // per face, made when a pinch needs them
+  auto normal = [&](std::uint32_t f) {
+    if (normals.empty()) {
+      normals.reserve(surface.faces.size());
+      for (const SurfaceFace& face : surface.faces) {
+        glm::dvec3 sum(0.0);  // Newell's
+        const auto& loop = face.loops.front();
+        for (std::size_t i = 0; i < loop.size(); ++i)
+          sum += glm::cross(surface.vertices[loop[i]], surface.vertices[loop[(i + 1) % loop.size()]]);
+        normals.push_back(glm::normalize(sum));
+      }
+    }
+    return normals[f];
+  };
+  // Each half-edge meets its twin, a reverse; where parts of the solid touch
+  // along an edge it has several each way, paired round it (round_edge.h).
+  std::vector<std::uint32_t> twin(halves.size());
+  std::vector<FaceAtEdge> round;
+  for (std::size_t i = 0; i < order.size();) {
+    const Half& h = halves[order[i]];
+    const auto ahead = run(h.from, h.to), back = run(h.to, h.from);
+    i += ahead.size();
+    if (back.empty()) fail(h.from, "no face runs back along its edge to " + at(h.to));
+    if (ahead.size() > back.size()) fail(h.from, "two faces run the same way along its edge to " + at(h.to));
+    if (ahead.size() < back.size()) fail(h.to, "two faces run the same way along its edge to " + at(h.from));
+    if (ahead.size() == 1) {
+      twin[ahead[0]] = back[0];
+      continue;
+    }
+    if (h.from > h.to) continue;  // paired from the other end
+    round.clear();
+    for (const auto side : {ahead, back})
+      for (std::uint32_t g : side) round.push_back({normal(halves[g].face), halves[g].from == h.from});
+    const auto twins = twins_round_edge(surface.vertices[h.to] - surface.vertices[h.from], round);
+    if (!twins) fail(h.from, "faces along its edge to " + at(h.to) + " overlap or fold over each other");
+    auto given = [&](std::size_t k) { return k < ahead.size() ? ahead[k] : back[k - ahead.size()]; };
+    for (std::size_t k = 0; k < round.size(); ++k) twin[given(k)] = given((*twins)[k]);
+  }
+  // Round a vertex the faces form fans: from v -> a, the face on its right
+  // holds the twin of the half-edge before v -> a in its loop. Where parts of
+  // the solid touch at the vertex (or along an edge through it) it has a fan
+  // for each. The surface stays a closed 2-manifold (and the solid the same
+  // point set) when every fan after the first (the one holding v's lowest
+  // `to`) has a copy of v of its own.
+  std::vector<char> in_fan(halves.size(), 0);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (in_fan[order[i]]) continue;
+    const std::uint32_t v = halves[order[i]].from;
+    const bool copy = i > 0 && halves[order[i - 1]].from == v;
+    const std::uint32_t id = copy ? static_cast<std::uint32_t>(surface.vertices.size()) : v;
+    if (copy) surface.vertices.push_back(surface.vertices[v]);
+    std::uint32_t g = order[i];
+    do {
+      in_fan[g] = 1;
+      *halves[g].slot = id;
+      g = twin[halves[g].prev];
+    } while (!in_fan[g]);
   }
 }
 

@@ -71,6 +71,22 @@ TEST(RoofProperties, TransformedRoofsMatchOnlyWhenTransformed) {
   }
 }
 
+// Under eaves the soffit and the roof above it both lie over the plan: the
+// height compared is the roof's, seen from above, whichever face the sweep
+// made first (generated angles finding 947, where a mirror reversed them).
+TEST(RoofProperties, HeightsAreTheRoofSeenFromAboveWhateverTheFaceOrder) {
+  Footprint eaves = kRect;
+  eaves.profiles = {{"soffit", {{0, 0}, {0, 3}, {0.5, 3}, {-4.5, 8}}, {"wall", "soffit", "roof"}}};
+  for (EdgeSpec& e : eaves.loops[0].edges) e.profile = 0;
+  const Surface roof = sweep(eaves);
+  Surface reordered = roof;
+  std::reverse(reordered.faces.begin(), reordered.faces.end());
+  EXPECT_EQ(largest_height_difference(roof, reordered, 2000, 3), 0.0);
+  Surface raised = reordered;
+  for (glm::dvec3& v : raised.vertices) v.z += 0.01;
+  EXPECT_NEAR(largest_height_difference(roof, raised, 2000, 3), 0.01, 1e-9);
+}
+
 TEST(RoofProperties, MirroringKeepsEachEdgeItsSpec) {
   Footprint fp = kRect;
   for (std::size_t i = 0; i < 4; ++i) fp.loops[0].edges[i].angle_deg = 10.0 * static_cast<double>(i + 1);

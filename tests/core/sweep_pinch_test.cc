@@ -6,6 +6,10 @@
 // each part's fan of faces its own copy of the vertex (core/sweep/
 // surface_output.h): the mesh validates, and the two copies sit at one point,
 // one used only by faces below the step, the other only by faces above it.
+// A step whose plan meets the plan below along a line (generated angles
+// findings 62 and 308) is two parts touching along an edge: it has two faces
+// each way, paired round it (core/geom/round_edge.h), and each part its own
+// copies of the edge's ends.
 #include <map>
 #include <set>
 #include <vector>
@@ -53,6 +57,33 @@ TEST(SweepPinch, AStepTouchingThePlanBelowAtAPointGivesEachPartItsOwnVertex) {
             }
     EXPECT_EQ(sides.size(), 1u) << "vertex " << copy << " is used by faces below and above the step";
   }
+}
+
+TEST(SweepPinch, AStepTouchingThePlanBelowAlongALineGivesEachPartItsOwnEdge) {
+  // A 4 x 1 block whose front steps out by its whole depth at 3 m and whose
+  // back ledges in by as much: above 3 m the plan is the strip in front,
+  // touching the plan below along the front edge only.
+  Footprint fp = make_footprint({{{0, 0}, {4, 0}, {4, 1}, {0, 1}}}, 45.0);
+  fp.profiles = {{"out", {{0, 0}, {0, 3}, {1, 3}, {1, 6}}, {"wall", "soffit", "wall"}},
+                 {"in", {{0, 0}, {0, 3}, {-1, 3}, {-1, 6}}, {"wall", "ledge", "wall"}},
+                 {"side", {{0, 0}, {0, 6}}, {"wall"}}};
+  const std::vector<int> profile_of_edge = {0, 2, 1, 2};
+  for (std::size_t e = 0; e < 4; ++e) fp.loops[0].edges[e].profile = profile_of_edge[e];
+  SweepOptions options;
+  options.max_height = 6.0;
+  const Surface roof = sweep(fp, options);
+  expect_valid(roof);
+  for (const std::string& line : check_faces_on_planes(fp, options, roof, roof_tolerance(fp))) ADD_FAILURE() << line;
+  EXPECT_NEAR(surface_volume(roof), 2 * 4 * 1 * 3, 1e-9);
+
+  std::map<std::vector<double>, int> at;
+  for (const glm::dvec3& v : roof.vertices) ++at[{v.x, v.y, v.z}];
+  EXPECT_EQ(roof.vertices.size(), 16u) << "two boxes of eight corners each";
+  EXPECT_EQ((at[{0, 0, 3}]), 2) << "the touching edge's ends have a copy for each part";
+  EXPECT_EQ((at[{4, 0, 3}]), 2);
+  std::map<std::string, int> tags = faces_per_tag(roof);
+  EXPECT_EQ(tags["soffit"], 1);
+  EXPECT_EQ(tags["ledge"], 1);
 }
 
 }  // namespace

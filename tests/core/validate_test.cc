@@ -191,6 +191,24 @@ TEST(Validate, AnEdgeOfThreeFacesIsNotManifold) {
   EXPECT_TRUE(mentions(r, "has 3 faces")) << ::testing::PrintToString(r.problems);
 }
 
+// Two boxes touching along an edge, each with its own copies of the edge's
+// ends (as the sweep gives two parts of a solid touching along a line):
+// welded, the edge has four faces, two each way, alternating round it, so the
+// surface is a closed 2-manifold of positive volume. A box inside the
+// other's corner has its faces leave the edge the same way as the other's:
+// they overlap, and welded the edge is not manifold.
+TEST(Validate, BoxesTouchingAlongAnEdgeAreOneSolidUnlessTheyOverlap) {
+  const ValidationReport touching =
+      validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({1, 1, 0}, {2, 2, 1}))));
+  EXPECT_TRUE(touching.ok()) << ::testing::PrintToString(touching.problems);
+  EXPECT_DOUBLE_EQ(touching.volume, 2.0);
+
+  const ValidationReport inside =
+      validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({0.5, 0.5, 0}, {1, 1, 1}))));
+  EXPECT_FALSE(inside.manifold);
+  EXPECT_TRUE(mentions(inside, "has 4 faces")) << ::testing::PrintToString(inside.problems);
+}
+
 // A 4096-sided prism: 4098 faces, one of them with 4096 vertices.
 TEST(Validate, LargeRegularPrismIsValid) {
   std::vector<glm::dvec2> circle;

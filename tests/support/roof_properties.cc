@@ -409,15 +409,21 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
 
 namespace {
 
-// The face over plan point p (relative to origin) that is not vertical, or nullptr.
-const PlanFace* face_over(const std::vector<PlanFace>& faces, glm::dvec2 p) {
-  for (const PlanFace& f : faces)
-    if (!f.loops.empty() && std::abs(f.normal.z) > 1e-12 * glm::length(f.normal) && inside_loops(f.loops, p)) return &f;
-  return nullptr;
-}
-
 double height_on(const PlanFace& f, glm::dvec2 p) {
   return f.point.z - (f.normal.x * (p.x - f.point.x) + f.normal.y * (p.y - f.point.y)) / f.normal.z;
+}
+
+// The highest face over plan point p (relative to origin) that is not
+// vertical, or nullptr: the roof seen from above. Under an overhang (a
+// soffit, a lean, a ledge) several faces lie over p, and which comes first
+// depends on the order the sweep made them, which a mirror reverses.
+const PlanFace* face_over(const std::vector<PlanFace>& faces, glm::dvec2 p) {
+  const PlanFace* top = nullptr;
+  for (const PlanFace& f : faces)
+    if (!f.loops.empty() && std::abs(f.normal.z) > 1e-12 * glm::length(f.normal) && inside_loops(f.loops, p) &&
+        (top == nullptr || height_on(f, p) > height_on(*top, p)))
+      top = &f;
+  return top;
 }
 
 // Calls visit(origin, p, face of a, face of b) at `samples` points drawn (by `seed`)
