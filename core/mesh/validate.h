@@ -16,7 +16,8 @@ struct ValidationOptions {
 
 struct ValidationReport {
   bool closed = false;       // no boundary half-edges
-  bool manifold = false;     // every edge has two faces, every vertex one fan
+  bool manifold = false;     // every edge has two faces, every vertex one fan (parts that
+                             // touch along an edge have their own copies of it: round_edge.h)
   bool oriented = false;     // neighbouring faces agree on orientation, volume > 0
   bool planar = false;       // each face within tolerance of its own plane
   bool self_intersection_free = false;
