@@ -498,5 +498,18 @@ TEST(Document, GroupLibrarySavesAGroupAndPlacesItFromItsFile) {
   EXPECT_NE(untitled.place_library_group("lib/building.pxg", 0, 0).message().find("save the recipe first"), std::string::npos);
 }
 
+// A recipe opened in place of another, both unedited: their revisions differ,
+// so the studio evaluates the new one rather than keep the old one's preview.
+TEST(Document, NoTwoDocumentsShareARevision) {
+  auto first = Document::open(house_recipe());
+  auto second = Document::open(house_recipe());
+  EXPECT_NE(first->revision(), second->revision());
+  EXPECT_FALSE(second->dirty());
+  const std::uint64_t opened = second->revision();
+  ASSERT_TRUE(second->set_param(1, 1, Value::make(20.0)));
+  EXPECT_GT(second->revision(), opened);
+  EXPECT_TRUE(second->dirty());
+}
+
 }  // namespace
 }  // namespace procex::studio

@@ -1,6 +1,7 @@
 #include "app/studio/editor/document.h"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <memory>
 
@@ -38,12 +39,21 @@ EditorState editor_at(double x, double y) {
   e.y = y;
   return e;
 }
+// Revisions of every document come from one counter: an evaluation of one
+// recipe is never taken for that of another opened in its place at the same count.
+std::uint64_t next_revision() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 }  // namespace
 
 Document::Document() : Document(Graph{}, {}) {}
 
 Document::Document(Graph graph, std::filesystem::path path)
-    : graph_(std::move(graph)), stack_(graph_), path_(std::move(path)), saved_text_(to_pxg(graph_)) {}
+    : graph_(std::move(graph)), stack_(graph_), path_(std::move(path)), saved_text_(to_pxg(graph_)) {
+  revision_ = saved_revision_ = next_revision();
+}
 
 std::unique_ptr<Document> Document::open(const std::filesystem::path& file) {
   Graph g = load_pxg(file);
@@ -54,7 +64,7 @@ std::unique_ptr<Document> Document::open(const std::filesystem::path& file) {
 std::unique_ptr<Document> Document::recovered(Graph graph, std::filesystem::path file) {
   auto doc = std::unique_ptr<Document>(new Document(Graph{}, std::move(file)));
   doc->graph_ = std::move(graph);
-  doc->revision_ = 2;  // differs from the saved revision and text: dirty until saved
+  doc->revision_ = next_revision();  // differs from the saved revision and text: dirty until saved
   return doc;
 }
 
@@ -95,7 +105,7 @@ const Graph& Document::graph() const {
 
 template <class R>
 R Document::changed(R r) {
-  if (r) ++revision_;
+  if (r) revision_ = next_revision();
   std::erase_if(selection_, [this](NodeId id) { return graph().node(id) == nullptr; });
   return r;
 }

@@ -4,7 +4,8 @@
 // The studio owns no recipe data besides the Graph: every edit below is a
 // command on the UndoStack (one undo step each; gestures that span frames use
 // begin_gesture/end_gesture to become one step). `revision()` grows with every
-// change, so the UI knows when to re-evaluate and whether the file is dirty.
+// change, so the UI knows when to re-evaluate and whether the file is dirty;
+// no two documents share one, so it also tells a recipe opened in another's place.
 #pragma once
 
 #include <cstdint>
@@ -161,8 +162,8 @@ class Document {
   Graph graph_;
   UndoStack stack_;
   std::filesystem::path path_;
-  std::uint64_t revision_ = 1;
-  std::uint64_t saved_revision_ = 1;
+  std::uint64_t revision_ = 0;  // set by the constructor
+  std::uint64_t saved_revision_ = 0;
   std::string saved_text_;  // the file's text as last loaded or saved
   // dirty() serialises the graph: asked every frame, it is worked out once per revision.
   mutable std::uint64_t dirty_revision_ = 0;
