@@ -53,9 +53,12 @@ constexpr std::size_t kFootprintsPerTile = 4096;
 
 }  // namespace
 
+EdgeLabelsRead edge_labels_read(const Graph& recipe) {
+  return {names_setting(recipe, std::string(kPartyEdgesProperty)), names_setting(recipe, std::string(kStreetEdgesProperty))};
+}
+
 void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection) {
-  const bool party = names_setting(recipe, std::string(kPartyEdgesProperty));
-  const bool street = names_setting(recipe, std::string(kStreetEdgesProperty));
+  const auto [party, street] = edge_labels_read(recipe);
   if (!party && !street) return;
   // Tile by tile (core/geom/plan_tiles.h): the edges and search grid of
   // every footprint of a large file at once take far more memory than the

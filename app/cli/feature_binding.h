@@ -38,6 +38,13 @@ inline constexpr double kStreetDistance = 20.0;
 // Adds the properties party_edges and street_edges to every feature of
 // `collection` that lacks them, when `recipe` reads them.
 void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection);
+// Which of those two `recipe` reads (a graph input or exposed parameter of that name): what
+// add_edge_labels' result depends on, so a caller knows when another recipe needs them made again.
+struct EdgeLabelsRead {
+  bool party = false, street = false;
+  bool operator==(const EdgeLabelsRead&) const = default;
+};
+EdgeLabelsRead edge_labels_read(const Graph& recipe);
 
 // Ok, or why features cannot be bound to the recipe (no graph input named
 // `footprint` of type footprint), naming recipe_file.

@@ -133,6 +133,7 @@ class App {
     if (submitted_ != doc_->revision() || submitted_node_ != doc_->selected()) {
       submitted_ = doc_->revision();
       submitted_node_ = doc_->selected();
+      label_footprints();
       // The selected node's outputs too, for the plan and profile editors (cached: cheap).
       // (Those of a node inside a group are no ports of the recipe: inside a group there are none.)
       std::vector<PortRef> extra;
@@ -192,19 +193,32 @@ class App {
         status_ = file.string() + ": no feature could be read" + (c.errors.empty() ? "" : " (" + c.errors.front().message + ")");
         return false;
       }
-      add_edge_labels(doc_->recipe(), c);
       const std::size_t n = c.features.size();
       preview_footprint_source_ = n == 1 ? file.string() + "#" + c.features.front().id : file.string() + " (" + std::to_string(n) + " features)";
-      preview_features_ = std::make_shared<const std::vector<GeoJsonFeature>>(std::move(c.features));
+      const std::string not_read = c.errors.empty() ? "" : "; " + std::to_string(c.errors.size()) + " features not read (" + c.errors.front().message + ")";
+      footprints_ = std::make_shared<const GeoJsonCollection>(std::move(c));
+      labelled_for_.reset();
+      label_footprints();
       submitted_ = 0;  // evaluate again with the new plans
       if (preview_) preview_->frame_next_mesh();  // the buildings stand elsewhere than the stand-in did
-      status_ = "footprint input: " + preview_footprint_source_ +
-                (c.errors.empty() ? "" : "; " + std::to_string(c.errors.size()) + " features not read (" + c.errors.front().message + ")");
+      status_ = "footprint input: " + preview_footprint_source_ + not_read;
       return true;
     } catch (const std::exception& e) {
       status_ = e.what();
       return false;
     }
+  }
+
+  // The footprints' party and street edges, as the recipe now open reads them: made again when
+  // another recipe (or an edit) reads other ones, as procex batch would make them for it.
+  void label_footprints() {
+    if (!footprints_) return;
+    const EdgeLabelsRead reads = edge_labels_read(doc_->recipe());
+    if (labelled_for_ == reads) return;
+    labelled_for_ = reads;
+    GeoJsonCollection c = *footprints_;
+    add_edge_labels(doc_->recipe(), c);
+    preview_features_ = std::make_shared<const std::vector<GeoJsonFeature>>(std::move(c.features));
   }
 
   // Close button: ask first when there are unsaved changes.
@@ -856,6 +870,8 @@ class App {
   EvalWorker worker_;
   std::string preview_footprint_source_;  // the footprint file (and its feature when it has one), or empty for the stand-in
   PreviewFeatures preview_features_;      // its features, bound to the recipe one by one; null: the stand-in
+  std::shared_ptr<const GeoJsonCollection> footprints_;  // as read, without the edge labels preview_features_ has
+  std::optional<EdgeLabelsRead> labelled_for_;           // the labels preview_features_ has
   ExportOptions export_options_;                   // kept between exports, as the format
   std::string export_extension_ = ".glb";
   std::shared_ptr<const EvalSnapshot> shown_;

@@ -489,5 +489,37 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   fs::remove_all(dir);
 }
 
+// A footprint file dropped on a recipe that reads no party or street edges,
+// then a recipe that does opened (the city's: party walls where terraced
+// houses meet): its preview is the one the city shows when started on the
+// file, the edges found again for the recipe now open.
+TEST(StudioInteraction, ADroppedFootprintFilesEdgesAreFoundAgainForTheRecipeOpenedNext) {
+  const fs::path dir = fresh_dir("relabel");
+  const fs::path terrace = fs::path(PROCEX_SAMPLES) / "footprints" / "terrace.geojson";
+  const fs::path city = fs::path(PROCEX_SAMPLES) / "city.pxg";
+  const auto city_on_terrace = [&](const json& j) {
+    return j["settled"] && j["status"] == "opened " + city.string() && j["preview_features"] == 3 && j["preview_faces"] > 0;
+  };
+  std::size_t started_on_file = 0;
+  {
+    Studio reference(city, dir, {"--autosave", "0", "--footprints", terrace.string()});
+    const json map = reference.wait("the city on the terrace", [](const json& j) { return j["settled"] && j["preview_features"] == 3 && j["preview_faces"] > 0; }, 90s);
+    EXPECT_EQ(map["errors"], 0);
+    started_on_file = map["preview_faces"];
+  }
+  const fs::path house = copy_test_recipe("house.pxg", dir);
+  Studio studio(house, dir);
+  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["preview_faces"] > 0; });
+  drop_file(map, terrace);
+  map = studio.wait("the terrace under the house recipe", [](const json& j) { return j["settled"] && j["preview_features"] == 3; }, 60s);
+  drop_file(map, city);
+  map = studio.wait("the city opened on the terrace", city_on_terrace, 90s);
+  EXPECT_EQ(map["errors"], 0);
+  EXPECT_EQ(map["preview_faces"], started_on_file) << "the party and street edges the city reads, found for it";
+  press("ctrl+q");
+  EXPECT_EQ(studio.wait_exit(20s), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace procex::studio
