@@ -12,7 +12,7 @@ namespace {
 
 // Parameter and output handles, from the declaration.
 struct Handles {
-  std::size_t mesh_in, edges_in, name, tag, which_edges, floors, bays, z_from;
+  std::size_t mesh_in, edges_in, name, tag, which_edges, floors, bays, floor_height, bay_width, z_from;
   std::size_t mesh_out, tiles_out, dropped_out;
 };
 Handles h;
@@ -25,7 +25,8 @@ void declare(NodeDecl& d) {
         "height on every plane. Only tiles the faces cover wholly are kept: none above the roof line, across a "
         "set-back or past a corner; `dropped` counts the others. Sizes: `3` metres, `~3` flexible (the flexible "
         "cells stretch to fill the length), `_1` a gap that is no tile (a margin, a plinth), `{...}*` a group "
-        "repeated as often as it fits, `{...}*4` exactly four times. `which_edges` with the `edges` input splits only "
+        "repeated as often as it fits, `{...}*4` exactly four times; `floor_height` and `bay_width` name the sizes of those parameters (`{floor_height}*`, "
+        "`_floor_height {~bay_width}*`), so an expression or an exposed parameter sets them as numbers. `which_edges` with the `edges` input splits only "
         "the street fronts (listed) or every other wall (unlisted).")
       .category("Geometry");
   h.mesh_in = d.input<MeshSet>("mesh").doc("buildings (Extrude)").index();
@@ -35,8 +36,12 @@ void declare(NodeDecl& d) {
   h.tag = d.param<std::string>("tag").default_value(std::string("wall")).doc("the faces to split (empty: every vertical face)").index();
   h.which_edges = d.param_enum("which_edges", {"all", "listed", "unlisted"})
       .doc("whose faces are split: every edge's, only the edges on the `edges` input, or every edge but those").index();
-  h.floors = d.param<std::string>("floors").default_value(std::string("{3}*")).doc("floor heights, up from z_from").index();
-  h.bays = d.param<std::string>("bays").default_value(std::string("_0.5 {~3}* _0.5")).doc("bay widths, across each face").index();
+  h.floors = d.param<std::string>("floors").default_value(std::string("{floor_height}*")).doc("floor heights, up from z_from").index();
+  h.bays = d.param<std::string>("bays").default_value(std::string("_0.5 {~bay_width}* _0.5")).doc("bay widths, across each face").index();
+  h.floor_height = d.param<double>("floor_height").default_value(3.0).range(0.1, 100).unit("m")
+      .doc("the size `floor_height` stands for in the split specs").index();
+  h.bay_width = d.param<double>("bay_width").default_value(3.0).range(0.1, 100).unit("m")
+      .doc("the size `bay_width` stands for in the split specs").index();
   h.z_from = d.param<double>("z_from").default_value(0.0).range(-1000, 10000).unit("m").doc("the height the first floor starts").index();
   h.mesh_out = d.output<MeshSet>("mesh").index();
   h.tiles_out = d.output<std::int64_t>("tiles").doc("tiles kept, over every mesh").index();
@@ -47,9 +52,10 @@ void evaluate(EvalContext& ctx) {
   FacadeSplitSpec spec;
   spec.name = ctx.param<std::string>(h.name);
   spec.z_from = ctx.param<double>(h.z_from);
+  const SplitNames names{{"floor_height", ctx.param<double>(h.floor_height)}, {"bay_width", ctx.param<double>(h.bay_width)}};
   try {
-    spec.floors = parse_split(ctx.param<std::string>(h.floors));
-    spec.bays = parse_split(ctx.param<std::string>(h.bays));
+    spec.floors = parse_split(ctx.param<std::string>(h.floors), names);
+    spec.bays = parse_split(ctx.param<std::string>(h.bays), names);
   } catch (const PlacementError& e) {
     return ctx.error(e.what());
   }

@@ -22,6 +22,15 @@ double nominal(const std::vector<SplitItem>& items) {
   return sum;
 }
 
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// ": sizes may also be named floor_height, bay_width", for a refusal.
+std::string known_names(const SplitNames& names) {
+  std::string out;
+  for (const auto& [name, value] : names) out += (out.empty() ? ": sizes may also be named " : ", ") + name;
+  return out;
+}
+
 bool any_flexible(const std::vector<SplitItem>& items) {
   for (const SplitItem& i : items)
     if (i.flexible) return true;
@@ -30,7 +39,7 @@ bool any_flexible(const std::vector<SplitItem>& items) {
 
 }  // namespace
 
-SplitSpec parse_split(std::string_view text) {
+SplitSpec parse_split(std::string_view text, const SplitNames& names) {
   SplitSpec spec;
   std::vector<SplitItem>* into = &spec.before;
   std::size_t i = 0, group_at = 0;
@@ -67,11 +76,22 @@ SplitSpec parse_split(std::string_view text) {
     const std::size_t at = i;
     if (text[i] == '_') item.gap = true, ++i;
     if (i < text.size() && text[i] == '~') item.flexible = true, ++i;
-    const auto [p, ec] = std::from_chars(text.data() + i, text.data() + text.size(), item.size);
-    if (ec != std::errc() || p == text.data() + i)
-      refuse(text, i, i < text.size() ? "a size in metres expected, not '" + std::string(1, text[i]) + "'" : "a size expected");
+    if (!names.empty() && i < text.size() && std::isalpha(static_cast<unsigned char>(text[i]))) {  // '_' before it marks a gap
+      std::size_t end = i;
+      while (end < text.size() && is_name_char(text[end])) ++end;
+      const std::string_view name = text.substr(i, end - i);
+      const auto known = names.find(name);
+      if (known == names.end()) refuse(text, i, "no size is named '" + std::string(name) + "'" + known_names(names));
+      item.size = known->second;
+      i = end;
+    } else {
+      const auto [p, ec] = std::from_chars(text.data() + i, text.data() + text.size(), item.size);
+      if (ec != std::errc() || p == text.data() + i)
+        refuse(text, i, i < text.size() ? "a size in metres expected, not '" + std::string(1, text[i]) + "'" + known_names(names)
+                                        : "a size expected");
+      i = static_cast<std::size_t>(p - text.data());
+    }
     if (!std::isfinite(item.size) || item.size < 0) refuse(text, at, "sizes are finite and not negative");
-    i = static_cast<std::size_t>(p - text.data());
     into->push_back(item);
   }
   if (in_group) refuse(text, group_at, "the group is not closed with '}*'");

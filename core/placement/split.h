@@ -9,6 +9,9 @@
 //   {...}* the group repeated as often as it fits (rounded to the nearest
 //          count when it holds a flexible size, else down)
 //   {...}*4  the group exactly 4 times
+//   name   a size given by name (Facade Split's floor_height, bay_width),
+//          so a number parameter, which an expression can drive, sets it;
+//          also ~name, _name, _~name
 //
 // At most one repeated group, not nested. Without flexible sizes the cells
 // are laid from the start and what does not fit is left over at the end (the
@@ -17,6 +20,7 @@
 // margin.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,8 +39,12 @@ struct SplitSpec {
   int count = -1;  // the repeated group's count; -1: as often as it fits
 };
 
-// Throws PlacementError naming the character where `text` goes wrong.
-SplitSpec parse_split(std::string_view text);
+// The sizes a spec may give by name, and their values in metres.
+using SplitNames = std::map<std::string, double, std::less<>>;
+
+// Throws PlacementError naming the character where `text` goes wrong (or the
+// unknown name, with the names `names` knows).
+SplitSpec parse_split(std::string_view text, const SplitNames& names = {});
 
 struct SplitCell {
   double start = 0.0, size = 0.0;

@@ -61,6 +61,17 @@ TEST(Split, MistakesNameTheCharacter) {
   EXPECT_EQ(refusal("{0}*"), "split '{0}*', character 1: a group repeated as often as it fits needs a size above zero");
   EXPECT_EQ(refusal("-2"), "split '-2', character 1: sizes are finite and not negative");
   EXPECT_EQ(refusal("{1}*"), "accepted");
+  // Names are sizes only where the caller gives them; an unknown one is refused with those it knows.
+  const SplitNames floor{{"floor_height", 3.5}, {"bay_width", 2.0}};
+  EXPECT_EQ(split_length(parse_split("_floor_height {~floor_height}*", floor), 10.5).size(), 3u);
+  EXPECT_DOUBLE_EQ(parse_split("_floor_height {~floor_height}*", floor).repeated.at(0).size, 3.5);
+  EXPECT_TRUE(parse_split("_floor_height", floor).before.at(0).gap);
+  try {
+    parse_split("{floor}*", floor);
+    ADD_FAILURE() << "accepted";
+  } catch (const PlacementError& e) {
+    EXPECT_EQ(std::string(e.what()), "split '{floor}*', character 2: no size is named 'floor': sizes may also be named bay_width, floor_height");
+  }
   EXPECT_THROW(split_length(parse_split("{0.00001}*"), 10), PlacementError);  // a million cells
 }
 

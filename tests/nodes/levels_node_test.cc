@@ -1,6 +1,7 @@
 // Floors from a feature's levels: Levels raises a profile's wall to a number
 // of floors and carries the roof up with it; Facade Split splits only the
-// walls of the edges it is given (the street fronts), or all but those.
+// walls of the edges it is given (the street fronts), or all but those, with
+// sizes a number parameter gives by name.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -101,6 +102,36 @@ TEST(FacadeSplit, AnEmptySplitPlacesNothingAndIsNoError) {
   ASSERT_TRUE(placed.ok()) << placed.messages();
   EXPECT_TRUE(placed.diagnostics.empty()) << placed.messages();
   EXPECT_TRUE(placed.outputs.at(0).get<MeshSet>().parts.at(0).placed.instances.empty());
+}
+
+// Sizes by name: floor_height and bay_width are number parameters (an expression or an
+// exposed parameter sets them), and the specs name them.
+TEST(FacadeSplit, SizesNamedByNumberParameters) {
+  const auto r = run_node("Facade Split",
+                          {{"floors", Value::make(std::string("_floor_height {floor_height}*"))},
+                           {"floor_height", Value::make(2.25)},
+                           {"bays", Value::make(std::string("{bay_width}*"))},
+                           {"bay_width", Value::make(4.0)}},
+                          {{"mesh", Value::make(block())}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  // 9 m walls: a 2.25 m gap, then three floors of 2.25 m at 2.25, 4.5 and 6.75 m; 3 bays of 4 m on the
+  // 12 m walls, 1 on the 6 m walls.
+  std::set<double> sills;
+  std::size_t n = 0;
+  for (const FacadeTile& t : r.outputs.at(0).get<MeshSet>().parts.at(0).tiles) {
+    sills.insert(t.frame.origin.z);
+    EXPECT_DOUBLE_EQ(t.height, 2.25);
+    EXPECT_DOUBLE_EQ(t.width, 4.0);
+    ++n;
+  }
+  EXPECT_EQ(sills, (std::set<double>{2.25, 4.5, 6.75}));
+  EXPECT_EQ(n, 3u * (3 + 1 + 3 + 1));
+  const auto unknown = run_node("Facade Split", {{"floors", Value::make(std::string("{floor_hieght}*"))}},
+                                {{"mesh", Value::make(block())}});
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.messages().find("no size is named 'floor_hieght': sizes may also be named bay_width, floor_height"),
+            std::string::npos)
+      << unknown.messages();
 }
 
 }  // namespace

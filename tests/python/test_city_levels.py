@@ -1,6 +1,6 @@
 """samples/city.pxg over samples/footprints/terrace.geojson, checked on the
 geometry procex.batch returns: each house is as many floors high as its
-building:levels, every wall that is neither shared nor on a street has one
+building:levels, each floor as high as its floor_height, every wall that is neither shared nor on a street has one
 row of windows per floor at the floor heights, and each street-facing wall a
 door on the ground floor, its sill at ground level, with windows above;
 street lines come from the footprint file and from batch(streets=...)."""
@@ -15,7 +15,7 @@ from conftest import SAMPLES
 
 TERRACE = SAMPLES / "footprints" / "terrace.geojson"
 EAST_STREET = SAMPLES / "footprints" / "terrace_east_street.geojson"
-FLOOR = 3.0  # city.pxg's floor height (Levels, Facade Split)
+FLOOR = 3.0  # city.pxg's floor height (Levels, Facade Split) when a feature gives none
 
 # terrace.geojson: three 10 x 12 m houses in a row along a street to the south (edge 0 of
 # each); a lane behind the first (its edge 2); neighbours share edges 1 and 3.
@@ -84,6 +84,36 @@ def test_floors_windows_and_doors_follow_levels_and_streets():
                 assert len(doors[edge]) == 1, (b.id, edge)  # one door, in the middle of the wall
                 lo, hi = doors[edge][0]
                 assert lo == pytest.approx(0.0, abs=1e-9) and hi == pytest.approx(2.1, abs=1e-9), (b.id, edge)
+
+
+def test_floor_heights_from_the_features():
+    # The recipe's one floor height (the feature's floor_height) drives Levels and the three
+    # Facade Splits: each house's walls, window rows and door follow its own.
+    levels, heights = {"a": 2, "b": 3, "c": 4}, {"a": 2.8, "b": 3.5, "c": 4.25}
+    collection = terrace(levels)
+    for f in collection["features"]:
+        if f["id"] in heights:
+            f["properties"]["floor_height"] = heights[f["id"]]
+    for b in procex.batch(city(), collection):
+        assert b.status == "ok", b.reason
+        n, h = levels[b.id], heights[b.id]
+        assert wall_top(b) == pytest.approx(n * h, abs=1e-9), b.id
+        windows, doors = placed_by_edge(b, "window"), placed_by_edge(b, "door")
+        sill = None
+        for edge in set(range(4)) - PARTY[b.id]:
+            street = edge in STREET[b.id]
+            rows = sorted({round(lo, 6) for lo, _ in windows[edge]})
+            assert len(rows) == n - (1 if street else 0), (b.id, edge, rows)
+            for floor, z in enumerate(rows, start=1 if street else 0):
+                sill = z - floor * h if sill is None else sill
+                assert z - floor * h == pytest.approx(sill, abs=1e-6), (b.id, edge, rows)  # one row per floor of h
+            assert all(hi <= (int(lo // h) + 1) * h + 1e-9 for lo, hi in windows[edge]), (b.id, edge)
+        for edge in STREET[b.id]:
+            assert len(doors[edge]) == 1 and doors[edge][0][0] == pytest.approx(0.0, abs=1e-9), (b.id, edge)
+    # From height over the floor height when building:levels is absent: 14 m of 3.5 m floors is 4.
+    collection = terrace({})
+    collection["features"][1]["properties"].update({"height": "14", "floor_height": 3.5})
+    assert wall_top(procex.batch(city(), collection)[1]) == pytest.approx(4 * 3.5)
 
 
 def test_levels_from_height_else_the_type():
