@@ -80,6 +80,7 @@ void evaluate(EvalContext& ctx) {
       tiles += static_cast<std::int64_t>(split.tiles.size());
       dropped += static_cast<std::int64_t>(split.dropped);
       part.tiles.insert(part.tiles.end(), split.tiles.begin(), split.tiles.end());
+      part.split_names.insert(spec.name);
     } catch (const PlacementError& e) {
       return ctx.error((part.building.empty() ? "" : "building " + part.building + ": ") + e.what());
     }

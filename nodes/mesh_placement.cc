@@ -79,7 +79,8 @@ void declare(NodeDecl& d) {
         "past a corner) are dropped and counted in `dropped`. A grid's z_to may be an expression of the recipe's "
         "values (docs/expressions.md). `tiles` places one in every tile named `anchor` of a Facade Split, on the "
         "floors from floor_from to floor_to, fitted to the tile with `fit`, else at the pivot (a building without "
-        "such tiles gets none: a split keeps no tile where its walls are absent or too small). The meshes "
+        "such tiles gets none: a split keeps no tile where its walls are absent or too small; a name no Facade Split "
+        "upstream gives is an error that lists the names they give). The meshes "
         "stay instances: .glb files share one mesh between them, OBJ and PLY get them merged in. The mesh keeps its own "
         "texture coordinates and normals (`vt`, `vn`) and its `mtllib` materials (colour `Kd`, texture `map_Kd`, a PNG "
         "or JPEG image; library and image confined to the recipe's folder as the mesh is): .glb files embed the image, "
@@ -259,7 +260,7 @@ void evaluate(EvalContext& ctx) {
   const bool tiles = spec.mode == MeshPlacementSpec::Mode::Tiles;
   for (TaggedMesh& part : out.parts) {
     if (tiles)
-      for (const FacadeTile& t : part.tiles) names.insert(t.name);
+      names.insert(part.split_names.begin(), part.split_names.end());
     else
       for (const ResolvedAnchor& a : part.anchors) names.insert(a.name);
     if (!carries(part, spec.anchor, tiles)) continue;  // another building type's mesh
@@ -290,17 +291,17 @@ void evaluate(EvalContext& ctx) {
       return ctx.error(building + e.what());
     }
   }
-  // A split may keep no tile of its name on a building (no street front, walls too small), so in
-  // tiles mode other tiles do not make the name a misspelling: nothing is placed.
-  if (!placed_any && !(tiles && !names.empty())) {
+  // A split may keep no tile of its name on a building (no street front, walls too small): a name
+  // that some split upstream gives is no misspelling, and nothing is placed.
+  if (!placed_any && !(tiles && names.count(spec.anchor) > 0)) {
     if (names.empty()) {
       ctx.warning("anchor '" + spec.anchor + "': the input carries no " + (tiles ? "facade tiles" : "resolved anchors") +
                   ", nothing is placed");
     } else {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
-      return ctx.error("anchor: no anchor named '" + spec.anchor +
-                       "' on the input (there are " + list + ")");
+      return ctx.error(tiles ? "anchor: no Facade Split upstream makes tiles named '" + spec.anchor + "' (they make " + list + ")"
+                             : "anchor: no anchor named '" + spec.anchor + "' on the input (there are " + list + ")");
     }
   }
   ctx.set_output(par.mesh_out, std::move(out));

@@ -147,6 +147,8 @@ void hash_mesh_set(const MeshSet& set, Hasher& h) {
     for (const ResolvedAnchor& a : part.anchors) hash_anchor(a, h);
     h.u64(part.tiles.size());
     for (const FacadeTile& t : part.tiles) hash_tile(t, h);
+    h.u64(part.split_names.size());
+    for (const std::string& n : part.split_names) hash_str(n, h);
     hash_placed(part.placed, h);
   }
 }
@@ -167,6 +169,7 @@ std::size_t mesh_set_size(const MeshSet& set) {
     for (const ResolvedAnchor& a : part.anchors) n += a.name.capacity() + a.reason.capacity();
     n += part.tiles.capacity() * sizeof(FacadeTile);
     for (const FacadeTile& t : part.tiles) n += t.name.capacity();
+    for (const std::string& s : part.split_names) n += sizeof(s) + s.capacity();
     n += part.placed.instances.capacity() * sizeof(Instance) + part.placed.meshes.capacity() * sizeof(PlaceableMesh);
     for (const PlaceableMesh& m : part.placed.meshes) n += mesh_size(*m.mesh);
   }

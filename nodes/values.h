@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct TaggedMesh {
   // Facade tiles on this mesh (Facade Split), in the mesh's coordinates: what
   // Mesh placement's `tiles` mode places in.
   std::vector<FacadeTile> tiles;
+  // The names of the Facade Splits this mesh went through, also those that
+  // kept no tile on it (no street front): a name Mesh placement asks for that
+  // is none of them is a misspelling, not a building without such walls.
+  std::set<std::string> split_names;
   // Meshes placed on this one (windows, chimneys), kept as instances
   // (placed.building is null; transforms in the mesh's coordinates): .glb
   // files instance them, OBJ and PLY get them flattened into the mesh.

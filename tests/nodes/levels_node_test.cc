@@ -1,7 +1,8 @@
 // Floors from a feature's levels: Levels raises a profile's wall to a number
 // of floors and carries the roof up with it; Facade Split splits only the
 // walls of the edges it is given (the street fronts), or all but those, with
-// sizes a number parameter gives by name.
+// sizes a number parameter gives by name; Mesh Placement refuses a tile name
+// no split gives.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -102,6 +103,16 @@ TEST(FacadeSplit, AnEmptySplitPlacesNothingAndIsNoError) {
   ASSERT_TRUE(placed.ok()) << placed.messages();
   EXPECT_TRUE(placed.diagnostics.empty()) << placed.messages();
   EXPECT_TRUE(placed.outputs.at(0).get<MeshSet>().parts.at(0).placed.instances.empty());
+  // A tile name no split upstream gives is a misspelling: an error naming it and the names there are.
+  const auto typo = run_node("Mesh Placement",
+                             {{"file", Value::make(std::string("meshes/door_textured.obj"))},
+                              {"anchor", Value::make(std::string("dor"))},
+                              {"mode", Value::make(EnumValue{"tiles"})}},
+                             {{"mesh", doors.outputs.at(0)}}, PROCEX_SAMPLES);
+  EXPECT_FALSE(typo.ok());
+  EXPECT_NE(typo.messages().find("no Facade Split upstream makes tiles named 'dor' (they make 'door', 'window')"),
+            std::string::npos)
+      << typo.messages();
 }
 
 // Sizes by name: floor_height and bay_width are number parameters (an expression or an
