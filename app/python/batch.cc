@@ -27,8 +27,8 @@ struct Building {
   std::string status = "ok";  // ok, refused (the feature cannot be read), failed (evaluation)
   std::string reason;
   std::vector<std::string> warnings;
-  MeshSet meshes;
-  py::object wrapped;  // a list of Mesh, made with the GIL held once the workers are done
+  WrappedMeshes meshes;  // wrapped by the worker that evaluated it
+  py::object wrapped;    // their list, made with the GIL held once the workers are done
 };
 
 // What the workers share with the thread that holds the GIL.
@@ -40,11 +40,12 @@ struct Progress {
   std::atomic<bool> stop{false};
 };
 
-void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f, Building& b) {
+void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f, PlaceableCache& placeables,
+              Building& b) {
   FeatureEvaluation e = evaluate_feature(recipe, evaluator, f, /*parallel=*/false);  // buildings are parallel
   b.warnings = e.warnings();
   b.reason = e.reason();
-  if (e.ok) b.meshes = std::move(e.meshes);
+  if (e.ok) b.meshes = wrap_all(std::move(e.meshes), placeables);
   else b.status = e.binding_problems.empty() ? "failed" : "refused";
 }
 
@@ -69,12 +70,13 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
   // where what does not depend on the building (profiles) is computed once.
   ResultCache cache(std::size_t{32} << 20);
   Evaluator evaluator(cache, kEngineSalt);
+  PlaceableCache placeables;  // the window every building places is wrapped once
   Progress shared;
   tbb::task_arena arena(jobs > 0 ? jobs : tbb::task_arena::automatic);
   std::thread worker([&] {
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
-        if (feature_of[i] && !shared.stop) evaluate(r, evaluator, *feature_of[i], buildings[i]);
+        if (feature_of[i] && !shared.stop) evaluate(r, evaluator, *feature_of[i], placeables, buildings[i]);
         std::lock_guard lock(shared.mutex);
         ++shared.done;
         shared.changed.notify_all();
@@ -115,10 +117,10 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
   }
   worker.join();
 
-  py::list out;
-  for (Building& b : buildings) {
-    b.wrapped = wrap_all(std::move(b.meshes));
-    out.append(py::cast(std::move(b)));
+  py::list out(buildings.size());
+  for (std::size_t i = 0; i < buildings.size(); ++i) {
+    buildings[i].wrapped = to_list(buildings[i].meshes);
+    out[i] = py::cast(std::move(buildings[i]));
   }
   return out;
 }

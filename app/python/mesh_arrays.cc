@@ -83,7 +83,19 @@ const SurfaceAttributes& surface_of(py::handle self) {
 
 }  // namespace
 
-std::shared_ptr<MeshArrays> wrap(TaggedMesh part) {
+std::shared_ptr<MeshArrays> PlaceableCache::get(const PlaceableMesh& placeable) {
+  const std::pair<const Mesh*, std::string> key{placeable.mesh.get(), placeable.name};
+  {
+    std::lock_guard lock(mutex_);
+    if (auto found = wrapped_.find(key); found != wrapped_.end()) return found->second;
+  }
+  // Wrapped outside the lock; two threads wrapping the same mesh at once keep the first.
+  std::shared_ptr<MeshArrays> made = wrap_placeable(placeable);
+  std::lock_guard lock(mutex_);
+  return wrapped_.try_emplace(key, std::move(made)).first->second;
+}
+
+std::shared_ptr<MeshArrays> wrap(TaggedMesh part, PlaceableCache& placeables) {
   auto m = std::make_shared<MeshArrays>();
   m->mesh = std::move(part.mesh);
   m->face_tags = std::move(part.face_tags);
@@ -91,16 +103,29 @@ std::shared_ptr<MeshArrays> wrap(TaggedMesh part) {
   m->building = std::move(part.building);
   m->feature = part.feature;
   lay_out_faces(*m);
-  std::vector<std::shared_ptr<MeshArrays>> placeables;
-  for (const PlaceableMesh& p : part.placed.meshes) placeables.push_back(wrap_placeable(p));
+  std::vector<std::shared_ptr<MeshArrays>> wrapped;
+  for (const PlaceableMesh& p : part.placed.meshes) wrapped.push_back(placeables.get(p));
+  m->placed.reserve(part.placed.instances.size());
   for (const Instance& i : part.placed.instances)
-    m->placed.push_back({placeables[i.mesh], i.transform, i.tag, i.source_edge});
+    m->placed.push_back({wrapped[i.mesh], i.transform, i.tag, i.source_edge});
   return m;
 }
 
-py::list wrap_all(MeshSet set) {
-  py::list out;
-  for (TaggedMesh& part : set.parts) out.append(wrap(std::move(part)));
+WrappedMeshes wrap_all(MeshSet set, PlaceableCache& placeables) {
+  WrappedMeshes out;
+  out.reserve(set.parts.size());
+  for (TaggedMesh& part : set.parts) out.push_back(wrap(std::move(part), placeables));
+  return out;
+}
+
+WrappedMeshes wrap_all(MeshSet set) {
+  PlaceableCache placeables;
+  return wrap_all(std::move(set), placeables);
+}
+
+py::list to_list(const WrappedMeshes& meshes) {
+  py::list out(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) out[i] = py::cast(meshes[i]);
   return out;
 }
 

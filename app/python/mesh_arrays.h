@@ -7,7 +7,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,10 +45,29 @@ struct MeshArrays {
   std::optional<SurfaceAttributes> surface;
 };
 
-// The part as Python sees it; its placed meshes are wrapped once each, shared by their instances.
-std::shared_ptr<MeshArrays> wrap(TaggedMesh part);
-// Every part of the set, in order (the vector is consumed).
-pybind11::list wrap_all(MeshSet set);
+// Placed meshes already wrapped, by mesh and name, so that the window every
+// building of a batch shares is wrapped once (and is one procex.Mesh). Safe
+// to use from several threads at once.
+class PlaceableCache {
+ public:
+  std::shared_ptr<MeshArrays> get(const PlaceableMesh& placeable);
+
+ private:
+  std::mutex mutex_;
+  // The entry holds the mesh alive, so its address names no other mesh.
+  std::map<std::pair<const Mesh*, std::string>, std::shared_ptr<MeshArrays>> wrapped_;
+};
+
+// The part as Python sees it; its placed meshes are wrapped once each (once
+// over every call given the same `placeables`), shared by their instances.
+// Makes no Python object, so it runs without the GIL.
+std::shared_ptr<MeshArrays> wrap(TaggedMesh part, PlaceableCache& placeables);
+using WrappedMeshes = std::vector<std::shared_ptr<MeshArrays>>;
+// Every part of the set, in order (the vector is consumed); no GIL needed.
+WrappedMeshes wrap_all(MeshSet set, PlaceableCache& placeables);
+WrappedMeshes wrap_all(MeshSet set);
+// The Python list of them (with the GIL).
+pybind11::list to_list(const WrappedMeshes& meshes);
 
 // Registers procex.Mesh and procex.Placement on m.
 void bind_mesh(pybind11::module_& m);

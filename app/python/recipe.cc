@@ -86,26 +86,30 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
   const MeshRecipe& r = changed ? *changed : recipe_;
   if (footprint.is_none()) {
     EvalResult result;
+    WrappedMeshes meshes;
     {
       py::gil_scoped_release release;
       result = evaluator_.evaluate(r.graph, r.bindings, r.outputs, r.options);
+      if (result.ok()) meshes = wrap_all(gather_meshes(result));  // laying out the faces needs no GIL
     }
     last_stats_ = std::move(result.stats);
     warn(file_.string(), result.diagnostics);
     if (!result.ok()) raise_evaluation(file_, std::move(result.diagnostics));
-    return wrap_all(gather_meshes(result));
+    return to_list(meshes);
   }
   const GeoJsonFeature feature = feature_from_python(footprint);
   FeatureEvaluation e;
+  WrappedMeshes meshes;
   {
     py::gil_scoped_release release;
     e = evaluate_feature(r, evaluator_, feature, /*parallel=*/true);
+    if (e.ok) meshes = wrap_all(std::move(e.meshes));
   }
   last_stats_ = std::move(e.stats);
   if (!e.binding_problems.empty()) raise(ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason());
   warn(file_.string() + ": feature " + feature.id, e.diagnostics);
   if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
-  return wrap_all(std::move(e.meshes));
+  return to_list(meshes);
 }
 
 void raise_evaluation(const std::filesystem::path& file, std::vector<Diagnostic> diagnostics) {

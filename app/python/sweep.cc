@@ -93,7 +93,8 @@ std::shared_ptr<MeshArrays> sweep(py::handle loops, py::handle angles, py::handl
   }
   for (const std::string& note : extrusion.notes)
     if (PyErr_WarnEx(PyExc_UserWarning, ("procex.sweep: " + note).c_str(), 1) != 0) throw py::error_already_set();
-  return wrap(std::move(extrusion.mesh));
+  PlaceableCache placeables;  // a sweep places nothing
+  return wrap(std::move(extrusion.mesh), placeables);
 }
 
 }  // namespace

@@ -40,6 +40,15 @@ def test_threads_do_not_change_results():
         np.testing.assert_array_equal(a.meshes[0].face_indices, b.meshes[0].face_indices)
 
 
+def test_a_placed_mesh_is_one_object_over_the_batch():
+    # Every building places the one window file: wrapped once (in the workers), one procex.Mesh.
+    buildings = procex.batch(city(), BLOCK, jobs=2)
+    windows = [p.mesh for b in buildings for m in b.meshes for p in m.placed if p.mesh.name == "window"]
+    assert len(windows) > len(buildings)
+    assert all(w is windows[0] for w in windows)
+    assert windows[0].face_offsets[-1] == len(windows[0].face_indices) > 0
+
+
 def test_progress_counts_up_to_total():
     seen = []
     procex.batch(city(), BLOCK, jobs=2, progress=lambda done, total: seen.append((done, total)))
