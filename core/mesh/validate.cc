@@ -311,9 +311,9 @@ bool triangles_intersect(const Triangle& a, const Triangle& b, double tol) {
 
 // Triangles sharing an edge lie on two planes through it and meet only along
 // it (or fold flat onto each other facing opposite ways, which touching
-// allows). Triangles sharing one vertex are tested like any others: planes
-// through a common vertex cross on a line through it, and a fold-over there
-// shows as a segment of that line inside both.
+// allows). Triangles sharing one vertex are tested: planes through a common
+// vertex cross on a line through it, and a fold-over there shows as a segment
+// of that line inside both.
 bool share_edge(const Triangle& a, const Triangle& b) {
   int shared = 0;
   for (std::uint32_t u : a.v)
@@ -322,90 +322,285 @@ bool share_edge(const Triangle& a, const Triangle& b) {
   return shared >= 2;
 }
 
-// Triangles of different faces that share no edge, bucketed in a uniform
-// grid sized to the triangles, each pair tested once (in the lowest cell
-// both boxes cover).
-void check_intersections(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems) {
-  if (tris.size() < 2) return;
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
-  std::vector<double> extents(tris.size());
-  std::vector<std::pair<glm::dvec3, glm::dvec3>> boxes(tris.size());
-  for (std::size_t i = 0; i < tris.size(); ++i) {
-    glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
-    for (const auto& p : tris[i].p) {
-      a = glm::min(a, p);
-      b = glm::max(b, p);
-    }
-    boxes[i] = {a - tol, b + tol};
-    lo = glm::min(lo, a - tol);
-    hi = glm::max(hi, b + tol);
-    const glm::dvec3 e = b - a;
-    extents[i] = std::max({e.x, e.y, e.z});
-  }
-  // The median: a few huge triangles must not make every cell huge.
-  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2), extents.end());
-  const double typical_extent = extents[extents.size() / 2];
-  const glm::dvec3 span = hi - lo;
-  // Cells about the size of a triangle, but no more than ~8 per triangle overall.
-  double cell = std::max(typical_extent, std::max({span.x, span.y, span.z}) * 1e-6);
-  auto count_cells = [&](double c) {
-    return (std::floor(span.x / c) + 1) * (std::floor(span.y / c) + 1) * (std::floor(span.z / c) + 1);
-  };
-  while (count_cells(cell) > 8.0 * static_cast<double>(tris.size())) cell *= 2.0;
-  const std::int64_t nx = static_cast<std::int64_t>(span.x / cell) + 1, ny = static_cast<std::int64_t>(span.y / cell) + 1;
-  const std::int64_t nz = static_cast<std::int64_t>(span.z / cell) + 1;
-  auto index = [&](double v, double l, std::int64_t n) {
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>((v - l) / cell), 0, n - 1);
-  };
-  std::vector<std::array<std::int64_t, 6>> ranges(tris.size());
-  std::vector<std::pair<std::int64_t, std::uint32_t>> entries;
-  for (std::size_t i = 0; i < tris.size(); ++i) {
-    const auto& [a, b] = boxes[i];
-    auto& rg = ranges[i];
-    rg = {index(a.x, lo.x, nx), index(b.x, lo.x, nx), index(a.y, lo.y, ny),
-          index(b.y, lo.y, ny), index(a.z, lo.z, nz), index(b.z, lo.z, nz)};
-    for (std::int64_t x = rg[0]; x <= rg[1]; ++x)
-      for (std::int64_t y = rg[2]; y <= rg[3]; ++y)
-        for (std::int64_t z = rg[4]; z <= rg[5]; ++z) entries.push_back({(x * ny + y) * nz + z, static_cast<std::uint32_t>(i)});
-  }
-  std::sort(entries.begin(), entries.end());
-  std::size_t found = 0;
-  std::set<std::pair<int, int>> reported;
-  for (std::size_t begin = 0; begin < entries.size() && found < kMaxIntersectionPairs;) {
-    std::size_t end = begin;
-    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
-    const std::int64_t key = entries[begin].first;
-    const std::int64_t cz = key % nz, cy = (key / nz) % ny, cx = key / (nz * ny);
-    // A face's triangles are numbered consecutively, so within a cell they
-    // form one run; pairs start after the run, never inside it.
-    std::size_t run_end = begin;
-    for (std::size_t p = begin; p < end; ++p) {
-      if (p == run_end) {
-        run_end = p + 1;
-        while (run_end < end && tris[entries[run_end].second].face == tris[entries[p].second].face) ++run_end;
+// Pairs of triangles that share a vertex are found round that vertex, the
+// rest through a bounding-volume hierarchy. A bounding box cannot part the
+// triangles of a fan: a regular polygon's roof has n triangles meeting at its
+// apex, so every box holds the apex and every pair of boxes overlaps, and a
+// grid or a hierarchy of boxes alone tests O(n^2) pairs there. Two triangles
+// through one vertex intersect only along a segment from it (their common
+// part is convex and holds the vertex), so whether they do is decided by the
+// directions leaving the vertex; the hierarchy keeps each large fan in a
+// subtree of its own and never compares a fan with itself.
+class IntersectionSearch {
+ public:
+  IntersectionSearch(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems)
+      : tris_(tris), tol_(tol), r_(r), problems_(problems), boxes_(tris.size()) {
+    for (std::size_t i = 0; i < tris.size(); ++i) {
+      glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
+      for (const auto& p : tris[i].p) {
+        a = glm::min(a, p);
+        b = glm::max(b, p);
       }
-      for (std::size_t q = run_end; q < end; ++q) {
-        const std::uint32_t i = entries[p].second, j = entries[q].second;
-        const Triangle &a = tris[i], &b = tris[j];
-        if (share_edge(a, b)) continue;
-        const auto &ra = ranges[i], &rb = ranges[j];
-        if (std::max(ra[0], rb[0]) != cx || std::max(ra[2], rb[2]) != cy || std::max(ra[4], rb[4]) != cz) continue;
-        const auto &ba = boxes[i], &bb = boxes[j];
-        if (ba.first.x > bb.second.x || bb.first.x > ba.second.x || ba.first.y > bb.second.y ||
-            bb.first.y > ba.second.y || ba.first.z > bb.second.z || bb.first.z > ba.second.z)
-          continue;
-        if (!triangles_intersect(a, b, tol)) continue;
-        r.self_intersection_free = false;
-        ++found;
-        if (!reported.insert({std::min(a.face, b.face), std::max(a.face, b.face)}).second) continue;
-        problems.add("self-intersection", "faces " + std::to_string(std::min(a.face, b.face)) + " and " +
-                                              std::to_string(std::max(a.face, b.face)) + " intersect near " +
-                                              fmt_point((a.p[0] + a.p[1] + a.p[2]) / 3.0));
+      boxes_[i] = {a - tol, b + tol};
+    }
+  }
+
+  void run() {
+    if (tris_.size() < 2) return;
+    const std::vector<std::vector<std::uint32_t>> around = triangles_around_vertices();
+    for (std::uint32_t v = 0; v < around.size() && !done(); ++v) check_vertex(v, around[v]);
+    if (done()) return;
+    build_hierarchy(around);
+    if (!nodes_.empty()) self_pairs(root_);
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  // Round a vertex of fewer triangles every pair is tested directly; a vertex
+  // of more is a fan worth a subtree of its own.
+  static constexpr std::size_t kFanSize = 16;
+  static constexpr std::size_t kLeafSize = 4;
+
+  struct Box {
+    glm::dvec3 lo, hi;
+  };
+  struct Node {
+    Box box;
+    std::uint32_t first = 0, count = 0;     // a leaf's triangles in order_
+    std::uint32_t left = kNone, right = kNone;
+    std::uint32_t fan = kNone;  // the welded vertex every triangle below shares, if one does
+  };
+
+  bool done() const { return found_ >= kMaxIntersectionPairs; }
+
+  static bool overlap(const Box& a, const Box& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+           b.lo.z <= a.hi.z;
+  }
+
+  std::vector<std::vector<std::uint32_t>> triangles_around_vertices() const {
+    std::uint32_t n = 0;
+    for (const Triangle& t : tris_) n = std::max({n, t.v[0] + 1, t.v[1] + 1, t.v[2] + 1});
+    std::vector<std::vector<std::uint32_t>> around(n);
+    for (std::uint32_t i = 0; i < tris_.size(); ++i)
+      for (std::uint32_t v : tris_[i].v) around[v].push_back(i);
+    return around;
+  }
+
+  void test(std::uint32_t i, std::uint32_t j) {
+    ++r_.triangle_pairs_tested;
+    const Triangle &a = tris_[i], &b = tris_[j];
+    if (a.face == b.face || share_edge(a, b) || !overlap(boxes_[i], boxes_[j])) return;
+    if (!triangles_intersect(a, b, tol_)) return;
+    r_.self_intersection_free = false;
+    ++found_;
+    if (!reported_.insert({std::min(a.face, b.face), std::max(a.face, b.face)}).second) return;
+    problems_.add("self-intersection", "faces " + std::to_string(std::min(a.face, b.face)) + " and " +
+                                           std::to_string(std::max(a.face, b.face)) + " intersect near " +
+                                           fmt_point((a.p[0] + a.p[1] + a.p[2]) / 3.0));
+  }
+
+  // The pairs through vertex v. Round a large fan, each triangle's corner at v
+  // is seen from v as an arc of directions; if all directions lie within one
+  // half-space, projecting them onto a plane there (centrally, so arcs stay
+  // straight) turns each corner into a segment, and two corners can meet
+  // beyond v only where their segments do: only segments whose boxes overlap
+  // are tested. A vertex whose directions fill more than a half-space has
+  // every pair tested.
+  void check_vertex(std::uint32_t v, const std::vector<std::uint32_t>& fan) {
+    if (fan.size() < 2) return;
+    // The list is in triangle order, so a face's triangles form one run, and
+    // pairs start after it: a face fanned from this vertex (a footprint's
+    // base split into thousands of triangles) adds no pairs of its own.
+    auto all_pairs = [&] {
+      std::size_t run_end = 0;
+      for (std::size_t p = 0; p < fan.size() && !done(); ++p) {
+        if (p == run_end)
+          while (run_end < fan.size() && tris_[fan[run_end]].face == tris_[fan[p]].face) ++run_end;
+        for (std::size_t q = run_end; q < fan.size() && !done(); ++q) test(fan[p], fan[q]);
+      }
+    };
+    if (fan.size() < kFanSize) return all_pairs();
+    std::vector<std::array<glm::dvec3, 2>> arcs(fan.size());
+    glm::dvec3 axis{0.0};
+    for (std::size_t k = 0; k < fan.size(); ++k) {
+      const Triangle& t = tris_[fan[k]];
+      const int at = t.v[0] == v ? 0 : t.v[1] == v ? 1 : 2;
+      for (int e = 0; e < 2; ++e) {
+        arcs[k][e] = glm::normalize(t.p[(at + 1 + e) % 3] - t.p[at]);
+        axis += arcs[k][e];
       }
     }
-    begin = end;
+    // Directions nearer than this to the half-space's edge would project far
+    // out, where rounding could part segments that meet.
+    constexpr double kMinCosine = 0.05;
+    if (!(glm::length(axis) > 0.0)) return all_pairs();
+    axis = glm::normalize(axis);
+    for (const auto& arc : arcs)
+      if (glm::dot(arc[0], axis) < kMinCosine || glm::dot(arc[1], axis) < kMinCosine) return all_pairs();
+    const glm::dvec3 e1 = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 e2 = glm::cross(axis, e1);
+    // Projected points are at most 1 / kMinCosine from the origin; the margin
+    // covers the rounding of the projection many times over.
+    const double margin = 1e-9 / kMinCosine;
+    std::vector<Box2> boxes(fan.size());
+    for (std::size_t k = 0; k < fan.size(); ++k) {
+      glm::dvec2 ends[2];
+      for (int e = 0; e < 2; ++e) {
+        const glm::dvec3& d = arcs[k][e];
+        ends[e] = glm::dvec2(glm::dot(d, e1), glm::dot(d, e2)) / glm::dot(d, axis);
+      }
+      boxes[k] = {glm::min(ends[0], ends[1]) - margin, glm::max(ends[0], ends[1]) + margin};
+    }
+    for_each_box_pair(boxes, [&](std::size_t p, std::size_t q) {
+      test(fan[p], fan[q]);
+      return !done();
+    });
   }
-}
+
+  static std::uint32_t shared_vertex(const Triangle& a, const Triangle& b) {
+    for (std::uint32_t u : a.v)
+      for (std::uint32_t w : b.v)
+        if (u == w) return u;
+    return kNone;
+  }
+
+  Box box_of(const std::vector<std::uint32_t>& order, std::size_t first, std::size_t count) const {
+    Box b = boxes_[order[first]];
+    for (std::size_t k = first; k < first + count; ++k) {
+      b.lo = glm::min(b.lo, boxes_[order[k]].lo);
+      b.hi = glm::max(b.hi, boxes_[order[k]].hi);
+    }
+    return b;
+  }
+
+  // Puts the lower half of ids[first, first + count), by centre along the
+  // axis where the centres spread most, before the upper half.
+  template <class Centre>
+  static void split_at_median(std::vector<std::uint32_t>& ids, std::size_t first, std::size_t count, Centre centre) {
+    glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+    for (std::size_t k = first; k < first + count; ++k) {
+      lo = glm::min(lo, centre(ids[k]));
+      hi = glm::max(hi, centre(ids[k]));
+    }
+    const glm::dvec3 span = hi - lo;
+    const int axis = span.x >= span.y && span.x >= span.z ? 0 : span.y >= span.z ? 1 : 2;
+    const auto begin = ids.begin() + static_cast<std::ptrdiff_t>(first);
+    std::nth_element(begin, begin + static_cast<std::ptrdiff_t>(count / 2), begin + static_cast<std::ptrdiff_t>(count),
+                     [&](std::uint32_t a, std::uint32_t b) { return centre(a)[axis] < centre(b)[axis]; });
+  }
+
+  // Splits at the median of the triangles' centres along their longest axis.
+  std::uint32_t build(std::size_t first, std::size_t count, std::uint32_t fan) {
+    const std::uint32_t id = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.push_back({box_of(order_, first, count), static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count),
+                      kNone, kNone, fan});
+    if (count <= kLeafSize) return id;
+    split_at_median(order_, first, count, [&](std::uint32_t t) { return (boxes_[t].lo + boxes_[t].hi) * 0.5; });
+    const std::uint32_t left = build(first, count / 2, fan);
+    const std::uint32_t right = build(first + count / 2, count - count / 2, fan);
+    nodes_[id].left = left;
+    nodes_[id].right = right;
+    return id;
+  }
+
+  // Joins subtrees (the fans and the rest) into one tree, by the median of
+  // their boxes' centres along the longest axis, so that fans far apart sit in
+  // subtrees far apart.
+  std::uint32_t join(std::vector<std::uint32_t>& roots, std::size_t first, std::size_t count) {
+    if (count == 1) return roots[first];
+    split_at_median(roots, first, count, [&](std::uint32_t n) { return (nodes_[n].box.lo + nodes_[n].box.hi) * 0.5; });
+    const std::uint32_t left = join(roots, first, count / 2);
+    const std::uint32_t right = join(roots, first + count / 2, count - count / 2);
+    Node n;
+    n.box = {glm::min(nodes_[left].box.lo, nodes_[right].box.lo), glm::max(nodes_[left].box.hi, nodes_[right].box.hi)};
+    n.left = left;
+    n.right = right;
+    nodes_.push_back(n);
+    return static_cast<std::uint32_t>(nodes_.size() - 1);
+  }
+
+  // Each triangle goes to the largest fan it belongs to, if any is large.
+  void build_hierarchy(const std::vector<std::vector<std::uint32_t>>& around) {
+    std::vector<std::uint32_t> fan_of(tris_.size(), kNone);
+    for (std::uint32_t i = 0; i < tris_.size(); ++i) {
+      std::size_t best = kFanSize - 1;
+      for (std::uint32_t v : tris_[i].v)
+        if (around[v].size() > best) {
+          best = around[v].size();
+          fan_of[i] = v;
+        }
+    }
+    order_.resize(tris_.size());
+    for (std::uint32_t i = 0; i < tris_.size(); ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return fan_of[a] != fan_of[b] ? fan_of[a] < fan_of[b] : a < b;
+    });
+    std::vector<std::uint32_t> roots;
+    for (std::size_t first = 0; first < order_.size();) {
+      std::size_t end = first;
+      while (end < order_.size() && fan_of[order_[end]] == fan_of[order_[first]]) ++end;
+      roots.push_back(build(first, end - first, fan_of[order_[first]]));
+      first = end;
+    }
+    root_ = join(roots, 0, roots.size());
+  }
+
+  bool is_leaf(const Node& n) const { return n.left == kNone; }
+
+  void self_pairs(std::uint32_t id) {
+    const Node& n = nodes_[id];
+    if (done() || n.fan != kNone) return;  // a fan's pairs were tested round its vertex
+    if (is_leaf(n)) {
+      for (std::uint32_t p = n.first; p < n.first + n.count; ++p)
+        for (std::uint32_t q = p + 1; q < n.first + n.count; ++q) test_apart(order_[p], order_[q]);
+      return;
+    }
+    const std::uint32_t left = n.left, right = n.right;
+    self_pairs(left);
+    self_pairs(right);
+    cross_pairs(left, right);
+  }
+
+  void cross_pairs(std::uint32_t a, std::uint32_t b) {
+    const Node &na = nodes_[a], &nb = nodes_[b];
+    if (done() || !overlap(na.box, nb.box) || (na.fan != kNone && na.fan == nb.fan)) return;
+    if (is_leaf(na) && is_leaf(nb)) {
+      for (std::uint32_t p = na.first; p < na.first + na.count; ++p)
+        for (std::uint32_t q = nb.first; q < nb.first + nb.count; ++q) test_apart(order_[p], order_[q]);
+      return;
+    }
+    const auto size = [](const Node& n) {
+      const glm::dvec3 e = n.box.hi - n.box.lo;
+      return e.x + e.y + e.z;
+    };
+    if (is_leaf(nb) || (!is_leaf(na) && size(na) >= size(nb))) {
+      const std::uint32_t left = na.left, right = na.right;
+      cross_pairs(left, b);
+      cross_pairs(right, b);
+    } else {
+      const std::uint32_t left = nb.left, right = nb.right;
+      cross_pairs(a, left);
+      cross_pairs(a, right);
+    }
+  }
+
+  // Pairs that share a vertex were tested round it.
+  void test_apart(std::uint32_t i, std::uint32_t j) {
+    if (shared_vertex(tris_[i], tris_[j]) == kNone) test(i, j);
+  }
+
+  const std::vector<Triangle>& tris_;
+  double tol_;
+  ValidationReport& r_;
+  Problems& problems_;
+  std::vector<Box> boxes_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Node> nodes_;
+  std::uint32_t root_ = kNone;
+  std::size_t found_ = 0;
+  std::set<std::pair<int, int>> reported_;
+};
 
 }  // namespace
 
@@ -465,7 +660,7 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
     r.self_intersection_free = true;
     if (options.check_self_intersections) {
       const std::vector<Triangle> tris = triangulate_faces(mesh, welded, tol, r, problems);
-      check_intersections(tris, tol, r, problems);
+      IntersectionSearch(tris, tol, r, problems).run();
     }
   }
   return r;

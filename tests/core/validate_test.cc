@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "core/geom/error.h"
+#include "core/geom/footprint.h"
+#include "core/sweep/sweep.h"
 #include "tests/core/mesh_fixtures.h"
 
 namespace procex {
@@ -102,25 +104,28 @@ TEST(Validate, CoplanarOverlapIntersects) {
   EXPECT_FALSE(validate(build_mesh(s)).self_intersection_free);
 }
 
-// A double cone over a pentagram: its rim winds twice round the axis, so the
-// surface is closed, 2-manifold (one fan round every vertex), planar and of
-// positive volume, yet each face passes through two others along a segment
-// from the apex they share. Every crossing pair shares a vertex.
-Surface pentagram_bipyramid() {
+// A double cone over n points of a circle, joined in steps of `winding`
+// points (n odd): over a pentagram (5, 2) its rim winds twice round the axis,
+// so the surface is closed, 2-manifold (one fan round every vertex), planar
+// and of positive volume, yet each face passes through others along a
+// segment from the apex they share. Every crossing pair shares a vertex.
+Surface bipyramid(int n, int winding) {
   Surface s;
   s.vertices.push_back({0, 0, 1});   // apex above
   s.vertices.push_back({0, 0, -1});  // apex below
-  for (int k = 0; k < 5; ++k) {
-    const double a = 2.0 * std::numbers::pi * (2 * k) / 5.0;  // every second point of a pentagon
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * std::numbers::pi * (winding * k % n) / n;
     s.vertices.push_back({std::cos(a), std::sin(a), 0.0});
   }
-  for (std::uint32_t k = 0; k < 5; ++k) {
-    const std::uint32_t p = 2 + k, q = 2 + (k + 1) % 5;
-    s.faces.push_back({FaceKind::Side, static_cast<std::int32_t>(k), {{0, p, q}}, {}});
-    s.faces.push_back({FaceKind::Side, static_cast<std::int32_t>(k), {{1, q, p}}, {}});
+  for (int k = 0; k < n; ++k) {
+    const auto p = static_cast<std::uint32_t>(2 + k), q = static_cast<std::uint32_t>(2 + (k + 1) % n);
+    s.faces.push_back({FaceKind::Side, k, {{0, p, q}}, {}});
+    s.faces.push_back({FaceKind::Side, k, {{1, q, p}}, {}});
   }
   return s;
 }
+
+Surface pentagram_bipyramid() { return bipyramid(5, 2); }
 
 TEST(Validate, FoldThroughASharedVertexIntersects) {
   const ValidationReport r = validate(build_mesh(pentagram_bipyramid()));
@@ -218,6 +223,42 @@ TEST(Validate, LargeRegularPrismIsValid) {
   }
   const ValidationReport r = validate(build_mesh(test::extrude({circle}, 0.0, 10.0)));
   EXPECT_TRUE(r.ok()) << ::testing::PrintToString(r.problems);
+}
+
+// A fan too large to test pair by pair (65 faces round each apex) is tested
+// round its apex: winding once it is valid, twice its faces pass through each
+// other from the apex.
+TEST(Validate, LargeFanRoundASharedVertex) {
+  const ValidationReport once = validate(build_mesh(bipyramid(65, 1)));
+  EXPECT_TRUE(once.ok()) << ::testing::PrintToString(once.problems);
+  const ValidationReport twice = validate(build_mesh(bipyramid(65, 2)));
+  EXPECT_TRUE(twice.closed && twice.manifold && twice.planar) << ::testing::PrintToString(twice.problems);
+  EXPECT_FALSE(twice.self_intersection_free);
+  EXPECT_TRUE(mentions(twice, "intersect")) << ::testing::PrintToString(twice.problems);
+}
+
+// The roof at 45 degrees over a regular n-gon, swept: n triangles meet at
+// the apex, so the box of each holds it and every two boxes overlap; its base
+// is split into triangles fanned from one corner.
+Mesh regular_roof(int n) {
+  std::vector<glm::dvec2> ring;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / n;
+    ring.push_back({100.0 * std::cos(a), 100.0 * std::sin(a)});
+  }
+  return build_mesh(sweep(make_footprint({ring}, 45.0)));
+}
+
+// The search's work, counted rather than timed: 8 times the sides may cost
+// about 8 log 8k / log 1k (10.4) times the pairs, not 64 (every pair of sides).
+TEST(Validate, PairsTestedRoundAnApexGrowAsNLogN) {
+  const ValidationReport small = validate(regular_roof(1024));
+  const ValidationReport large = validate(regular_roof(8192));
+  EXPECT_TRUE(small.ok()) << ::testing::PrintToString(small.problems);
+  EXPECT_TRUE(large.ok()) << ::testing::PrintToString(large.problems);
+  EXPECT_GT(small.triangle_pairs_tested, 1024u);
+  EXPECT_LT(large.triangle_pairs_tested, 16 * small.triangle_pairs_tested)
+      << small.triangle_pairs_tested << " pairs at 1024 sides, " << large.triangle_pairs_tested << " at 8192";
 }
 
 }  // namespace
