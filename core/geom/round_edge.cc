@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/tolerances.h"
+
 namespace procex {
 
 std::optional<std::vector<std::size_t>> twins_round_edge(const glm::dvec3& axis, std::span<const FaceAtEdge> faces) {
@@ -23,13 +25,12 @@ std::optional<std::vector<std::size_t>> twins_round_edge(const glm::dvec3& axis,
   std::sort(round.begin(), round.end());
   // Two faces leaving the same way (to rounding) overlap there, whichever
   // order rounding gives them.
-  constexpr double kSameWay = 1e-9;
   std::vector<std::size_t> twin(faces.size());
   for (std::size_t k = 0; k < round.size(); ++k) {
     const auto& [angle, a] = round[k];
     const auto& [next_angle, b] = round[(k + 1) % round.size()];
     const double gap = k + 1 < round.size() ? next_angle - angle : next_angle + 2.0 * M_PI - angle;
-    if (faces[a].along == faces[b].along || !(gap > kSameWay)) return std::nullopt;
+    if (faces[a].along == faces[b].along || !(gap > kSameWayAngle)) return std::nullopt;
     if (!faces[a].along) twin[a] = b, twin[b] = a;
   }
   return twin;

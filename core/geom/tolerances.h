@@ -18,6 +18,10 @@ inline constexpr double kLoopAreaRelative = 1e-18;
 // straight when |sin(turn angle)| is below this.
 inline constexpr double kStraightTurnSine = 1e-12;
 
+// Faces of a solid leaving one edge at angles (radians) closer than this
+// leave it the same way: they overlap there (core/geom/round_edge.h).
+inline constexpr double kSameWayAngle = 1e-9;
+
 // Mesh validation: distance tolerance (planarity, intersections) relative to
 // the mesh's bounding-box diagonal when ValidationOptions::tolerance <= 0.
 // Ten times the sweep's clustering tolerances: a cluster's vertex is the best

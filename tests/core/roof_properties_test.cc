@@ -3,6 +3,9 @@
 // generators give valid and reproducible plans, the shrinker minimises, and
 // a fixture reads back as the case it was written from.
 #include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 #include <glm/common.hpp>
 #include <gtest/gtest.h>
@@ -12,6 +15,7 @@
 #include "core/sweep/sweep.h"
 #include "tests/support/generators/check_case.h"
 #include "tests/support/generators/grid_plans.h"
+#include "tests/support/generators/run_generated.h"
 #include "tests/support/generators/shrink.h"
 #include "tests/support/roof_properties.h"
 
@@ -130,6 +134,30 @@ TEST(Generators, ASeedGivesTheSameCaseEveryTime) {
     }
   }
   EXPECT_NE(generate_case(CaseClass::Grid, 1).description, generate_case(CaseClass::Grid, 2).description);
+}
+
+// PROCEX_SEEDS reruns reported seeds; a value that is neither a seed nor a
+// range is refused with the variable's name, not a bare std::stoull error.
+TEST(Generators, SeedsAskedForAreASeedOrARange) {
+  const char* before = std::getenv("PROCEX_SEEDS");
+  const std::string kept = before != nullptr ? before : "";
+  auto asked = [](const char* value) {
+    setenv("PROCEX_SEEDS", value, 1);
+    return seeds_asked();
+  };
+  EXPECT_EQ(asked("834"), (std::pair<std::size_t, std::size_t>(834, 835)));
+  EXPECT_EQ(asked("800-899"), (std::pair<std::size_t, std::size_t>(800, 900)));
+  EXPECT_EQ(asked(""), std::nullopt);
+  for (const char* bad : {"abc", "8x", "-5", "12-", "9-3", "1-2-3"}) {
+    try {
+      asked(bad);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("PROCEX_SEEDS='" + std::string(bad) + "'"), std::string::npos) << e.what();
+    }
+  }
+  if (before != nullptr) setenv("PROCEX_SEEDS", kept.c_str(), 1);
+  else unsetenv("PROCEX_SEEDS");
 }
 
 TEST(Shrink, DropsWhatTheFailureDoesNotNeedAndRounds) {

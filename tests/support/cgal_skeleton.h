@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct CgalSkeleton {
   // Number of skeleton faces per footprint edge id, in id order of
   // CgalSkeletonInput::edge_ids(); a straight skeleton has exactly one.
   std::vector<std::pair<std::int32_t, std::size_t>> faces_per_edge;
+};
+
+// CGAL crashed building a skeleton (it runs in a child process, see
+// cgal_skeleton.cc): the plan has no CGAL skeleton to compare with.
+struct CgalCrash : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // A footprint split into the polygons with holes CGAL takes: every loop at
@@ -51,7 +58,8 @@ class CgalSkeletonInput {
   // The oracle: the skeleton built with the exact-construction kernel
   // (Exact_predicates_exact_constructions_kernel). Bisectors no longer than
   // min_ridge are not ridges: CGAL splits a node where more than three faces
-  // meet into several joined by zero-length bisectors.
+  // meet into several joined by zero-length bisectors. Built in a child
+  // process: throws CgalCrash if CGAL crashes.
   CgalSkeleton skeleton(double min_ridge) const;
 
  private:

@@ -63,7 +63,14 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   const double rise = 1.0 / std::tan(footprint.loops.at(0).edges.at(0).angle_deg * M_PI / 180.0);
   std::vector<std::string> problems = check_valid_mesh(roof);
 
-  CgalSkeleton cgal = CgalSkeletonInput(footprint).skeleton(tol);
+  CgalSkeleton cgal;
+  try {
+    cgal = CgalSkeletonInput(footprint).skeleton(tol);
+  } catch (const CgalCrash& e) {
+    // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
+    problems.push_back(e.what());
+    return problems;
+  }
   for (glm::dvec3& n : cgal.nodes) n.z *= rise;
 
   // One roof face per footprint edge.
