@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/geom/polygon3.h"
 #include "core/geom/round_edge.h"
 #include "core/geom/turn.h"
 
@@ -371,12 +372,11 @@ void close_surface(Surface& surface) {
   auto normal = [&](std::uint32_t f) {
     if (normals.empty()) {
       normals.reserve(surface.faces.size());
+      std::vector<glm::dvec3> points;
       for (const SurfaceFace& face : surface.faces) {
-        glm::dvec3 sum(0.0);  // Newell's
-        const auto& loop = face.loops.front();
-        for (std::size_t i = 0; i < loop.size(); ++i)
-          sum += glm::cross(surface.vertices[loop[i]], surface.vertices[loop[(i + 1) % loop.size()]]);
-        normals.push_back(glm::normalize(sum));
+        points.clear();
+        for (std::uint32_t v : face.loops.front()) points.push_back(surface.vertices[v]);
+        normals.push_back(glm::normalize(newell_normal(points)));
       }
     }
     return normals[f];
