@@ -34,8 +34,11 @@ double triangle_area(const PreviewMesh& p) {
 //         |    +------+ (10,4)
 //         |           |
 //   (0,0) +-----------+ (10,0)
-TaggedMesh l_block(double height) {
-  const Footprint fp = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 8}, {0, 8}}}, 0.0);
+// moved by `at`.
+TaggedMesh l_block(double height, const glm::dvec2& at = {0, 0}) {
+  std::vector<glm::dvec2> plan = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 8}, {0, 8}};
+  for (glm::dvec2& p : plan) p += at;
+  const Footprint fp = make_footprint({plan}, 0.0);
   SweepOptions o;
   o.max_height = height;
   TaggedMesh part;
@@ -61,6 +64,23 @@ TEST(PreviewMesh, TriangulationKeepsTheAreaOfNonConvexFaces) {
   EXPECT_TRUE(p.tag("side"));
   // Every polygon edge once, as a pair of points: 18 edges of the L prism.
   EXPECT_EQ(p.edge_points.size(), 18u * 2 * 3);
+}
+
+// At a UTM position (500 km east, 5,000 km north) float32 steps by half a
+// metre: the preview draws from the centre of the bounds, so the block far
+// away is drawn with the same numbers as at the origin, and its bounds are
+// still where it stands.
+TEST(PreviewMesh, PositionsAreDrawnFromTheBoundsCentreSoFarAwayPlansKeepTheirPrecision) {
+  const TaggedMesh near = l_block(3.0), far = l_block(3.0, {500000.0, 5000000.0});
+  const PreviewMesh a = make_preview({&near}), b = make_preview({&far});
+  EXPECT_EQ(a.origin, glm::dvec3(5, 4, 1.5));
+  EXPECT_EQ(b.origin, glm::dvec3(500005, 5000004, 1.5));
+  EXPECT_EQ(b.min, glm::dvec3(500000, 5000000, 0));
+  EXPECT_EQ(b.max, glm::dvec3(500010, 5000008, 3));
+  ASSERT_EQ(a.vertices.size(), b.vertices.size());
+  for (std::size_t i = 0; i < a.vertices.size(); ++i) ASSERT_NEAR(a.vertices[i], b.vertices[i], 1e-6) << "float " << i;
+  ASSERT_EQ(a.edge_points.size(), b.edge_points.size());
+  for (std::size_t i = 0; i < a.edge_points.size(); ++i) ASSERT_NEAR(a.edge_points[i], b.edge_points[i], 1e-6) << "float " << i;
 }
 
 TEST(PreviewMesh, FaceTagsComeFromTheTaggedMesh) {
@@ -114,11 +134,12 @@ TEST(PreviewMesh, PlacedMeshesAreGroupedPerMeshWithOneTransformPerInstance) {
   EXPECT_EQ(p.placed[1].count(), 1u);
   // The cube's triangles once per group, in its own coordinates (12 triangles).
   EXPECT_EQ(p.placed[0].vertices.size(), 36 * PreviewMesh::kFloatsPerVertex);
-  // Instance b's model matrix, column-major: the translation in floats 12..14.
+  // Instance b's model matrix, column-major: the translation in floats 12..14, from the preview's origin.
   const float* m = p.placed[0].transforms.data() + PreviewInstances::kFloatsPerInstance;
   EXPECT_FLOAT_EQ(m[0], 2.0f);
   EXPECT_FLOAT_EQ(m[10], 3.0f);
-  EXPECT_FLOAT_EQ(m[12], 20.0f);
+  EXPECT_FLOAT_EQ(m[12], static_cast<float>(20.0 - p.origin.x));
+  EXPECT_FLOAT_EQ(m[13], static_cast<float>(0.0 - p.origin.y));
   // Its normal matrix (inverse transpose): x normals shrink by 2, z by 3 (renormalised in the shader).
   EXPECT_FLOAT_EQ(m[16], 0.5f);
   EXPECT_FLOAT_EQ(m[24], 1.0f / 3.0f);
@@ -171,16 +192,16 @@ TEST(PreviewMesh, PresentAnchorsGetMarkersAbsentOnesAreListed) {
   glm::dvec3 centre(0.0);
   for (std::size_t v = 0; v < 6; ++v) {
     const float* at = p.marker_triangles.data() + v * PreviewMesh::kFloatsPerVertex;
-    EXPECT_LT(at[1], 0.0f);  // in front of the wall y = 0 (outward is -y)
+    EXPECT_LT(p.origin.y + at[1], 0.0);  // in front of the wall y = 0 (outward is -y)
     EXPECT_EQ(glm::vec3(at[6], at[7], at[8]), PreviewMesh::kAnchorColor);
-    centre += glm::dvec3(at[0], at[1], at[2]) / 6.0;
+    centre += (p.origin + glm::dvec3(at[0], at[1], at[2])) / 6.0;
   }
   EXPECT_NEAR(centre.x, 5.0, 0.05);
   EXPECT_NEAR(centre.z, 1.0, 0.05);
   // And its three axes: along (red), up (green), out (blue).
   ASSERT_EQ(p.marker_lines.size(), 6 * PreviewMesh::kFloatsPerVertex);
   const float* out_tip = p.marker_lines.data() + 5 * PreviewMesh::kFloatsPerVertex;
-  EXPECT_LT(out_tip[1], -0.3f);
+  EXPECT_LT(p.origin.y + out_tip[1], -0.3);
 }
 
 // A tag with a textured material: its faces are one run drawn with the

@@ -12,7 +12,7 @@ class OrbitCamera {
   // Degrees; yaw around +z, pitch above the ground plane.
   float yaw = -50.0f, pitch = 30.0f;
   float distance = 30.0f;
-  glm::vec3 target{0.0f};
+  glm::vec3 target{0.0f};  // in the preview's frame (PreviewMesh::origin)
   float fov_deg = 40.0f;
 
   glm::vec3 eye() const;

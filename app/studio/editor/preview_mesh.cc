@@ -169,6 +169,18 @@ glm::dvec3 unit_or_up(const glm::dvec3& n) {
   return len > 0 ? n / len : glm::dvec3(0, 0, 1);
 }
 
+// The smallest axis-aligned box holding the points added.
+struct Box {
+  glm::dvec3 lo{0.0}, hi{0.0};
+  bool empty = true;
+  void add(const glm::dvec3& p) {
+    lo = empty ? p : glm::min(lo, p);
+    hi = empty ? p : glm::max(hi, p);
+    empty = false;
+  }
+  glm::dvec3 centre() const { return 0.5 * (lo + hi); }
+};
+
 // Appends the triangles of polygon `pts` (Newell normal `n`) with `look`,
 // its corners' texture coordinates at `uvs` (pts.size() of them) when it has
 // a texture.
@@ -191,7 +203,8 @@ std::vector<std::size_t> first_corners(const Mesh& mesh) {
 
 class Builder {
  public:
-  explicit Builder(PreviewMesh& out) : out_(out) {}
+  // Positions are drawn relative to `origin` (PreviewMesh::origin).
+  Builder(PreviewMesh& out, const glm::dvec3& origin) : out_(out) { out_.origin = origin; }
 
   TagSummary& tag(const std::string& name) {
     TagSummary& t = tags_[name];
@@ -209,9 +222,9 @@ class Builder {
     ++out_.faces;
   }
   void extend(const glm::dvec3& p) {
-    out_.min = first_ ? p : glm::min(out_.min, p);
-    out_.max = first_ ? p : glm::max(out_.max, p);
-    first_ = false;
+    bounds_.add(p);
+    out_.min = bounds_.lo;
+    out_.max = bounds_.hi;
   }
 
   void add_building(const TaggedMesh& part) {
@@ -219,19 +232,22 @@ class Builder {
     ++out_.meshes;
     const MeshUvs uvs(mesh);
     for (Mesh::FaceHandle f : mesh.faces()) {
-      const std::vector<glm::dvec3> pts = face_points(mesh, f);
+      std::vector<glm::dvec3> pts = face_points(mesh, f);
       if (pts.size() < 3) continue;
+      for (glm::dvec3& p : pts) {
+        extend(p);
+        p -= out_.origin;
+      }
       const glm::dvec3 n = newell(pts);
       TagSummary& t = tag(preview_tag(part, f));
       count_face(t, n);
       append_face(building_, pts, n, look(t, t.name, mesh), uvs.of(f));
-      for (const glm::dvec3& p : pts) extend(p);
     }
     for (Mesh::EdgeHandle e : mesh.edges()) {
       const Mesh::HalfedgeHandle h = mesh.halfedge_handle(e, 0);
       for (Mesh::VertexHandle vh : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)}) {
         const auto& p = mesh.point(vh);
-        push(out_.edge_points, glm::dvec3(p[0], p[1], p[2]));
+        push(out_.edge_points, glm::dvec3(p[0], p[1], p[2]) - out_.origin);
       }
     }
     for (const Instance& in : part.placed.instances)
@@ -247,10 +263,10 @@ class Builder {
     for (const GltfPrimitiveData& prim : building.primitives) {
       TagSummary& t = tag(prim.tag.empty() ? "face" : prim.tag);
       const Look l = glb_look(t, prim);
-      for_each_glb_face(prim, origin, [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
+      for_each_glb_face(prim, origin, out_.origin, [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
         count_face(t, n);
         append_triangles(building_, corners, n, l, uvs);
-        for (const glm::dvec3& p : corners) extend(p);
+        for (const glm::dvec3& p : corners) extend(out_.origin + p);
       }, out_.edge_points);
     }
     // Instance transforms are in glTF's frame, from the building's origin: R^-1 T(origin) M R in procex's.
@@ -279,16 +295,11 @@ class Builder {
   struct Prototype {
     std::size_t group = 0;
     std::vector<std::pair<TagSummary*, glm::dvec3>> faces;
-    glm::dvec3 lo{0.0}, hi{0.0};
-    bool empty = true;
+    Box bounds;
     // A face of tag `t`, area vector `n`, through points `pts` (its bounds).
     void add_face(TagSummary& t, const glm::dvec3& n, const std::vector<glm::dvec3>& pts) {
       faces.emplace_back(&t, n);
-      for (const glm::dvec3& p : pts) {
-        lo = empty ? p : glm::min(lo, p);
-        hi = empty ? p : glm::max(hi, p);
-        empty = false;
-      }
+      for (const glm::dvec3& p : pts) bounds.add(p);
     }
   };
 
@@ -365,13 +376,16 @@ class Builder {
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
     const glm::dmat3 cofactor = glm::determinant(linear) * normal_matrix;
     for (auto& [t, n] : proto.faces) count_face(*t, cofactor * n);
+    const Box& b = proto.bounds;
     for (int c = 0; c < 8; ++c) {
-      const glm::dvec3 corner((c & 1 ? proto.hi : proto.lo).x, (c & 2 ? proto.hi : proto.lo).y, (c & 4 ? proto.hi : proto.lo).z);
+      const glm::dvec3 corner((c & 1 ? b.hi : b.lo).x, (c & 2 ? b.hi : b.lo).y, (c & 4 ? b.hi : b.lo).z);
       extend(glm::dvec3(m * glm::dvec4(corner, 1.0)));
     }
+    glm::dmat4 shown = m;
+    shown[3] -= glm::dvec4(out_.origin, 0.0);
     std::vector<float>& out = out_.placed[proto.group].transforms;
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) out.push_back(static_cast<float>(m[c][r]));
+      for (int r = 0; r < 4; ++r) out.push_back(static_cast<float>(shown[c][r]));
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) out.push_back(static_cast<float>(normal_matrix[c][r]));
     ++out_.instances;
@@ -408,11 +422,13 @@ class Builder {
   // The triangles of one primitive grouped into the faces they were cut from
   // (the writer gives each face its own vertices, so triangles sharing a
   // vertex are one face), each with its corners' triangles (three points
-  // each, procex's frame), its area vector and its corners' texture
-  // coordinates (none if the primitive has none); the faces' outlines (edges
-  // of one triangle only) go to `edges`.
+  // each, procex's frame, relative to `shown_from`), its area vector and its
+  // corners' texture coordinates (none if the primitive has none); the faces'
+  // outlines (edges of one triangle only) go to `edges`. `origin`: the
+  // building's, in the file's frame.
   template <class Fn>
-  static void for_each_glb_face(const GltfPrimitiveData& prim, const glm::dvec3& origin, Fn&& fn, std::vector<float>& edges) {
+  static void for_each_glb_face(const GltfPrimitiveData& prim, const glm::dvec3& origin, const glm::dvec3& shown_from, Fn&& fn,
+                                std::vector<float>& edges) {
     const std::size_t n_vertices = prim.positions.size() / 3;
     std::vector<std::size_t> root(n_vertices);
     std::iota(root.begin(), root.end(), std::size_t{0});
@@ -430,7 +446,8 @@ class Builder {
     for (std::size_t i = 0; i + 2 < prim.indices.size(); i += 3)
       if (prim.indices[i] < n_vertices && prim.indices[i + 1] < n_vertices && prim.indices[i + 2] < n_vertices) faces[find(prim.indices[i])].push_back(i);
     const auto at = [&](std::uint32_t v) {
-      return from_file_axes(origin + glm::dvec3(prim.positions[3 * v], prim.positions[3 * v + 1], prim.positions[3 * v + 2]), UpAxis::Y);
+      return from_file_axes(origin + glm::dvec3(prim.positions[3 * v], prim.positions[3 * v + 1], prim.positions[3 * v + 2]), UpAxis::Y) -
+             shown_from;
     };
     const bool has_uvs = prim.uvs.size() == 2 * n_vertices;
     for (const auto& [face_root, tris] : faces) {
@@ -479,7 +496,7 @@ class Builder {
     for (const GltfPrimitiveData& prim : placed.primitives) {
       TagSummary& t = tag(!instance_tag.empty() ? instance_tag : !prim.tag.empty() ? prim.tag : placed.building);
       const Look l = glb_look(t, prim);
-      for_each_glb_face(prim, glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
+      for_each_glb_face(prim, glm::dvec3(0.0), glm::dvec3(0.0), [&](const std::vector<glm::dvec3>& corners, const glm::dvec3& n, const std::vector<glm::dvec2>& uvs) {
         proto.add_face(t, n, corners);
         append_triangles(vertices, corners, n, l, uvs);
       }, unused_edges);
@@ -490,7 +507,7 @@ class Builder {
   }
 
   void add_marker(const Frame& fr, double size) {
-    const glm::dvec3 o = fr.origin + 0.02 * size * fr.normal;  // just off the face
+    const glm::dvec3 o = fr.origin - out_.origin + 0.02 * size * fr.normal;  // just off the face
     const glm::dvec3 a = 0.5 * size * fr.along, u = 0.5 * size * fr.up;
     const glm::dvec3 c[4] = {o - a - u, o + a - u, o + a + u, o - a + u};
     for (int i : {0, 1, 2, 0, 2, 3}) push_vertex(out_.marker_triangles, c[i], fr.normal, PreviewMesh::kAnchorColor);
@@ -508,8 +525,30 @@ class Builder {
   std::map<std::string, TagSummary> tags_;  // std::map: references stay valid as tags are added
   std::map<std::tuple<const Mesh*, std::string, std::string>, Prototype> prototypes_;
   std::map<std::pair<std::size_t, std::string>, Prototype> glb_prototypes_;
-  bool first_ = true;
+  Box bounds_;  // out_.min and out_.max
 };
+
+// The centre of the buildings' bounds (their placed meshes stand on them).
+glm::dvec3 centre_of(const std::vector<const TaggedMesh*>& meshes) {
+  Box box;
+  for (const TaggedMesh* part : meshes)
+    for (Mesh::VertexHandle v : part->mesh->vertices()) {
+      const auto& p = part->mesh->point(v);
+      box.add(glm::dvec3(p[0], p[1], p[2]));
+    }
+  return box.centre();
+}
+
+glm::dvec3 centre_of(const GltfScene& scene) {
+  Box box;
+  for (const GltfMeshData& building : scene.meshes)
+    for (const GltfPrimitiveData& prim : building.primitives)
+      for (std::size_t i = 0; i + 2 < prim.positions.size(); i += 3)
+        box.add(from_file_axes(glm::dvec3(building.origin[0] + prim.positions[i], building.origin[1] + prim.positions[i + 1],
+                                          building.origin[2] + prim.positions[i + 2]),
+                               UpAxis::Y));
+  return box.centre();
+}
 
 }  // namespace
 
@@ -519,7 +558,7 @@ std::size_t PreviewMesh::absent_anchors() const {
 
 PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes) {
   PreviewMesh out;
-  Builder builder(out);
+  Builder builder(out, centre_of(meshes));
   for (const TaggedMesh* part : meshes) builder.add_building(*part);
   builder.finish();
   return out;
@@ -527,7 +566,7 @@ PreviewMesh make_preview(const std::vector<const TaggedMesh*>& meshes) {
 
 PreviewMesh make_preview(const GltfScene& scene) {
   PreviewMesh out;
-  Builder builder(out);
+  Builder builder(out, centre_of(scene));
   for (const GltfMeshData& building : scene.meshes) builder.add_glb_building(scene, building);
   builder.finish();
   return out;

@@ -42,7 +42,8 @@ struct PreviewRange {
 struct PreviewInstances {
   std::vector<float> vertices;    // as PreviewMesh::vertices, in the placed mesh's own coordinates
   std::vector<PreviewRange> ranges;  // of vertices, by texture
-  // Per instance: the model matrix (16 floats, column-major), then the matrix
+  // Per instance: the model matrix (16 floats, column-major; it places the
+  // mesh relative to PreviewMesh::origin), then the matrix
   // that carries its normals (the inverse transpose of its 3x3 part, 9 floats).
   std::vector<float> transforms;
   static constexpr std::size_t kFloatsPerInstance = 25;
@@ -56,7 +57,7 @@ struct PreviewAnchor {
 };
 
 struct PreviewMesh {
-  // Interleaved per vertex: position xyz, normal xyz, colour rgb, texture
+  // Interleaved per vertex: position xyz (from `origin`), normal xyz, colour rgb, texture
   // coordinates uv (flat shaded: every triangle has its own three vertices).
   // The texture coordinates are in repeats of the face's texture (metres
   // divided by its material's tile size; v up the image), zero where there is
@@ -67,7 +68,12 @@ struct PreviewMesh {
   // Polygon edges (not the triangulation's diagonals): pairs of xyz points.
   std::vector<float> edge_points;
   std::vector<TagSummary> tags;  // sorted by name; placed meshes' faces included
-  glm::dvec3 min{0.0}, max{0.0};  // buildings and placed meshes
+  glm::dvec3 min{0.0}, max{0.0};  // buildings and placed meshes, in the scene's own coordinates
+  // Every position drawn (vertices, edge points, markers, the placed meshes'
+  // translations) is relative to this point, the centre of the buildings'
+  // bounds: as float32, a coordinate at a UTM northing (5,000,000 m) would
+  // snap to half a metre; near the origin it keeps micrometres.
+  glm::dvec3 origin{0.0};
   std::size_t meshes = 0, faces = 0;
   std::vector<PreviewInstances> placed;  // one per distinct placed mesh (and instance tag)
   std::size_t instances = 0;

@@ -266,18 +266,27 @@ void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   gl_->upload(gl_->edge_vbo, mesh_ ? mesh_->edge_points : kNone);
   gl_->edge_vertices = mesh_ ? static_cast<GLsizei>(mesh_->edge_points.size() / 3) : 0;
   if (mesh_ && !mesh_->empty()) {
-    // A ground grid around the mesh, at its lowest height, in 1-2-5 steps.
-    const glm::vec3 lo(mesh_->min), hi(mesh_->max);
-    const float extent = std::max(hi.x - lo.x, hi.y - lo.y) * 1.5f + 1.0f;
-    const float step = std::pow(10.0f, std::floor(std::log10(extent / 10.0f)));
-    const glm::vec2 c((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
-    const float x0 = std::floor((c.x - extent) / step) * step, y0 = std::floor((c.y - extent) / step) * step;
-    const int n = static_cast<int>(2.0f * extent / step) + 1;
+    // The camera keeps looking at the same place as the mesh's origin moves
+    // (an edit that grows the building moves its bounds' centre).
+    camera_.target += glm::vec3(origin_ - mesh_->origin);
+    origin_ = mesh_->origin;
+    // A ground grid around the mesh, at its lowest height, in 1-2-5 steps,
+    // its lines on multiples of the step in the scene's coordinates.
+    const glm::dvec3 lo = mesh_->min, hi = mesh_->max;
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y) * 1.5 + 1.0;
+    const double step = std::pow(10.0, std::floor(std::log10(extent / 10.0)));
+    const glm::dvec2 c((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+    const double x0 = std::floor((c.x - extent) / step) * step, y0 = std::floor((c.y - extent) / step) * step;
+    const int n = static_cast<int>(2.0 * extent / step) + 1;
+    const double x1 = x0 + n * step, y1 = y0 + n * step;
     std::vector<float> grid;
+    const auto put = [&](double x, double y) {
+      const glm::vec3 p(glm::dvec3(x, y, lo.z) - origin_);
+      grid.insert(grid.end(), {p.x, p.y, p.z});
+    };
     for (int i = 0; i <= n; ++i) {
-      const float x = x0 + static_cast<float>(i) * step, y = y0 + static_cast<float>(i) * step;
-      const float x1 = x0 + static_cast<float>(n) * step, y1 = y0 + static_cast<float>(n) * step;
-      grid.insert(grid.end(), {x, y0, lo.z, x, y1, lo.z, x0, y, lo.z, x1, y, lo.z});
+      const double x = x0 + i * step, y = y0 + i * step;
+      put(x, y0), put(x, y1), put(x0, y), put(x1, y);
     }
     gl_->upload(gl_->grid_vbo, grid);
     gl_->grid_vertices = static_cast<GLsizei>(grid.size() / 3);
@@ -287,7 +296,7 @@ void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
 
 void PreviewView::frame_all() {
   if (!mesh_ || mesh_->empty()) return;
-  camera_.frame(glm::vec3(mesh_->min), glm::vec3(mesh_->max));
+  camera_.frame(glm::vec3(mesh_->min - origin_), glm::vec3(mesh_->max - origin_));
   framed_ = true;
   stale_ = true;
 }

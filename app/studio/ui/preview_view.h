@@ -2,7 +2,9 @@
 // offscreen framebuffer (shaded by face tag, the meshes placed on them drawn
 // instanced, anchor markers and wireframe on request, ground grid)
 // and shows it as an ImGui image; mouse drags orbit (left), pan (middle or
-// shift+left), the wheel zooms.
+// shift+left), the wheel zooms. Everything is drawn relative to the mesh's
+// origin (PreviewMesh::origin), the camera too, so float32 keeps its
+// precision at UTM coordinates.
 #pragma once
 
 #include <cstdint>
@@ -45,7 +47,8 @@ class PreviewView {
   void render(int width, int height);
   std::unique_ptr<Gl> gl_;
   std::shared_ptr<const PreviewMesh> mesh_;
-  OrbitCamera camera_;
+  OrbitCamera camera_;  // in the shown mesh's frame: from origin_
+  glm::dvec3 origin_{0.0};  // the last non-empty mesh's PreviewMesh::origin
   bool framed_ = false;
   // The offscreen image is redrawn only when something it shows changed
   // (software GL under Xvfb makes every redraw count).
