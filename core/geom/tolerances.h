@@ -62,6 +62,18 @@ struct SweepTolerances {
   static constexpr double max_slope = 1e6;
 };
 
+// Roof overhangs (core/mesh/roof_overhang.h).
+
+// Points of the slab closer than this * the roof's extent are one vertex: the
+// roof's planes are fitted to a sweep's faces, which meet only to within its
+// clustering distance (SweepTolerances::relative), so three planes through
+// one corner of it may meet a little apart.
+inline constexpr double kRoofWeldRelative = 1e-7;
+
+// A roof face whose unit normal rises less than this is refused: it is a wall
+// (or faces down), and running it past the walls would run it sideways.
+inline constexpr double kRoofLeastUpward = 1e-3;
+
 // Mesh placement (core/placement).
 
 // A frame's axes must be unit and perpendicular to within this (dimensionless):

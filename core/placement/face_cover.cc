@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/convex_clip.h"
+#include "core/geom/nesting.h"
 
 namespace procex {
 
@@ -60,36 +62,12 @@ bool covered(const std::vector<std::vector<glm::dvec2>>& faces, glm::dvec2 lo, g
   return inside >= area * (1 - kFaceCoverUncovered);
 }
 
-namespace {
-
-// Keeps the part of `poly` on the inner side of one clip line: inside(p) >= 0.
-template <class Inside, class Cross>
-std::vector<glm::dvec2> clip(const std::vector<glm::dvec2>& poly, Inside inside, Cross cross) {
-  std::vector<glm::dvec2> out;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()];
-    const double da = inside(a), db = inside(b);
-    if (da >= 0) out.push_back(a);
-    if ((da >= 0) != (db >= 0)) out.push_back(cross(a, b, da / (da - db)));
-  }
-  return out;
-}
-
-}  // namespace
-
 double area_inside(const std::vector<glm::dvec2>& polygon, glm::dvec2 lo, glm::dvec2 hi) {
-  auto lerp = [](glm::dvec2 a, glm::dvec2 b, double t) { return a + t * (b - a); };
-  std::vector<glm::dvec2> p = polygon;
-  p = clip(p, [&](glm::dvec2 q) { return q.x - lo.x; }, lerp);
-  p = clip(p, [&](glm::dvec2 q) { return hi.x - q.x; }, lerp);
-  p = clip(p, [&](glm::dvec2 q) { return q.y - lo.y; }, lerp);
-  p = clip(p, [&](glm::dvec2 q) { return hi.y - q.y; }, lerp);
-  double twice = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return std::abs(twice) / 2;
+  std::vector<glm::dvec2> p = clip_to_half_plane(polygon, {1, 0}, -lo.x);
+  p = clip_to_half_plane(p, {-1, 0}, hi.x);
+  p = clip_to_half_plane(p, {0, 1}, -lo.y);
+  p = clip_to_half_plane(p, {0, -1}, hi.y);
+  return std::abs(twice_signed_area(p)) / 2;
 }
 
 }  // namespace procex

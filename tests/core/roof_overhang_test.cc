@@ -1,0 +1,321 @@
+// Roof overhangs: the slab a roof makes when run past its walls is a closed,
+// oriented 2-manifold whose faces lie on the roof's planes (the underside),
+// on those planes moved out by the thickness (the top) or stand vertical (the
+// fascia); it reaches the given distances past the walls in plan, and its
+// volume is what the roof's planes give in closed form for a gable, a hip, a
+// mansard and a gambrel.
+#include "core/mesh/roof_overhang.h"
+
+#include <cmath>
+#include <algorithm>
+#include <functional>
+#include <set>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "core/geom/error.h"
+#include "core/geom/polygon3.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/validate.h"
+#include "core/sweep/sweep.h"
+
+namespace procex {
+namespace {
+
+using Roof = std::vector<std::vector<glm::dvec3>>;
+
+// A rectangle x in [0, w], y in [0, l]; edges 0 and 2 (along x) take profile
+// `ends`, edges 1 and 3 (along y) take `sides`.
+Surface building(double w, double l, const Profile& sides, const Profile& ends) {
+  Footprint fp = make_footprint({{{0, 0}, {w, 0}, {w, l}, {0, l}}}, 0);
+  fp.profiles = {sides, ends};
+  for (int e : {1, 3}) fp.loops[0].edges[e].profile = 0;
+  for (int e : {0, 2}) fp.loops[0].edges[e].profile = 1;
+  return sweep(fp);
+}
+
+Roof faces_tagged(const Surface& s, const std::set<std::string>& tags) {
+  Roof roof;
+  for (const SurfaceFace& f : s.faces)
+    if (tags.count(f.tag)) {
+      EXPECT_EQ(f.loops.size(), 1u) << "a roof face with a hole";
+      roof.emplace_back();
+      for (std::uint32_t v : f.loops[0]) roof.back().push_back(s.vertices[v]);
+    }
+  return roof;
+}
+
+struct Box {
+  glm::dvec3 lo{HUGE_VAL}, hi{-HUGE_VAL};
+};
+
+Box box_of(const Surface& s) {
+  Box b;
+  for (const glm::dvec3& p : s.vertices) b.lo = glm::min(b.lo, p), b.hi = glm::max(b.hi, p);
+  return b;
+}
+
+// A plane through a face: unit normal and offset.
+struct FacePlane {
+  glm::dvec3 n;
+  double d;
+};
+
+FacePlane plane_of(const std::vector<glm::dvec3>& pts) {
+  const glm::dvec3 n = glm::normalize(newell_normal(pts));
+  return {n, glm::dot(n, pts[0])};
+}
+
+// Checks everything a slab must be and returns its volume: closed, 2-manifold,
+// oriented, planar, free of self-intersections; each top face on a roof
+// plane moved up by the thickness, each underside or soffit face on a roof
+// plane facing down, each fascia face vertical.
+double check_slab(const Roof& roof, const Surface& slab, double thickness) {
+  const ValidationReport r = validate(build_mesh(slab));
+  std::string problems;
+  for (const auto& p : r.problems) problems += p + "\n";
+  EXPECT_TRUE(r.ok()) << problems;
+  std::vector<FacePlane> roof_planes;
+  for (const auto& f : roof) roof_planes.push_back(plane_of(f));
+  std::map<std::string, int> per_tag;
+  for (const SurfaceFace& f : slab.faces) {
+    ++per_tag[f.tag];
+    std::vector<glm::dvec3> pts;
+    for (std::uint32_t v : f.loops[0]) pts.push_back(slab.vertices[v]);
+    const FacePlane p = plane_of(pts);
+    if (f.tag == "fascia") {
+      EXPECT_NEAR(p.n.z, 0.0, 1e-9);
+      continue;
+    }
+    const bool top = f.tag == "roof";
+    EXPECT_TRUE(top || f.tag == "underside" || f.tag == "soffit") << f.tag;
+    const bool on_a_plane = std::any_of(roof_planes.begin(), roof_planes.end(), [&](const FacePlane& q) {
+      const glm::dvec3 n = top ? q.n : -q.n;
+      const double d = top ? q.d + thickness : -q.d;
+      if (glm::length(n - p.n) > 1e-7) return false;
+      return std::all_of(pts.begin(), pts.end(), [&](glm::dvec3 x) { return std::abs(glm::dot(n, x) - d) < 1e-7; });
+    });
+    EXPECT_TRUE(on_a_plane) << f.tag << " face at (" << pts[0].x << ", " << pts[0].y << ", " << pts[0].z
+                            << ") lies on no roof plane" << (top ? " moved up by the thickness" : "");
+  }
+  EXPECT_GT(per_tag["roof"], 0);
+  EXPECT_GT(per_tag["fascia"], 0);
+  EXPECT_GT(per_tag["underside"], 0);
+  return r.volume;
+}
+
+// The integral of f over [a, b] by the midpoint rule (f piecewise linear with
+// a few kinks: the error is far below the tests' tolerance).
+double integral(const std::function<double(double)>& f, double a, double b) {
+  const int n = 200000;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) sum += f(a + (i + 0.5) * (b - a) / n);
+  return sum * (b - a) / n;
+}
+
+const Profile kGableEnd{"gable end", {{0, 0}, {0, 30}}, {"gable"}};
+
+TEST(RoofOverhang, GableSlabIsTheExtendedRoofTimesItsThickness) {
+  // 10 wide (x), 16 long (y), walls 3 m, slopes at 45 degrees to a ridge at 8 m.
+  const Surface house = building(10, 16, {"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}}, kGableEnd);
+  const Roof roof = faces_tagged(house, {"roof"});
+  ASSERT_EQ(roof.size(), 2u);
+  const Surface slab = roof_overhang(roof, {.eave = 0.5, .verge = 0.3, .thickness = 0.2});
+  const double volume = check_slab(roof, slab, 0.2);
+  // Both planes slope 1: the slab is 0.2 thick over a sloped area of sqrt(2) x its plan.
+  EXPECT_NEAR(volume, 0.2 * std::sqrt(2.0) * 11.0 * 16.6, 1e-7);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -0.5, 1e-9);  // the eaves reach 0.5 past the long walls
+  EXPECT_NEAR(b.hi.x, 10.5, 1e-9);
+  EXPECT_NEAR(b.lo.y, -0.3, 1e-9);  // the verges 0.3 past the gables
+  EXPECT_NEAR(b.hi.y, 16.3, 1e-9);
+  EXPECT_NEAR(b.lo.z, 3.0 - 0.5, 1e-9);  // the eave drops along the slope
+  EXPECT_NEAR(b.hi.z, 8.0 + 0.2 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(RoofOverhang, FlushVergesLeaveTheGablesBare) {
+  const Surface house = building(10, 16, {"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}}, kGableEnd);
+  const Roof roof = faces_tagged(house, {"roof"});
+  const Surface slab = roof_overhang(roof, {.eave = 0.4, .verge = 0.0, .thickness = 0.1});
+  EXPECT_NEAR(check_slab(roof, slab, 0.1), 0.1 * std::sqrt(2.0) * 10.8 * 16.0, 1e-7);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.y, 0.0, 1e-9);
+  EXPECT_NEAR(b.hi.y, 16.0, 1e-9);
+}
+
+TEST(RoofOverhang, HipRoofRunsOutByTheEaveAllRound) {
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Surface house = building(10, 16, eave, eave);
+  const Roof roof = faces_tagged(house, {"roof"});
+  ASSERT_EQ(roof.size(), 4u);
+  // Every edge of a hip roof is level: the verge distance is never used.
+  const Surface slab = roof_overhang(roof, {.eave = 0.5, .verge = 4.0, .thickness = 0.2});
+  EXPECT_NEAR(check_slab(roof, slab, 0.2), 0.2 * std::sqrt(2.0) * 11.0 * 17.0, 1e-7);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -0.5, 1e-9);
+  EXPECT_NEAR(b.hi.y, 16.5, 1e-9);
+}
+
+TEST(RoofOverhang, HipRoofWithSteeperEnds) {
+  // The hips are no longer the corners' bisectors: past the walls the hip
+  // line runs on into one side's band, and each slab corner follows it.
+  const Surface house = building(10, 16, {"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}},
+                                 {"steep", {{0, 0}, {0, 3}, {-2, 8}}, {"wall", "roof"}});
+  const Roof roof = faces_tagged(house, {"roof"});
+  const Surface slab = roof_overhang(roof, {.eave = 0.6, .verge = 0.1, .thickness = 0.25});
+  EXPECT_GT(check_slab(roof, slab, 0.25), 0.0);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -0.6, 1e-9);
+  EXPECT_NEAR(b.lo.y, -0.6, 1e-9);
+  EXPECT_NEAR(b.lo.z, 3.0 - 0.6 * 2.5, 1e-9);  // the steep ends' eaves drop 2.5 per metre
+}
+
+TEST(RoofOverhang, PyramidAndOctagonMeetAtOnePoint) {
+  // Four and eight planes through one apex: the slab must still close there.
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Surface square = building(10, 10, eave, eave);
+  const Roof pyramid = faces_tagged(square, {"roof"});
+  EXPECT_NEAR(check_slab(pyramid, roof_overhang(pyramid, {.eave = 0.5, .verge = 0, .thickness = 0.2}), 0.2),
+              0.2 * std::sqrt(2.0) * 11.0 * 11.0, 1e-7);
+  std::vector<glm::dvec2> octagon;
+  for (int i = 0; i < 8; ++i) octagon.push_back({10 * std::cos(i * M_PI / 4), 10 * std::sin(i * M_PI / 4)});
+  Footprint fp = make_footprint({octagon}, 0);
+  fp.profiles = {eave};
+  for (auto& e : fp.loops[0].edges) e.profile = 0;
+  const Roof roof = faces_tagged(sweep(fp), {"roof"});
+  ASSERT_EQ(roof.size(), 8u);
+  // The octagon run out by 0.5: its area grows by 0.5 x its perimeter and 8 corner kites.
+  const double side = 2 * 10 * std::sin(M_PI / 8), apothem = 10 * std::cos(M_PI / 8);
+  const double area = 4 * side * apothem + 0.5 * 8 * side + 0.25 * 8 * std::tan(M_PI / 8);
+  EXPECT_NEAR(check_slab(roof, roof_overhang(roof, {.eave = 0.5, .verge = 0, .thickness = 0.2}), 0.2),
+              0.2 * std::sqrt(2.0) * area, 1e-6);
+}
+
+// The slab over a roof whose every section at distance d from the nearest wall
+// is `lower` up to the break and `upper` past it (two planes each): the top
+// is those planes moved out by the thickness, cut where they meet.
+struct TwoSlopes {
+  double wall, run1, rise1, run2, rise2;  // from the wall top: in run1 up rise1, then in run2 up rise2
+  double under(double d) const {
+    return std::min(wall + d * rise1 / run1, wall + rise1 + (d - run1) * rise2 / run2);
+  }
+  double over(double d, double t) const {
+    const double k1 = rise1 / run1, k2 = rise2 / run2;
+    return std::min(wall + d * k1 + t * std::sqrt(1 + k1 * k1), wall + rise1 + (d - run1) * k2 + t * std::sqrt(1 + k2 * k2));
+  }
+};
+
+TEST(RoofOverhang, MansardTwoSlopesAllRound) {
+  // Walls to 3, a steep lower slope 1 in over 3 up, a shallow upper slope 3 in per 1 up.
+  const TwoSlopes s{3, 1, 3, 3, 1};
+  const Profile mansard{"mansard", {{0, 0}, {0, 3}, {-1, 6}, {-4, 7}}, {"wall", "mansard", "roof"}};
+  const Surface house = building(20, 10, mansard, mansard);
+  const Roof roof = faces_tagged(house, {"mansard", "roof"});
+  ASSERT_EQ(roof.size(), 8u);
+  const double e = 0.4, t = 0.15;
+  const double volume = check_slab(roof, roof_overhang(roof, {.eave = e, .verge = 0.9, .thickness = t}), t);
+  // Over the 20.8 x 10.8 plan, the points u from its edge form a ring of
+  // length 2 (20.8 + 10.8) - 8u, at d = u - e from the walls.
+  const double expected = integral(
+      [&](double u) { return (s.over(u - e, t) - s.under(u - e)) * (2 * (20.8 + 10.8) - 8 * u); }, 0, 10.8 / 2);
+  EXPECT_NEAR(volume, expected, 1e-6 * expected);
+}
+
+TEST(RoofOverhang, GambrelSidesGableEnds) {
+  // 20 long (x), 10 wide (y): walls 3, 2 in over 2 up, then 3 in over 2 up.
+  const TwoSlopes s{3, 2, 2, 3, 2};
+  Footprint fp = make_footprint({{{0, 0}, {20, 0}, {20, 10}, {0, 10}}}, 0);
+  fp.profiles = {{"gambrel", {{0, 0}, {0, 3}, {-2, 5}, {-5, 7}}, {"wall", "lower", "upper"}}, kGableEnd};
+  for (int e : {0, 2}) fp.loops[0].edges[e].profile = 0;
+  for (int e : {1, 3}) fp.loops[0].edges[e].profile = 1;
+  const Roof roof = faces_tagged(sweep(fp), {"lower", "upper"});
+  ASSERT_EQ(roof.size(), 4u);
+  const double e = 0.5, v = 0.35, t = 0.2;
+  const Surface slab = roof_overhang(roof, {.eave = e, .verge = v, .thickness = t});
+  const double volume = check_slab(roof, slab, t);
+  // A prism: the cross-section across the width, times the length with its verges.
+  const double section =
+      integral([&](double y) { const double d = std::min(y, 10 - y); return s.over(d, t) - s.under(d); }, -e, 10 + e);
+  EXPECT_NEAR(volume, section * (20 + 2 * v), 1e-6 * volume);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -v, 1e-9);
+  EXPECT_NEAR(b.hi.x, 20 + v, 1e-9);
+  EXPECT_NEAR(b.lo.y, -e, 1e-9);
+  EXPECT_NEAR(b.lo.z, 3 - e, 1e-9);
+}
+
+std::string refusal(const Roof& roof, const RoofOverhang& o) {
+  try {
+    roof_overhang(roof, o);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(RoofOverhang, HostileSizesAreRefusedByName) {
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Roof roof = faces_tagged(building(10, 16, eave, eave), {"roof"});
+  EXPECT_NE(refusal(roof, {.eave = -0.5}).find("eave must be a finite number of 0 or more, not -0.5"), std::string::npos);
+  EXPECT_NE(refusal(roof, {.thickness = std::nan("")}).find("thickness must be a finite number above 0, not nan"),
+            std::string::npos);
+  EXPECT_NE(refusal(roof, {.thickness = 0}).find("thickness must be"), std::string::npos);
+  EXPECT_NE(refusal(roof, {.verge = HUGE_VAL}).find("verge must be a finite number"), std::string::npos);
+  EXPECT_NE(refusal(roof, {.thickness = 1e9}).find("thickness (1e+09 m) is more than 100 times the roof's extent"),
+            std::string::npos);
+}
+
+TEST(RoofOverhang, RoofsItCannotRunOutAreRefusedSayingWhy) {
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  // An L-shaped plan has a valley.
+  Footprint fp = make_footprint({{{0, 0}, {20, 0}, {20, 8}, {9, 8}, {9, 17}, {0, 17}}}, 0);
+  fp.profiles = {eave};
+  for (auto& e : fp.loops[0].edges) e.profile = 0;
+  const Surface l_shape = sweep(fp);
+  EXPECT_NE(refusal(faces_tagged(l_shape, {"roof"}), {}).find("the roof is not convex at"), std::string::npos)
+      << refusal(faces_tagged(l_shape, {"roof"}), {});
+  // Walls given as roof.
+  EXPECT_NE(refusal(faces_tagged(l_shape, {"roof", "wall"}), {}).find("is vertical or faces down"), std::string::npos);
+  // A hip roof without one of its ends leaves a triangle of its outline (10 x 5 / 2) uncovered.
+  Roof hip = faces_tagged(building(10, 16, eave, eave), {"roof"});
+  const auto end = std::find_if(hip.begin(), hip.end(), [](const auto& f) { return f.size() == 3; });
+  ASSERT_NE(end, hip.end());
+  hip.erase(end);
+  EXPECT_NE(refusal(hip, {}).find("the roof covers 135 m2 of its 160 m2 outline"), std::string::npos) << refusal(hip, {});
+  EXPECT_NE(refusal({}, {}).find("there is no roof"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace procex
+
+namespace procex {
+namespace {
+
+TEST(RoofOverhang, HipsOfMixedPitchesOnConvexPolygons) {
+  // Irregular convex plans (points on an ellipse at uneven angles), each edge
+  // its own pitch: corners where unequal slopes meet, hips that run on past
+  // the walls into either side's band, ridges of any length.
+  for (int n = 3; n <= 12; ++n)
+    for (int variant = 0; variant < 3; ++variant) {
+      std::vector<glm::dvec2> plan;
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * (i + 0.3 * std::sin(1.7 * i + variant)) / n;
+        plan.push_back({12 * std::cos(a), 7 * std::sin(a)});
+      }
+      Footprint fp = make_footprint({plan}, 0);
+      for (int i = 0; i < n; ++i) {
+        const double run = 2 + 3 * (0.5 + 0.5 * std::sin(2.3 * i + variant));
+        fp.profiles.push_back({std::to_string(i), {{0, 0}, {0, 3}, {-run, 3 + 4}}, {"wall", "roof"}});
+        fp.loops[0].edges[i].profile = i;
+      }
+      const Roof roof = faces_tagged(sweep(fp), {"roof"});
+      SCOPED_TRACE(testing::Message() << n << " sides, variant " << variant);
+      const Surface slab = roof_overhang(roof, {.eave = 0.2 + 0.3 * variant, .verge = 0.25, .thickness = 0.15});
+      EXPECT_GT(check_slab(roof, slab, 0.15), 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace procex
