@@ -22,7 +22,8 @@ void declare(NodeDecl& d) {
         "curved: a quarter circle of radius `roof_height` in `segments` pieces (roof). overhanging_gable: the "
         "verge of a gable wall beside overhanging_eave edges: a wall, a soffit `overhang` out, then a vertical "
         "gable `roof_height` high (wall, soffit, gable). setback: tiers `height` high, each stepping in by "
-        "`overhang`, up to `roof_height` (wall, ledge, wall, ...).")
+        "`overhang`, up to `roof_height` (wall, ledge, wall, ...). flush_eave: a wall `height` high, then a roof slope "
+        "at `pitch` rising `roof_height` more, flush with the wall (wall, roof), for Roof Overhang to run out.")
       .category("Profile");
   par.preset = d.param_enum("preset", preset_names()).doc("which profile (see above)").index();
   par.height = d.param<double>("height").default_value(3.0).range(0.01, 1000).unit("m").doc("wall height, or the mansard's lower slope").index();

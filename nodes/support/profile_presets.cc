@@ -17,7 +17,7 @@ double inward(double pitch_deg, double rise) { return rise * std::tan(pitch_deg 
 
 const std::vector<std::string>& preset_names() {
   static const std::vector<std::string> kNames = {"vertical_wall", "hip", "gable_end", "mansard", "overhanging_eave",
-                                                  "curved",        "overhanging_gable", "setback"};
+                                                  "curved",        "overhanging_gable", "setback", "flush_eave"};
   return kNames;
 }
 
@@ -36,6 +36,10 @@ Profile make_preset(std::string_view preset, const PresetSize& s) {
     const double x1 = -inward(s.pitch_deg / 5, s.height);
     return {name, {{0, 0}, {x1, s.height}, {x1 - inward(s.pitch_deg, s.roof_height - s.height), s.roof_height}},
             {"roof", "roof"}};
+  }
+  if (preset == "flush_eave") {
+    // A wall and its roof with no overhang: Roof Overhang runs the roof out past the wall.
+    return {name, {{0, 0}, {0, s.height}, {-inward(s.pitch_deg, s.roof_height), s.height + s.roof_height}}, {"wall", "roof"}};
   }
   if (preset == "overhanging_eave") {
     require(s.overhang > 0, "overhanging_eave: overhang must be positive");

@@ -46,8 +46,8 @@ TEST(ProfileRules, ErrorsNameTheRule) {
   EXPECT_EQ(message("* = hip; streat = hip"),
             "rule 2 ('streat = hip'): unknown label 'streat' (use short, medium, long, street, side, back, outer, "
             "inner, selected, party, #<edge id>, normal:<from>-<to> or *)");
-  EXPECT_EQ(message("* = pagoda"), "rule 1 ('* = pagoda'): no profile named 'pagoda' among the 8 profiles given");
-  EXPECT_EQ(message("* = 8"), "rule 1 ('* = 8'): no profile named '8' among the 8 profiles given");
+  EXPECT_EQ(message("* = pagoda"), "rule 1 ('* = pagoda'): no profile named 'pagoda' among the 9 profiles given");
+  EXPECT_EQ(message("* = 9"), "rule 1 ('* = 9'): no profile named '9' among the 9 profiles given");
   EXPECT_EQ(message("* hip"), "rule 1 ('* hip') has no '=' between labels and profiles");
   EXPECT_EQ(message("* = hip:-1"), "rule 1 ('* = hip:-1'): weight of 'hip' is not a number >= 0");
   EXPECT_EQ(message("* = hip:0"), "rule 1 ('* = hip:0'): the weights add up to zero");

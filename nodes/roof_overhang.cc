@@ -1,0 +1,89 @@
+// Roof Overhang: each building's roof run past its walls as a slab of its own
+// (core/mesh/roof_overhang.h), the building's solid handed on untouched.
+#include <set>
+#include <sstream>
+
+#include "core/mesh/roof_overhang.h"
+#include "graph/registry.h"
+#include "nodes/values.h"
+
+namespace procex {
+namespace {
+
+// Parameter and port handles, from the declaration.
+struct Handles {
+  std::size_t mesh_in, eave, verge, thickness, roof_tags, mesh_out;
+};
+Handles h;
+
+void declare(NodeDecl& d) {
+  d.doc("Runs each building's roof past its walls: the roof's planes carried out `eave` metres (in plan) beyond "
+        "walls under a level roof edge and `verge` metres beyond walls under a sloping one (a gable's rake), "
+        "`thickness` thick along their normals, with a vertical fascia round the outer edge. The overhang is a "
+        "closed solid of its own, added after its building (tags roof, fascia, soffit, and underside where it lies "
+        "on the building's roof); the building is handed on as it was. The roof is the faces tagged one of "
+        "`roof_tags` and any flat cap; it must be convex (gable, hip, mansard, gambrel over a convex plan): a "
+        "valley is an error. Give the walls flush profiles (Profile Preset `flush_eave`, `gable_end`).")
+      .category("Geometry");
+  h.mesh_in = d.input<MeshSet>("mesh").doc("buildings (Extrude)").index();
+  h.eave = d.param<double>("eave").default_value(0.5).range(0, 20).unit("m").doc("reach past walls under level roof edges").index();
+  h.verge = d.param<double>("verge").default_value(0.3).range(0, 20).unit("m").doc("reach past walls under sloping roof edges (gables)").index();
+  h.thickness = d.param<double>("thickness").default_value(0.2).range(0.001, 5).unit("m").doc("the slab's thickness, square to the roof").index();
+  h.roof_tags = d.param<std::string>("roof_tags").default_value(std::string("roof"))
+      .doc("the tags of the roof's faces, separated by commas (a mansard's: `mansard, roof`)").index();
+  h.mesh_out = d.output<MeshSet>("mesh").index();
+}
+
+std::set<std::string> tag_list(const std::string& text) {
+  std::set<std::string> tags;
+  std::istringstream in(text);
+  for (std::string t; std::getline(in, t, ',');) {
+    t.erase(0, t.find_first_not_of(" \t"));
+    t.erase(t.find_last_not_of(" \t") + 1);
+    if (!t.empty()) tags.insert(t);
+  }
+  return tags;
+}
+
+void evaluate(EvalContext& ctx) {
+  const RoofOverhang o{ctx.param<double>(h.eave), ctx.param<double>(h.verge), ctx.param<double>(h.thickness)};
+  const std::set<std::string> roof_tags = tag_list(ctx.param<std::string>(h.roof_tags));
+  MeshSet out;
+  std::set<std::string> seen;  // every tag there is, for the error when no face has one asked for
+  for (const TaggedMesh& part : ctx.input<MeshSet>(h.mesh_in).parts) {
+    ctx.throw_if_cancelled();
+    out.parts.push_back(part);
+    if (!part.mesh) continue;
+    const Mesh& mesh = *part.mesh;
+    const auto kind = face_kind_property(mesh);
+    std::vector<std::vector<glm::dvec3>> roof;
+    for (const Mesh::FaceHandle f : mesh.faces()) {
+      const std::string& tag = face_tag(part, static_cast<std::size_t>(f.idx()));
+      seen.insert(tag);
+      if (!roof_tags.count(tag) && !(kind.is_valid() && mesh.property(kind, f) == FaceKind::Cap)) continue;
+      roof.emplace_back();
+      for (const auto v : mesh.fv_range(f)) roof.back().push_back({mesh.point(v)[0], mesh.point(v)[1], mesh.point(v)[2]});
+    }
+    if (roof.empty()) continue;
+    TaggedMesh slab;
+    try {
+      slab.mesh = std::make_shared<Mesh>(build_mesh(roof_overhang(roof, o)));
+    } catch (const std::exception& e) {  // InputError from the roof, MeshError from OpenMesh
+      return ctx.error((part.building.empty() ? "" : "building " + part.building + ": ") + e.what());
+    }
+    face_tags_from_mesh(slab);
+    slab.building = part.building, slab.feature = part.feature;
+    slab.properties = part.properties, slab.parameters = part.parameters;
+    out.parts.push_back(std::move(slab));
+  }
+  if (out.parts.size() == ctx.input<MeshSet>(h.mesh_in).parts.size() && !out.parts.empty()) {
+    std::string tags;
+    for (const std::string& t : seen) tags += (tags.empty() ? "'" : ", '") + t + "'";
+    return ctx.error("no face is tagged " + ctx.param<std::string>(h.roof_tags) + " (the faces' tags: " + tags + ")");
+  }
+  ctx.set_output(h.mesh_out, std::move(out));
+}
+
+}  // namespace
+PROCEX_REGISTER_NODE("Roof Overhang", 1, declare, evaluate);
+}  // namespace procex
