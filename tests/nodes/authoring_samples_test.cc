@@ -1,6 +1,10 @@
-// The recipes of issue 15: the barn's five sizes typed once, and the set-back
-// tower's windows only where its walls are, checked against the faces.
+// The recipes of issue 15: the barn's five sizes typed once and its roof run
+// past its flush walls, the cottage's hipped roof run out all round, and the
+// set-back tower's windows only where its walls are, checked against the faces.
 #include <gtest/gtest.h>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
 
 #include "core/mesh/validate.h"
 #include "core/placement/face_cover.h"
@@ -29,25 +33,40 @@ double top_of(const Mesh& m) {
 TEST(BarnSample, EachSizeTypedOnceFollowsEverywhere) {
   Graph g = load_pxg(kSamples / "barn.pxg");
   const MeshSet a = mesh_of(test::evaluate_mesh(g, kSamples));
-  ASSERT_EQ(a.parts.size(), 1u);
-  EXPECT_TRUE(validate(*a.parts[0].mesh).ok());
-  // Wall height and overhang move the eaves and the verges (a second node) together: still closed.
+  ASSERT_EQ(a.parts.size(), 2u);  // the barn, then its roof slab
+  for (const TaggedMesh& part : a.parts) EXPECT_TRUE(validate(*part.mesh).ok());
+  // Wall height and overhang move the walls, the eaves and the verges (two nodes) together: still closed.
   ASSERT_TRUE(g.set_exposed("wall_height", Value::make(6.0)));
   ASSERT_TRUE(g.set_exposed("overhang", Value::make(1.2)));
   ASSERT_TRUE(g.set_exposed("width", Value::make(16.0)));
   const MeshSet b = mesh_of(test::evaluate_mesh(g, kSamples));
-  EXPECT_TRUE(validate(*b.parts[0].mesh).ok());
-  double lo_x = HUGE_VAL, hi_x = -HUGE_VAL, lo_y = HUGE_VAL, hi_y = -HUGE_VAL;
-  for (auto v : b.parts[0].mesh->vertices()) {
-    const auto& p = b.parts[0].mesh->point(v);
-    lo_x = std::min(lo_x, p[0]), hi_x = std::max(hi_x, p[0]);
-    lo_y = std::min(lo_y, p[1]), hi_y = std::max(hi_y, p[1]);
-  }
-  // The eaves and the verges both reach 1.2 m past the 16 x 24 m walls.
-  EXPECT_NEAR(hi_x - lo_x, 16 + 2 * 1.2, 1e-6);
-  EXPECT_NEAR(hi_y - lo_y, 24 + 2 * 1.2, 1e-6);
-  // The ridge of a 50-degree roof over 16 + 2.4 m, from 6 m eaves.
-  EXPECT_NEAR(top_of(*b.parts[0].mesh), 6 + (16 + 2.4) / 2 / std::tan(50 * M_PI / 180), 1e-6);
+  ASSERT_EQ(b.parts.size(), 2u);
+  for (const TaggedMesh& part : b.parts) EXPECT_TRUE(validate(*part.mesh).ok());
+  const auto extent = [](const Mesh& m) {
+    glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
+    for (auto v : m.vertices()) lo = glm::min(lo, glm::dvec2(m.point(v)[0], m.point(v)[1])), hi = glm::max(hi, glm::dvec2(m.point(v)[0], m.point(v)[1]));
+    return hi - lo;
+  };
+  // The walls stand flush at 16 x 24 m; the eaves and the verges both reach 1.2 m past them.
+  EXPECT_NEAR(extent(*b.parts[0].mesh).x, 16, 1e-6);
+  EXPECT_NEAR(extent(*b.parts[0].mesh).y, 24, 1e-6);
+  EXPECT_NEAR(extent(*b.parts[1].mesh).x, 16 + 2 * 1.2, 1e-6);
+  EXPECT_NEAR(extent(*b.parts[1].mesh).y, 24 + 2 * 1.2, 1e-6);
+  // The ridge of a 50-degree roof over the 16 m walls from 6 m, and the slab's 0.25 m on it.
+  const double ridge = 6 + 16.0 / 2 / std::tan(50 * M_PI / 180);
+  EXPECT_NEAR(top_of(*b.parts[0].mesh), ridge, 1e-6);
+  EXPECT_NEAR(top_of(*b.parts[1].mesh), ridge + 0.25 / std::sin(50 * M_PI / 180), 1e-6);
+}
+
+TEST(CottageSample, HippedRoofRunsOutByTheEaveAllRound) {
+  Graph g = load_pxg(kSamples / "cottage.pxg");
+  ASSERT_TRUE(g.set_exposed("eave", Value::make(0.7)));
+  const MeshSet m = mesh_of(test::evaluate_mesh(g, kSamples));
+  ASSERT_EQ(m.parts.size(), 2u);
+  for (const TaggedMesh& part : m.parts) EXPECT_TRUE(validate(*part.mesh).ok());
+  // Every roof edge of a hip roof is level: eaves on all four sides, 0.7 m out,
+  // so the slab is 0.18 m square to slopes of 1 / tan(38 deg) over 10.4 x 8.4 m.
+  EXPECT_NEAR(validate(*m.parts[1].mesh).volume, 0.18 / std::sin(38 * M_PI / 180) * 10.4 * 8.4, 1e-6);
 }
 
 TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
