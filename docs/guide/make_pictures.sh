@@ -18,3 +18,5 @@ shoot studio_city samples/city.pxg
 shoot studio_city_block samples/city.pxg --footprints samples/footprints/sample_block.geojson
 shoot studio_windows_grid samples/windows_grid.pxg
 shoot studio_bay_windows samples/bay_windows.pxg
+shoot studio_barn samples/barn.pxg
+shoot studio_cottage samples/cottage.pxg
