@@ -58,7 +58,8 @@ void evaluate(EvalContext& ctx) {
     const auto kind = face_kind_property(mesh);
     std::vector<std::vector<glm::dvec3>> roof;
     for (const Mesh::FaceHandle f : mesh.faces()) {
-      const std::string& tag = face_tag(part, static_cast<std::size_t>(f.idx()));
+      const auto i = static_cast<std::size_t>(f.idx());
+      const std::string tag = i < part.face_tags.size() ? face_tag(part, i) : std::string();
       seen.insert(tag);
       if (!roof_tags.count(tag) && !(kind.is_valid() && mesh.property(kind, f) == FaceKind::Cap)) continue;
       roof.emplace_back();
