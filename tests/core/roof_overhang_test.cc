@@ -287,11 +287,6 @@ TEST(RoofOverhang, RoofsItCannotRunOutAreRefusedSayingWhy) {
   EXPECT_NE(refusal({}, {}).find("there is no roof"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace procex
-
-namespace procex {
-namespace {
 
 TEST(RoofOverhang, HipsOfMixedPitchesOnConvexPolygons) {
   // Irregular convex plans (points on an ellipse at uneven angles), each edge
@@ -315,6 +310,32 @@ TEST(RoofOverhang, HipsOfMixedPitchesOnConvexPolygons) {
       const Surface slab = roof_overhang(roof, {.eave = 0.2 + 0.3 * variant, .verge = 0.25, .thickness = 0.15});
       EXPECT_GT(check_slab(roof, slab, 0.15), 0.0);
     }
+}
+
+
+TEST(RoofOverhang, FlatRoofSaltboxAndJerkinhead) {
+  // A flat roof (a sweep's cap): a plain slab 0.2 thick over the plan run out by 0.5.
+  const Roof flat{{{0, 0, 3}, {10, 0, 3}, {10, 10, 3}, {0, 10, 3}}};
+  EXPECT_NEAR(check_slab(flat, roof_overhang(flat, {.eave = 0.5, .verge = 0.1, .thickness = 0.2}), 0.2), 11 * 11 * 0.2, 1e-9);
+  // A saltbox: the long walls 3 and 5 m high under slopes of 1, so the ridge
+  // is off centre and the gables' rakes unequal; the planes still slope alike.
+  Footprint fp = make_footprint({{{0, 0}, {10, 0}, {10, 16}, {0, 16}}}, 0);
+  fp.profiles = {{"low", {{0, 0}, {0, 3}, {-10, 13}}, {"wall", "roof"}},
+                 {"high", {{0, 0}, {0, 5}, {-10, 15}}, {"wall", "roof"}},
+                 kGableEnd};
+  fp.loops[0].edges[1].profile = 0, fp.loops[0].edges[3].profile = 1;
+  fp.loops[0].edges[0].profile = fp.loops[0].edges[2].profile = 2;
+  const Roof saltbox = faces_tagged(sweep(fp), {"roof"});
+  EXPECT_NEAR(check_slab(saltbox, roof_overhang(saltbox, {.eave = 0.5, .verge = 0.3, .thickness = 0.2}), 0.2),
+              0.2 * std::sqrt(2.0) * 11.0 * 16.6, 1e-7);
+  // A jerkinhead: the gables rise to 6 m, then a steep hip closes them;
+  // the gable sides mix rakes and a level hip edge, and run out by the verge.
+  const Profile jerkin{"jerkin", {{0, 0}, {0, 6}, {-1, 8}}, {"gable", "roof"}};
+  const Roof roof = faces_tagged(building(10, 16, {"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}}, jerkin), {"roof"});
+  ASSERT_EQ(roof.size(), 4u);
+  const Surface slab = roof_overhang(roof, {.eave = 0.5, .verge = 0.3, .thickness = 0.2});
+  EXPECT_GT(check_slab(roof, slab, 0.2), 0.0);
+  EXPECT_NEAR(box_of(slab).lo.y, -0.3, 1e-9);
 }
 
 }  // namespace
