@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "core/io/io_error.h"
 #include "core/io/texture_image.h"
@@ -61,15 +62,6 @@ void declare(NodeDecl& d) {
   d.hash_extra(hash_texture);
 }
 
-// A copy of `mesh` whose material for `tag` is `material`.
-std::shared_ptr<const Mesh> with_material(const Mesh& mesh, const std::string& tag, const Material& material) {
-  auto out = std::make_shared<Mesh>(mesh);
-  Materials materials = mesh_materials(*out);
-  materials[tag] = material;
-  set_mesh_materials(*out, std::move(materials));
-  return out;
-}
-
 // Whether a face of a placed mesh carries `tag` (its own, else the mesh's name).
 bool carries_tag(const PlaceableMesh& placed, const std::string& tag) {
   const auto prop = face_tag_property(*placed.mesh);
@@ -80,17 +72,17 @@ bool carries_tag(const PlaceableMesh& placed, const std::string& tag) {
   return false;
 }
 
-// A copy of `mesh` whose every face is tagged `tag` with `material`: what an
-// instance tagged `tag` shows once a Material names its tag (its faces are
-// the tag's, core/placement flatten, and .glb prototypes carry their faces'
-// own tags).
-std::shared_ptr<const Mesh> all_in_material(const Mesh& mesh, const std::string& tag, const Material& material) {
-  auto out = std::make_shared<Mesh>(mesh);
-  add_face_properties(*out);
-  const auto tags = face_tag_property(*out);
-  for (const auto f : out->faces()) out->property(tags, f) = tag;
-  set_mesh_materials(*out, {{tag, material}});
-  return out;
+// A copy of `mesh` whose every face is tagged `tag`, with `material` for it:
+// what an instance tagged `tag` shows once a Material names its tag (its
+// faces are the tag's, core/placement flatten, and .glb prototypes carry
+// their faces' own tags). A placed mesh is small and this is done once per
+// mesh, not per instance.
+PlaceableMesh all_in_material(const PlaceableMesh& placed, const std::string& tag, const Material& material) {
+  auto mesh = std::make_shared<Mesh>(*placed.mesh);
+  add_face_properties(*mesh);
+  const auto tags = face_tag_property(*mesh);
+  for (const auto f : mesh->faces()) mesh->property(tags, f) = tag;
+  return {placed.name, std::move(mesh), with_material(nullptr, tag, material)};
 }
 
 // Drops the meshes no instance places any more, renumbering the instances.
@@ -126,21 +118,27 @@ void evaluate(EvalContext& ctx) {
   }
 
   MeshSet out = ctx.input<MeshSet>(0);
-  // Each placed mesh copied once, so its instances stay instances of one mesh.
-  std::map<const Mesh*, std::shared_ptr<const Mesh>> placed_copies;
-  std::map<const Mesh*, std::shared_ptr<const Mesh>> tagged_copies;  // of meshes placed with the tag
+  // Each new table made once per old one (parts of one building share theirs), and
+  // once per placed mesh, so its instances stay instances of one mesh and look.
+  // (Keyed by the old tables themselves, held so no new one takes an old one's address.)
+  std::map<MaterialTable, MaterialTable> part_tables;
+  std::map<std::pair<std::shared_ptr<const Mesh>, MaterialTable>, MaterialTable> placed_tables;
+  std::map<const Mesh*, PlaceableMesh> tagged_copies;  // of meshes placed with the tag
   bool found = false;
   for (TaggedMesh& part : out.parts) {
     ctx.throw_if_cancelled();
+    // The geometry stays shared: only the part's small table is new.
     if (std::find(part.tags.begin(), part.tags.end(), tag) != part.tags.end()) {
-      part.mesh = with_material(*part.mesh, tag, material);
+      auto [it, added] = part_tables.try_emplace(part.materials);
+      if (added) it->second = with_material(part.materials, tag, material);
+      part.materials = it->second;
       found = true;
     }
     for (PlaceableMesh& placed : part.placed.meshes) {
-      auto [it, added] = placed_copies.try_emplace(placed.mesh.get());
-      if (added && carries_tag(placed, tag)) it->second = with_material(*placed.mesh, tag, material);
+      auto [it, added] = placed_tables.try_emplace({placed.mesh, placed.materials});
+      if (added && carries_tag(placed, tag)) it->second = with_material(placed.materials, tag, material);
       if (it->second) {
-        placed.mesh = it->second;
+        placed.materials = it->second;
         found = true;
       }
     }
@@ -148,9 +146,9 @@ void evaluate(EvalContext& ctx) {
     for (Instance& in : part.placed.instances) {
       if (in.tag != tag) continue;
       const PlaceableMesh placed = part.placed.meshes[in.mesh];
-      std::shared_ptr<const Mesh>& copy = tagged_copies[placed.mesh.get()];
-      if (!copy) copy = all_in_material(*placed.mesh, tag, material);
-      in.mesh = part.placed.add_mesh({placed.name, copy});
+      auto [copy, added] = tagged_copies.try_emplace(placed.mesh.get());
+      if (added) copy->second = all_in_material(placed, tag, material);
+      in.mesh = part.placed.add_mesh(copy->second);
       retagged = found = true;
     }
     if (retagged) drop_unplaced(part.placed);

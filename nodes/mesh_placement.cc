@@ -140,26 +140,30 @@ void declare(NodeDecl& d) {
 // the same window on thousands.
 struct SharedMesh {
   std::shared_ptr<const Mesh> mesh;
+  MaterialTable materials;  // from its .mtl
   std::vector<std::string> warnings;
 };
+
+SharedMesh read_mesh(const fs::path& path, const ReferencedFileResolver& resolve) {
+  SharedMesh m;
+  Materials materials;
+  m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve, &materials));
+  m.materials = material_table(std::move(materials));
+  return m;
+}
 
 // Files the OBJ names (its material library, textures) are confined as the
 // recipe's own.
 SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve) {
   std::error_code error;
-  if (!fs::is_regular_file(path, error)) {  // read_mesh_file says what is wrong
-    SharedMesh m;
-    m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve));
-    return m;
-  }
+  if (!fs::is_regular_file(path, error)) return read_mesh(path, resolve);  // read_mesh_file says what is wrong
   using Key = std::pair<std::string, Hash128>;
   static std::mutex mutex;
   static std::map<Key, SharedMesh> cache;
   const Key key{fs::absolute(path).string(), mesh_files_stamp(path)};
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  SharedMesh m;
-  m.mesh = std::make_shared<const Mesh>(read_mesh_file(path, &m.warnings, resolve));
+  SharedMesh m = read_mesh(path, resolve);
   if (cache.size() >= 64) cache.clear();  // edited files leave old versions behind
   return cache.emplace(key, std::move(m)).first->second;
 }
@@ -247,7 +251,7 @@ void evaluate(EvalContext& ctx) {
   }
   for (const std::string& w : read.warnings) ctx.warning(w);
   const std::string& name = ctx.param<std::string>(par.name);
-  const PlaceableMesh mesh{name.empty() ? fs::path(file).stem().string() : name, read.mesh};
+  const PlaceableMesh mesh{name.empty() ? fs::path(file).stem().string() : name, read.mesh, read.materials};
   const MeshPlacementSpec spec = spec_of(ctx);
 
   MeshSet out = ctx.input<MeshSet>(0);

@@ -115,13 +115,25 @@ void hash_tile(const FacadeTile& t, Hasher& h) {
   for (const glm::dvec3& v : {t.frame.origin, t.frame.along, t.frame.up, t.frame.normal}) hash_vec3(v, h);
 }
 
-// Placed meshes by content (their own face tags included): two runs that
-// read the same file hash alike.
+void hash_materials(const MaterialTable& table, Hasher& h) {
+  const Materials& materials = materials_of(table);
+  h.u64(materials.size());
+  for (const auto& [tag, m] : materials) {
+    hash_str(tag, h);
+    for (double c : m.colour) h.f64(c);
+    h.f64(m.roughness).f64(m.metallic).f64(m.tile_size);
+    hash_str(m.texture.string(), h);
+  }
+}
+
+// Placed meshes by content (their own face tags and materials included): two
+// runs that read the same file hash alike.
 void hash_placed(const PlacementResult& placed, Hasher& h) {
   h.u64(placed.meshes.size());
   for (const PlaceableMesh& m : placed.meshes) {
     hash_str(m.name, h);
     hash_mesh(*m.mesh, h);
+    hash_materials(m.materials, h);
     const auto tags = face_tag_property(*m.mesh);
     if (tags.is_valid())
       for (const auto f : m.mesh->faces()) hash_str(m.mesh->property(tags, f), h);
@@ -143,6 +155,7 @@ void hash_mesh_set(const MeshSet& set, Hasher& h) {
     for (const std::string& t : part.tags) hash_str(t, h);
     h.bytes(part.face_tags.data(), part.face_tags.size() * sizeof(std::uint32_t));
     hash_mesh(*part.mesh, h);
+    hash_materials(part.materials, h);
     h.u64(part.anchors.size());
     for (const ResolvedAnchor& a : part.anchors) hash_anchor(a, h);
     h.u64(part.tiles.size());

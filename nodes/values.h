@@ -16,6 +16,7 @@
 #include "core/geom/footprint.h"
 #include "core/geom/plan_edit.h"
 #include "core/geom/profile.h"
+#include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 #include "core/placement/facade_split.h"
 #include "core/placement/placement.h"
@@ -28,6 +29,10 @@ struct TaggedMesh {
   std::shared_ptr<const Mesh> mesh;
   std::vector<std::uint32_t> face_tags;  // per face (by index): an index into tags
   std::vector<std::string> tags;         // distinct tag names, in order of first use
+  // The tags' materials (a Material node's, a placed mesh's own where
+  // flattening joined it in), beside the mesh and shared like it: a new look
+  // is a new table, never a copy of the geometry.
+  MaterialTable materials;
   std::string building;                  // building id ("" when not bound)
   std::int64_t feature = -1;             // the building's position in its GeoJSON file (batch), else -1
   // Written to glTF extras: the feature's GeoJSON properties and the

@@ -28,6 +28,7 @@ void lay_out_faces(MeshArrays& m) {
 std::shared_ptr<MeshArrays> wrap_placeable(const PlaceableMesh& placeable) {
   auto m = std::make_shared<MeshArrays>();
   m->mesh = placeable.mesh;
+  m->materials = placeable.materials;
   m->name = placeable.name;
   const auto tag_property = face_tag_property(*m->mesh);
   std::map<std::string, std::uint32_t, std::less<>> index;
@@ -84,7 +85,8 @@ const SurfaceAttributes& surface_of(py::handle self) {
 }  // namespace
 
 std::shared_ptr<MeshArrays> PlaceableCache::get(const PlaceableMesh& placeable) {
-  const std::pair<const Mesh*, std::string> key{placeable.mesh.get(), placeable.name};
+  const std::tuple<const Mesh*, std::string, const Materials*> key{placeable.mesh.get(), placeable.name,
+                                                                   placeable.materials.get()};
   {
     std::lock_guard lock(mutex_);
     if (auto found = wrapped_.find(key); found != wrapped_.end()) return found->second;
@@ -100,6 +102,7 @@ std::shared_ptr<MeshArrays> wrap(TaggedMesh part, PlaceableCache& placeables) {
   m->mesh = std::move(part.mesh);
   m->face_tags = std::move(part.face_tags);
   m->tags = std::move(part.tags);
+  m->materials = std::move(part.materials);
   m->building = std::move(part.building);
   m->feature = part.feature;
   lay_out_faces(*m);
@@ -207,7 +210,7 @@ void bind_mesh(py::module_& m) {
           "materials",
           [](const MeshArrays& a) {
             py::dict out;
-            for (const auto& [tag, material] : mesh_materials(*a.mesh))
+            for (const auto& [tag, material] : materials_of(a.materials))
               out[py::str(tag)] = py::dict(
                   py::arg("colour") = py::make_tuple(material.colour[0], material.colour[1], material.colour[2]),
                   py::arg("roughness") = material.roughness, py::arg("metallic") = material.metallic,

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -35,6 +36,7 @@ struct MeshArrays {
   std::shared_ptr<const Mesh> mesh;
   std::vector<std::uint32_t> face_tags;  // index into tags, per face
   std::vector<std::string> tags;
+  MaterialTable materials;  // by tag, as the part or placed mesh carries them
   std::string name;      // a placed mesh's name (its file's stem), else empty
   std::string building;
   std::int64_t feature = -1;
@@ -45,7 +47,7 @@ struct MeshArrays {
   std::optional<SurfaceAttributes> surface;
 };
 
-// Placed meshes already wrapped, by mesh and name, so that the window every
+// Placed meshes already wrapped, by mesh, name and material table, so that the window every
 // building of a batch shares is wrapped once (and is one procex.Mesh). Safe
 // to use from several threads at once.
 class PlaceableCache {
@@ -54,8 +56,8 @@ class PlaceableCache {
 
  private:
   std::mutex mutex_;
-  // The entry holds the mesh alive, so its address names no other mesh.
-  std::map<std::pair<const Mesh*, std::string>, std::shared_ptr<MeshArrays>> wrapped_;
+  // The entry holds the mesh and its table alive, so their addresses name no others.
+  std::map<std::tuple<const Mesh*, std::string, const Materials*>, std::shared_ptr<MeshArrays>> wrapped_;
 };
 
 // The part as Python sees it; its placed meshes are wrapped once each (once

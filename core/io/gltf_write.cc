@@ -958,7 +958,7 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
   const std::vector<UvFrame> frames = face_uv_frames(mesh, origin);
   const auto own_uv = corner_uv_property(mesh);
   const auto own_normal = corner_normal_property(mesh);
-  const Materials& materials = mesh_materials(mesh);
+  const Materials& materials = materials_of(view.materials);
   std::vector<glm::dvec3> pts;
   std::vector<Mesh::HalfedgeHandle> corners;
   for (const auto f : mesh.faces()) {

@@ -48,6 +48,7 @@ struct TaggedMeshView {
   std::span<const std::string> tags;
   std::string building;        // building id ("" if none)
   std::int64_t feature = -1;   // position of the building's feature in its GeoJSON file, -1 if none
+  MaterialTable materials = nullptr;  // the faces' materials by tag, carried beside the mesh (null: none)
 };
 
 // A primitive's own material (a placed mesh's, from its .mtl, or a tag's from

@@ -301,19 +301,21 @@ void set_corner_attributes(Mesh& mesh, const ObjScan& scan) {
 
 }  // namespace
 
-Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings, const ReferencedFileResolver& resolve) {
+Mesh read_mesh_file(const Path& path, std::vector<std::string>* warnings, const ReferencedFileResolver& resolve,
+                    Materials* materials) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".obj") fail(path, "cannot read meshes in '" + ext + "' files to place: use a Wavefront .obj file");
   const std::string text = read_file(path, kMaxDataFileBytes);
   if (text.empty()) fail(path, "is empty (a mesh to place needs 'v' and 'f' lines)");
-  if (resolve) return parse_obj_mesh(text, path, warnings, resolve);
+  if (resolve) return parse_obj_mesh(text, path, warnings, resolve, materials);
   const Path folder = path.parent_path();
-  return parse_obj_mesh(text, path, warnings, [&](const Path& name) { return confined_path(folder, name.string()); });
+  return parse_obj_mesh(text, path, warnings, [&](const Path& name) { return confined_path(folder, name.string()); },
+                        materials);
 }
 
 Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::string>* warnings,
-                    const ReferencedFileResolver& resolve) {
+                    const ReferencedFileResolver& resolve, Materials* materials) {
   const ObjScan scan = scan_obj(path, text);
 
   Mesh mesh;
@@ -340,7 +342,7 @@ Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::st
   for (const auto f : mesh.faces()) mesh.property(tags, f) = scan.face_tags[static_cast<std::size_t>(f.idx())];
   set_corner_attributes(mesh, scan);
   if (!resolve) return mesh;
-  Materials materials;
+  Materials read;
   for (const auto& [line, name] : scan.libraries) {
     const Path library = resolve(path.parent_path() / name);  // outside the folder: refused, as every file
     std::error_code error;
@@ -350,9 +352,9 @@ Mesh parse_obj_mesh(std::string_view text, const Path& path, std::vector<std::st
                             ": material library '" + name + "' is not there: its faces keep their tags' colours");
       continue;
     }
-    materials.merge(read_material_library(library, resolve));  // the first library to define a name wins
+    read.merge(read_material_library(library, resolve));  // the first library to define a name wins
   }
-  if (!materials.empty()) set_mesh_materials(mesh, std::move(materials));
+  if (materials) *materials = std::move(read);
   return mesh;
 }
 

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 
 namespace procex {
@@ -31,7 +32,8 @@ using ReferencedFileResolver = std::function<std::filesystem::path(const std::fi
 // corner names a 'vt' (a 'vn') keeps them as its corners' texture
 // coordinates (unit normals) (core/mesh/material.h). The 'mtllib' libraries
 // give the mesh's materials (colour Kd and texture map_Kd, a PNG or JPEG
-// image) through `resolve`; a library that is not there is reported in
+// image), read through `resolve` and checked always, handed back in
+// `materials` when given (the mesh does not carry them); a library that is not there is reported in
 // `warnings`, one outside the confinement refused. Groups are ignored.
 // read_mesh_file's default resolver confines to the OBJ's folder;
 // parse_obj_mesh without one reads no libraries.
@@ -45,10 +47,11 @@ using ReferencedFileResolver = std::function<std::filesystem::path(const std::fi
 // facing opposite ways) are kept and reported in `warnings` when given
 // (OpenMesh also prints "complex edge" on stderr for each). Thread-safe.
 Mesh read_mesh_file(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
-                    const ReferencedFileResolver& resolve = {});
+                    const ReferencedFileResolver& resolve = {}, Materials* materials = nullptr);
 // The same on the file's text already in memory; path names it in messages.
 Mesh parse_obj_mesh(std::string_view text, const std::filesystem::path& path,
-                    std::vector<std::string>* warnings = nullptr, const ReferencedFileResolver& resolve = {});
+                    std::vector<std::string>* warnings = nullptr, const ReferencedFileResolver& resolve = {},
+                    Materials* materials = nullptr);
 
 // The files an OBJ names: its material libraries ('mtllib'), and the
 // textures a library names ('map_Kd'), each joined to the naming file's

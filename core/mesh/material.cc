@@ -25,20 +25,24 @@ Handle add_filled(Mesh& mesh, const char* name, const T& fill) {
 
 }  // namespace
 
-const Materials& mesh_materials(const Mesh& mesh) {
+const Materials& materials_of(const MaterialTable& table) {
   static const Materials kNone;
-  const auto h = find<OpenMesh::MPropHandleT<Materials>>(mesh, kMaterialsProperty);
-  return h.is_valid() ? mesh.property(h) : kNone;
+  return table ? *table : kNone;
 }
 
-void set_mesh_materials(Mesh& mesh, Materials materials) {
-  auto h = find<OpenMesh::MPropHandleT<Materials>>(mesh, kMaterialsProperty);
-  if (!h.is_valid()) mesh.add_property(h, kMaterialsProperty);
-  mesh.property(h) = std::move(materials);
+MaterialTable with_material(const MaterialTable& table, const std::string& tag, const Material& material) {
+  Materials materials = materials_of(table);
+  materials[tag] = material;
+  return std::make_shared<const Materials>(std::move(materials));
 }
 
-FaceMaterials::FaceMaterials(const Mesh& mesh)
-    : mesh_(mesh), materials_(mesh_materials(mesh)), own_(find<OpenMesh::FPropHandleT<std::string>>(mesh, kFaceMaterialProperty)) {}
+MaterialTable material_table(Materials materials) {
+  if (materials.empty()) return nullptr;
+  return std::make_shared<const Materials>(std::move(materials));
+}
+
+FaceMaterials::FaceMaterials(const Mesh& mesh, const Materials& materials)
+    : mesh_(mesh), materials_(materials), own_(find<OpenMesh::FPropHandleT<std::string>>(mesh, kFaceMaterialProperty)) {}
 
 const Material* FaceMaterials::of(Mesh::FaceHandle f, const std::string& tag) const {
   if (materials_.empty()) return nullptr;

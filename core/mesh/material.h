@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "core/mesh/mesh.h"
@@ -40,10 +41,24 @@ struct Material {
 // Materials by face tag.
 using Materials = std::map<std::string, Material>;
 
-// Names of the mesh and corner properties (a corner is the halfedge that
+// The materials a mesh is shown with, carried beside it as its face tags are
+// (nodes' TaggedMesh, core/placement's PlaceableMesh), not in it: the mesh is
+// shared and immutable, so a look kept in it would cost a copy of the whole
+// geometry for every change of look. The table is shared too and never
+// changed in place: a Material node makes a new one (with_material) and the
+// geometry stays where it is. Null: no materials.
+using MaterialTable = std::shared_ptr<const Materials>;
+
+// The table's materials; empty if it is null.
+const Materials& materials_of(const MaterialTable& table);
+// A table with `tag`'s material set to `material`, the others as in `table`.
+MaterialTable with_material(const MaterialTable& table, const std::string& tag, const Material& material);
+// A table holding `materials`; null if there are none.
+MaterialTable material_table(Materials materials);
+
+// Names of the corner properties (a corner is the halfedge that
 // points to its vertex in its face, so fh_range walks a face's corners in
 // fv_range's order).
-inline constexpr const char* kMaterialsProperty = "procex:materials";        // Materials (mesh)
 inline constexpr const char* kCornerUvProperty = "procex:corner_uv";          // OpenMesh::Vec2d (halfedge)
 inline constexpr const char* kCornerNormalProperty = "procex:corner_normal";  // OpenMesh::Vec3d (halfedge)
 
@@ -52,17 +67,13 @@ inline constexpr const char* kCornerNormalProperty = "procex:corner_normal";  //
 // flatten). "" or no property: its tag's.
 inline constexpr const char* kFaceMaterialProperty = "procex:material";  // std::string (face)
 
-// The mesh's materials; empty if it has none.
-const Materials& mesh_materials(const Mesh& mesh);
-// Sets them (the property is added if missing).
-void set_mesh_materials(Mesh& mesh, Materials materials);
-
-// Each face's material: mesh_materials(mesh) at the face's
-// kFaceMaterialProperty, else at its tag; null if there is none. Looks the
-// properties up once, for a walk over the faces.
+// Each face's material: `materials` (those carried beside the mesh) at the
+// face's kFaceMaterialProperty, else at its tag; null if there is none.
+// Looks the property up once, for a walk over the faces. What every writer
+// asks for a face's look.
 class FaceMaterials {
  public:
-  explicit FaceMaterials(const Mesh& mesh);
+  FaceMaterials(const Mesh& mesh, const Materials& materials);
   const Material* of(Mesh::FaceHandle f, const std::string& tag) const;
 
  private:

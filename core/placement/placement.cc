@@ -19,7 +19,9 @@ double linear_determinant(const glm::dmat4& transform) { return glm::determinant
 std::size_t PlacementResult::add_mesh(const PlaceableMesh& mesh) {
   if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
   for (std::size_t i = 0; i < meshes.size(); ++i)
-    if (meshes[i].mesh == mesh.mesh && meshes[i].name == mesh.name) return i;
+    if (meshes[i].mesh == mesh.mesh && meshes[i].name == mesh.name &&
+        materials_of(meshes[i].materials) == materials_of(mesh.materials))
+      return i;
   meshes.push_back(mesh);
   return meshes.size() - 1;
 }
@@ -72,8 +74,7 @@ void check_instance(const PlacementResult& result, std::size_t index) {
 namespace {
 
 // The placed meshes' corner attributes on `out` (NaN on the building's own
-// faces) where any of them has some, and their materials joined to the
-// building's (the first to name a tag wins).
+// faces) where any of them has some.
 struct CornerAttributes {
   OpenMesh::HPropHandleT<OpenMesh::Vec2d> uv;
   OpenMesh::HPropHandleT<OpenMesh::Vec3d> normal;
@@ -81,14 +82,11 @@ struct CornerAttributes {
 
 CornerAttributes prepare_corner_attributes(Mesh& out, const PlacementResult& result) {
   CornerAttributes a;
-  Materials materials = mesh_materials(out);
   for (const Instance& in : result.instances) {
     const Mesh& mesh = *result.meshes[in.mesh].mesh;
     if (corner_uv_property(mesh).is_valid() && !a.uv.is_valid()) a.uv = add_corner_uvs(out);
     if (corner_normal_property(mesh).is_valid() && !a.normal.is_valid()) a.normal = add_corner_normals(out);
-    for (const auto& [tag, material] : mesh_materials(mesh)) materials.try_emplace(tag, material);
   }
-  if (!materials.empty()) set_mesh_materials(out, std::move(materials));
   return a;
 }
 
@@ -162,7 +160,7 @@ Mesh flatten(const PlacementResult& result) {
       out.property(tag_prop, g) = !in.tag.empty() ? in.tag : own_tag;
       // Tagged otherwise, the face keeps its own material (a Material naming
       // the instance's tag made its mesh's faces that tag's: nodes/material.cc).
-      if (!in.tag.empty() && own_tag != in.tag && mesh_materials(mesh).count(own_tag)) {
+      if (!in.tag.empty() && own_tag != in.tag && materials_of(placed.materials).count(own_tag)) {
         if (!material_prop.is_valid()) material_prop = add_face_materials(out);
         out.property(material_prop, g) = own_tag;
       }
@@ -174,6 +172,15 @@ Mesh flatten(const PlacementResult& result) {
     }
   }
   return out;
+}
+
+MaterialTable flattened_materials(const MaterialTable& building, const PlacementResult& result) {
+  Materials materials = materials_of(building);
+  bool added = false;
+  for (const Instance& in : result.instances)
+    for (const auto& [tag, material] : materials_of(result.meshes[in.mesh].materials))
+      added = materials.try_emplace(tag, material).second || added;
+  return added ? material_table(std::move(materials)) : building;
 }
 
 }  // namespace procex

@@ -11,6 +11,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 
 namespace procex {
@@ -19,10 +20,11 @@ namespace procex {
 // the building's own faces.
 inline constexpr const char* kInstanceProperty = "procex:instance";  // int
 
-// A mesh to place (read_placeable_mesh in core/io/mesh_read.h makes one).
+// A mesh to place (read_mesh_file in core/io/mesh_read.h reads one).
 struct PlaceableMesh {
   std::string name;  // tags the faces that have no tag of their own
   std::shared_ptr<const Mesh> mesh;
+  MaterialTable materials = nullptr;  // its faces' materials by tag (its .mtl's, a Material node's)
 };
 
 struct Instance {
@@ -46,8 +48,8 @@ struct PlacementResult {
   std::size_t placed_faces = 0;  // faces of all instances' meshes, as flatten() would add them
 
   // The index of `mesh` in `meshes`, added unless the same shared Mesh is
-  // there under the same name (one file placed under two names keeps both
-  // names). Throws PlacementError if it is null.
+  // there under the same name with the same materials (one file placed under
+  // two names keeps both names). Throws PlacementError if it is null.
   std::size_t add_mesh(const PlaceableMesh& mesh);
   // Adds an instance after check_instance and the per-building budgets above.
   // Returns its index.
@@ -74,9 +76,13 @@ double linear_determinant(const glm::dmat4& transform);
 // determinant) reverses every face of its instance, so outward faces stay
 // outward and a closed 2-manifold part stays one. The placed meshes' own
 // corner texture coordinates and normals (normals turned by the transform)
-// and materials come along (core/mesh/material.h); the first mesh to name a
-// material's tag gives it. Throws PlacementError (from
+// come along (core/mesh/material.h); their materials, which the mesh does not
+// carry, flattened_materials gives. Throws PlacementError (from
 // check_instance) or MeshError if OpenMesh refuses a face.
 Mesh flatten(const PlacementResult& result);
+// The materials of flatten(result)'s faces: the building's (`building`),
+// then each placed mesh's that name a tag none before it named (the first
+// to name a tag gives it).
+MaterialTable flattened_materials(const MaterialTable& building, const PlacementResult& result);
 
 }  // namespace procex

@@ -31,10 +31,10 @@ FaceTags face_tags(const Mesh& mesh, const std::string& fallback) {
   return out;
 }
 
-GltfMeshData gltf_mesh(const Mesh& mesh, const std::string& name, const std::string& fallback_tag,
-                       std::int64_t feature, const glm::dvec3& origin = {0, 0, 0}) {
+GltfMeshData gltf_mesh(const Mesh& mesh, const MaterialTable& materials, const std::string& name,
+                       const std::string& fallback_tag, std::int64_t feature, const glm::dvec3& origin = {0, 0, 0}) {
   const FaceTags tags = face_tags(mesh, fallback_tag);
-  return to_gltf_mesh({&mesh, tags.of_face, tags.names, name, feature}, origin);
+  return to_gltf_mesh({&mesh, tags.of_face, tags.names, name, feature, materials}, origin);
 }
 
 }  // namespace
@@ -42,7 +42,7 @@ GltfMeshData gltf_mesh(const Mesh& mesh, const std::string& name, const std::str
 void GltfSceneBuilder::add(const PlacementResult& result, const std::string& building, std::int64_t feature) {
   for (std::size_t i = 0; i < result.instances.size(); ++i) check_instance(result, i);
   GltfMeshData data;
-  if (result.building) data = gltf_mesh(*result.building, building, "", feature, local_origin(*result.building));
+  if (result.building) data = gltf_mesh(*result.building, nullptr, building, "", feature, local_origin(*result.building));
   data.building = building;
   data.feature = feature;
   add(std::move(data));
@@ -61,8 +61,15 @@ void GltfSceneBuilder::place(const PlacementResult& placed) {
   for (std::size_t i = 0; i < placed.instances.size(); ++i) check_instance(placed, i);
   for (const Instance& in : placed.instances) {
     const PlaceableMesh& mesh = placed.meshes[in.mesh];
-    auto [it, added] = prototype_of_.try_emplace(mesh.mesh, scene_.prototypes.size());
-    if (added) scene_.prototypes.push_back(gltf_mesh(*mesh.mesh, mesh.name, mesh.name, -1));
+    // One prototype per mesh and look: a Material node gives the same shared
+    // mesh another table, equal across buildings though not the same object.
+    std::vector<std::pair<MaterialTable, std::size_t>>& looks = prototype_of_[mesh.mesh];
+    auto it = std::find_if(looks.begin(), looks.end(),
+                           [&](const auto& look) { return materials_of(look.first) == materials_of(mesh.materials); });
+    if (it == looks.end()) {
+      it = looks.insert(looks.end(), {mesh.materials, scene_.prototypes.size()});
+      scene_.prototypes.push_back(gltf_mesh(*mesh.mesh, mesh.materials, mesh.name, mesh.name, -1));
+    }
     // Relative to the building's origin, as its node stands there.
     const glm::dmat4 from_origin = glm::translate(glm::dmat4(1.0), -glm::dvec3(data.origin[0], data.origin[1], data.origin[2]));
     data.instances.push_back({it->second, from_origin * to_file_axes(in.transform, UpAxis::Y), in.tag});

@@ -9,6 +9,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/io/gltf_write.h"
 #include "core/placement/placement.h"
@@ -33,9 +35,10 @@ class GltfSceneBuilder {
 
  private:
   GltfScene scene_;
-  // Placed meshes already in scene_.prototypes, held so no other mesh can
-  // come to live at the same address.
-  std::map<std::shared_ptr<const Mesh>, std::size_t> prototype_of_;
+  // Placed meshes already in scene_.prototypes, each mesh once per distinct
+  // material table (held so no other mesh can come to live at the same
+  // address).
+  std::map<std::shared_ptr<const Mesh>, std::vector<std::pair<MaterialTable, std::size_t>>> prototype_of_;
 };
 
 }  // namespace procex

@@ -94,7 +94,7 @@ void write_tagged_obj(const std::filesystem::path& path, const MeshSet& set, UpA
       first_corner[static_cast<std::size_t>(f.idx()) + 1] = first_corner[static_cast<std::size_t>(f.idx())] + mesh.valence(f);
     // Faces by tag, and within a tag by look (a placed mesh's own materials
     // under the tag its placement gave it).
-    const FaceMaterials own(mesh);
+    const FaceMaterials own(mesh, materials_of(part.materials));
     std::vector<std::pair<std::uint32_t, const Material*>> groups;  // tag, own material
     std::vector<std::size_t> group_of(mesh.n_faces());
     for (const auto f : mesh.faces()) {
@@ -211,7 +211,7 @@ GltfScene to_gltf(const MeshSet& set) {
   GltfSceneBuilder builder;
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
-    const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature};
+    const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature, part.materials};
     const bool same_building = i > 0 && set.parts[i - 1].building == part.building && set.parts[i - 1].feature == part.feature;
     if (same_building) {
       append_to_gltf_mesh(builder.last(), view);
@@ -233,6 +233,7 @@ TaggedMesh flattened(const TaggedMesh& part) {
   auto mesh = std::make_shared<const Mesh>(flatten(all));
   TaggedMesh out = part;
   out.placed = {};
+  out.materials = flattened_materials(part.materials, all);
   // The part's own faces come first, as they were; then the instances' faces.
   const std::size_t own = part.mesh->n_faces();
   const auto tags = face_tag_property(*mesh);

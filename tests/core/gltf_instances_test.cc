@@ -93,6 +93,33 @@ TEST_F(GltfInstances, OneMeshPerPlacedMeshOneNodePerInstance) {
   EXPECT_EQ(scene.meshes[1].instances[2].tag, "column");
 }
 
+// A mesh's look is carried beside it: the same shared window with another
+// material table is another prototype (and primitive material), while equal
+// tables made apart (a Material node's, one per building) share one.
+TEST_F(GltfInstances, OnePrototypePerMeshAndLook) {
+  Material red, blue;
+  red.colour = {1, 0, 0};
+  blue.colour = {0, 0, 1};
+  GltfSceneBuilder builder;
+  for (const Material& look : {red, red, blue}) {
+    PlacementResult r = building(0);
+    r.meshes[0].materials = material_table({{"frame", look}});
+    builder.add(r, "b");
+  }
+  const GltfScene& scene = builder.scene();
+  ASSERT_EQ(scene.prototypes.size(), 3u);  // window red, pillar, window blue
+  EXPECT_EQ(scene.meshes[0].instances[0].prototype, scene.meshes[1].instances[0].prototype);
+  EXPECT_NE(scene.meshes[0].instances[0].prototype, scene.meshes[2].instances[0].prototype);
+  const auto colour = [&](std::size_t prototype) {
+    for (const GltfPrimitiveData& p : scene.prototypes.at(prototype).primitives)
+      if (p.tag == "frame" && p.material) return p.material->colour;
+    ADD_FAILURE() << "prototype " << prototype << " has no material for frame";
+    return std::array<double, 3>{};
+  };
+  EXPECT_EQ(colour(scene.meshes[0].instances[0].prototype), red.colour);
+  EXPECT_EQ(colour(scene.meshes[2].instances[0].prototype), blue.colour);
+}
+
 TEST_F(GltfInstances, RoundTripKeepsEveryInstance) {
   const GltfScene scene = street();
   const fs::path file = dir_ / "street.glb";

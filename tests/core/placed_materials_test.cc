@@ -40,9 +40,10 @@ class PlacedMaterials : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   void write(const fs::path& file, const std::string& text) { std::ofstream(dir_ / file, std::ios::binary) << text; }
-  // The door read as Mesh Placement reads it: confined to dir_.
-  Mesh read_door(const std::string& name = "meshes/door_textured.obj") {
-    return read_mesh_file(dir_ / name, nullptr, [&](const fs::path& p) { return confined_path(dir_, p.string()); });
+  // The door read as Mesh Placement reads it: confined to dir_, its materials into `materials`.
+  Mesh read_door(const std::string& name = "meshes/door_textured.obj", Materials* materials = nullptr) {
+    return read_mesh_file(dir_ / name, nullptr, [&](const fs::path& p) { return confined_path(dir_, p.string()); },
+                          materials);
   }
   std::string read_error(const std::string& name) {
     try {
@@ -56,8 +57,8 @@ class PlacedMaterials : public ::testing::Test {
 };
 
 TEST_F(PlacedMaterials, ReadsTheLibraryAndEachCornersOwnAttributes) {
-  const Mesh door = read_door();
-  const Materials& materials = mesh_materials(door);
+  Materials materials;
+  const Mesh door = read_door("meshes/door_textured.obj", &materials);
   ASSERT_EQ(materials.size(), 2u);
   EXPECT_EQ(materials.at("door").colour, (std::array<double, 3>{1, 1, 1}));
   EXPECT_EQ(materials.at("door").texture, fs::canonical(dir_ / "meshes" / "door_planks.png"));
@@ -114,8 +115,9 @@ TEST_F(PlacedMaterials, FilesTheLibraryNamesAreConfinedAndChecked) {
 
 TEST_F(PlacedMaterials, FlatteningKeepsUvsMaterialsAndTurnsNormals) {
   PlacementResult r;
-  const auto door = std::make_shared<const Mesh>(read_door());
-  r.add_mesh({"door", door});
+  Materials materials;
+  const auto door = std::make_shared<const Mesh>(read_door("meshes/door_textured.obj", &materials));
+  r.add_mesh({"door", door, material_table(materials)});
   // Stood up (a quarter turn about x: the door's z becomes -y) and moved,
   // and mirrored in x: the front's normal turns with the first.
   const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), M_PI / 2, glm::dvec3(1, 0, 0));
@@ -123,7 +125,7 @@ TEST_F(PlacedMaterials, FlatteningKeepsUvsMaterialsAndTurnsNormals) {
   r.add_instance({0, glm::translate(glm::dmat4(1.0), glm::dvec3(5, 0, 0)) * turn, "", -1});
   r.add_instance({0, mirror, "", -1});
   const Mesh flat = flatten(r);
-  EXPECT_EQ(mesh_materials(flat), mesh_materials(*door));
+  EXPECT_EQ(materials_of(flattened_materials(nullptr, r)), materials);
   const SurfaceAttributes s = surface_attributes(flat);
   ASSERT_EQ(s.corner_normals.size(), s.corner_uvs.size());
   // Instance 0's front face is face 0, instance 1's face 6 (its corners reversed by the mirror).
@@ -147,11 +149,12 @@ TEST_F(PlacedMaterials, FlatteningKeepsUvsMaterialsAndTurnsNormals) {
 }
 
 TEST_F(PlacedMaterials, GltfPrimitivesCarryTheMaterialAndImage) {
-  const Mesh door = read_door();
+  Materials materials;
+  const Mesh door = read_door("meshes/door_textured.obj", &materials);
   const std::vector<std::uint32_t> tags = {0, 1, 1, 1, 1, 1};
   const std::vector<std::string> names = {"door", "door_frame"};
   GltfScene scene;
-  scene.meshes.push_back(to_gltf_mesh({&door, tags, names, "door", -1}));
+  scene.meshes.push_back(to_gltf_mesh({&door, tags, names, "door", -1, material_table(materials)}));
   const GltfPrimitiveData& front = scene.meshes[0].primitives[0];
   ASSERT_TRUE(front.material && front.material->image);
   EXPECT_EQ(*front.material->image, read_file(dir_ / "meshes" / "door_planks.png", 1 << 20));

@@ -36,7 +36,7 @@ const MeshSet& mesh_of(const EvalResult& r) {
 TEST_F(MaterialNode, TexturedHouseGivesEachTagItsLook) {
   const MeshSet set = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "textured_house.pxg"), kSamples));
   ASSERT_EQ(set.parts.size(), 1u);
-  const Materials& materials = mesh_materials(*set.parts[0].mesh);
+  const Materials& materials = materials_of(set.parts[0].materials);
   ASSERT_EQ(materials.size(), 4u);
   const Material& wall = materials.at("wall");
   EXPECT_EQ(wall.colour, (std::array<double, 3>{1, 1, 1}));
@@ -53,18 +53,26 @@ TEST_F(MaterialNode, TexturedHouseGivesEachTagItsLook) {
 
   const MeshSet plain = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "house.pxg"), kSamples));
   EXPECT_EQ(plain.parts[0].mesh->n_faces(), set.parts[0].mesh->n_faces());
-  EXPECT_TRUE(mesh_materials(*plain.parts[0].mesh).empty());
+  EXPECT_TRUE(materials_of(plain.parts[0].materials).empty());
 }
 
-// A placed mesh's faces of the tag take the look, its own material of that
-// name replaced; every instance still shares one mesh, and the input's mesh
-// is left as it was (values are immutable).
-TEST_F(MaterialNode, PlacedMeshesOfTheTagTakeItAndStayShared) {
-  MeshSet in;
-  TaggedMesh& part = in.parts.emplace_back();
+// One part: the window frame's mesh, every face tagged wall.
+MeshSet window_as_wall() {
+  MeshSet set;
+  TaggedMesh& part = set.parts.emplace_back();
   part.mesh = std::make_shared<const Mesh>(read_mesh_file(fs::path(PROCEX_TEST_DATA) / "mesh_window_frame.obj"));
   part.face_tags.assign(part.mesh->n_faces(), 0);
   part.tags = {"wall"};
+  return set;
+}
+
+// A placed mesh's faces of the tag take the look, its own material of that
+// name replaced; every instance still shares one mesh, the very mesh placed
+// (the look is beside it, not in it), and the input is left as it was
+// (values are immutable).
+TEST_F(MaterialNode, PlacedMeshesOfTheTagTakeItAndStayShared) {
+  MeshSet in = window_as_wall();
+  TaggedMesh& part = in.parts[0];
   const std::size_t window = part.placed.add_mesh({"window", part.mesh});
   for (int i = 0; i < 3; ++i) part.placed.add_instance({window, glm::dmat4(1.0), "", -1});
   const auto r = run_node("Material", {{"tag", Value::make(std::string("frame"))}, {"metallic", Value::make(1.0)},
@@ -74,14 +82,39 @@ TEST_F(MaterialNode, PlacedMeshesOfTheTagTakeItAndStayShared) {
   const TaggedMesh& out = r.outputs.at(0).get<MeshSet>().parts.at(0);
   EXPECT_EQ(out.mesh, part.mesh);  // the building has no face tagged frame: not copied
   ASSERT_EQ(out.placed.meshes.size(), 1u);
-  const Material& frame = mesh_materials(*out.placed.meshes[0].mesh).at("frame");
+  EXPECT_EQ(out.placed.meshes[0].mesh, part.mesh);
+  const Material& frame = materials_of(out.placed.meshes[0].materials).at("frame");
   EXPECT_EQ(frame.metallic, 1.0);
   EXPECT_EQ(frame.roughness, 0.2);
-  EXPECT_TRUE(mesh_materials(*part.mesh).empty());
+  EXPECT_TRUE(materials_of(part.placed.meshes[0].materials).empty());
+  EXPECT_TRUE(materials_of(out.materials).empty());
 
   const auto none = run_node("Material", {{"tag", Value::make(std::string("chimney"))}}, {{"mesh", Value::make(in)}});
   ASSERT_TRUE(none.ok()) << none.messages();
   EXPECT_NE(none.messages().find("no face is tagged 'chimney'"), std::string::npos) << none.messages();
+}
+
+// A building's faces take the look without a copy of the building: the part
+// keeps the input's mesh and gets a new table beside it, and a second node
+// adds to that table without touching the first's.
+TEST_F(MaterialNode, ABuildingsLookIsATableBesideItsSharedMesh) {
+  MeshSet in = window_as_wall();
+  TaggedMesh& part = in.parts[0];
+  const auto walls = run_node("Material", {{"tag", Value::make(std::string("wall"))}, {"roughness", Value::make(0.3)}},
+                              {{"mesh", Value::make(in)}});
+  ASSERT_TRUE(walls.ok()) << walls.messages();
+  const TaggedMesh& walled = walls.outputs.at(0).get<MeshSet>().parts.at(0);
+  EXPECT_EQ(walled.mesh, part.mesh);
+  EXPECT_EQ(materials_of(walled.materials).at("wall").roughness, 0.3);
+  EXPECT_EQ(part.materials, nullptr);
+
+  const auto again = run_node("Material", {{"tag", Value::make(std::string("wall"))}, {"metallic", Value::make(1.0)}},
+                              {{"mesh", walls.outputs.at(0)}});
+  ASSERT_TRUE(again.ok()) << again.messages();
+  const TaggedMesh& twice = again.outputs.at(0).get<MeshSet>().parts.at(0);
+  EXPECT_EQ(twice.mesh, part.mesh);
+  EXPECT_EQ(materials_of(twice.materials).at("wall").metallic, 1.0);
+  EXPECT_EQ(materials_of(walled.materials).at("wall").metallic, 0.0);
 }
 
 TEST_F(MaterialNode, RefusesAColourOutsideZeroToOneAndAMissingTag) {
@@ -148,8 +181,8 @@ TEST_F(MaterialNode, TwoLooksUnderOneNameAreTwoObjMaterials) {
     Mesh mesh = read_mesh_file(fs::path(PROCEX_TEST_DATA) / "mesh_window_frame.obj");
     Material look;
     look.colour = {red, 0.0, 1.0 - red};
-    set_mesh_materials(mesh, {{"frame", look}});
     TaggedMesh& part = set.parts.emplace_back();
+    part.materials = material_table({{"frame", look}});
     part.face_tags.assign(mesh.n_faces(), 0);
     part.tags = {"frame"};
     part.building = red > 0 ? "a" : "b";
@@ -186,7 +219,7 @@ TEST_F(MaterialNode, AnEditedLibraryOrItsTextureIsReadAgain) {
     const MeshSet& set = mesh_of(r);
     write_mesh_set(dir_ / "doors.glb", set);
     for (const PlaceableMesh& m : set.parts.at(0).placed.meshes)
-      if (const auto it = mesh_materials(*m.mesh).find(tag); it != mesh_materials(*m.mesh).end()) return it->second;
+      if (const auto it = materials_of(m.materials).find(tag); it != materials_of(m.materials).end()) return it->second;
     ADD_FAILURE() << "no placed mesh has a material " << tag;
     return Material{};
   };

@@ -209,15 +209,12 @@ TEST(PreviewMesh, PresentAnchorsGetMarkersAbsentOnesAreListed) {
 // divided by the tile size (u round the footprint, v up the wall); the other
 // faces one untextured run.
 TEST(PreviewMesh, TexturedMaterialsGetTheirImageAndTileScaledCoordinates) {
-  const TaggedMesh plain = l_block(3.0);
-  Mesh mesh = *plain.mesh;
   Material brick;
   brick.colour = {1.0, 0.5, 0.5};
   brick.texture = std::filesystem::path(PROCEX_SAMPLES) / "textures" / "brick.png";
   brick.tile_size = 2.0;
-  set_mesh_materials(mesh, {{"side", brick}});
-  TaggedMesh part = plain;
-  part.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  TaggedMesh part = l_block(3.0);
+  part.materials = material_table({{"side", brick}});
   const PreviewMesh p = make_preview({&part});
   ASSERT_EQ(p.textures.size(), 1u);
   EXPECT_EQ(p.textures[0].width, 64);

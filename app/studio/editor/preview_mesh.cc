@@ -230,7 +230,8 @@ class Builder {
   void add_building(const TaggedMesh& part) {
     const Mesh& mesh = *part.mesh;
     ++out_.meshes;
-    const MeshUvs uvs(mesh);
+    const Materials& materials = materials_of(part.materials);
+    const MeshUvs uvs(mesh, materials);
     for (Mesh::FaceHandle f : mesh.faces()) {
       std::vector<glm::dvec3> pts = face_points(mesh, f);
       if (pts.size() < 3) continue;
@@ -241,7 +242,7 @@ class Builder {
       const glm::dvec3 n = newell(pts);
       TagSummary& t = tag(preview_tag(part, f));
       count_face(t, n);
-      append_face(building_, pts, n, look(t, t.name, mesh), uvs.of(f));
+      append_face(building_, pts, n, look(t, t.name, materials), uvs.of(f));
     }
     for (Mesh::EdgeHandle e : mesh.edges()) {
       const Mesh::HalfedgeHandle h = mesh.halfedge_handle(e, 0);
@@ -308,8 +309,7 @@ class Builder {
   struct MeshUvs {
     SurfaceAttributes surface;
     std::vector<std::size_t> first;
-    explicit MeshUvs(const Mesh& mesh) {
-      const Materials& m = mesh_materials(mesh);
+    MeshUvs(const Mesh& mesh, const Materials& m) {
       if (std::none_of(m.begin(), m.end(), [](const auto& e) { return !e.second.texture.empty(); })) return;
       surface = surface_attributes(mesh, local_origin(mesh));  // small numbers for float32
       first = first_corners(mesh);
@@ -320,10 +320,9 @@ class Builder {
   };
 
   // The look of faces shown as tag `t` whose material (if any) is the one
-  // `mesh` has for `material_tag`. A tag's summary takes the first material
-  // seen for it.
-  Look look(TagSummary& t, const std::string& material_tag, const Mesh& mesh) {
-    const Materials& materials = mesh_materials(mesh);
+  // `materials` (a mesh's, carried beside it) has for `material_tag`. A tag's
+  // summary takes the first material seen for it.
+  Look look(TagSummary& t, const std::string& material_tag, const Materials& materials) {
     const auto m = materials.find(material_tag);
     if (m == materials.end()) return {t.color, -1, 1.0};
     const Material& mat = m->second;
@@ -393,14 +392,15 @@ class Builder {
 
   // The triangles of a placed mesh under an instance tag, made on first use.
   Prototype& prototype(const PlaceableMesh& placed, const std::string& instance_tag) {
-    auto [it, fresh] = prototypes_.try_emplace({placed.mesh.get(), instance_tag, placed.name});
+    auto [it, fresh] = prototypes_.try_emplace({placed.mesh.get(), instance_tag, placed.name, placed.materials.get()});
     Prototype& proto = it->second;
     if (!fresh) return proto;
     proto.group = out_.placed.size();
     out_.placed.emplace_back();
     const Mesh& mesh = *placed.mesh;
     const auto own_tags = face_tag_property(mesh);
-    const MeshUvs uvs(mesh);
+    const Materials& materials = materials_of(placed.materials);
+    const MeshUvs uvs(mesh, materials);
     Buckets vertices;
     for (Mesh::FaceHandle f : mesh.faces()) {
       const std::vector<glm::dvec3> pts = face_points(mesh, f);
@@ -412,7 +412,7 @@ class Builder {
       TagSummary& t = tag(!instance_tag.empty() ? instance_tag : own_tag);
       const glm::dvec3 n = newell(pts);
       proto.add_face(t, n, pts);
-      append_face(vertices, pts, n, look(t, own_tag, mesh), uvs.of(f));
+      append_face(vertices, pts, n, look(t, own_tag, materials), uvs.of(f));
     }
     PreviewInstances& group = out_.placed[proto.group];
     vertices.join(group.vertices, group.ranges);
@@ -523,7 +523,8 @@ class Builder {
   std::map<std::shared_ptr<const std::string>, int> textures_;  // images (by address: shared by the writers' caches) to indices
   std::set<std::string> materials_seen_;  // tags whose summary has a material's colour
   std::map<std::string, TagSummary> tags_;  // std::map: references stay valid as tags are added
-  std::map<std::tuple<const Mesh*, std::string, std::string>, Prototype> prototypes_;
+  // By mesh, instance tag, name and materials (the parts being previewed hold both).
+  std::map<std::tuple<const Mesh*, std::string, std::string, const Materials*>, Prototype> prototypes_;
   std::map<std::pair<std::size_t, std::string>, Prototype> glb_prototypes_;
   Box bounds_;  // out_.min and out_.max
 };
