@@ -11,10 +11,12 @@
 # - "materials": the same recipe with Material nodes (brick walls and gables,
 #   tiled roofs, both textured, samples/textures), so every .glb primitive
 #   carries a PBR material and the two images are embedded;
-# - "reference": REFERENCE, another procex executable (e.g. this commit built
-#   without the _TAG attribute, see BENCHMARKS.md), on the plain recipe.
+# - "reference" and "reference_materials": REFERENCE, another procex
+#   executable (e.g. main's, or this commit built without the _TAG attribute,
+#   see BENCHMARKS.md), on the plain recipe and on the one with materials.
 # Then per kind the mean CPU seconds and the highest peak RSS, and their
-# ratios to the plain recipe's (and the plain recipe's to the reference's).
+# ratios: materials to plain for each executable, this one's to the
+# reference's for each recipe.
 # Usage: bench/batch_city.sh [BUILD_DIR] [RUNS] [REFERENCE]   (from the checkout; default build, 3)
 set -eu
 build=${1:-build}
@@ -27,8 +29,10 @@ import glob, json, sys
 features = [f for p in sorted(glob.glob(sys.argv[1] + "/*.geojson")) for f in json.load(open(p))["features"]]
 json.dump({"type": "FeatureCollection", "features": features}, open(sys.argv[2], "w"))
 PY
-# samples/city.pxg with a Material node per tag after its output, its textures beside it.
+# samples/city.pxg with a Material node per tag after its output, its textures and
+# the meshes it places (windows, doors) beside it, as the recipe's folder has them.
 cp -r samples/textures "$out/textures"
+cp -r samples/meshes "$out/meshes"
 python3 - samples/city.pxg "$out/materials.pxg" <<'PY'
 import json, sys
 recipe = json.load(open(sys.argv[1]))
@@ -57,6 +61,9 @@ run() {
 import json, sys
 wall, user, sys_s, rss = sys.argv[1].split()
 s = json.load(open(sys.argv[2]))["summary"]
+# A run whose buildings all failed (a file the recipe names missing) measures nothing.
+if not s.get("ok"):
+    sys.exit(f"{sys.argv[5]}: no building was made: {s}")
 load = open("/proc/loadavg").read().split()[0]
 line = (f"{sys.argv[5]} jobs={sys.argv[3]} wall={wall}s cpu={float(user) + float(sys_s):.2f}s rss={int(rss) // 1024}MB "
         f"evaluate={s['evaluate_ms'] / 1000:.2f}s write={s['write_ms'] / 1000:.2f}s "
@@ -70,7 +77,10 @@ while [ "$i" -lt "$runs" ]; do
   for jobs in 1 2; do run plain "$build/app/cli/procex" samples/city.pxg "$jobs"; done
   cmp -s "$out/plain_1.glb" "$out/plain_2.glb" || { echo "1 and 2 jobs wrote different bytes" >&2; exit 1; }
   run materials "$build/app/cli/procex" "$out/materials.pxg" 2
-  if [ -n "$reference" ]; then run reference "$reference" samples/city.pxg 2; fi
+  if [ -n "$reference" ]; then
+    run reference "$reference" samples/city.pxg 2
+    run reference_materials "$reference" "$out/materials.pxg" 2
+  fi
   i=$((i + 1))
 done
 python3 - "$out/lines" <<'PY'
@@ -85,7 +95,8 @@ for line in open(sys.argv[1]):
 mean = {k: sum(v) / len(v) for k, v in cpu.items()}
 for kind in mean:
     print(f"{kind} (2 jobs): mean cpu={mean[kind]:.2f}s peak rss={rss[kind]}MB")
-for kind, base in (("materials", "plain"), ("plain", "reference")):
+for kind, base in (("materials", "plain"), ("reference_materials", "reference"), ("plain", "reference"),
+                   ("materials", "reference_materials")):
     if kind in mean and base in mean:
         print(f"{kind} / {base}: cpu {mean[kind] / mean[base]:.2f}x, peak rss {rss[kind] / rss[base]:.2f}x")
 PY
