@@ -32,6 +32,7 @@
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
 #include "app/studio/ui/layout_settings.h"
+#include "app/studio/ui/key_input.h"
 #include "app/studio/ui/mouse_input.h"
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/partial_redraw.h"
@@ -471,7 +472,9 @@ class App {
     auto set_y = [&](float edge) { layout.split_y = (edge - top) / h; };
     auto dragged = [](float d) { return d > 0.5f || d < -0.5f; };
     place(0, 0, left_w, canvas_h);
+    canvas_has_keys_ = false;
     if (ImGui::Begin("Nodes", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+      canvas_has_keys_ = ImGui::IsWindowFocused();
       if (const Edges m = moved("nodes"); dragged(m.right)) set_x(placed.right + m.right);
       else if (!inspector_empty && dragged(m.bottom)) set_y(placed.bottom + m.bottom);
       canvas_.draw(*doc_, here_.get(), status_);
@@ -790,6 +793,8 @@ class App {
     j["settled"] = settled();
     j["dirty"] = doc_->dirty();
     j["selected"] = doc_->selected();
+    // Where keys go: the canvas's shortcuts, or a text field (typed characters); tests type once they do.
+    j["keyboard"] = {{"canvas", canvas_has_keys_}, {"text", ImGui::GetIO().WantTextInput}};
     j["scope"] = doc_->scope();
     j["breadcrumb"] = doc_->breadcrumb();
     const Rect c = canvas_.screen_rect();
@@ -903,6 +908,7 @@ class App {
   std::optional<fs::path> recovery_;
   std::function<void()> pending_;
   bool confirm_requested_ = false, quit_ = false, load_failed_ = false;
+  bool canvas_has_keys_ = false;  // the node canvas has the keyboard (its shortcuts work)
   Clock::time_point last_autosave_ = Clock::now();
 };
 
@@ -1018,6 +1024,7 @@ int run_studio(const Options& options) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder: LayoutSettings keeps it per user
   ImGui::StyleColorsDark();
   auto mouse = std::make_unique<MouseInput>(window);  // first: ImGui's backend chains its button callback after it
+  auto keys = std::make_unique<KeyInput>(window);     // so too its key and character callbacks
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -1047,8 +1054,8 @@ int run_studio(const Options& options) {
         break;
       }
       const auto frame_start = Clock::now();
-      // Idle: no busy loop; evaluating: poll the worker; mouse changes queued: show the next at once.
-      if (automated || mouse->pending()) glfwPollEvents();
+      // Idle: no busy loop; evaluating: poll the worker; mouse or key changes queued: show the next at once.
+      if (automated || mouse->pending() || keys->pending()) glfwPollEvents();
       else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
@@ -1058,6 +1065,7 @@ int run_studio(const Options& options) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       mouse->before_new_frame();
+      keys->before_new_frame();
       ImGui::NewFrame();
       mouse->after_new_frame();
       const auto build_start = Clock::now();
@@ -1134,6 +1142,7 @@ int run_studio(const Options& options) {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   mouse.reset();
+  keys.reset();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
   glfwTerminate();

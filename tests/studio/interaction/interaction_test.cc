@@ -340,6 +340,34 @@ TEST(StudioInteraction, DragsAProfileOffsetHandle) {
   fs::remove_all(dir);
 }
 
+// Keys pressed and released, and characters typed, while the studio is busy
+// with one frame (here: stopped while xdotool types) all arrive together;
+// each key change is shown in a frame of its own with the characters it
+// typed, so Tab opens the search, the name typed right after it fills it
+// and Enter places the node; a quick Ctrl+Z undoes that.
+TEST(StudioInteraction, KeysPressedDuringASlowFrameAreAllSeen) {
+  const fs::path dir = fresh_dir("slow_keys");
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
+  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["selected"] == 2; });
+  const auto [ox, oy] = pin(map, 2, 0, true);
+  click({ox - 50, oy});
+  map = studio.wait("the canvas has the keyboard", [](const json& j) { return j["keyboard"]["canvas"] == true && j["selected"] == 2; });
+  std::uint64_t rev = revision(map);
+  studio.pause();
+  xdo("key Tab type transf");
+  xdo("key Return");
+  studio.resume();
+  map = studio.wait("the Transform placed and wired", [&](const json& j) { return revision(j) > rev && j["selected"] == 3 && j["links"].size() == 3; });
+  rev = revision(map);
+  studio.pause();
+  xdo("key ctrl+z");
+  studio.resume();
+  map = studio.wait("the placing undone", [&](const json& j) { return revision(j) > rev && j["links"].size() == 2; });
+  EXPECT_FALSE(map["node_positions"].contains("3"));
+  fs::remove_all(dir);
+}
+
 // Tab opens the node search over the canvas; typing filters it and Enter
 // places the best match at the cursor, wired from the selected node. L lays
 // the graph out again (one undo step).

@@ -66,6 +66,10 @@ int Studio::wait_exit(std::chrono::seconds timeout) {
   return -1;
 }
 
+void Studio::pause() { ASSERT_EQ(kill(pid_, SIGSTOP), 0); }
+
+void Studio::resume() { ASSERT_EQ(kill(pid_, SIGCONT), 0); }
+
 void xdo(const std::string& args) {
   const std::string cmd = "xdotool " + args;
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;

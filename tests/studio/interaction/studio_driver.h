@@ -36,6 +36,10 @@ class Studio {
             bool required = true);
   // Exit code, or -1 when it did not exit in time.
   int wait_exit(std::chrono::seconds timeout);
+  // Stops and continues the process (SIGSTOP, SIGCONT): input sent between the two reaches it
+  // at once, as during one slow frame.
+  void pause();
+  void resume();
 
  private:
   fs::path map_;
