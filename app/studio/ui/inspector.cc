@@ -97,8 +97,7 @@ void Inspector::draw(Document& doc, const EvalSnapshot* eval, std::string& statu
       auto step = [&](const char* text, const char* key, std::size_t to) {
         if (ImGui::Button(text, ImVec2(ImGui::GetFrameHeight(), 0)))
           if (Status s = doc.set_port_count(id, i, to); !s) status = s.message();
-        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-        widgets_[p.name + key] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+        record(p.name + key);
         ImGui::SameLine();
       };
       if (count > 0) step("-", ".remove", count - 1);
@@ -285,10 +284,7 @@ void Inspector::expression_error(NodeId id, const ParamDecl& p) {
   record(p.name + ".error");
 }
 
-void Inspector::record(const std::string& name) {
-  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-  widgets_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
-}
+void Inspector::record(const std::string& name) { record_item(widgets_, name); }
 
 void Inspector::expose_dialog(Document& doc, std::string& status) {
   if (expose_.open_requested) {

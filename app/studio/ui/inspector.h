@@ -19,6 +19,7 @@
 
 #include "app/studio/editor/document.h"
 #include "app/studio/editor/eval_worker.h"
+#include "app/studio/ui/widget_rects.h"
 
 namespace procex::studio {
 
@@ -27,12 +28,12 @@ class Inspector {
   void draw(Document& doc, const EvalSnapshot* eval, std::string& status);
   // Each parameter widget's rectangle in the last frame (window pixels), by
   // parameter name: part of the --ui-map for tests that click.
-  const std::map<std::string, std::array<float, 4>>& widgets() const { return widgets_; }
+  const WidgetRects& widgets() const { return widgets_; }
 
  private:
   // Text being edited for string and JSON parameters, by "node.param", until committed.
   std::map<std::string, std::string> editing_;
-  std::map<std::string, std::array<float, 4>> widgets_;
+  WidgetRects widgets_;
   void record(const std::string& name);  // the last item's rectangle into widgets_
   void expression_field(Document& doc, const EvalSnapshot* eval, NodeId id, std::size_t param, std::string& status);
   void expression_error(NodeId id, const ParamDecl& p);  // under the field, when the last edit was refused

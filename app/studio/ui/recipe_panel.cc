@@ -7,10 +7,7 @@
 
 namespace procex::studio {
 
-void RecipePanel::record(const std::string& name) {
-  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-  widgets_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
-}
+void RecipePanel::record(const std::string& name) { record_item(widgets_, name); }
 
 void RecipePanel::draw(Document& doc, std::string& status, const std::function<void(const std::filesystem::path&)>& take_thumbnail) {
   widgets_.clear();

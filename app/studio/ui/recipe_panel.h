@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/studio/editor/document.h"
+#include "app/studio/ui/widget_rects.h"
 
 namespace procex::studio {
 
@@ -17,7 +18,7 @@ class RecipePanel {
   // `take_thumbnail` saves the preview's image to a file (a path beside the recipe).
   void draw(Document& doc, std::string& status, const std::function<void(const std::filesystem::path&)>& take_thumbnail);
   // Widget rectangles of the last frame (window pixels), for the --ui-map.
-  const std::map<std::string, std::array<float, 4>>& widgets() const { return widgets_; }
+  const WidgetRects& widgets() const { return widgets_; }
 
  private:
   void record(const std::string& name);
@@ -25,7 +26,7 @@ class RecipePanel {
   void interface(Document& doc, std::string& status);
   void presets(Document& doc, std::string& status);
 
-  std::map<std::string, std::array<float, 4>> widgets_;
+  WidgetRects widgets_;
   std::map<std::string, std::string> editing_;  // metadata text until committed
   std::string new_name_, new_preset_;
   int new_type_ = 0;

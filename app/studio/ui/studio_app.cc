@@ -34,6 +34,7 @@
 #include "app/studio/ui/layout_settings.h"
 #include "app/studio/ui/key_input.h"
 #include "app/studio/ui/mouse_input.h"
+#include "app/studio/ui/widget_rects.h"
 #include "app/studio/ui/node_canvas.h"
 #include "app/studio/ui/partial_redraw.h"
 #include "app/studio/ui/preview_view.h"
@@ -644,10 +645,7 @@ class App {
   }
 
   // The last item's rectangle, for the --ui-map.
-  void record_button(const std::string& name) {
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    buttons_[name] = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
-  }
+  void record_button(const std::string& name) { record_item(buttons_, name); }
 
   void modals() {
     if (confirm_requested_) {
@@ -903,7 +901,7 @@ class App {
   std::string status_, title_, ui_map_text_;
   std::uint64_t title_revision_ = 0;
   Clock::time_point title_checked_;
-  std::map<std::string, std::array<float, 4>> buttons_;
+  WidgetRects buttons_;
   PathPrompt prompt_;
   std::optional<fs::path> recovery_;
   std::function<void()> pending_;

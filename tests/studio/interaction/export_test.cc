@@ -11,7 +11,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <thread>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -44,12 +43,9 @@ std::pair<int, std::string> run(const std::string& command) {
   return r;
 }
 
-// Waits for `name` on the map, then for the popup holding it to have placed itself (its first frames).
+// Waits for `name` on the map: listed once the popup holding it has placed itself.
 json placed(Studio& studio, const std::string& name) {
-  const auto has = [&](const json& j) { return j["buttons"].contains(name); };
-  studio.wait(name, has);
-  std::this_thread::sleep_for(500ms);
-  return studio.wait(name, has);
+  return studio.wait(name, [&](const json& j) { return j["buttons"].contains(name); });
 }
 
 // File > Export..., the format's button, the CRS for a GeoPackage, Export.
@@ -59,25 +55,19 @@ json export_as(Studio& studio, json map, const std::string& extension, const std
   click(button_centre(map, "menu_export"));
   map = placed(studio, "export_format" + extension);
   const auto format_is = [&](const json& j) { return j.contains("prompt") && j["prompt"]["path"].get<std::string>().ends_with(extension); };
-  for (int attempt = 0; attempt < 4 && !format_is(map); ++attempt) {  // a click lost between two frames is given again
-    click(button_centre(map, "export_format" + extension));
-    map = studio.wait("the format " + extension, format_is, 8s, attempt == 3);
-  }
+  click(button_centre(map, "export_format" + extension));
+  map = studio.wait("the format " + extension, format_is);
   if (!crs.empty()) {
     map = placed(studio, "export_crs");
     click(button_centre(map, "export_crs"));
-    press("ctrl+a");
-    xdo("type '" + crs + "'");
+    type_into_focused_field(studio, "the CRS field", crs);
     map = studio.wait("the CRS", [&](const json& j) { return j.contains("prompt") && j["prompt"]["crs"] == crs; });
   }
   const std::string path = map["prompt"]["path"];
   // The dialog sizes itself to what the format shows: the button is where the newest frame put it.
   const auto closed = [](const json& j) { return !j.contains("prompt"); };
-  for (int attempt = 0; attempt < 4 && !closed(map); ++attempt) {
-    map = placed(studio, "prompt_ok");
-    click(button_centre(map, "prompt_ok"));
-    map = studio.wait("the dialog closed", closed, 8s, attempt == 3);
-  }
+  click(button_centre(placed(studio, "prompt_ok"), "prompt_ok"));
+  map = studio.wait("the dialog closed", closed);
   return studio.wait("the export of " + path, [&](const json& j) { return closed(j) && j["status"].get<std::string>().find(path) != std::string::npos; });
 }
 

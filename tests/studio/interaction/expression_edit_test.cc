@@ -10,7 +10,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <thread>
 
 #include "graph/pxg.h"
 #include "tests/studio/interaction/studio_driver.h"
@@ -37,9 +36,7 @@ bool extent_is(const json& map, double x, double y) {
 json menu(Studio& studio, const json& map, const std::string& widget, const std::string& item) {
   const auto at = widget_centre(map, widget);
   xdo("mousemove " + std::to_string(at.first) + " " + std::to_string(at.second) + " sleep 0.3 click 3 sleep 0.3");
-  studio.wait("the menu of " + widget, [&](const json& j) { return j["params"].contains(item); });
-  std::this_thread::sleep_for(500ms);  // a popup places itself during its first frames
-  const json now = studio.wait("the menu placed", [&](const json& j) { return j["params"].contains(item); });
+  const json now = studio.wait("the menu of " + widget, [&](const json& j) { return j["params"].contains(item); });  // listed once placed
   click(widget_centre(now, item));
   return now;
 }
@@ -90,11 +87,10 @@ TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused
   EXPECT_EQ(revision(map), rev);
   const std::string status = map["status"];
   EXPECT_NE(status.find("node 1 (Footprint Shape), parameter 'depth': column 8"), std::string::npos) << status;
-  long red = 0;
-  for (int attempt = 0; attempt < 20 && red < 20; ++attempt) {  // on screen a frame or two after the map
-    std::this_thread::sleep_for(100ms);
-    red = capture_screen().count(window_origin(map), map["params"]["depth.error"], [](double r, double g, double b) { return r > 150 && g < 0.6 * r && b < 0.6 * r; });
-  }
+  const auto red_text = [&](const Screen& s) {
+    return s.count(window_origin(map), map["params"]["depth.error"], [](double r, double g, double b) { return r > 150 && g < 0.6 * r && b < 0.6 * r; });
+  };
+  const long red = red_text(screen_when([&](const Screen& s) { return red_text(s) >= 20; }));
   EXPECT_GE(red, 20) << "pixels of the error text";
 
   // Back to a value (the one the expression gave), then undone: the expression again.

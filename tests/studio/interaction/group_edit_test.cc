@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <string>
-#include <thread>
 
 #include "graph/pxg.h"
 #include "tests/studio/interaction/studio_driver.h"
@@ -51,11 +50,11 @@ TEST(StudioGroupEdit, OpensAGroupEditsInsideAndBacksOutByTheBreadcrumb) {
   EXPECT_EQ(map["node_positions"].size(), 2u);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "opening a group changes nothing";
   {  // On screen: the first step is a button (ImGui's blue over the dark panel), the second light text.
-    std::this_thread::sleep_for(300ms);
-    const Screen screen = capture_screen();
     const json& step = map["buttons"]["crumb_0"];
-    const long blue = screen.count(window_origin(map), step, [](double r, double, double b) { return b > r + 40; });
-    EXPECT_GT(blue, static_cast<long>(step[2].get<double>() * step[3].get<double>() * 0.5)) << "pixels of the breadcrumb's button";
+    const auto blue = [&](const Screen& s) { return s.count(window_origin(map), step, [](double r, double, double b) { return b > r + 40; }); };
+    const long half = static_cast<long>(step[2].get<double>() * step[3].get<double>() * 0.5);
+    const Screen screen = screen_when([&](const Screen& s) { return blue(s) > half; });
+    EXPECT_GT(blue(screen), half) << "pixels of the breadcrumb's button";
     EXPECT_GT(screen.count(window_origin(map), map["buttons"]["crumb_1"], [](double r, double g, double b) { return r > 180 && g > 180 && b > 180; }), 10)
         << "the group's name, in light text";
   }
@@ -81,14 +80,13 @@ TEST(StudioGroupEdit, OpensAGroupEditsInsideAndBacksOutByTheBreadcrumb) {
   const json& c = map["canvas"];
   const int ax = map["window"][0].get<int>() + static_cast<int>(c[0].get<double>() + c[2].get<double>() * 0.1);
   const int ay = map["window"][1].get<int>() + static_cast<int>(c[1].get<double>() + c[3].get<double>() * 0.8);
-  const auto added = [](const json& j) { return j["node_positions"].size() == 3u && j["selected"] == 3; };
-  for (int attempt = 0; attempt < 4 && !added(map); ++attempt) {
-    xdo("mousemove " + std::to_string(ax) + " " + std::to_string(ay) + " sleep 0.3");
-    press("Tab");
-    xdo("sleep 0.4 type 'footprint sh'");
-    press("Return");
-    map = studio.wait("the Footprint Shape added", added, 8s, attempt == 3);
-  }
+  const auto added = [](const json& j) { return j["node_positions"].size() == 3u && j["selected"] == 3 && pins_shown(j, 3); };
+  xdo("mousemove " + std::to_string(ax) + " " + std::to_string(ay));
+  studio.wait("the canvas has the keyboard", [](const json& j) { return j["keyboard"]["canvas"] == true; });
+  press("Tab");
+  type_into_focused_field(studio, "the node search", "footprint sh");
+  press("Return");
+  map = studio.wait("the Footprint Shape added", added);
   rev = revision(map);
   drag(pin(map, 3, 0, true), pin(map, 2, 0, false));
   map = studio.wait("the rectangle extruded", [&](const json& j) {

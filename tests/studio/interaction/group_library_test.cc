@@ -8,7 +8,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <thread>
 
 #include "graph/pxg.h"
 #include "tests/studio/interaction/studio_driver.h"
@@ -28,7 +27,7 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   const std::size_t nodes_before = map["node_positions"].size();
 
   const auto saved = [](const json& j) { return j["status"].get<std::string>().find("saved group 'building' to ") != std::string::npos; };
-  map = menu_item_until(studio, map, "menu_edit", "menu_save_group", saved);
+  map = menu_item_and_wait(studio, map, "menu_edit", "menu_save_group", saved);
   ASSERT_TRUE(saved(map)) << map["status"];
   ASSERT_TRUE(fs::is_regular_file(dir / "lib" / "building.pxg"));
   EXPECT_NO_THROW(load_pxg(dir / "lib" / "building.pxg")) << "a recipe of its own";
@@ -36,10 +35,8 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
 
   // The Library tab, then Place.
   const auto listed = [](const json& j) { return j["buttons"].contains("library_place_building"); };
-  for (int attempt = 0; attempt < 4 && !listed(map); ++attempt) {
-    click(button_centre(map, "tab_library"));
-    map = studio.wait("the library listed", listed, 8s, attempt == 3);
-  }
+  click(button_centre(map, "tab_library"));
+  map = studio.wait("the library listed", listed);
   map = click_and_wait(studio, map, [](const json& j) { return button_centre(j, "library_place_building"); }, "the group placed",
                     [&](const json& j) { return j["node_positions"].size() == nodes_before + 1; });
   EXPECT_NE(map["status"].get<std::string>().find("placed lib/building.pxg"), std::string::npos) << map["status"];
@@ -57,12 +54,7 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   // Its graph is the library file's, which other recipes may share: opening it here is refused, saying why.
   const auto refused = [](const json& j) { return j["status"].get<std::string>().find("is read from lib/building.pxg") != std::string::npos; };
   // A double-click on its body, beside its last input's name, meets only it.
-  const auto pins_shown = [&](const json& j) {
-    for (const json& p : j["pins"])
-      if (p["node"] == placed && !p["output"].get<bool>()) return true;
-    return false;
-  };
-  map = studio.wait("the placed group drawn", pins_shown);  // a slow frame can list the node before its pins
+  map = studio.wait("the placed group drawn", [&](const json& j) { return pins_shown(j, placed); });
   map = double_click_and_wait(studio, map, [&](const json& j) {
     int last = 0;
     for (const json& p : j["pins"])

@@ -30,9 +30,9 @@ using namespace driver;
 using namespace std::chrono_literals;
 
 // Pixels of the preview's anchor-marker yellow on screen now.
-long anchor_marker_pixels(const json& map) {
+long anchor_marker_pixels(const json& map, const Screen& screen = capture_screen()) {
   // The marker's (1, 0.85, 0.1), lit: no tag colour is yellow with so little blue.
-  return capture_screen().count(window_origin(map), map["preview"], [](double red, double green, double blue) {
+  return screen.count(window_origin(map), map["preview"], [](double red, double green, double blue) {
     return red > 80 && green > 0.65 * red && green < 1.05 * red && blue < 0.25 * red;
   });
 }
@@ -51,7 +51,7 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
   const int ay = wy + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.2);
   xdo("mousemove " + std::to_string(ax) + " " + std::to_string(ay) + " sleep 0.2 click 3 sleep 0.4 type Transform");
   press("Return");
-  map = studio.wait("the Transform node", [](const json& j) { return j["selected"] == 3; });
+  map = studio.wait("the Transform node", [](const json& j) { return j["selected"] == 3 && pins_shown(j, 3); });
 
   // Extrude's mesh into the Transform; the Transform into the graph output.
   std::uint64_t rev = revision(map);
@@ -123,9 +123,7 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
   }  // killed: no clean exit
   EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 14.0);  // the file itself is untouched
   Studio again(recipe, dir);
-  again.wait("the recovery prompt", [](const json& j) { return j["buttons"].contains("recover"); });
-  std::this_thread::sleep_for(1s);  // a modal window sizes itself during its first frames
-  json map = again.wait("the recovery prompt placed", [](const json& j) { return j["buttons"].contains("recover"); });
+  json map = again.wait("the recovery prompt", [](const json& j) { return j["buttons"].contains("recover"); });  // listed once placed
   click(button_centre(map, "recover"));
   map = again.wait("recovered", [](const json& j) { return j["dirty"].get<bool>() && !j["buttons"].contains("recover"); });
   save_and_quit(again);
@@ -281,11 +279,7 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
                     [&](const json& j) { return revision(j) > rev && j["settled"] && !anchor_key(j).empty() && j["preview_anchors"] == 1; });
   EXPECT_EQ(map["errors"], 0);
   // The preview shows its marker (a frame or two after the result arrives).
-  long marker = 0;
-  for (int attempt = 0; attempt < 20 && marker < 30; ++attempt) {
-    std::this_thread::sleep_for(100ms);
-    marker = anchor_marker_pixels(map);
-  }
+  const long marker = anchor_marker_pixels(map, screen_when([&](const Screen& s) { return anchor_marker_pixels(map, s) >= 30; }));
   EXPECT_GE(marker, 30) << "pixels of the anchor marker in the preview";
   rev = revision(map);
   const auto at = button_centre(map, anchor_key(map));
@@ -340,6 +334,15 @@ TEST(StudioInteraction, DragsAProfileOffsetHandle) {
   fs::remove_all(dir);
 }
 
+// Waits for the house (started with --select 2) to evaluate, then gives the
+// canvas the keyboard by a click on the selected Extrude, which keeps the selection.
+json canvas_with_the_extrude_selected(Studio& studio) {
+  const json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["selected"] == 2; });
+  const auto [ox, oy] = pin(map, 2, 0, true);
+  click({ox - 50, oy});
+  return studio.wait("the canvas has the keyboard", [](const json& j) { return j["keyboard"]["canvas"] == true && j["selected"] == 2; });
+}
+
 // Keys pressed and released, and characters typed, while the studio is busy
 // with one frame (here: stopped while xdotool types) all arrive together;
 // each key change is shown in a frame of its own with the characters it
@@ -349,10 +352,7 @@ TEST(StudioInteraction, KeysPressedDuringASlowFrameAreAllSeen) {
   const fs::path dir = fresh_dir("slow_keys");
   const fs::path recipe = copy_test_recipe("house.pxg", dir);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
-  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["selected"] == 2; });
-  const auto [ox, oy] = pin(map, 2, 0, true);
-  click({ox - 50, oy});
-  map = studio.wait("the canvas has the keyboard", [](const json& j) { return j["keyboard"]["canvas"] == true && j["selected"] == 2; });
+  json map = canvas_with_the_extrude_selected(studio);
   std::uint64_t rev = revision(map);
   studio.pause();
   xdo("key Tab type transf");
@@ -375,17 +375,14 @@ TEST(StudioInteraction, TabSearchPlacesAWiredNodeAndLTidiesTheLayout) {
   const fs::path dir = fresh_dir("search");
   const fs::path recipe = copy_test_recipe("house.pxg", dir);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
-  json map = studio.wait("the house evaluated", [](const json& j) { return j["settled"] && j["selected"] == 2; });
-  // A click on the selected Extrude focuses the canvas and keeps the selection.
-  const auto [ox, oy] = pin(map, 2, 0, true);
-  xdo("mousemove " + std::to_string(ox - 50) + " " + std::to_string(oy) + " sleep 0.2 click 1 sleep 0.3");
+  json map = canvas_with_the_extrude_selected(studio);
   const auto canvas = map["canvas"];
   const int x = map["window"][0].get<int>() + static_cast<int>(canvas[0].get<double>() + canvas[2].get<double>() * 0.5);
   const int y = map["window"][1].get<int>() + static_cast<int>(canvas[1].get<double>() + canvas[3].get<double>() * 0.85);
   xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.3");
   std::uint64_t rev = revision(map);
   press("Tab");
-  xdo("sleep 0.4 type transf");
+  type_into_focused_field(studio, "the node search", "transf");
   press("Return");
   map = studio.wait("the Transform placed and wired", [&](const json& j) { return revision(j) > rev && j["selected"] == 3 && j["links"].size() == 3; });
   const auto placed = map["node_positions"]["3"];
@@ -425,13 +422,11 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   const auto green = [](double r, double g, double b) { return g > 140 && g > 1.5 * r && g > 1.4 * b; };
   const auto grey_blue = [](double r, double g, double b) { return b > 110 && b > r + 25 && b > g + 12; };
   // The map is written as the frame is built: the screen shows it a frame or two later.
-  long computed_first = 0, cached_first = 0;
-  for (int attempt = 0; attempt < 20 && computed_first < 10; ++attempt) {
-    std::this_thread::sleep_for(100ms);
-    const Screen before = capture_screen();
-    computed_first = before.count(window_origin(map), map["node_timings"]["1"]["rect"], green);
-    cached_first = before.count(window_origin(map), map["node_timings"]["1"]["rect"], grey_blue);
-  }
+  const auto label = [&](const Screen& s, const char* node, const std::function<bool(double, double, double)>& is) {
+    return s.count(window_origin(map), map["node_timings"][node]["rect"], is);
+  };
+  const Screen before = screen_when([&](const Screen& s) { return label(s, "1", green) >= 10; });
+  const long computed_first = label(before, "1", green), cached_first = label(before, "1", grey_blue);
   EXPECT_GE(computed_first, 10) << "the footprint's time on screen";
   EXPECT_EQ(cached_first, 0);
 
@@ -442,13 +437,8 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   });
   EXPECT_EQ(map["errors"], 0);
   EXPECT_EQ(map["node_timings"]["1"]["ms"].get<double>(), 0.0);  // a cache hit evaluates nothing
-  long cached = 0, computed = 0;
-  for (int attempt = 0; attempt < 20 && (cached < 10 || computed < 10); ++attempt) {  // a frame or two after the result
-    std::this_thread::sleep_for(100ms);
-    const Screen after = capture_screen();
-    cached = after.count(window_origin(map), map["node_timings"]["1"]["rect"], grey_blue);
-    computed = after.count(window_origin(map), map["node_timings"]["2"]["rect"], green);
-  }
+  const Screen after = screen_when([&](const Screen& s) { return label(s, "1", grey_blue) >= 10 && label(s, "2", green) >= 10; });
+  const long cached = label(after, "1", grey_blue), computed = label(after, "2", green);
   EXPECT_GE(cached, 10) << "the footprint's 'cache hit' on screen";
   EXPECT_GE(computed, 10) << "the Extrude's time on screen";
   fs::remove_all(dir);

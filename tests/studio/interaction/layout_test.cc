@@ -27,18 +27,14 @@ json settled(Studio& studio) {
   return studio.wait("settled with the panels placed", [](const json& j) { return j["settled"].get<bool>() && j["buttons"].contains("panel_nodes"); });
 }
 
-// Drags the right edge of the node panel `dx` pixels; a drag a loaded machine lost is given again.
-json drag_split(Studio& studio, json map, int dx) {
+// Drags the right edge of the node panel `dx` pixels.
+json drag_split(Studio& studio, const json& map, int dx) {
   const double before = split_x(map);
-  const auto moved = [&](const json& j) { return split_x(j) > before + 0.02; };
-  for (int attempt = 0; attempt < 4 && !moved(map); ++attempt) {
-    const auto [ox, oy] = window_origin(map);
-    const int x = static_cast<int>(ox + panel(map, "nodes", 0) + panel(map, "nodes", 2)) - 2;
-    const int y = static_cast<int>(oy + panel(map, "nodes", 1) + panel(map, "nodes", 3) / 2);
-    drag({x, y}, {x + dx, y});
-    map = studio.wait("the split moved", moved, 8s, attempt == 3);
-  }
-  return map;
+  const auto [ox, oy] = window_origin(map);
+  const int x = static_cast<int>(ox + panel(map, "nodes", 0) + panel(map, "nodes", 2)) - 2;
+  const int y = static_cast<int>(oy + panel(map, "nodes", 1) + panel(map, "nodes", 3) / 2);
+  drag({x, y}, {x + dx, y});
+  return studio.wait("the split moved", [&](const json& j) { return split_x(j) > before + 0.02; });
 }
 
 TEST(StudioLayout, DraggedSplitIsKeptForTheNextStartAndReset) {
@@ -72,7 +68,7 @@ TEST(StudioLayout, DraggedSplitIsKeptForTheNextStartAndReset) {
     EXPECT_NEAR(panel(map, "nodes", 2), dragged_width, 1.5);
     // View > Reset layout.
     const auto is_default = [](const json& j) { return std::abs(split_x(j) - 0.5) < 1e-9; };
-    map = menu_item_until(studio, map, "menu_view", "menu_reset_layout", is_default);
+    map = menu_item_and_wait(studio, map, "menu_view", "menu_reset_layout", is_default);
     map = studio.wait("the panels back", [&](const json& j) { return std::abs(panel(j, "nodes", 2) - default_width) < 1.5; });
     EXPECT_NE(map["status"].get<std::string>().find("panel layout reset"), std::string::npos) << map["status"];
     EXPECT_NE(read_text(ini).find("SplitX=0.5000"), std::string::npos) << read_text(ini);

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <thread>
 
 #include "tests/studio/interaction/studio_driver.h"
 
@@ -18,19 +17,12 @@ namespace {
 using namespace driver;
 using namespace std::chrono_literals;
 
-// Ctrl+O, the path typed into the prompt, Enter; a key press lost between two frames is given again.
-json open_path(Studio& studio, json map, const fs::path& file, const std::function<bool(const json&)>& done) {
-  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
-    press("ctrl+o");
-    map = studio.wait("the open prompt", [](const json& j) { return j["buttons"].contains("prompt_path"); }, 8s, attempt == 3);
-    if (!map["buttons"].contains("prompt_path")) continue;
-    std::this_thread::sleep_for(300ms);  // the prompt takes the keyboard in its first frames
-    press("ctrl+a");
-    xdo("type '" + file.string() + "'");
-    press("Return");
-    map = studio.wait("the file opened", done, 8s, attempt == 3);
-  }
-  return map;
+// Ctrl+O, the path typed into the prompt once it has the keyboard, Enter.
+json open_path(Studio& studio, const fs::path& file, const std::function<bool(const json&)>& done) {
+  press("ctrl+o");
+  type_into_focused_field(studio, "the open prompt", file.string());
+  press("Return");
+  return studio.wait("the file opened", done);
 }
 
 // Pixels of the preview image in the window colour (cyan: blue and green well above red).
@@ -59,7 +51,7 @@ TEST(StudioOpenGlb, ShowsTheFileInThePreviewUntilAskedBack) {
   EXPECT_EQ(map["preview_instances"], 0);
   EXPECT_EQ(window_pixels(map), 0) << "the house has no windows";
 
-  map = open_path(studio, map, glb, [&](const json& j) { return j["viewing"] == glb.string(); });
+  map = open_path(studio, glb, [&](const json& j) { return j["viewing"] == glb.string(); });
   ASSERT_EQ(map["viewing"], glb.string());
   EXPECT_GT(map["preview_instances"].get<int>(), 0) << "the placed windows, instanced";
   EXPECT_NE(map["preview_faces"].get<long>(), house_faces);
@@ -68,36 +60,28 @@ TEST(StudioOpenGlb, ShowsTheFileInThePreviewUntilAskedBack) {
 
   // A file the reader refuses: the status names it, the preview keeps the viewed file.
   const fs::path broken = dir / "broken.glb";
-  map = open_path(studio, map, broken, [&](const json& j) { return j["status"].get<std::string>().find(broken.string()) != std::string::npos; });
+  map = open_path(studio, broken, [&](const json& j) { return j["status"].get<std::string>().find(broken.string()) != std::string::npos; });
   EXPECT_NE(map["status"].get<std::string>().find(broken.string()), std::string::npos) << map["status"];
   EXPECT_EQ(map["viewing"], glb.string());
 
   // View > Recipe preview: the house again.
   const auto back = [&](const json& j) { return j["viewing"] == "" && j["preview_faces"].get<long>() == house_faces; };
-  map = menu_item_until(studio, map, "menu_view", "menu_recipe_preview", back);
+  map = menu_item_and_wait(studio, map, "menu_view", "menu_recipe_preview", back);
   map = studio.wait("the windows gone", [](const json& j) { return window_pixels(j) == 0; }, 20s);
   EXPECT_FALSE(map["dirty"].get<bool>()) << "viewing a file does not change the recipe";
 
   // File > Open recent > the .glb (the newest entry; the refused file is not listed).
   const auto viewing = [&](const json& j) { return j["viewing"] == glb.string() && j["loading"] == ""; };
-  for (int attempt = 0; attempt < 4 && !viewing(map); ++attempt) {
-    click(button_centre(map, "menu_file"));
-    map = studio.wait("the File menu", [](const json& j) { return j["buttons"].contains("menu_open_recent"); }, 8s, attempt == 3);
-    if (!map["buttons"].contains("menu_open_recent")) continue;
-    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
-    const auto [x, y] = button_centre(studio.wait("the File menu", [](const json& j) { return j["buttons"].contains("menu_open_recent"); }), "menu_open_recent");
-    xdo("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.5");  // hovered, the submenu opens
-    map = studio.wait("the recent files", [](const json& j) { return j["buttons"].contains("recent_1"); }, 8s, attempt == 3);
-    if (!map["buttons"].contains("recent_1")) continue;
-    std::this_thread::sleep_for(300ms);
-    click(button_centre(studio.wait("the recent files", [](const json& j) { return j["buttons"].contains("recent_1"); }), "recent_0"));
-    map = studio.wait("the .glb opened again", viewing, 8s, attempt == 3);
-  }
+  click(button_centre(map, "menu_file"));
+  const auto [x, y] = button_centre(studio.wait("the File menu", [](const json& j) { return j["buttons"].contains("menu_open_recent"); }), "menu_open_recent");
+  xdo("mousemove " + std::to_string(x) + " " + std::to_string(y));  // hovered, the submenu opens
+  click(button_centre(studio.wait("the recent files", [](const json& j) { return j["buttons"].contains("recent_1"); }), "recent_0"));
+  map = studio.wait("the .glb opened again", viewing);
   ASSERT_TRUE(viewing(map)) << map["status"];
   EXPECT_NE(map["status"].get<std::string>().find("viewing " + glb.string()), std::string::npos) << map["status"];
 
   // Back to the recipe, then the .glb dropped on the window.
-  map = menu_item_until(studio, map, "menu_view", "menu_recipe_preview", back);
+  map = menu_item_and_wait(studio, map, "menu_view", "menu_recipe_preview", back);
   ASSERT_TRUE(back(map));
   drop_file(map, glb);
   map = studio.wait("the dropped .glb viewed", viewing);

@@ -75,16 +75,10 @@ void xdo(const std::string& args) {
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
 }
 
-void press(const std::string& keys) {
-  std::string down, up;
-  for (std::size_t start = 0; start <= keys.size();) {
-    const std::size_t plus = std::min(keys.find('+', start), keys.size());
-    const std::string k = keys.substr(start, plus - start);
-    down += " keydown " + k;
-    up = " keyup " + k + up;
-    start = plus + 1;
-  }
-  xdo(down.substr(1) + " sleep 0.15" + up + " sleep 0.1");
+void press(const std::string& keys) { xdo("key " + keys); }
+
+bool pins_shown(const json& map, std::uint64_t node) {
+  return std::any_of(map["pins"].begin(), map["pins"].end(), [&](const json& p) { return p["node"] == node; });
 }
 
 std::pair<int, int> pin(const json& map, std::uint64_t node, int port, bool output) {
@@ -140,17 +134,17 @@ json double_click_and_wait(Studio& studio, const json& map, const std::function<
   return studio.wait(what, done);
 }
 
-json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done) {
-  const auto shown = [&](const json& j) { return j["buttons"].contains(item); };
-  for (int attempt = 0; attempt < 4 && !done(map); ++attempt) {
-    click(button_centre(map, menu));
-    map = studio.wait(item + " shown", shown, 8s, attempt == 3);
-    if (!shown(map)) continue;
-    std::this_thread::sleep_for(300ms);  // the menu places itself in its first frames
-    map = studio.wait(item + " shown", shown);
-    click(button_centre(map, item));
-    map = studio.wait(item, done, 8s, attempt == 3);
-  }
+json menu_item_and_wait(Studio& studio, const json& map, const std::string& menu, const std::string& item,
+                        const std::function<bool(const json&)>& done) {
+  click(button_centre(map, menu));
+  click(button_centre(studio.wait(item + " shown", [&](const json& j) { return j["buttons"].contains(item); }), item));
+  return studio.wait(item, done);
+}
+
+json type_into_focused_field(Studio& studio, const std::string& what, const std::string& text) {
+  const json map = studio.wait(what + " has the keyboard", [](const json& j) { return j["keyboard"]["text"] == true; });
+  press("ctrl+a");
+  xdo("type '" + text + "'");
   return map;
 }
 
@@ -208,6 +202,16 @@ Screen capture_screen() {
   }
   s.w = header[1];
   s.h = header[2];
+  return s;
+}
+
+Screen screen_when(const std::function<bool(const Screen&)>& done, std::chrono::seconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  Screen s = capture_screen();
+  while (!done(s) && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(50ms);
+    s = capture_screen();
+  }
   return s;
 }
 

@@ -47,9 +47,11 @@ class Studio {
 };
 
 void xdo(const std::string& args);
-// Holds the keys for a moment: ImGui 1.86 polls key state once per frame, so
-// a press and release between two frames would go unseen (people hold keys longer).
+// Presses and releases the keys (xdotool's "ctrl+s"); the studio shows each key change in a frame of
+// its own (editor/key_queue.h), so however slow its frames, none is lost.
 void press(const std::string& keys);
+// Whether the map lists node `node`'s pins: a node added while the canvas was drawn is listed a frame before them.
+bool pins_shown(const json& map, std::uint64_t node);
 // Screen position of a pin, from the map.
 std::pair<int, int> pin(const json& map, std::uint64_t node, int port, bool output);
 // Screen centre of an inspector widget (map "params") or another widget (map "buttons").
@@ -69,9 +71,13 @@ json click_and_wait(Studio& studio, const json& map, const std::function<std::pa
 // their event times, so a double click registers at any frame rate.
 json double_click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
                            const std::function<bool(const json&)>& done);
-// Opens menu `menu` (a "buttons" entry: "menu_view") and clicks its item
-// `item` until `done`; a click a loaded machine lost is given again.
-json menu_item_until(Studio& studio, json map, const std::string& menu, const std::string& item, const std::function<bool(const json&)>& done);
+// Opens menu `menu` (a "buttons" entry: "menu_view"), clicks its item `item`
+// once the map lists it (a menu's items are listed once it has placed
+// itself) and waits until `done`.
+json menu_item_and_wait(Studio& studio, const json& map, const std::string& menu, const std::string& item,
+                        const std::function<bool(const json&)>& done);
+// Waits until a text field has the keyboard (the map's keyboard.text), selects its text and types `text` over it.
+json type_into_focused_field(Studio& studio, const std::string& what, const std::string& text);
 
 // Drops `file` on the studio's window at its canvas, as a file manager
 // would: a real XDND drag from another X client (PROCEX_XDND_DROP).
@@ -86,6 +92,9 @@ struct Screen {
   long count(std::pair<long, long> origin, const json& r, const std::function<bool(double, double, double)>& is) const;
 };
 Screen capture_screen();
+// Captures the screen until `done` holds of it, or the deadline passes: the last capture. The map
+// is written as a frame is built; the screen shows that frame after it is drawn, later on a loaded machine.
+Screen screen_when(const std::function<bool(const Screen&)>& done, std::chrono::seconds timeout = std::chrono::seconds(20));
 std::pair<long, long> window_origin(const json& map);
 
 // Ctrl+S, then Ctrl+Q: saved, and a clean exit.
