@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -96,7 +98,8 @@ struct Face {
 
 // The faces as one surface, points closer than `distance` made one vertex;
 // faces left with fewer than three corners are dropped (their edges cancel).
-Surface weld(const std::vector<Face>& faces, double distance) {
+// `kept`, if given, receives the index in `faces` of each face kept.
+Surface weld(const std::vector<Face>& faces, double distance, std::vector<std::size_t>* kept = nullptr) {
   std::vector<glm::dvec3> points;
   for (const Face& f : faces) points.insert(points.end(), f.points.begin(), f.points.end());
   std::vector<std::size_t> order(points.size()), root(points.size());
@@ -118,7 +121,8 @@ Surface weld(const std::vector<Face>& faces, double distance) {
   Surface s;
   std::vector<std::uint32_t> vertex(points.size(), UINT32_MAX);
   std::size_t next = 0;
-  for (const Face& f : faces) {
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const Face& f = faces[k];
     std::vector<std::uint32_t> loop;
     for (std::size_t i = 0; i < f.points.size(); ++i, ++next) {
       const std::size_t r = find(next);
@@ -129,9 +133,300 @@ Surface weld(const std::vector<Face>& faces, double distance) {
       if (loop.empty() || loop.back() != vertex[r]) loop.push_back(vertex[r]);
     }
     while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
-    if (loop.size() >= 3) s.faces.push_back({FaceKind::Side, -1, {std::move(loop)}, f.tag});
+    if (loop.size() < 3) continue;
+    s.faces.push_back({FaceKind::Side, -1, {std::move(loop)}, f.tag});
+    if (kept) kept->push_back(k);
   }
   return s;
+}
+
+
+bool same_plane(const Plane& a, const Plane& b, glm::dvec2 at, double extent, double tolerance) {
+  return std::abs(a.z(at) - b.z(at)) <= tolerance && glm::length(a.slope - b.slope) * extent <= tolerance;
+}
+
+// The point nearest `from` that meets each row's a . x = b (a of unit
+// length): the rows independent of those before them met exactly (their
+// directions made orthonormal one by one), and the largest amount by which
+// any row is missed, as where more planes meet than a point needs.
+std::pair<glm::dvec3, double> nearest_meeting(const std::vector<std::pair<glm::dvec3, double>>& rows, glm::dvec3 from) {
+  std::vector<glm::dvec3> basis;
+  glm::dvec3 x = from;
+  for (const auto& [a, b] : rows) {
+    glm::dvec3 q = a;
+    for (const glm::dvec3& e : basis) q -= glm::dot(q, e) * e;
+    const double length = glm::length(q);
+    if (basis.size() == 3 || length <= 1e-9) continue;
+    // Moving along q alone keeps the rows met so far and meets this one.
+    x += (b - glm::dot(a, x)) / length * (q / length);
+    basis.push_back(q / length);
+  }
+  double missed = 0;
+  for (const auto& [a, b] : rows) missed = std::max(missed, std::abs(glm::dot(a, x) - b));
+  return {x, missed};
+}
+
+bool segments_cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d, double margin) {
+  const auto side = [&](glm::dvec2 o, glm::dvec2 e, glm::dvec2 p) {
+    const double s = cross(e - o, p - o) / std::max(glm::length(e - o), 1e-300);
+    return s > margin ? 1 : s < -margin ? -1 : 0;
+  };
+  return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
+}
+
+// A roof with valleys, run out face by face. Past each edge of its outline
+// the face over that edge carries on out to the edge's line moved out by its
+// reach; where two faces meet on the outline, the crease between them (a
+// hip, a valley, a ridge at a gable) runs on straight to the outer line, as a
+// skeleton of the outline run out would have it. The top is that surface
+// with every face moved up along its normal by the thickness, each corner
+// where its planes (and the fascia's) meet again. The slab keeps its faces
+// and corners: where thickening would turn a face inside out, or planes that
+// met at one corner no longer do, it is refused.
+Surface roof_with_valleys(const std::vector<std::vector<glm::dvec3>>& roof, const std::vector<Plane>& face_planes,
+                          const RoofOverhang& o, double extent, double tolerance, double weld_distance) {
+  std::vector<Face> in;
+  for (const auto& f : roof) in.push_back({f, "underside"});
+  std::vector<std::size_t> kept;
+  const Surface r = weld(in, weld_distance, &kept);
+  const auto plan = [&](std::uint32_t v) { return glm::dvec2(r.vertices[v].x, r.vertices[v].y); };
+  // Directed edges: each shared by two faces running opposite ways, or on the outline.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> edge_face;
+  std::vector<std::set<std::size_t>> faces_at(r.vertices.size());
+  for (std::size_t f = 0; f < r.faces.size(); ++f) {
+    const auto& loop = r.faces[f].loops[0];
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      faces_at[loop[i]].insert(f);
+      if (!edge_face.insert({{loop[i], loop[(i + 1) % loop.size()]}, f}).second)
+        throw InputError("two roof faces overlap along the edge from " + text(r.vertices[loop[i]]) +
+                         ": the roof must be one surface seen from above");
+    }
+  }
+  std::map<std::uint32_t, std::pair<std::uint32_t, std::size_t>> outline_next;  // vertex -> (next, face)
+  for (const auto& [e, f] : edge_face)
+    if (!edge_face.count({e.second, e.first}) && !outline_next.insert({e.first, {e.second, f}}).second)
+      throw InputError("the roof's outline touches itself at " + text(r.vertices[e.first]) +
+                       ": run out parts that meet only at a corner separately");
+
+  struct Side {
+    glm::dvec2 a, u, n;  // a point on it, along it, outward
+    double reach;
+  };
+  struct Loop {
+    std::vector<std::uint32_t> v;      // outline corners, the roof on their left
+    std::vector<std::size_t> face;     // the face over v[i] -> v[i + 1]
+    std::vector<std::size_t> side_of;  // the side v[i] -> v[i + 1] lies on
+    std::vector<Side> sides;
+    std::vector<glm::dvec2> miter;     // where side s's outer line meets side s + 1's
+    std::vector<glm::dvec2> outer;     // the outline run out, in order
+  };
+  std::vector<Loop> loops;
+  std::set<std::uint32_t> done;
+  for (const auto& [start, unused] : outline_next) {
+    if (done.count(start)) continue;
+    Loop l;
+    for (std::uint32_t v = start; done.insert(v).second;) {
+      const auto it = outline_next.find(v);
+      if (it == outline_next.end())
+        throw InputError("the roof's outline is broken at " + text(r.vertices[v]) + ": its faces must meet edge to edge");
+      l.v.push_back(v), l.face.push_back(it->second.second);
+      v = it->second.first;
+    }
+    const std::size_t n = l.v.size();
+    // Sides: runs of edges along one line, starting after a turn.
+    const auto turns = [&](std::size_t i) {  // at v[i]
+      const glm::dvec2 a = plan(l.v[(i + n - 1) % n]), b = plan(l.v[i]), c = plan(l.v[(i + 1) % n]);
+      return glm::dot(b - a, c - b) <= 0 || std::abs(cross(glm::normalize(c - a), b - a)) > tolerance;
+    };
+    std::size_t first = 0;
+    while (first < n && !turns(first)) ++first;
+    if (first == n) throw InputError("the roof's outline at " + text(r.vertices[l.v[0]]) + " encloses no area");
+    std::rotate(l.v.begin(), l.v.begin() + first, l.v.end());
+    std::rotate(l.face.begin(), l.face.begin() + first, l.face.end());
+    l.side_of.resize(n);
+    for (std::size_t i = 0; i < n;) {
+      std::size_t j = i + 1;
+      while (j < n && !turns(j)) ++j;
+      double low = HUGE_VAL, high = -HUGE_VAL;
+      for (std::size_t k = i; k <= j; ++k) low = std::min(low, r.vertices[l.v[k % n]].z), high = std::max(high, r.vertices[l.v[k % n]].z);
+      const glm::dvec2 u = glm::normalize(plan(l.v[j % n]) - plan(l.v[i]));
+      l.sides.push_back({plan(l.v[i]), u, {u.y, -u.x}, high - low <= tolerance ? o.eave : o.verge});
+      for (std::size_t k = i; k < j; ++k) l.side_of[k] = l.sides.size() - 1;
+      i = j;
+    }
+    const std::size_t sides = l.sides.size();
+    for (std::size_t s = 0; s < sides; ++s) {
+      const Side &p = l.sides[s], &q = l.sides[(s + 1) % sides];
+      const double det = cross(p.n, q.n);
+      if (std::abs(det) <= 1e-9)
+        throw InputError("the roof's outline doubles back at " + text(glm::dvec3(q.a, 0)) + ": a wall rises through the roof there (a gable inside its outline?), and only a roof that is one surface seen from above can be run out");
+      const double bp = glm::dot(p.n, p.a) + p.reach, bq = glm::dot(q.n, q.a) + q.reach;
+      l.miter.push_back(glm::dvec2(bp * q.n.y - p.n.y * bq, p.n.x * bq - bp * q.n.x) / det);
+    }
+    loops.push_back(std::move(l));
+  }
+
+  // Past each outline edge, a cell of its face's plane; where faces change
+  // on the outline, the crease between them runs out to where it leaves the
+  // run-out outline (the first outer line it meets at an outward corner, the
+  // second at an inward one).
+  std::vector<Face> under;
+  std::vector<std::size_t> under_plane;
+  for (std::size_t f = 0; f < r.faces.size(); ++f) {
+    Face face{{}, "underside"};
+    for (std::uint32_t v : r.faces[f].loops[0]) face.points.push_back(r.vertices[v]);
+    under.push_back(std::move(face)), under_plane.push_back(kept[f]);
+  }
+  for (Loop& l : loops) {
+    const std::size_t n = l.v.size();
+    // At each corner v[i]: the points the outline run out passes there, and
+    // whether the cell before v[i] ends at the last of them (else the first).
+    std::vector<std::vector<glm::dvec2>> chain(n);
+    std::vector<bool> before_takes_all(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t prev = (i + n - 1) % n;
+      const Side &sp = l.sides[l.side_of[prev]], &sn = l.sides[l.side_of[i]];
+      const bool corner = l.side_of[prev] != l.side_of[i];
+      const glm::dvec2 v = plan(l.v[i]);
+      const glm::dvec2 foot = corner ? l.miter[l.side_of[prev]] : v + sn.reach * sn.n;
+      const Plane &p = face_planes[kept[l.face[prev]]], &q = face_planes[kept[l.face[i]]];
+      if (same_plane(p, q, v, extent, tolerance)) {
+        chain[i] = {foot};
+        continue;
+      }
+      for (std::size_t f : faces_at[l.v[i]])
+        if (!same_plane(face_planes[kept[f]], p, v, extent, tolerance) && !same_plane(face_planes[kept[f]], q, v, extent, tolerance))
+          throw InputError("more than two roof planes meet on the roof's outline at " + text(r.vertices[l.v[i]]) +
+                           ": there is no one crease to run out past the walls there");
+      glm::dvec2 d = glm::normalize(glm::dvec2(-(p.slope - q.slope).y, (p.slope - q.slope).x));
+      if (glm::dot(d, sp.n) + glm::dot(d, sn.n) < 0) d = -d;
+      const double dp = glm::dot(d, sp.n), dn = glm::dot(d, sn.n);
+      if (dp <= 1e-9 || dn <= 1e-9)
+        throw InputError("the crease between two roof faces at " + text(r.vertices[l.v[i]]) +
+                         " runs along the wall, not out past it: it cannot be run out");
+      const double tp = sp.reach / dp, tn = sn.reach / dn;
+      if (!corner || std::abs(tp - tn) <= weld_distance) {
+        chain[i] = {corner ? foot : v + tp * d};
+        continue;
+      }
+      const bool outward = cross(sp.u, sn.u) > 0;
+      const bool leaves_by_prev = outward == (tp < tn);
+      if (leaves_by_prev) {
+        chain[i] = {v + tp * d, foot};
+      } else {
+        chain[i] = {foot, v + tn * d};
+        before_takes_all[i] = true;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      l.outer.insert(l.outer.end(), chain[i].begin(), chain[i].end());
+      const std::size_t j = (i + 1) % n;
+      Polygon cell = before_takes_all[i] ? Polygon{chain[i].back()} : chain[i];
+      if (before_takes_all[j]) cell.insert(cell.end(), chain[j].begin(), chain[j].end());
+      else cell.push_back(chain[j].front());
+      const Plane& plane = face_planes[kept[l.face[i]]];
+      Face face{{}, "soffit"};
+      for (glm::dvec2 c : cell) face.points.push_back({c.x, c.y, plane.z(c)});
+      cell.push_back(plan(l.v[j])), cell.push_back(plan(l.v[i]));
+      if (thin(cell, weld_distance)) continue;  // a flush side
+      face.points.push_back(r.vertices[l.v[j]]), face.points.push_back(r.vertices[l.v[i]]);
+      under.push_back(std::move(face)), under_plane.push_back(kept[l.face[i]]);
+    }
+    // The outline run out must go forwards along each side.
+    for (std::size_t k = 0; k < l.outer.size(); ++k) {
+      const glm::dvec2 a = l.outer[k], b = l.outer[(k + 1) % l.outer.size()];
+      if (glm::length(b - a) <= weld_distance) continue;
+      const bool forwards = std::any_of(l.sides.begin(), l.sides.end(), [&](const Side& s) {
+        const auto on = [&](glm::dvec2 x) { return std::abs(glm::dot(s.n, x - s.a) - s.reach) <= 4 * weld_distance; };
+        return on(a) && on(b) && glm::dot(b - a, s.u) > 0;
+      });
+      if (!forwards)
+        throw InputError("run out by the eave (" + text(o.eave) + " m) and verge (" + text(o.verge) + " m), the roof's edge near " +
+                         text(glm::dvec3(a, 0)) + " would fold over itself: the overhang is too wide for the walls there");
+    }
+  }
+  // No two parts of the run-out outline may cross (two wings' overhangs meeting, a courtyard closed up).
+  for (std::size_t la = 0; la < loops.size(); ++la)
+    for (std::size_t lb = la; lb < loops.size(); ++lb) {
+      const auto &A = loops[la].outer, &B = loops[lb].outer;
+      for (std::size_t i = 0; i < A.size(); ++i)
+        for (std::size_t j = la == lb ? i + 2 : 0; j < B.size(); ++j) {
+          if (la == lb && i == 0 && j == B.size() - 1) continue;
+          if (segments_cross(A[i], A[(i + 1) % A.size()], B[j], B[(j + 1) % B.size()], weld_distance))
+            throw InputError("run out by the eave (" + text(o.eave) + " m) and verge (" + text(o.verge) +
+                             " m), the overhang near " + text(glm::dvec3(A[i], 0)) +
+                             " would run into another part of it: make the overhang narrower");
+        }
+    }
+
+  std::vector<std::size_t> under_kept;
+  const Surface u = weld(under, weld_distance, &under_kept);
+  // Each corner of the underside moved to where its planes, raised by the
+  // thickness, meet again (and the fascia's, on the outer edge).
+  std::vector<std::vector<std::size_t>> planes_at(u.vertices.size());
+  for (std::size_t f = 0; f < u.faces.size(); ++f)
+    for (std::uint32_t v : u.faces[f].loops[0]) planes_at[v].push_back(under_plane[under_kept[f]]);
+  std::vector<std::vector<std::pair<double, std::uint32_t>>> along;  // per side: (distance along, vertex)
+  std::vector<std::size_t> first_side;
+  for (const Loop& l : loops) first_side.push_back(along.size()), along.resize(along.size() + l.sides.size());
+  std::vector<glm::dvec3> top(u.vertices.size());
+  for (std::uint32_t v = 0; v < u.vertices.size(); ++v) {
+    const glm::dvec3 x = u.vertices[v];
+    std::vector<std::pair<glm::dvec3, double>> rows;
+    std::vector<std::size_t> distinct;
+    for (std::size_t pi : planes_at[v]) {
+      const Plane& p = face_planes[pi];
+      if (std::any_of(distinct.begin(), distinct.end(), [&](std::size_t q) { return same_plane(face_planes[q], p, {x.x, x.y}, extent, tolerance); }))
+        continue;
+      distinct.push_back(pi);
+      const Plane raised = p.raised(o.thickness);
+      const glm::dvec3 a(-p.slope.x, -p.slope.y, 1);
+      rows.push_back({a / glm::length(a), raised.height / glm::length(a)});
+    }
+    for (std::size_t li = 0; li < loops.size(); ++li) {
+      const Loop& l = loops[li];
+      for (std::size_t s = 0; s < l.sides.size(); ++s) {
+        const Side& side = l.sides[s];
+        const glm::dvec2 from = l.miter[(s + l.sides.size() - 1) % l.sides.size()], to = l.miter[s];
+        const double at = glm::dot(glm::dvec2(x.x, x.y) - from, side.u), length = glm::dot(to - from, side.u);
+        if (std::abs(glm::dot(side.n, glm::dvec2(x.x, x.y) - side.a) - side.reach) > 4 * weld_distance ||
+            at < -4 * weld_distance || at > length + 4 * weld_distance)
+          continue;
+        along[first_side[li] + s].push_back({at, v});
+        rows.push_back({{side.n.x, side.n.y, 0}, glm::dot(side.n, side.a) + side.reach});
+      }
+    }
+    const auto [point, missed] = nearest_meeting(rows, x);
+    if (!(missed <= tolerance))
+      throw InputError("the roof's planes meeting at " + text(x) + " no longer meet at one point when raised by the thickness (" +
+                       text(o.thickness) + " m): give the faces there one pitch, or make the slab thinner");
+    top[v] = point;
+  }
+
+  std::vector<Face> faces;
+  for (std::size_t f = 0; f < u.faces.size(); ++f) {
+    const auto& loop = u.faces[f].loops[0];
+    Face bottom{{}, u.faces[f].tag == "soffit" ? "soffit" : "underside"}, up{{}, "roof"};
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+      const glm::dvec3 e = u.vertices[b] - u.vertices[a];
+      if (glm::dot(top[b] - top[a], e) <= weld_distance * glm::length(e))
+        throw InputError("the slab is too thick (" + text(o.thickness) + " m) for the roof near " + text(u.vertices[a]) + " to " + text(u.vertices[b]) +
+                         ": raised by it, a face there would turn inside out; make the slab thinner");
+      bottom.points.push_back(u.vertices[a]), up.points.push_back(top[a]);
+    }
+    std::reverse(bottom.points.begin(), bottom.points.end());
+    faces.push_back(std::move(bottom)), faces.push_back(std::move(up));
+  }
+  for (auto& side : along) {
+    if (side.size() < 2) continue;
+    std::sort(side.begin(), side.end());
+    Face f{{}, "fascia"};
+    for (const auto& [at, v] : side) f.points.push_back(u.vertices[v]);
+    for (auto it = side.rbegin(); it != side.rend(); ++it) f.points.push_back(top[it->second]);
+    faces.push_back(std::move(f));
+  }
+  return weld(faces, weld_distance);
 }
 
 }  // namespace
@@ -180,9 +475,7 @@ Surface roof_overhang(const std::vector<std::vector<glm::dvec3>>& roof, const Ro
   for (const auto& face : roof)
     for (const glm::dvec3& p : face)
       if (lowest_z(planes, {p.x, p.y}) < p.z - tolerance)
-        throw InputError("the roof is not convex at " + text(p) +
-                         ": another of its planes passes below it, as over a valley; overhangs need a roof whose "
-                         "creases are all ridges, hips or breaks of slope (a convex plan)");
+        return roof_with_valleys(roof, planes, o, extent, tolerance, weld_distance);
   const Polygon hull = convex_hull(plan, tolerance);
   double perimeter = 0;
   for (std::size_t k = 0; k < hull.size(); ++k) perimeter += glm::length(hull[(k + 1) % hull.size()] - hull[k]);

@@ -267,15 +267,139 @@ TEST(RoofOverhang, HostileSizesAreRefusedByName) {
             std::string::npos);
 }
 
+// A plan of one or more loops (the first outer, counter-clockwise; the rest
+// courtyards, clockwise), edge e of the whole taking profiles[kind[e]].
+Surface building(const std::vector<std::vector<glm::dvec2>>& loops, const std::vector<Profile>& profiles,
+                 const std::vector<int>& kind) {
+  Footprint fp = make_footprint(loops, 0);
+  fp.profiles = profiles;
+  std::size_t e = 0;
+  for (auto& loop : fp.loops)
+    for (auto& edge : loop.edges) edge.profile = kind.at(e++);
+  return sweep(fp);
+}
+
+const std::vector<glm::dvec2> kL{{0, 0}, {20, 0}, {20, 8}, {9, 8}, {9, 17}, {0, 17}};
+
+TEST(RoofOverhang, LOfTwoGablesMeetingAtAValley) {
+  // Wings 8 and 9 wide, gabled at their far ends (x = 20, y = 17), a hip at
+  // the outer corner and a valley from the inner one; every slope 1, so the
+  // slab is the thickness times sqrt 2 thick upright over its plan: the L run
+  // out by 0.5 past the eaves and 0.3 past the gables, its bounding box less
+  // the notch (x past 9.5, y past 8.5).
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Roof roof = faces_tagged(building({kL}, {eave, kGableEnd}, {0, 1, 0, 0, 1, 0}), {"roof"});
+  const Surface slab = roof_overhang(roof, {.eave = 0.5, .verge = 0.3, .thickness = 0.2});
+  const double plan = (20.3 + 0.5) * (17.3 + 0.5) - (20.3 - 9.5) * (17.3 - 8.5);
+  EXPECT_NEAR(check_slab(roof, slab, 0.2), 0.2 * std::sqrt(2.0) * plan, 1e-7);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -0.5, 1e-9);
+  EXPECT_NEAR(b.lo.y, -0.5, 1e-9);
+  EXPECT_NEAR(b.hi.x, 20.3, 1e-9);
+  EXPECT_NEAR(b.hi.y, 17.3, 1e-9);
+  EXPECT_NEAR(b.lo.z, 3.0 - 0.5, 1e-9);
+  EXPECT_NEAR(b.hi.z, 3.0 + 4.5 + 0.2 * std::sqrt(2.0), 1e-9);  // the wider wing's ridge
+}
+
+TEST(RoofOverhang, HippedLAndCourtyardRunOutAllRound) {
+  // Slopes of 1 all round: the slab is 0.2 sqrt 2 upright over the plan run
+  // out by the eave, A + e P + e^2 (convex corners - inward corners) for the L.
+  const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Roof l = faces_tagged(building({kL}, {eave}, {0, 0, 0, 0, 0, 0}), {"roof"});
+  EXPECT_NEAR(check_slab(l, roof_overhang(l, {.eave = 0.5, .verge = 0.3, .thickness = 0.2}), 0.2),
+              0.2 * std::sqrt(2.0) * (241 + 0.5 * 74 + 0.25 * (5 - 1)), 1e-7);
+  // A 20 m square round an 8 m courtyard: the overhang runs into the
+  // courtyard too, leaving it 7 m across.
+  const Roof ring = faces_tagged(
+      building({{{0, 0}, {20, 0}, {20, 20}, {0, 20}}, {{6, 6}, {6, 14}, {14, 14}, {14, 6}}}, {eave}, std::vector<int>(8, 0)),
+      {"roof"});
+  EXPECT_NEAR(check_slab(ring, roof_overhang(ring, {.eave = 0.5, .verge = 0.3, .thickness = 0.2}), 0.2),
+              0.2 * std::sqrt(2.0) * (21 * 21 - 7 * 7), 1e-7);
+}
+
+TEST(RoofOverhang, ValleysOfMixedPitches) {
+  // The L's wings pitched unlike (1 and 0.7), its gables and the inner walls
+  // as before: the creases where unequal slopes meet run out, and the top's
+  // corners are where the raised planes meet again.
+  const Profile steep{"steep", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
+  const Profile low{"low", {{0, 0}, {0, 3}, {-10, 10}}, {"wall", "roof"}};
+  const Roof roof = faces_tagged(building({kL}, {steep, low, kGableEnd}, {0, 2, 0, 1, 2, 1}), {"roof"});
+  const Surface slab = roof_overhang(roof, {.eave = 0.4, .verge = 0.25, .thickness = 0.15});
+  EXPECT_GT(check_slab(roof, slab, 0.15), 0.0);
+  const Box b = box_of(slab);
+  EXPECT_NEAR(b.lo.x, -0.4, 1e-9);
+  EXPECT_NEAR(b.hi.x, 20.25, 1e-9);
+  EXPECT_NEAR(b.hi.y, 17.25, 1e-9);
+}
+
+TEST(RoofOverhang, TUCrossAndStepPlansWithAPitchPerEdge) {
+  // Plans with valleys (a T, a U, a cross, a Z of steps), each edge pitched
+  // its own way, some gabled: every slab closed and on the roof's planes,
+  // or refused by name where raised planes that met at one corner part or
+  // an edge a few millimetres long (unequal pitches meeting almost at one
+  // point) would turn over.
+  // Each plan, and the edges at its wings' ends (gabled in variant 3).
+  const std::vector<std::pair<std::vector<glm::dvec2>, std::set<std::size_t>>> plans{
+      {{{0, 0}, {24, 0}, {24, 8}, {16, 8}, {16, 20}, {8, 20}, {8, 8}, {0, 8}}, {1, 4, 7}},
+      {{{0, 0}, {22, 0}, {22, 18}, {15, 18}, {15, 7}, {7, 7}, {7, 18}, {0, 18}}, {2, 6}},
+      {{{8, 0}, {16, 0}, {16, 8}, {24, 8}, {24, 16}, {16, 16}, {16, 24}, {8, 24}, {8, 16}, {0, 16}, {0, 8}, {8, 8}}, {0, 3, 6, 9}},
+      {{{0, 0}, {10, 0}, {10, 5}, {18, 5}, {18, 13}, {26, 13}, {26, 21}, {12, 21}, {12, 13}, {4, 13}, {4, 8}, {0, 8}}, {5, 11}},
+  };
+  int refused = 0, built = 0;
+  for (std::size_t k = 0; k < plans.size(); ++k)
+    for (int variant = 0; variant < 4; ++variant) {
+      const auto& [plan, ends] = plans[k];
+      const std::size_t n = plan.size();
+      std::vector<Profile> profiles;
+      std::vector<int> kind;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double run = variant == 0 ? 4 : 2.5 + 2 * (0.5 + 0.5 * std::sin(1.9 * i + variant));
+        profiles.push_back({std::to_string(i), {{0, 0}, {0, 3}, {-run, 7}}, {"wall", "roof"}});
+        kind.push_back(variant == 3 && ends.count(i) ? static_cast<int>(n) : static_cast<int>(i));
+      }
+      profiles.push_back(kGableEnd);
+      const Roof roof = faces_tagged(building({plan}, profiles, kind), {"roof"});
+      SCOPED_TRACE(testing::Message() << "plan " << k << ", variant " << variant);
+      const RoofOverhang o{.eave = 0.3 + 0.2 * variant, .verge = 0.25, .thickness = 0.15};
+      try {
+        const Surface slab = roof_overhang(roof, o);
+        EXPECT_GT(check_slab(roof, slab, 0.15), 0.0);
+        ++built;
+      } catch (const InputError& e) {
+        const std::string why = e.what();
+        EXPECT_TRUE(why.find("no longer meet at one point") != std::string::npos ||
+                    why.find("a face there would turn inside out") != std::string::npos)
+            << why;
+        ++refused;
+      }
+    }
+  EXPECT_GE(built, 12) << refused << " refused";
+}
+
 TEST(RoofOverhang, RoofsItCannotRunOutAreRefusedSayingWhy) {
   const Profile eave{"eave", {{0, 0}, {0, 3}, {-5, 8}}, {"wall", "roof"}};
-  // An L-shaped plan has a valley.
-  Footprint fp = make_footprint({{{0, 0}, {20, 0}, {20, 8}, {9, 8}, {9, 17}, {0, 17}}}, 0);
-  fp.profiles = {eave};
-  for (auto& e : fp.loops[0].edges) e.profile = 0;
-  const Surface l_shape = sweep(fp);
-  EXPECT_NE(refusal(faces_tagged(l_shape, {"roof"}), {}).find("the roof is not convex at"), std::string::npos)
-      << refusal(faces_tagged(l_shape, {"roof"}), {});
+  // A U whose arms stand 0.6 m apart: eaves of 0.5 would fold the notch's end over.
+  const Roof u = faces_tagged(
+      building({{{0, 0}, {20, 0}, {20, 10}, {10.3, 10}, {10.3, 4}, {9.7, 4}, {9.7, 10}, {0, 10}}}, {eave}, std::vector<int>(8, 0)),
+      {"roof"});
+  EXPECT_NE(refusal(u, {.eave = 0.5}).find("would fold over itself: the overhang is too wide for the walls there"),
+            std::string::npos)
+      << refusal(u, {.eave = 0.5});
+  EXPECT_EQ(refusal(u, {.eave = 0.2}), "accepted");
+  // A ring opened by a slit 0.6 m wide, one side of it a metre taller in
+  // plan: the eaves across the slit would run into each other.
+  const Roof c = faces_tagged(building({{{0, 0}, {20, 0}, {20, 20}, {10.3, 20}, {10.3, 14}, {14, 14}, {14, 6}, {6, 6},
+                                         {6, 14}, {9.7, 14}, {9.7, 21}, {0, 21}}},
+                                       {eave}, std::vector<int>(12, 0)),
+                              {"roof"});
+  EXPECT_NE(refusal(c, {.eave = 0.5}).find("would run into another part of it"), std::string::npos) << refusal(c, {.eave = 0.5});
+  EXPECT_EQ(refusal(c, {.eave = 0.2}), "accepted");
+  // A T whose stem's west wall is a gable running up through the crossbar's roof.
+  const Roof stepped = faces_tagged(
+      building({{{0, 0}, {24, 0}, {24, 8}, {16, 8}, {16, 20}, {8, 20}, {8, 8}, {0, 8}}}, {eave, kGableEnd}, {0, 0, 0, 0, 0, 1, 0, 0}),
+      {"roof"});
+  EXPECT_NE(refusal(stepped, {}).find("doubles back at (8, "), std::string::npos) << refusal(stepped, {});
+  const Surface l_shape = building({kL}, {eave}, {0, 0, 0, 0, 0, 0});
   // Walls given as roof.
   EXPECT_NE(refusal(faces_tagged(l_shape, {"roof", "wall"}), {}).find("is vertical or faces down"), std::string::npos);
   // A hip roof without one of its ends leaves a triangle of its outline (10 x 5 / 2) uncovered.
