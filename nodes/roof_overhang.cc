@@ -22,8 +22,8 @@ void declare(NodeDecl& d) {
         "`thickness` thick along their normals, with a vertical fascia round the outer edge. The overhang is a "
         "closed solid of its own, added after its building (tags roof, fascia, soffit, and underside where it lies "
         "on the building's roof); the building is handed on as it was. The roof is the faces tagged one of "
-        "`roof_tags` and any flat cap; it must be convex (gable, hip, mansard, gambrel over a convex plan): a "
-        "valley is an error. Give the walls flush profiles (Profile Preset `flush_eave`, `gable_end`).")
+        "`roof_tags` and any flat cap, one surface seen from above: gable, hip, mansard, gambrel, over a convex "
+        "plan or one with valleys (L, T, U, courtyards). Give the walls flush profiles (Profile Preset `flush_eave`, `gable_end`).")
       .category("Geometry");
   h.mesh_in = d.input<MeshSet>("mesh").doc("buildings (Extrude)").index();
   h.eave = d.param<double>("eave").default_value(0.5).range(0, 20).unit("m").doc("reach past walls under level roof edges").index();

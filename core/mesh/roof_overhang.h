@@ -5,12 +5,17 @@
 // of its own that sits on the building, its underside over the walls lying on
 // the building's roof, so the building stays the closed solid it was.
 //
-// The roof must be convex: every crease a ridge, hip or mansard break, as the
-// roofs a sweep raises over a convex plan are (gable, hip, mansard, gambrel).
-// The slab's underside is then the lowest of the roof's planes at each point
-// of the plan run out past the walls, and its top the lowest of those planes
-// moved up by the thickness, so where slopes meet it is cut as a roofer would
-// cut it. Valleys (an L-shaped plan) are refused, naming a point of one.
+// A convex roof (every crease a ridge, hip or mansard break, as the roofs a
+// sweep raises over a convex plan are: gable, hip, mansard, gambrel) has the
+// slab's underside the lowest of its planes at each point of the plan run
+// out past the walls, and its top the lowest of those planes moved up by the
+// thickness, so where slopes meet it is cut as a roofer would cut it. A roof
+// with valleys (an L, T or U plan, a courtyard) is run out face by face: each
+// outline edge's face carries on past it, the creases meeting the outline
+// run straight on, and each corner of the top is where its faces' planes,
+// raised, meet again; where thickening would need new corners (raised planes
+// that no longer meet at one point, an edge a few millimetres long turned
+// over) it is refused, naming the place.
 #pragma once
 
 #include <vector>
@@ -33,7 +38,9 @@ struct RoofOverhang {
 // "soffit" (the underside past the walls) and "underside" (lying on the
 // building's roof); all are FaceKind::Side with no source edge.
 // Throws InputError naming the parameter (negative or not finite), the face
-// (vertical, facing down, degenerate) or a point where the roof is not convex.
+// (vertical, facing down, degenerate), or a point where the roof cannot be
+// run out: a gap in a convex outline, an overhang that folds over or runs
+// into another part of itself, a wall rising through the roof.
 Surface roof_overhang(const std::vector<std::vector<glm::dvec3>>& roof, const RoofOverhang& overhang);
 
 }  // namespace procex

@@ -1,5 +1,5 @@
 // The recipes of issue 15: the barn's five sizes typed once and its roof run
-// past its flush walls, the cottage's hipped roof run out all round, and the
+// past its flush walls, the cottage's hipped L run out all round and over its valley, and the
 // set-back tower's windows only where its walls are, checked against the faces.
 #include <gtest/gtest.h>
 
@@ -58,15 +58,17 @@ TEST(BarnSample, EachSizeTypedOnceFollowsEverywhere) {
   EXPECT_NEAR(top_of(*b.parts[1].mesh), ridge + 0.25 / std::sin(50 * M_PI / 180), 1e-6);
 }
 
-TEST(CottageSample, HippedRoofRunsOutByTheEaveAllRound) {
+TEST(CottageSample, HippedLRunsOutByTheEaveAllRoundAndAcrossTheValley) {
   Graph g = load_pxg(kSamples / "cottage.pxg");
   ASSERT_TRUE(g.set_exposed("eave", Value::make(0.7)));
   const MeshSet m = mesh_of(test::evaluate_mesh(g, kSamples));
   ASSERT_EQ(m.parts.size(), 2u);
   for (const TaggedMesh& part : m.parts) EXPECT_TRUE(validate(*part.mesh).ok());
-  // Every roof edge of a hip roof is level: eaves on all four sides, 0.7 m out,
-  // so the slab is 0.18 m square to slopes of 1 / tan(38 deg) over 10.4 x 8.4 m.
-  EXPECT_NEAR(validate(*m.parts[1].mesh).volume, 0.18 / std::sin(38 * M_PI / 180) * 10.4 * 8.4, 1e-6);
+  // Every roof edge of a hip roof is level: eaves on all six sides, 0.7 m out,
+  // so the slab is 0.18 m square to slopes of 1 / tan(38 deg) over the L
+  // (11 x 9 m, wings 5 m wide: 75 m2, 40 m round) run out by 0.7, which
+  // adds 0.7^2 at each of its five outward corners and takes it at the inward one.
+  EXPECT_NEAR(validate(*m.parts[1].mesh).volume, 0.18 / std::sin(38 * M_PI / 180) * (75 + 0.7 * 40 + 0.49 * (5 - 1)), 1e-6);
 }
 
 TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
