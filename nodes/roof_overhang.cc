@@ -12,7 +12,7 @@ namespace {
 
 // Parameter and port handles, from the declaration.
 struct Handles {
-  std::size_t mesh_in, eave, verge, thickness, roof_tags, mesh_out;
+  std::size_t mesh_in, eave, verge, thickness, roof_tags, on_refusal, mesh_out, skipped_out;
 };
 Handles h;
 
@@ -31,7 +31,11 @@ void declare(NodeDecl& d) {
   h.thickness = d.param<double>("thickness").default_value(0.2).range(0.001, 5).unit("m").doc("the slab's thickness, square to the roof").index();
   h.roof_tags = d.param<std::string>("roof_tags").default_value(std::string("roof"))
       .doc("the tags of the roof's faces, separated by commas (a mansard's: `mansard, roof`)").index();
+  h.on_refusal = d.param_enum("on_refusal", {"error", "skip"})
+      .doc("a roof that cannot be run out: stop with an error naming the building, or hand the building on "
+           "without a slab, counted in `skipped` (a batch keeps going; the first reason is a warning)").index();
   h.mesh_out = d.output<MeshSet>("mesh").index();
+  h.skipped_out = d.output<std::int64_t>("skipped").doc("buildings handed on without a slab (on_refusal = skip)").index();
 }
 
 std::set<std::string> tag_list(const std::string& text) {
@@ -48,6 +52,9 @@ std::set<std::string> tag_list(const std::string& text) {
 void evaluate(EvalContext& ctx) {
   const RoofOverhang o{ctx.param<double>(h.eave), ctx.param<double>(h.verge), ctx.param<double>(h.thickness)};
   const std::set<std::string> roof_tags = tag_list(ctx.param<std::string>(h.roof_tags));
+  const bool skip = ctx.choice(h.on_refusal) == "skip";
+  std::int64_t skipped = 0;
+  std::string first_reason;
   MeshSet out;
   std::set<std::string> seen;  // every tag there is, for the error when no face has one asked for
   for (const TaggedMesh& part : ctx.input<MeshSet>(h.mesh_in).parts) {
@@ -70,19 +77,24 @@ void evaluate(EvalContext& ctx) {
     try {
       slab.mesh = std::make_shared<Mesh>(build_mesh(roof_overhang(roof, o)));
     } catch (const std::exception& e) {  // InputError from the roof, MeshError from OpenMesh
-      return ctx.error((part.building.empty() ? "" : "building " + part.building + ": ") + e.what());
+      const std::string reason = (part.building.empty() ? "" : "building " + part.building + ": ") + e.what();
+      if (!skip) return ctx.error(reason);
+      if (skipped++ == 0) first_reason = reason;
+      continue;
     }
     face_tags_from_mesh(slab);
     slab.building = part.building, slab.feature = part.feature;
     slab.properties = part.properties, slab.parameters = part.parameters;
     out.parts.push_back(std::move(slab));
   }
-  if (out.parts.size() == ctx.input<MeshSet>(h.mesh_in).parts.size() && !out.parts.empty()) {
+  if (out.parts.size() == ctx.input<MeshSet>(h.mesh_in).parts.size() && !out.parts.empty() && skipped == 0) {
     std::string tags;
     for (const std::string& t : seen) tags += (tags.empty() ? "'" : ", '") + t + "'";
     return ctx.error("no face is tagged " + ctx.param<std::string>(h.roof_tags) + " (the faces' tags: " + tags + ")");
   }
+  if (skipped > 0) ctx.warning(std::to_string(skipped) + " building(s) left without an overhang, the first: " + first_reason);
   ctx.set_output(h.mesh_out, std::move(out));
+  ctx.set_output(h.skipped_out, skipped);
 }
 
 }  // namespace

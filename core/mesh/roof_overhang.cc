@@ -229,6 +229,10 @@ Surface roof_with_valleys(const std::vector<std::vector<glm::dvec3>>& roof, cons
       const auto it = outline_next.find(v);
       if (it == outline_next.end())
         throw InputError("the roof's outline is broken at " + text(r.vertices[v]) + ": its faces must meet edge to edge");
+      if (glm::length(plan(it->second.first) - plan(v)) <= weld_distance)
+        throw InputError("the roof's outline rises straight up at " + text(r.vertices[v]) +
+                         ": a wall rises through the roof there, and only a roof that is one surface seen from above "
+                         "can be run out");
       l.v.push_back(v), l.face.push_back(it->second.second);
       v = it->second.first;
     }

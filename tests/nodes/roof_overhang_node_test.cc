@@ -93,5 +93,29 @@ TEST(RoofOverhangNode, AMansardNamesBothSlopes) {
   EXPECT_NEAR(low, 3 - 3 * 0.5, 1e-9);  // the steep lower slope (3 up per 1 in) run 0.5 past the walls
 }
 
+TEST(RoofOverhangNode, SkipHandsARefusedBuildingOnAndCountsIt) {
+  // The gabled building and a U whose arms stand 0.6 m apart, too close for eaves of 0.5.
+  MeshSet both = gabled();
+  Footprint u = make_footprint({{{0, 0}, {20, 0}, {20, 10}, {10.3, 10}, {10.3, 4}, {9.7, 4}, {9.7, 10}, {0, 10}}}, 0);
+  u.profiles = {make_preset("flush_eave", {.height = 4, .pitch_deg = 45, .roof_height = 12})};
+  for (auto& e : u.loops[0].edges) e.profile = 0;
+  const auto extruded = run_node("Extrude", {}, {{"footprint", Value::make(u)}});
+  ASSERT_TRUE(extruded.ok()) << extruded.messages();
+  both.parts.push_back(extruded.outputs.at(0).get<MeshSet>().parts.at(0));
+  const std::string refused = mistake({{"eave", Value::make(0.5)}}, Value::make(both));
+  EXPECT_NE(refused.find("would fold over itself"), std::string::npos) << refused;
+  const auto r = run_node("Roof Overhang", {{"eave", Value::make(0.5)}, {"on_refusal", Value::make(EnumValue{"skip"})}},
+                          {{"mesh", Value::make(both)}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  const MeshSet& out = r.outputs.at(0).get<MeshSet>();
+  ASSERT_EQ(out.parts.size(), 3u);  // the gabled building, its slab, the U as it was
+  EXPECT_EQ(out.parts[0].mesh, both.parts[0].mesh);
+  EXPECT_TRUE(validate(*out.parts[1].mesh).ok());
+  EXPECT_EQ(out.parts[2].mesh, both.parts[1].mesh);
+  EXPECT_EQ(r.outputs.at(1).get<std::int64_t>(), 1);
+  EXPECT_NE(r.messages().find("1 building(s) left without an overhang, the first: "), std::string::npos) << r.messages();
+  EXPECT_NE(r.messages().find("would fold over itself"), std::string::npos) << r.messages();
+}
+
 }  // namespace
 }  // namespace procex
