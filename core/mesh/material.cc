@@ -1,6 +1,8 @@
 #include "core/mesh/material.h"
 
 #include <limits>
+#include <mutex>
+#include <vector>
 
 namespace procex {
 namespace {
@@ -31,9 +33,27 @@ const Materials& materials_of(const MaterialTable& table) {
 }
 
 MaterialTable with_material(const MaterialTable& table, const std::string& tag, const Material& material) {
+  // A batch passes every building's table through the same Material nodes:
+  // each change is made once and its table shared by all of them, where a
+  // copy per building and node cost a map of paths each (BENCHMARKS, Batch).
+  // Keyed by the old table itself, held so no new one takes its address.
+  struct Made {
+    MaterialTable from;
+    std::string tag;
+    Material material;
+    MaterialTable to;
+  };
+  static std::mutex mutex;
+  static std::vector<Made> made;
+  constexpr std::size_t kKept = 256;  // a recipe's few nodes; a studio session's edits leave old ones behind
+  std::lock_guard lock(mutex);
+  for (const Made& m : made)
+    if (m.from == table && m.tag == tag && m.material == material) return m.to;
   Materials materials = materials_of(table);
   materials[tag] = material;
-  return std::make_shared<const Materials>(std::move(materials));
+  if (made.size() >= kKept) made.clear();
+  made.push_back({table, tag, material, std::make_shared<const Materials>(std::move(materials))});
+  return made.back().to;
 }
 
 MaterialTable material_table(Materials materials) {

@@ -117,6 +117,26 @@ TEST_F(MaterialNode, ABuildingsLookIsATableBesideItsSharedMesh) {
   EXPECT_EQ(materials_of(walled.materials).at("wall").metallic, 0.0);
 }
 
+// A batch runs each building through the same Material nodes: the second
+// building gets the first one's table, not a copy of its own, and another
+// look is another table.
+TEST_F(MaterialNode, BuildingsThroughTheSameNodesShareOneTable) {
+  const auto look = [](const MeshSet& in, double roughness) {
+    const auto r = run_node("Material", {{"tag", Value::make(std::string("wall"))}, {"roughness", Value::make(roughness)}},
+                            {{"mesh", Value::make(in)}});
+    EXPECT_TRUE(r.ok()) << r.messages();
+    return r.outputs.at(0).get<MeshSet>().parts.at(0).materials;
+  };
+  const MeshSet first = window_as_wall(), second = window_as_wall();
+  ASSERT_NE(first.parts[0].mesh, second.parts[0].mesh);
+  const MaterialTable table = look(first, 0.3);
+  EXPECT_EQ(look(second, 0.3), table);
+  const MaterialTable other = look(second, 0.4);
+  EXPECT_NE(other, table);
+  EXPECT_EQ(materials_of(other).at("wall").roughness, 0.4);
+  EXPECT_EQ(materials_of(table).at("wall").roughness, 0.3);
+}
+
 TEST_F(MaterialNode, RefusesAColourOutsideZeroToOneAndAMissingTag) {
   MeshSet in;
   const auto bright = run_node("Material", {{"colour", Value::make(Vec3{1.5, 0, 0})}}, {{"mesh", Value::make(in)}});
