@@ -1,5 +1,7 @@
 #include "base/file_version.h"
 
+#include <sys/stat.h>
+
 #include <chrono>
 #include <functional>
 #include <map>
@@ -23,12 +25,14 @@ FileVersion file_version(const std::filesystem::path& file) {
   static std::map<std::string, Hashed> hashed;
 
   FileVersion v;
-  std::error_code size_error, time_error, type_error;
-  const auto size = fs::file_size(file, size_error);
-  const auto time = fs::last_write_time(file, time_error);
-  if (size_error || time_error || !fs::is_regular_file(file, type_error)) return v;
-  v.size = size;
-  v.time = time.time_since_epoch().count();
+  // One stat for type, size and time (std::filesystem asks three times): a
+  // batch asks for each building's textures and placed meshes.
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return v;
+  v.size = static_cast<std::uintmax_t>(st.st_size);
+  const auto time = std::chrono::system_clock::time_point(std::chrono::duration_cast<std::chrono::system_clock::duration>(
+      std::chrono::seconds(st.st_mtim.tv_sec) + std::chrono::nanoseconds(st.st_mtim.tv_nsec)));
+  v.time = std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
   const std::string key = fs::absolute(file).string();
   {
     std::lock_guard lock(mutex);
@@ -36,7 +40,7 @@ FileVersion file_version(const std::filesystem::path& file) {
                                           it->second.version.time == v.time)
       return it->second.version;
   }
-  const bool settled = fs::file_time_type::clock::now() - time > kSettled;  // judged before the read
+  const bool settled = std::chrono::system_clock::now() - time > kSettled;  // judged before the read
   try {
     v.content = std::hash<std::string_view>()(read_file(file, kMaxDataFileBytes)) | 1;  // 0 is "unread"
   } catch (const IoError&) {
