@@ -575,7 +575,10 @@ Surface roof_overhang(const std::vector<std::vector<glm::dvec3>>& roof, const Ro
     for (auto it = up.rbegin(); it != up.rend(); ++it) f.points.push_back({it->second.x, it->second.y, lowest_z(top, it->second)});
     faces.push_back(std::move(f));
   }
-  return weld(faces, weld_distance);
+  // The corners cut from the planes meet the roof's own corners only to
+  // within the sweep's clustering (the planes are fitted to its faces), as
+  // far as the checks above allow: they are made one at that distance.
+  return weld(faces, tolerance);
 }
 
 }  // namespace procex
