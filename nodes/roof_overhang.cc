@@ -2,8 +2,10 @@
 // (core/mesh/roof_overhang.h), the building's solid handed on untouched.
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/mesh/roof_overhang.h"
+#include "core/mesh/validate.h"
 #include "graph/registry.h"
 #include "nodes/values.h"
 
@@ -76,6 +78,11 @@ void evaluate(EvalContext& ctx) {
     TaggedMesh slab;
     try {
       slab.mesh = std::make_shared<Mesh>(build_mesh(roof_overhang(roof, o)));
+      // Checked as Extrude checks its buildings, so a slab that is not a
+      // closed solid (its corners cut from planes that barely differ) is
+      // refused by name rather than handed on.
+      const ValidationReport check = validate(*slab.mesh);
+      if (!check.ok()) throw std::runtime_error("the slab made is not a closed solid: " + check.problems.front());
     } catch (const std::exception& e) {  // InputError from the roof, MeshError from OpenMesh
       const std::string reason = (part.building.empty() ? "" : "building " + part.building + ": ") + e.what();
       if (!skip) return ctx.error(reason);
