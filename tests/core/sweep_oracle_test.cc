@@ -1,7 +1,8 @@
 // The sweep against an oracle over every real and synthetic footprint: with
 // every edge at 45 degrees a procedural extrusion is the roof of the straight
 // skeleton, so CGAL 5.5's create_interior_straight_skeleton_2 (exact
-// constructions) fixes its topology and its vertices. Compared
+// constructions; inexact ones above kExactOracleVertices) fixes its topology
+// and its vertices. Compared
 // (tests/support/skeleton_oracle.h): the mesh validates, one roof face per
 // footprint edge, the same pairs of edges meeting along ridges, and every
 // skeleton node a roof vertex at the height of its time and back.
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,8 @@
 #include "tests/support/cgal_skeleton.h"
 #include "tests/support/sanitizers.h"
 #include "tests/support/data_files.h"
+#include "tests/support/generators/size_plans.h"
+#include "tests/support/point_set.h"
 #include "tests/support/roof_properties.h"
 #include "tests/support/skeleton_oracle.h"
 
@@ -174,6 +178,41 @@ TEST(CgalOracle, AWideFaceOfAShortEdgeMovesByItsLever) {
   for (glm::dvec3& v : raised.vertices)
     if (v.z > 0.3) v.z += 1e-2;
   EXPECT_GT(testing::largest_levered_height_difference(fp, roof, raised, 4000, 1), 5e-3);
+}
+
+// Above kExactOracleVertices the oracle builds CGAL's skeleton with inexact
+// constructions. The tolerance it is then held to is the comparison's own
+// (roof_tolerance, 1e-6 of the diagonal): on the plans of the size class, at a
+// size the exact kernel still builds, the inexact nodes are the exact ones
+// within a far smaller distance, and the same pairs of edges meet.
+TEST(CgalOracle, TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance) {
+  std::mt19937_64 rng(7);
+  for (const testing::NamedPlan& plan : {testing::star(200, 50.0, 31.0), testing::random_star_shaped(200, 50.0, rng)}) {
+    const Footprint fp = make_footprint(plan.loops, 45.0);
+    const double tol = testing::roof_tolerance(fp);
+    const CgalSkeletonInput input(fp);
+    const CgalSkeleton exact = input.skeleton(tol), inexact = input.skeleton(tol, CgalConstructions::Inexact);
+    EXPECT_EQ(inexact.adjacent_edges, exact.adjacent_edges) << plan.name;
+    EXPECT_EQ(inexact.faces_per_edge, exact.faces_per_edge) << plan.name;
+    const testing::PointSet exact_nodes(exact.nodes), inexact_nodes(inexact.nodes);
+    double worst = 0.0;
+    for (const glm::dvec3& n : inexact.nodes) worst = std::max(worst, exact_nodes.nearest(n, tol));
+    for (const glm::dvec3& n : exact.nodes) worst = std::max(worst, inexact_nodes.nearest(n, tol));
+    EXPECT_LT(worst, 1e-3 * tol) << plan.name;
+  }
+}
+
+// The child building the skeleton has a memory cap; a plan that needs more is
+// a CgalOutOfMemory naming the cap, not a crash, and the oracle reports it as
+// a problem with the plan's comparison.
+TEST(CgalOracle, ASkeletonOverItsMemoryCapIsReportedAsSuch) {
+  const Footprint fp = make_footprint(testing::star(2000, 50.0, 31.0).loops, 45.0);
+  try {
+    CgalSkeletonInput(fp).skeleton(1e-6, CgalConstructions::Exact, std::size_t{1} << 20);
+    ADD_FAILURE() << "a skeleton of 2,000 vertices was built in 1 MB";
+  } catch (const CgalOutOfMemory& e) {
+    EXPECT_NE(std::string(e.what()).find("cap of 1 MB"), std::string::npos) << e.what();
+  }
 }
 
 // ---- synthetic cases (shared/data/synthetic, see its README) ----

@@ -1,8 +1,10 @@
 // Class (c) of issue 12 item 2, plans of 1,000 to 10,000 vertices
 // (tests/support/generators/): every case must pass every property
-// check_case applies, CGAL's skeleton included. A case takes CGAL tens of
-// seconds and gigabytes, so the class runs by hand (ctest -L soak; the
-// normal budget, or PROCEX_SOAK=1 for the soak one) and TESTING.md records it.
+// check_case applies, CGAL's skeleton included (with inexact constructions at
+// these sizes, kExactOracleVertices, its child process capped at
+// kCgalChildMemory). A case takes CGAL a minute or more and up to gigabytes,
+// so the class runs by hand (ctest -L soak; the normal budget, or
+// PROCEX_SOAK=1 for the soak one) and TESTING.md records it.
 #include <cstddef>
 
 #include <gtest/gtest.h>

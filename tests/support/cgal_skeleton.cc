@@ -1,5 +1,6 @@
 #include "tests/support/cgal_skeleton.h"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -8,9 +9,12 @@
 #include <cerrno>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <map>
+#include <new>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -22,6 +26,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
+#include <gmp.h>
 
 namespace procex {
 namespace {
@@ -163,14 +168,51 @@ std::vector<T> get_array(const std::string& in, std::size_t& at) {
   return v;
 }
 
+// The child's exit status when an allocation failed under its memory cap.
+constexpr int kOutOfMemoryExit = 4;
+
+[[noreturn]] void out_of_memory() { _exit(kOutOfMemoryExit); }
+
+void* gmp_allocate(std::size_t n) {
+  void* p = std::malloc(n);
+  if (p == nullptr) out_of_memory();
+  return p;
+}
+void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
+  void* q = std::realloc(p, n);
+  if (q == nullptr) out_of_memory();
+  return q;
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
+// The child's address space now, from /proc/self/statm (pages); 0 if unread.
+std::size_t address_space() {
+  std::size_t pages = 0;
+  std::ifstream("/proc/self/statm") >> pages;
+  return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+// Caps the child at `memory` above what it inherits (RLIMIT_AS: the test
+// process's own mappings count too). An allocation that fails under the
+// cap, by operator new or by GMP (the exact kernel's numbers, which would
+// otherwise abort like a crash), ends the child with kOutOfMemoryExit.
+void cap_memory(std::size_t memory) {
+  const rlim_t cap = address_space() + memory;
+  const rlimit limit{cap, cap};
+  setrlimit(RLIMIT_AS, &limit);
+  std::set_new_handler(out_of_memory);
+  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+}
+
 template <class Build>
-CgalSkeleton in_child_process(Build build) {
+CgalSkeleton in_child_process(std::size_t memory, Build build) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("cgal_skeleton: pipe: ") + std::strerror(errno));
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error(std::string("cgal_skeleton: fork: ") + std::strerror(errno));
   if (pid == 0) {
     close(fds[0]);
+    cap_memory(memory);
     std::string answer;
     try {
       const CgalSkeleton s = build();
@@ -204,6 +246,9 @@ CgalSkeleton in_child_process(Build build) {
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryExit)
+    throw CgalOutOfMemory("CGAL's straight skeleton of this plan needs more than its cap of " +
+                          std::to_string(memory >> 20) + " MB (kCgalChildMemory): no oracle for it");
   if (WIFSIGNALED(status))
     throw CgalCrash("CGAL's straight skeleton crashed on this plan (" + std::string(strsignal(WTERMSIG(status))) +
                     "; CGAL 5.5.1's MergeCoincidentNodes, CGAL issue 7203)");
@@ -232,6 +277,9 @@ struct CgalSkeletonInput::Impl {
     return {CGAL::to_double(v->point().x()) + origin.x, CGAL::to_double(v->point().y()) + origin.y,
             CGAL::to_double(v->time())};
   }
+
+  template <class Kernel>
+  CgalSkeleton skeleton(double min_ridge) const;
 };
 
 CgalSkeletonInput::CgalSkeletonInput(const Footprint& footprint) : impl_(std::make_unique<Impl>()) {
@@ -255,28 +303,28 @@ std::size_t CgalSkeletonInput::skeletonise() const {
   return vertices;
 }
 
-CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge) const {
-  return in_child_process([&] {
+template <class Kernel>
+CgalSkeleton CgalSkeletonInput::Impl::skeleton(double min_ridge) const {
   CgalSkeleton out;
   std::set<std::pair<std::int32_t, std::int32_t>> adjacent;
   std::map<std::int32_t, std::size_t> faces;
-  for (const auto& [key, id] : impl_->edge_ids) faces[id] = 0;
-  for_each_skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(impl_->polygons, [&](const auto& ss) {
+  for (const auto& [key, id] : edge_ids) faces[id] = 0;
+  for_each_skeleton<Kernel>(polygons, [&](const auto& ss) {
     for (auto v = ss.vertices_begin(); v != ss.vertices_end(); ++v)
-      if (v->is_skeleton()) out.nodes.push_back(impl_->node(v));
+      if (v->is_skeleton()) out.nodes.push_back(node(v));
     // A skeleton face's own halfedge is its contour edge.
     const auto face_edge = [&](const auto& face) {
       const auto h = face->halfedge();
       const auto a = h->vertex()->point(), b = h->opposite()->vertex()->point();
-      const auto it = impl_->edge_ids.find(
+      const auto it = edge_ids.find(
           edge_key({CGAL::to_double(a.x()), CGAL::to_double(a.y())}, {CGAL::to_double(b.x()), CGAL::to_double(b.y())}));
-      if (it == impl_->edge_ids.end()) throw std::runtime_error("cgal_skeleton: a contour edge is not a footprint edge");
+      if (it == edge_ids.end()) throw std::runtime_error("cgal_skeleton: a contour edge is not a footprint edge");
       return it->second;
     };
     for (auto f = ss.faces_begin(); f != ss.faces_end(); ++f) ++faces[face_edge(f)];
     for (auto h = ss.halfedges_begin(); h != ss.halfedges_end(); ++h) {
       if (!h->is_bisector() || h->face() == nullptr || h->opposite()->face() == nullptr) continue;
-      const glm::dvec3 d = impl_->node(h->vertex()) - impl_->node(h->opposite()->vertex());
+      const glm::dvec3 d = node(h->vertex()) - node(h->opposite()->vertex());
       if (std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) <= min_ridge) continue;
       const std::int32_t i = face_edge(h->face()), j = face_edge(h->opposite()->face());
       if (i != j) adjacent.insert({std::min(i, j), std::max(i, j)});
@@ -285,6 +333,14 @@ CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge) const {
   out.adjacent_edges.assign(adjacent.begin(), adjacent.end());
   out.faces_per_edge.assign(faces.begin(), faces.end());
   return out;
+}
+
+CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge, CgalConstructions constructions,
+                                         std::size_t memory) const {
+  return in_child_process(memory, [&] {
+    return constructions == CgalConstructions::Exact
+               ? impl_->skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(min_ridge)
+               : impl_->skeleton<CGAL::Exact_predicates_inexact_constructions_kernel>(min_ridge);
   });
 }
 

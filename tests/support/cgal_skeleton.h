@@ -37,6 +37,24 @@ struct CgalCrash : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The child building the skeleton needed more than its memory cap: no
+// answer, and a neighbour of the plan would need as much.
+struct CgalOutOfMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// How much address space the child building a skeleton may add to what it
+// inherits, by default. The exact kernel on a star of 10,000 vertices grew past 20 GB
+// (TESTING.md, the size class); the tests share a machine of 23 GB.
+constexpr std::size_t kCgalChildMemory = std::size_t{4} << 30;
+
+// Which kernel builds the oracle's skeleton. Exact: CGAL's
+// Exact_predicates_exact_constructions_kernel, nodes exact up to the final
+// rounding to double. Inexact: Exact_predicates_inexact_constructions_kernel,
+// exact decisions but nodes constructed in doubles (the benchmarks' kernel),
+// for plans the exact one cannot build in time or memory.
+enum class CgalConstructions { Exact, Inexact };
+
 // A footprint split into the polygons with holes CGAL takes: every loop at
 // even nesting depth with the odd-depth loops directly inside it. Loops must
 // be simple and must not cross (as the synthetic README and OSM promise).
@@ -55,12 +73,13 @@ class CgalSkeletonInput {
   // Throws std::runtime_error naming the polygon if CGAL gives up.
   std::size_t skeletonise() const;
 
-  // The oracle: the skeleton built with the exact-construction kernel
-  // (Exact_predicates_exact_constructions_kernel). Bisectors no longer than
-  // min_ridge are not ridges: CGAL splits a node where more than three faces
-  // meet into several joined by zero-length bisectors. Built in a child
-  // process: throws CgalCrash if CGAL crashes.
-  CgalSkeleton skeleton(double min_ridge) const;
+  // The oracle: the skeleton built with the given kernel. Bisectors no longer
+  // than min_ridge are not ridges: CGAL splits a node where more than three
+  // faces meet into several joined by zero-length bisectors. Built in a child
+  // process of at most `memory` bytes more address space than the caller's:
+  // throws CgalCrash if CGAL crashes, CgalOutOfMemory if it needs more.
+  CgalSkeleton skeleton(double min_ridge, CgalConstructions constructions = CgalConstructions::Exact,
+                        std::size_t memory = kCgalChildMemory) const;
 
  private:
   struct Impl;

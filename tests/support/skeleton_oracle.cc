@@ -63,9 +63,12 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   const double rise = 1.0 / std::tan(footprint.loops.at(0).edges.at(0).angle_deg * M_PI / 180.0);
   std::vector<std::string> problems = check_valid_mesh(roof);
 
+  std::size_t vertices = 0;
+  for (const Loop& loop : footprint.loops) vertices += loop.points.size();
   CgalSkeleton cgal;
   try {
-    cgal = CgalSkeletonInput(footprint).skeleton(tol);
+    cgal = CgalSkeletonInput(footprint).skeleton(
+        tol, vertices > kExactOracleVertices ? CgalConstructions::Inexact : CgalConstructions::Exact);
   } catch (const CgalCrash& e) {
     // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
     problems.push_back(e.what());

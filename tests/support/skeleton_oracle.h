@@ -14,9 +14,18 @@
 
 namespace procex::testing {
 
+// Plans of more vertices than this are compared with CGAL's inexact-
+// construction kernel: its exact one ran past 20 GB and 75 minutes on a star
+// of 10,000 vertices (the size class, TESTING.md). The inexact kernel decides
+// every event exactly and rounds only the nodes it constructs, by far less
+// than the comparison's tolerance (roof_tolerance, 1e-6 of the diagonal):
+// CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance.
+constexpr std::size_t kExactOracleVertices = 1000;
+
 // Empty when `roof` and CGAL's skeleton of `footprint` agree, else one line
 // per disagreement (a few of each kind). Every edge of `footprint` must have
-// the same angle, in (0, 90).
+// the same angle, in (0, 90). Throws CgalOutOfMemory when CGAL needs more
+// than its cap.
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof);
 
 // The footprint without the vertices where a loop runs straight on: |sin| of
@@ -35,7 +44,8 @@ Footprint without_straight_vertices(const Footprint& footprint);
 // Drops the straight vertices, sweeps and compares. Where they disagree on a
 // valid roof, the roof may still be the limit of generic neighbours of the
 // input that agree with CGAL (exactly coincident events: see the .cc); then
-// it passes. A sweep or CGAL exception becomes a problem line.
+// it passes. A sweep or CGAL exception becomes a problem line, CGAL running
+// out of its memory cap too (with no neighbours tried: they need as much).
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint);
 
 }  // namespace procex::testing
