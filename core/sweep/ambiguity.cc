@@ -54,6 +54,7 @@ std::vector<int> resolve_ambiguity(State& st, int c) {
       line.push_back(vt);
       emit_along(st, face_b, vt, k.origin, line);
       emit_along(st, face_a, k.origin, vt, line);
+      st.edges[k.next_edge].heir = k.prev_edge;
       const int r = st.add_corner(k.prev_edge, st.corners[t].next_edge, vt);
       const int after = st.corners[t].next;
       st.corners[t].alive = false;
@@ -66,6 +67,7 @@ std::vector<int> resolve_ambiguity(State& st, int c) {
       line.push_back(vs);
       emit_along(st, face_a, k.origin, vs, line);
       emit_along(st, face_b, vs, k.origin, line);
+      st.edges[k.prev_edge].heir = k.next_edge;
       const int r = st.add_corner(st.corners[s].prev_edge, k.next_edge, vs);
       const int before = st.corners[s].prev;
       st.corners[s].alive = false;

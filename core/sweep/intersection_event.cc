@@ -228,10 +228,23 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
   for (int m : members) near = std::max(near, 2.0 * glm::length(cs[m].p - p));
   for (int m : members) {
     // An earlier cluster at this height may have consumed this collision.
-    if (!std::all_of(cs[m].corners.begin(), cs[m].corners.end(), [&](int c) { return st.corners[c].alive; }))
+    const std::vector<int>& ends = cs[m].corners;
+    if (std::all_of(ends.begin(), ends.end(), [&](int c) { return st.corners[c].alive; })) {
+      for (int c : ends) mark(c);
+      for (int e : cs[m].edges) add_edge(e);
       continue;
-    for (int c : cs[m].corners) mark(c);
-    for (int e : cs[m].edges) add_edge(e);
+    }
+    // Or rewired one end of a collapsing edge: the edge still collapses here
+    // if the corner that took that end's place is here too.
+    if (ends.size() != 2) continue;
+    const bool first_left = st.corners[ends[0]].alive;
+    const int left = first_left ? ends[0] : ends[1];
+    const int other = first_left ? st.corners[left].next : st.corners[left].prev;
+    auto here = [&](int c) { return glm::length(st.position(c, z) - p) <= near; };
+    if (st.corners[left].alive && here(left) && here(other)) {
+      mark(left);
+      mark(other);
+    }
   }
   if (at_p.empty()) return;
 
@@ -265,12 +278,20 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     while (at[st.corners[last].next]) last = st.corners[last].next;
     chains.push_back({st.corners[c].prev_edge, st.corners[c].prev, st.corners[last].next_edge, st.corners[last].next});
   }
-  for (int e : edges) {
-    bool touches = false;
-    for (int s : st.spans(e)) touches = touches || at[s] || at[st.corners[s].next];
-    if (touches) continue;
-    const int s = span_through(st, e, p, z, near);
-    if (s != kNone) chains.push_back({e, s, e, st.corners[s].next});
+  std::unordered_set<int> cut;
+  for (int named : edges) {
+    // A group resolved before this one at this height may have handed the
+    // named edge's span to its heir: the collision then cuts through the heir.
+    for (int e = named, hops = 0; e != kNone && hops <= static_cast<int>(st.edges.size()); e = st.edges[e].heir, ++hops) {
+      if (participates(e) && e != named) break;  // the heir is cut as named itself
+      bool touches = false;
+      for (int s : st.spans(e)) touches = touches || at[s] || at[st.corners[s].next];
+      if (touches) break;
+      const int s = span_through(st, e, p, z, near);
+      if (s == kNone) continue;
+      if (cut.insert(e).second) chains.push_back({e, s, e, st.corners[s].next});
+      break;
+    }
   }
 
   const glm::dvec3 meet = meeting_point(st, edges, at_p, p, near);

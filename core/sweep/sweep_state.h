@@ -42,6 +42,10 @@ struct Edge {
   std::int32_t source_id = -1;
   int face = kNone;          // output face group this plane's region belongs to
   std::vector<int> spans;    // corners s with s.next_edge == this (maybe stale; filter)
+  // The edge whose plane ran on over this edge's span where an ambiguous
+  // corner between them was resolved (ambiguity.h): a collision found before
+  // that, at the same height, meets the heir there.
+  int heir = kNone;
 };
 
 // How a corner moves, fixed when it is made from its two edges' planes.
