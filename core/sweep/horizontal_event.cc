@@ -181,7 +181,7 @@ std::vector<std::uint32_t> flatten_vertices(const Nested& n, State& st, double z
       out[i] = *v;
       continue;
     }
-    out[i] = st.add_vertex({p, z});
+    out[i] = st.vertex_at(p, z);
     grid.add(p, out[i]);
   }
   return out;
@@ -246,7 +246,7 @@ AtHeight overlay_at_height(State& st, const Nested& n, const std::vector<std::ui
 
   h.overlay = overlay_chains(std::move(points), segments, st.tol().position());
   for (std::size_t i = h.global.size(); i < h.overlay.points.size(); ++i)
-    h.global.push_back(st.add_vertex({h.overlay.points[i], z}));
+    h.global.push_back(st.vertex_at(h.overlay.points[i], z));
 
   for (std::size_t next = 0; next < written.size();) {
     const std::size_t f = written[next].first;
