@@ -92,6 +92,8 @@ void evaluate(EvalContext& ctx) {
     face_tags_from_mesh(slab);
     slab.building = part.building, slab.feature = part.feature;
     slab.properties = part.properties, slab.parameters = part.parameters;
+    // Its roof, fascia and soffit look as a Material node before this one said.
+    slab.materials = part.materials;
     out.parts.push_back(std::move(slab));
   }
   if (out.parts.size() == ctx.input<MeshSet>(h.mesh_in).parts.size() && !out.parts.empty() && skipped == 0) {

@@ -53,6 +53,19 @@ TEST(RoofOverhangNode, AddsAClosedSlabAndLeavesTheBuilding) {
   EXPECT_NEAR(validate(*slab.mesh).volume, 0.25 * std::sqrt(2.0) * 13.2 * 20.8, 1e-6);
 }
 
+TEST(RoofOverhangNode, TheSlabKeepsTheBuildingsMaterials) {
+  const auto painted = run_node("Material", {{"tag", Value::make(std::string("roof"))}, {"roughness", Value::make(0.35)}},
+                                {{"mesh", Value::make(gabled())}});
+  ASSERT_TRUE(painted.ok()) << painted.messages();
+  const auto r = run_node("Roof Overhang", {}, {{"mesh", painted.outputs.at(0)}});
+  ASSERT_TRUE(r.ok()) << r.messages();
+  const MeshSet& out = r.outputs.at(0).get<MeshSet>();
+  ASSERT_EQ(out.parts.size(), 2u);
+  const Materials& slab = materials_of(out.parts[1].materials);
+  ASSERT_EQ(slab.count("roof"), 1u);
+  EXPECT_DOUBLE_EQ(slab.at("roof").roughness, 0.35);
+}
+
 // What a run with these parameters says: its diagnostics, or why the graph refused them.
 std::string mistake(const std::map<std::string, Value>& params, const Value& building) {
   try {
