@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/cross.h"
 #include "core/geom/point_grid.h"
 #include "core/geom/predicates.h"
 #include "core/geom/segment_intersections.h"
@@ -41,8 +42,6 @@ void add_cover(const Cover& to, CoverView from, int sign, Cover& sum) {
     }
   }
 }
-
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 d = b - a;

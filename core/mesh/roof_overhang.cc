@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/convex_clip.h"
+#include "core/geom/cross.h"
 #include "core/geom/error.h"
 #include "core/geom/nesting.h"
 #include "core/geom/polygon3.h"
@@ -45,7 +46,10 @@ void check_size(double v, const char* name, bool zero_allowed) {
                    ", not " + text(v));
 }
 
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+// Where the lines na . x = ba and nb . x = bb meet (Cramer's rule).
+glm::dvec2 lines_meet(glm::dvec2 na, double ba, glm::dvec2 nb, double bb) {
+  return glm::dvec2(ba * nb.y - na.y * bb, na.x * bb - ba * nb.x) / cross(na, nb);
+}
 
 // Andrew's monotone chain, counter-clockwise, leaving out points within
 // `tolerance` of the line through their neighbours.
@@ -264,8 +268,7 @@ Surface roof_with_valleys(const std::vector<std::vector<glm::dvec3>>& roof, cons
       const double det = cross(p.n, q.n);
       if (std::abs(det) <= 1e-9)
         throw InputError("the roof's outline doubles back at " + text(glm::dvec3(q.a, 0)) + ": a wall rises through the roof there (a gable inside its outline?), and only a roof that is one surface seen from above can be run out");
-      const double bp = glm::dot(p.n, p.a) + p.reach, bq = glm::dot(q.n, q.a) + q.reach;
-      l.miter.push_back(glm::dvec2(bp * q.n.y - p.n.y * bq, p.n.x * bq - bp * q.n.x) / det);
+      l.miter.push_back(lines_meet(p.n, glm::dot(p.n, p.a) + p.reach, q.n, glm::dot(q.n, q.a) + q.reach));
     }
     loops.push_back(std::move(l));
   }
@@ -519,8 +522,7 @@ Surface roof_overhang(const std::vector<std::vector<glm::dvec3>>& roof, const Ro
   Polygon outer(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t j = (k + n - 1) % n;
-    const glm::dvec2 a = outward[j], b = outward[k];
-    outer[k] = hull[k] + glm::dvec2(reach[j] * b.y - a.y * reach[k], a.x * reach[k] - reach[j] * b.x) / cross(a, b);
+    outer[k] = hull[k] + lines_meet(outward[j], reach[j], outward[k], reach[k]);
   }
 
   std::vector<Face> faces;

@@ -5,6 +5,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/geom/cross.h"
+
 namespace procex::engine {
 
 struct Plane {
@@ -20,8 +22,6 @@ struct Plane {
   double offset_at(double z) const { return c + k * z; }
   double signed_distance(glm::dvec2 p, double z) const { return n.x * p.x + n.y * p.y - offset_at(z); }
 };
-
-inline double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // How the line where planes a and b cross moves over the sweep plane per unit
 // of height: differentiating n.x - k z = c, v solves n_a.v = k_a, n_b.v = k_b.
