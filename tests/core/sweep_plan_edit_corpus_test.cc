@@ -10,22 +10,23 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
-#include <optional>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/geom/cross.h"
 #include "core/geom/error.h"
 #include "core/geom/prepare.h"
 #include "core/io/geojson.h"
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
-#include "tests/support/sanitizers.h"
 #include "tests/support/data_files.h"
+#include "tests/support/sanitizers.h"
 
 namespace procex {
 namespace {
@@ -66,8 +67,6 @@ std::vector<PlanEdit> edits() {
 // cross-section there is the footprint with the recesses cut in; the dormer
 // at the eave (3 m) only by the kinds of absence possible there. ----
 
-double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
-
 double point_segment_distance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 d = b - a;
   const double len2 = glm::dot(d, d);
@@ -77,7 +76,7 @@ double point_segment_distance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 
 // Segments cross at a point inside both (not at an end, not overlapping).
 bool properly_cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
-  const double o1 = cross2(b - a, c - a), o2 = cross2(b - a, d - a), o3 = cross2(d - c, a - c), o4 = cross2(d - c, b - c);
+  const double o1 = cross(b - a, c - a), o2 = cross(b - a, d - a), o3 = cross(d - c, a - c), o4 = cross(d - c, b - c);
   return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 

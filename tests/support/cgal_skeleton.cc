@@ -1,5 +1,4 @@
 #include "tests/support/cgal_skeleton.h"
-#include "tests/support/sanitizers.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -28,6 +27,8 @@
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
 #include <gmp.h>
+
+#include "tests/support/sanitizers.h"
 
 namespace procex {
 namespace {
