@@ -3,9 +3,11 @@
 // generators give valid and reproducible plans, the shrinker minimises, and
 // a fixture reads back as the case it was written from.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <glm/common.hpp>
 #include <gtest/gtest.h>
@@ -174,6 +176,26 @@ TEST(Shrink, DropsWhatTheFailureDoesNotNeedAndRounds) {
   ASSERT_EQ(small.footprint.loops[0].points.size(), 3u);
   EXPECT_TRUE(fails(small));
   for (const glm::dvec2& p : small.footprint.loops[0].points) EXPECT_EQ(p, glm::round(p));
+}
+
+TEST(Shrink, ALongLoopIsHalvedWithinASmallBudget) {
+  // The size class's budget is a few candidates of minutes each: a regular
+  // 4,096-gon that "fails" while it keeps more than 200 vertices comes down to
+  // 256 in 4 candidates (one vertex dropped per candidate would reach 4,092).
+  std::vector<glm::dvec2> ring;
+  for (int i = 0; i < 4096; ++i) ring.push_back({std::cos(i * 2.0 * M_PI / 4096), std::sin(i * 2.0 * M_PI / 4096)});
+  GeneratedCase c;
+  c.footprint = make_footprint({ring}, 45.0);
+  std::size_t tried = 0;
+  const auto fails = [&tried](const GeneratedCase& k) {
+    ++tried;
+    return k.footprint.loops[0].points.size() > 200;
+  };
+  const GeneratedCase small = shrink(c, fails, 4);
+  EXPECT_EQ(tried, 4u);
+  EXPECT_EQ(small.footprint.loops[0].points.size(), 256u);
+  EXPECT_EQ(small.footprint.loops[0].edges.size(), 256u);
+  EXPECT_EQ(small.footprint.loops[0].points[1], ring[16]);
 }
 
 TEST(Shrink, AFixtureReadsBackAsItsCase) {

@@ -76,17 +76,37 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
     const CaseResult r = check_case(c);
     if (!r.failed()) continue;
     ++failed;
-    const GeneratedCase small = shrink(
-        c, [](const GeneratedCase& candidate) { return !check_case(candidate).refused && check_case(candidate).failed(); },
-        r.refused ? 0 : budget.shrink_tries);
-    const CaseResult small_result = check_case(small);
-    const std::string problem = small_result.problems.empty() ? r.problems.front() : small_result.problems.front();
-    const std::string fixture = fixture_geojson(small, problem);
     std::string lines;
     for (std::size_t i = 0; i < r.problems.size() && i < 6; ++i) lines += "\n  " + r.problems[i];
+    if (r.refused) lines += "\n  refused by prepare_footprint";
+    // Said before minimising, whose candidates of a large case take minutes each: a
+    // failure is seen (and its unminimised fixture kept) even if the run is stopped there.
+    std::size_t vertices = 0;
+    for (const Loop& loop : c.footprint.loops) vertices += loop.points.size();
+    std::cout << "FAILED " << c.description << " (rerun: PROCEX_SEEDS=" << seed << "), " << vertices << " vertices in "
+              << c.footprint.loops.size() << " loops:" << lines << "\nminimising (at most " << (r.refused ? 0 : budget.shrink_tries)
+              << " candidates)" << std::endl;
+    const auto first_problem = [](const CaseResult& result) {
+      return result.problems.empty() ? std::string("refused by prepare_footprint") : result.problems.front();
+    };
+    const char* dir = std::getenv("PROCEX_FINDINGS_DIR");
+    const std::string findings = dir ? std::string(dir) + "/" + class_name(cls) + "_" + std::to_string(seed) + ".geojson" : "";
+    if (!findings.empty()) std::ofstream(findings) << fixture_geojson(c, first_problem(r));
+    // The result of the last candidate that still failed is the minimised case's.
+    CaseResult small_result = r;
+    const GeneratedCase small = shrink(
+        c,
+        [&small_result](const GeneratedCase& candidate) {
+          CaseResult result = check_case(candidate);
+          if (result.refused || !result.failed()) return false;
+          small_result = std::move(result);
+          return true;
+        },
+        r.refused ? 0 : budget.shrink_tries);
+    const std::string problem = first_problem(small_result);
+    const std::string fixture = fixture_geojson(small, problem);
     ADD_FAILURE() << c.description << " (rerun: PROCEX_SEEDS=" << seed << ")" << lines << "\nminimised (" << small.description << "): " << problem << "\n" << fixture;
-    if (const char* dir = std::getenv("PROCEX_FINDINGS_DIR"))
-      std::ofstream(std::string(dir) + "/" + class_name(cls) + "_" + std::to_string(seed) + ".geojson") << fixture;
+    if (!findings.empty()) std::ofstream(findings) << fixture;
   }
   std::cout << "class " << class_name(cls) << " seeds " << begin << ".." << end - 1 << ": " << end - begin
             << " cases, " << failed << " failed, " << sweeps_retried() - retried_before

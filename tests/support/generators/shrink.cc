@@ -13,6 +13,9 @@
 namespace procex::testing {
 namespace {
 
+// Loops longer than this are first tried with every other vertex dropped.
+constexpr std::size_t kHalvedAbove = 64;
+
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (char ch : s) {
@@ -54,7 +57,23 @@ GeneratedCase shrink(GeneratedCase c, const std::function<bool(const GeneratedCa
       candidate.footprint.loops.erase(candidate.footprint.loops.begin() + static_cast<std::ptrdiff_t>(l));
       progress = attempt(candidate) || progress;
     }
-    for (std::size_t l = 0; l < c.footprint.loops.size(); ++l)
+    for (std::size_t l = 0; l < c.footprint.loops.size(); ++l) {
+      // A loop of thousands of vertices (the size class) would take as many candidates
+      // dropped one at a time, each a sweep and a CGAL skeleton of minutes: halve it first.
+      if (c.footprint.loops[l].points.size() > kHalvedAbove) {
+        GeneratedCase candidate = c;
+        Loop& loop = candidate.footprint.loops[l];
+        Loop half;
+        for (std::size_t i = 0; i < loop.points.size(); i += 2) {
+          half.points.push_back(loop.points[i]);
+          half.edges.push_back(loop.edges[i]);
+        }
+        loop = std::move(half);
+        if (attempt(candidate)) {
+          progress = true;
+          continue;
+        }
+      }
       for (std::size_t i = c.footprint.loops[l].points.size(); i-- > 0 && c.footprint.loops[l].points.size() > 3;) {
         // Dropping vertex i: the edge before it now runs on to vertex i + 1.
         GeneratedCase candidate = c;
@@ -63,6 +82,7 @@ GeneratedCase shrink(GeneratedCase c, const std::function<bool(const GeneratedCa
         loop.edges.erase(loop.edges.begin() + static_cast<std::ptrdiff_t>(i));
         progress = attempt(candidate) || progress;
       }
+    }
   }
   // Round to as few digits below the footprint's size as still fail.
   double extent = 0.0;

@@ -1,5 +1,5 @@
 // Minimising a failing generated case (issue 12 item 3): drop loops and
-// vertices, then round coordinates, angles and max_height, keeping each step
+// vertices (halving a long loop first), then round coordinates, angles and max_height, keeping each step
 // while the case still fails; and writing it as a GeoJSON fixture that
 // tests/core/generated_fixtures_test.cc and `procex roof` read back.
 #pragma once
