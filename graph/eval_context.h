@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "base/confined_path.h"
+#include "base/confined_path_memo.h"
 #include "graph/cancel.h"
 #include "graph/diagnostic.h"
 #include "graph/node_decl.h"
@@ -37,14 +38,15 @@ class EvalContext {
  public:
   EvalContext(const NodeDecl& decl, const std::vector<Value>& params, const std::vector<Value>& inputs,
               const CancelToken& cancel, const std::filesystem::path& folder = {},
-              std::span<const std::filesystem::path> allowed_folders = {})
+              std::span<const std::filesystem::path> allowed_folders = {}, ConfinedPathMemo* resolved_paths = nullptr)
       : decl_(decl),
         params_(params),
         inputs_(inputs),
         outputs_(decl.outputs().size()),
         cancel_(cancel),
         folder_(folder),
-        allowed_folders_(allowed_folders) {}
+        allowed_folders_(allowed_folders),
+        resolved_paths_(resolved_paths) {}
 
   const NodeDecl& decl() const { return decl_; }
   // Where relative file paths in parameters resolve (EvalOptions::folder; usually the recipe's).
@@ -53,8 +55,11 @@ class EvalContext {
   // or to EvalOptions::allowed_folders, symlinks followed (a shared recipe
   // must not read or write elsewhere). Throws IoError naming it otherwise,
   // which fails the node. Every node that reads or writes a file uses this.
+  // In a batch the answer is the one its first building got
+  // (EvalOptions::resolved_paths).
   std::filesystem::path file(std::string_view name) const {
-    return confined_path(folder_, name, allowed_folders_);
+    return resolved_paths_ ? resolved_paths_->resolve(folder_, name, allowed_folders_)
+                           : confined_path(folder_, name, allowed_folders_);
   }
 
   // False for an unconnected optional input.
@@ -126,6 +131,7 @@ class EvalContext {
   const CancelToken& cancel_;
   std::filesystem::path folder_;
   std::span<const std::filesystem::path> allowed_folders_;
+  ConfinedPathMemo* resolved_paths_;  // null: resolve every time
 };
 
 }  // namespace procex

@@ -544,7 +544,8 @@ class Run {
       n.state = State::kCancelled;
       return;
     }
-    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders);
+    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders,
+                    options_.resolved_paths.get());
     const auto t0 = Clock::now();
     try {
       n.node->type->evaluate(ctx);

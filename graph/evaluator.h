@@ -17,11 +17,13 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "base/confined_path_memo.h"
 #include "graph/cache.h"
 #include "graph/cancel.h"
 #include "graph/diagnostic.h"
@@ -53,6 +55,11 @@ struct EvalOptions {
   // Files named by parameters must lie inside `folder` or one of these
   // (EvalContext::file, base/confined_path.h): what `--allow-path` adds.
   std::vector<std::filesystem::path> allowed_folders;
+  // Set by a batch for all its buildings: each name a parameter gives is
+  // resolved and confined once (base/confined_path_memo.h). Null (the studio,
+  // a single evaluation): resolved at every evaluation, so an edited symlink
+  // is seen.
+  std::shared_ptr<ConfinedPathMemo> resolved_paths;
   // hash_outputs only: graph inputs without binding or default count as bound
   // (to a value known only by name), so checking a recipe before its inputs
   // are known reports every other problem. evaluate() asserts it is off.

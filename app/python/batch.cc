@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -15,6 +16,7 @@
 #include "app/python/footprint_input.h"
 #include "app/python/mesh_arrays.h"
 #include "app/python/recipe.h"
+#include "base/confined_path_memo.h"
 
 namespace py = pybind11;
 
@@ -51,7 +53,8 @@ void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeatu
 
 py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int jobs, py::handle progress,
                py::handle attributes, py::handle streets) {
-  const MeshRecipe r = recipe->with(attributes);
+  MeshRecipe r = recipe->with(attributes);
+  r.options.resolved_paths = std::make_shared<ConfinedPathMemo>();  // the same files for every building
   if (const Status s = check_footprint_input(r.graph, recipe->file()); !s) raise(ErrorKind::Recipe, s.message());
   GeoJsonCollection collection = collection_from_python(footprints);
   add_streets(collection, streets);

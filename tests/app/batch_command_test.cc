@@ -3,6 +3,7 @@
 // bytes, failures reported while the batch goes on.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -202,6 +203,48 @@ TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
     EXPECT_EQ(v.report["issues"]["numErrors"], 0) << v.report["issues"]["messages"].dump(1);
     EXPECT_EQ(v.report["issues"]["numWarnings"], 0) << v.report["issues"]["messages"].dump(1);
   }
+}
+
+// A batch resolves the files its recipe names once for all its buildings
+// (EvalOptions::resolved_paths), never a symlink out of the recipe's folder:
+// a texture linked from outside fails every building, naming the file, and
+// linked from inside the folder it is every building's.
+TEST_F(Batch, ATextureLinkedFromOutsideTheFolderFailsEveryBuilding) {
+  const fs::path folder = dir_ / "recipe";
+  fs::create_directories(folder / "textures");
+  fs::copy(kSamples / "meshes", folder / "meshes", fs::copy_options::recursive);
+  fs::copy_file(kSamples / "textures" / "brick.png", dir_ / "secret.png");
+  fs::copy_file(kSamples / "textures" / "brick.png", folder / "textures" / "brick.png");
+  json recipe = json::parse(read_text(kSamples / "city.pxg"));
+  int last = 0;
+  for (const json& n : recipe["nodes"]) last = std::max(last, n["id"].get<int>());
+  recipe["nodes"].push_back({{"id", last + 1}, {"type", "Material"}, {"version", 1},
+                             {"params", {{"tag", "wall"}, {"texture", "textures/link.png"}}}});
+  for (json& l : recipe["links"])
+    if (l["to"] == "@mesh") l["to"] = std::to_string(last + 1) + ".mesh";
+  recipe["links"].push_back({{"from", std::to_string(last + 1) + ".mesh"}, {"to", "@mesh"}});
+  std::ofstream(folder / "city.pxg") << recipe.dump();
+  BatchCommandOptions o = options("linked.glb");
+  o.recipe = folder / "city.pxg";
+  o.report = dir_ / "linked.json";
+
+  fs::create_symlink(dir_ / "secret.png", folder / "textures" / "link.png");
+  EXPECT_EQ(run_batch(o, out_, err_), kExitEvaluationFailed);
+  json report = json::parse(read_text(o.report));
+  EXPECT_EQ(report["summary"]["ok"], 0);
+  EXPECT_EQ(report["summary"]["failed"], 18);
+  for (const json& b : report["buildings"])
+    EXPECT_NE(b["reason"].get<std::string>().find("texture: 'textures/link.png' lies outside the recipe's folder"),
+              std::string::npos)
+        << b;
+
+  fs::remove(folder / "textures" / "link.png");
+  fs::create_symlink(folder / "textures" / "brick.png", folder / "textures" / "link.png");
+  ASSERT_EQ(run_batch(o, out_, err_), 0) << err_.str();
+  report = json::parse(read_text(o.report));
+  EXPECT_EQ(report["summary"]["ok"], 18);
+  EXPECT_NE(read_text(o.output).find(read_text(folder / "textures" / "brick.png")), std::string::npos)
+      << "the texture is embedded";
 }
 
 TEST_F(Batch, FailuresAreReportedAndTheBatchGoesOn) {

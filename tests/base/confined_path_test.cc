@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "base/confined_path.h"
+#include "base/confined_path_memo.h"
 
 namespace procex {
 namespace {
@@ -61,6 +62,34 @@ TEST_F(ConfinedPath, NamesOutsideAreRefusedHoweverSpelled) {
 TEST_F(ConfinedPath, AllowedFoldersAreTrusted) {
   EXPECT_EQ(confined_path(recipe_, "../elsewhere/a.obj", std::vector<fs::path>{base_ / "elsewhere"}), base_ / "elsewhere" / "a.obj");
   EXPECT_NE(refusal("../secret.obj", {base_ / "elsewhere"}).find("outside"), std::string::npos);
+}
+
+// What a batch resolves its buildings' files with: confined_path's answers,
+// kept; its refusals are not kept, so a name is refused however often it is
+// asked for and accepted once its link is put right.
+TEST_F(ConfinedPath, TheBatchesMemoGivesConfinedPathsAnswersAndKeepsNoRefusal) {
+  ConfinedPathMemo memo;
+  const std::vector<fs::path> allowed{base_ / "elsewhere"};
+  for (int pass = 0; pass < 2; ++pass) {
+    EXPECT_EQ(memo.resolve(recipe_, "lib/a.obj"), recipe_ / "lib" / "a.obj");
+    EXPECT_EQ(memo.resolve(recipe_, "../elsewhere/a.obj", allowed), base_ / "elsewhere" / "a.obj");
+    EXPECT_THROW(memo.resolve(recipe_, "../elsewhere/a.obj"), IoError) << "allowed by another call's folders";
+    EXPECT_THROW(memo.resolve(recipe_, "../secret.obj"), IoError);
+    EXPECT_THROW(memo.resolve(base_ / "elsewhere", "../recipe/lib/a.obj"), IoError) << "another root";
+  }
+  fs::create_symlink(base_ / "secret.obj", recipe_ / "innocent.obj");
+  for (int pass = 0; pass < 2; ++pass) {
+    try {
+      memo.resolve(recipe_, "innocent.obj");
+      ADD_FAILURE() << "a symlink out of the folder was followed";
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find("outside"), std::string::npos) << e.what();
+    }
+  }
+  fs::remove(recipe_ / "innocent.obj");
+  std::ofstream(recipe_ / "lib" / "b.obj") << "v 0 0 0\n";
+  fs::create_symlink(recipe_ / "lib" / "b.obj", recipe_ / "innocent.obj");
+  EXPECT_EQ(memo.resolve(recipe_, "innocent.obj"), recipe_ / "lib" / "b.obj");
 }
 
 }  // namespace
