@@ -1,8 +1,10 @@
 #include "core/mesh/material.h"
 
+#include <functional>
 #include <limits>
 #include <mutex>
-#include <vector>
+#include <shared_mutex>
+#include <unordered_map>
 
 namespace procex {
 namespace {
@@ -36,24 +38,48 @@ MaterialTable with_material(const MaterialTable& table, const std::string& tag, 
   // A batch passes every building's table through the same Material nodes:
   // each change is made once and its table shared by all of them, where a
   // copy per building and node cost a map of paths each (BENCHMARKS, Batch).
-  // Keyed by the old table itself, held so no new one takes its address.
-  struct Made {
-    MaterialTable from;
+  // Keyed by the old table's address, held in the entry so no new table
+  // takes it; looked up under a shared lock, so the workers' Material nodes
+  // do not wait on each other.
+  struct Change {
+    const Materials* from;
     std::string tag;
     Material material;
-    MaterialTable to;
+    bool operator==(const Change&) const = default;
   };
-  static std::mutex mutex;
-  static std::vector<Made> made;
+  struct ChangeHash {
+    std::size_t operator()(const Change& c) const {
+      std::size_t h = std::hash<const Materials*>()(c.from);
+      const auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2); };
+      // + 0.0: -0.0 equals 0.0, so it must hash alike.
+      const auto number = [&mix](double v) { mix(std::hash<double>()(v + 0.0)); };
+      mix(std::hash<std::string>()(c.tag));
+      for (const double v : c.material.colour) number(v);
+      number(c.material.roughness);
+      number(c.material.metallic);
+      mix(std::hash<std::filesystem::path::string_type>()(c.material.texture.native()));
+      number(c.material.tile_size);
+      return h;
+    }
+  };
+  struct Made {
+    MaterialTable from, to;
+  };
+  static std::shared_mutex mutex;
+  static std::unordered_map<Change, Made, ChangeHash> made;
   constexpr std::size_t kKept = 256;  // a recipe's few nodes; a studio session's edits leave old ones behind
-  std::lock_guard lock(mutex);
-  for (const Made& m : made)
-    if (m.from == table && m.tag == tag && m.material == material) return m.to;
+  Change change{table.get(), tag, material};
+  {
+    std::shared_lock lock(mutex);
+    if (const auto it = made.find(change); it != made.end()) return it->second.to;
+  }
   Materials materials = materials_of(table);
   materials[tag] = material;
+  MaterialTable to = std::make_shared<const Materials>(std::move(materials));
+  std::unique_lock lock(mutex);
   if (made.size() >= kKept) made.clear();
-  made.push_back({table, tag, material, std::make_shared<const Materials>(std::move(materials))});
-  return made.back().to;
+  // Another worker may have made the same change meanwhile: its table is the one shared.
+  return made.try_emplace(std::move(change), Made{table, std::move(to)}).first->second.to;
 }
 
 MaterialTable material_table(Materials materials) {
