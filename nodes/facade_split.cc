@@ -1,6 +1,9 @@
 // Facade split: the walls of every mesh divided into floors and bays, each
 // tile an anchor for Mesh Placement (core/placement/facade_split.h).
+#include <memory>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "core/placement/facade_split.h"
 #include "core/placement/placement_error.h"
@@ -79,7 +82,11 @@ void evaluate(EvalContext& ctx) {
       FacadeTiles split = split_facades(*part.mesh, wall, spec);
       tiles += static_cast<std::int64_t>(split.tiles.size());
       dropped += static_cast<std::int64_t>(split.dropped);
-      part.tiles.insert(part.tiles.end(), split.tiles.begin(), split.tiles.end());
+      if (!split.tiles.empty()) {  // the input's tiles are shared: added to, they are new ones
+        std::vector<FacadeTile> tiles = tiles_of(part);
+        tiles.insert(tiles.end(), split.tiles.begin(), split.tiles.end());
+        part.tiles = std::make_shared<const std::vector<FacadeTile>>(std::move(tiles));
+      }
       part.split_names.insert(spec.name);
     } catch (const PlacementError& e) {
       return ctx.error((part.building.empty() ? "" : "building " + part.building + ": ") + e.what());

@@ -216,7 +216,7 @@ std::vector<ResolvedAnchor> stood_upright(std::vector<ResolvedAnchor> anchors) {
 }
 
 bool carries(const TaggedMesh& part, const std::string& anchor, bool tiles) {
-  if (tiles) return std::any_of(part.tiles.begin(), part.tiles.end(), [&](const FacadeTile& t) { return t.name == anchor; });
+  if (tiles) return std::any_of(tiles_of(part).begin(), tiles_of(part).end(), [&](const FacadeTile& t) { return t.name == anchor; });
   return std::any_of(part.anchors.begin(), part.anchors.end(), [&](const ResolvedAnchor& a) { return a.name == anchor; });
 }
 
@@ -274,7 +274,7 @@ void evaluate(EvalContext& ctx) {
     try {
       PlaceMeshReport report;
       if (tiles) {
-        report = place_in_tiles(part.placed, mesh, part.tiles, spec);
+        report = place_in_tiles(part.placed, mesh, tiles_of(part), spec);
       } else {
         const std::optional<FaceCover> cover =
             (spec.mode != MeshPlacementSpec::Mode::Row && spec.mode != MeshPlacementSpec::Mode::Grid) || upright ? std::nullopt : std::optional<FaceCover>(std::in_place, *part.mesh);

@@ -1,5 +1,8 @@
 // Transform: scales, turns about the vertical and moves meshes.
 #include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -61,10 +64,14 @@ void evaluate(EvalContext& ctx) {
       r.frame.along = turn(r.frame.along), r.frame.up = turn(r.frame.up), r.frame.normal = turn(r.frame.normal);
       r.span_from = point(r.span_from), r.span_to = point(r.span_to);
     }
-    for (FacadeTile& t : part.tiles) {  // sizes scale with the mesh
-      t.frame.origin = point(t.frame.origin);
-      t.frame.along = turn(t.frame.along), t.frame.up = turn(t.frame.up), t.frame.normal = turn(t.frame.normal);
-      t.width *= s, t.height *= s;
+    if (part.tiles) {  // moved tiles are new ones: the input's are shared
+      std::vector<FacadeTile> tiles = *part.tiles;
+      for (FacadeTile& t : tiles) {  // sizes scale with the mesh
+        t.frame.origin = point(t.frame.origin);
+        t.frame.along = turn(t.frame.along), t.frame.up = turn(t.frame.up), t.frame.normal = turn(t.frame.normal);
+        t.width *= s, t.height *= s;
+      }
+      part.tiles = std::make_shared<const std::vector<FacadeTile>>(std::move(tiles));
     }
   }
   ctx.set_output(0, std::move(out));

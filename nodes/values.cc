@@ -158,8 +158,8 @@ void hash_mesh_set(const MeshSet& set, Hasher& h) {
     hash_materials(part.materials, h);
     h.u64(part.anchors.size());
     for (const ResolvedAnchor& a : part.anchors) hash_anchor(a, h);
-    h.u64(part.tiles.size());
-    for (const FacadeTile& t : part.tiles) hash_tile(t, h);
+    h.u64(tiles_of(part).size());
+    for (const FacadeTile& t : tiles_of(part)) hash_tile(t, h);
     h.u64(part.split_names.size());
     for (const std::string& n : part.split_names) hash_str(n, h);
     hash_placed(part.placed, h);
@@ -180,8 +180,8 @@ std::size_t mesh_set_size(const MeshSet& set) {
          part.building.capacity();
     n += part.anchors.capacity() * sizeof(ResolvedAnchor);
     for (const ResolvedAnchor& a : part.anchors) n += a.name.capacity() + a.reason.capacity();
-    n += part.tiles.capacity() * sizeof(FacadeTile);
-    for (const FacadeTile& t : part.tiles) n += t.name.capacity();
+    n += tiles_of(part).capacity() * sizeof(FacadeTile);
+    for (const FacadeTile& t : tiles_of(part)) n += t.name.capacity();
     for (const std::string& s : part.split_names) n += sizeof(s) + s.capacity();
     n += part.placed.instances.capacity() * sizeof(Instance) + part.placed.meshes.capacity() * sizeof(PlaceableMesh);
     for (const PlaceableMesh& m : part.placed.meshes) n += mesh_size(*m.mesh);
@@ -213,6 +213,11 @@ const bool kRegistered = [] {
 }();
 
 }  // namespace
+
+const std::vector<FacadeTile>& tiles_of(const TaggedMesh& part) {
+  static const std::vector<FacadeTile> kNone;
+  return part.tiles ? *part.tiles : kNone;
+}
 
 void face_tags_from_mesh(TaggedMesh& part) {
   const auto tags = face_tag_property(*part.mesh);

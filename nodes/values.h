@@ -42,8 +42,11 @@ struct TaggedMesh {
   // in the same coordinates as the mesh: what Mesh placement places at.
   std::vector<ResolvedAnchor> anchors;
   // Facade tiles on this mesh (Facade Split), in the mesh's coordinates: what
-  // Mesh placement's `tiles` mode places in.
-  std::vector<FacadeTile> tiles;
+  // Mesh placement's `tiles` mode places in. Shared like the mesh and never
+  // changed in place (a node that moves or adds tiles makes a new vector):
+  // a node after the split (each Material) copied a building's hundreds of
+  // tiles per building (BENCHMARKS, Batch). Null: none (tiles_of).
+  std::shared_ptr<const std::vector<FacadeTile>> tiles;
   // The names of the Facade Splits this mesh went through, also those that
   // kept no tile on it (no street front): a name Mesh placement asks for that
   // is none of them is a misspelling, not a building without such walls.
@@ -80,6 +83,9 @@ struct PlanEditSpec {
 
 // Sets part.face_tags from its mesh's face tags, adding to part.tags those it lacks.
 void face_tags_from_mesh(TaggedMesh& part);
+
+// A part's facade tiles; empty if it has none.
+const std::vector<FacadeTile>& tiles_of(const TaggedMesh& part);
 
 // The tag of face f of a part.
 inline const std::string& face_tag(const TaggedMesh& part, std::size_t f) { return part.tags[part.face_tags[f]]; }

@@ -86,7 +86,7 @@ TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
   const Mesh& walls = *mesh_of(whole).parts[0].mesh;
   const FaceCover cover(walls);
   std::size_t tiles = 0;
-  for (const FacadeTile& a : part.tiles) {
+  for (const FacadeTile& a : tiles_of(part)) {
     ASSERT_EQ(a.name, "tile");
     ++tiles;
     // The tile lies on its edge's faces in its plane, checked point by point against the mesh's faces too.
@@ -108,7 +108,7 @@ TEST(SetbackTowerSample, WindowsOnlyWhereTheWallsAre) {
   for (std::size_t f = 0; f < part.face_tags.size(); ++f) reveals += face_tag(part, f) == "reveal";
   EXPECT_EQ(reveals, 5 * tiles);
   double recesses = 0;
-  for (const FacadeTile& a : part.tiles) recesses += (a.width - 0.8) * (a.height - 0.8) * 0.25;
+  for (const FacadeTile& a : tiles_of(part)) recesses += (a.width - 0.8) * (a.height - 0.8) * 0.25;
   EXPECT_NEAR(validate(walls).volume - validate(*part.mesh).volume, recesses, 1e-6);
 }
 

@@ -72,7 +72,7 @@ std::multiset<std::int32_t> tile_edges(const std::string& which) {
   EXPECT_TRUE(r.ok()) << r.messages();
   std::multiset<std::int32_t> out;
   for (const TaggedMesh& p : r.outputs.at(0).get<MeshSet>().parts)
-    for (const FacadeTile& t : p.tiles) out.insert(t.edge_id);
+    for (const FacadeTile& t : tiles_of(p)) out.insert(t.edge_id);
   return out;
 }
 
@@ -129,7 +129,7 @@ TEST(FacadeSplit, SizesNamedByNumberParameters) {
   // 12 m walls, 1 on the 6 m walls.
   std::set<double> sills;
   std::size_t n = 0;
-  for (const FacadeTile& t : r.outputs.at(0).get<MeshSet>().parts.at(0).tiles) {
+  for (const FacadeTile& t : tiles_of(r.outputs.at(0).get<MeshSet>().parts.at(0))) {
     sills.insert(t.frame.origin.z);
     EXPECT_DOUBLE_EQ(t.height, 2.25);
     EXPECT_DOUBLE_EQ(t.width, 4.0);
