@@ -85,6 +85,25 @@ std::unique_ptr<std::istream> open_file_stream(const std::filesystem::path& path
   return std::make_unique<FileStream>(std::move(file));
 }
 
+RangedFile::RangedFile(const std::filesystem::path& path, std::size_t max_bytes) : path_(path) {
+  Fd file{-1};
+  size_ = open_checked(path, max_bytes, file);
+  fd_ = std::exchange(file.fd, -1);
+}
+
+RangedFile::~RangedFile() { ::close(fd_); }
+
+void RangedFile::read_at(std::uint64_t offset, std::span<char> out) const {
+  std::size_t done = 0;
+  while (done < out.size()) {
+    const ssize_t n = ::pread(fd_, out.data() + done, out.size() - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(path_, std::strerror(errno));
+    if (n == 0) fail(path_, "it ended at byte " + std::to_string(offset + done) + " while being read (it shrank)");
+    done += static_cast<std::size_t>(n);
+  }
+}
+
 std::string read_file(const std::filesystem::path& path, std::size_t max_bytes) {
   Fd file{-1};
   const std::size_t size = open_checked(path, max_bytes, file);

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <istream>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "base/io_error.h"
@@ -28,5 +30,24 @@ std::string read_file(const std::filesystem::path& path, std::size_t max_bytes);
 // A read that fails later throws std::ios_base::failure from the stream's
 // buffer (readers that call it directly, as nlohmann's parser does, see it).
 std::unique_ptr<std::istream> open_file_stream(const std::filesystem::path& path, std::size_t max_bytes);
+
+// The same file, checked the same way, read by ranges where the caller wants
+// them (a .glb's JSON elements and buffer views), never whole.
+class RangedFile {
+ public:
+  RangedFile(const std::filesystem::path& path, std::size_t max_bytes);
+  RangedFile(const RangedFile&) = delete;
+  RangedFile& operator=(const RangedFile&) = delete;
+  ~RangedFile();
+  std::uint64_t size() const { return size_; }
+  // Fills out with the bytes from `offset` on. Throws IoError naming the file
+  // if they are not all there (it shrank since it was opened) or cannot be read.
+  void read_at(std::uint64_t offset, std::span<char> out) const;
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+  std::uint64_t size_ = 0;
+};
 
 }  // namespace procex
