@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 

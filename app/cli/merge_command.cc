@@ -1,7 +1,6 @@
 #include "app/cli/merge_command.h"
 
 #include <algorithm>
-#include <iterator>
 #include <map>
 #include <ostream>
 
@@ -12,6 +11,7 @@
 #include "app/cli/report_text.h"
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_crs.h"
 #include "core/io/gltf_mesh_spool.h"
 #include "core/io/gltf_write.h"
@@ -99,12 +99,13 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
   try {
-    // Each part is read whole, one at a time, its buildings set aside on disk
-    // (GltfMeshSpool) and the part freed; they are then read back in feature
-    // order a window at a time into a streamed .glb: memory holds the largest
-    // part, not all of them. Each part's placed meshes come along (renumbered,
-    // as append_scene does); the writer keeps one of equal ones, so the bytes
-    // are those of an unsharded run.
+    // Each part is read a building at a time (GlbReader: its JSON indexed,
+    // each building's elements and arrays read by their ranges), its
+    // buildings set aside on disk (GltfMeshSpool); they are then read back in
+    // feature order a window at a time into a streamed .glb: memory holds one
+    // part's index and a window of buildings, whatever the parts' size. Each
+    // part's placed meshes come along (renumbered, as append_scene does); the
+    // writer keeps one of equal ones, so the bytes are those of an unsharded run.
     GltfMeshSpool spool;
     struct Building {
       std::int64_t feature;
@@ -117,16 +118,16 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
     for (const auto& p : meshes) {
       if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
-      GltfScene part = read_glb_scene(p);
-      const auto stamp = part.extras.find("shard");
-      if (stamp == part.extras.end())
+      const GlbReader part(p);
+      const auto stamp = part.extras().find("shard");
+      if (stamp == part.extras().end())
         throw IoError(p.string() + ": its scene has no extras.shard, so it is no shard of procex batch: merge joins "
                                    "the .glb parts of one batch run",
                       p.string());
       shards.emplace_back(read_shard_stamp(json::parse(stamp->second), p, "/scenes/0/extras/shard"), p);
       // One run has one CRS; parts that disagree were built with different --crs.
-      const auto crs = part.extras.find(kGltfCrsKey);
-      const std::string part_crs = crs == part.extras.end() ? "" : crs->second;
+      const auto crs = part.extras().find(kGltfCrsKey);
+      const std::string part_crs = crs == part.extras().end() ? "" : crs->second;
       if (shards.size() == 1) {
         if (!part_crs.empty()) extras[kGltfCrsKey] = part_crs;
       } else if (part_crs != (extras.count(kGltfCrsKey) ? extras[kGltfCrsKey] : "")) {
@@ -134,11 +135,12 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
                           ": merge joins the parts of one run, all made in one CRS",
                       p.string());
       }
-      for (GltfMeshData& b : part.meshes) {
+      for (std::size_t i = 0; i < part.buildings(); ++i) {
+        GltfMeshData b = part.building(i);
         for (GltfInstanceData& in : b.instances) in.prototype += prototypes.size();
         buildings.push_back({b.feature, b.building, spool.add(b)});
       }
-      std::move(part.prototypes.begin(), part.prototypes.end(), std::back_inserter(prototypes));
+      prototypes.insert(prototypes.end(), part.prototypes().begin(), part.prototypes().end());
     }
     check_whole(shards);
     if (!shards.empty()) extras["shard"] = to_json(whole(shards.front().first)).dump();

@@ -8,22 +8,17 @@
 #include <cstring>
 #include <deque>
 #include <iterator>
-#include <limits>
 #include <map>
 #include <string_view>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
-#include <tiny_gltf.h>
 
 #include "core/geom/convex_partition.h"
 #include "core/geom/polygon3.h"
-#include "base/json_depth.h"
-#include "base/read_file.h"
 #include "base/spool_file.h"
 #include "core/io/atomic_write.h"
-#include "core/io/byte_range.h"
 #include "core/io/io_error.h"
 #include "core/io/texture_image.h"
 #include "core/io/up_axis.h"
@@ -35,8 +30,9 @@
 namespace procex {
 namespace {
 
-constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
-constexpr int kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+// glTF's component types: float, unsigned int.
+constexpr int kFloat = 5126;
+constexpr int kUint = 5125;
 
 // The file is written without an in-memory glTF model: each building's (and
 // placed mesh's) JSON is rendered on its own, in parallel, once counting has
@@ -790,142 +786,6 @@ void write_scene(const std::filesystem::path& path, const std::vector<GltfMeshDa
   write_file_atomically(path, pieces);
 }
 
-[[noreturn]] void bad(const std::filesystem::path& path, const std::string& what) {
-  throw IoError("'" + path.string() + "' is not a .glb as procex writes it: " + what, path.string());
-}
-
-template <class T>
-std::vector<T> read_accessor(const tinygltf::Model& m, int index, int component, int type,
-                             const std::filesystem::path& path) {
-  if (index < 0 || static_cast<std::size_t>(index) >= m.accessors.size()) bad(path, "accessor " + std::to_string(index) + " is missing");
-  const tinygltf::Accessor& a = m.accessors[static_cast<std::size_t>(index)];
-  const std::string where = "accessor " + std::to_string(index);
-  if (a.componentType != component || a.type != type) bad(path, where + " has an unexpected component type");
-  if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= m.bufferViews.size()) bad(path, where + " has no buffer view");
-  const tinygltf::BufferView& v = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
-  const std::size_t per = (type == TINYGLTF_TYPE_VEC3 ? 3 : type == TINYGLTF_TYPE_VEC2 ? 2 : 1);
-  if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= m.buffers.size() ||
-      (v.byteStride != 0 && v.byteStride != per * sizeof(T)))
-    bad(path, where + ": unexpected buffer or stride");
-  const std::vector<unsigned char>& data = m.buffers[static_cast<std::size_t>(v.buffer)].data;
-  const auto bytes = checked_product(a.count, per * sizeof(T));
-  const auto view = byte_range(data, v.byteOffset, v.byteLength);
-  const auto range = bytes && view ? byte_range(*view, a.byteOffset, *bytes) : std::nullopt;
-  if (!range) bad(path, where + " runs past its buffer");
-  std::vector<T> out(range->size() / sizeof(T));
-  std::memcpy(out.data(), range->data(), range->size());
-  return out;
-}
-
-const tinygltf::Node& node_at(const tinygltf::Model& m, int index, const std::filesystem::path& path) {
-  if (index < 0 || static_cast<std::size_t>(index) >= m.nodes.size()) bad(path, "node " + std::to_string(index) + " is missing");
-  return m.nodes[static_cast<std::size_t>(index)];
-}
-
-glm::dmat4 node_matrix(const tinygltf::Node& node, int index, const std::filesystem::path& path) {
-  if (!node.translation.empty() || !node.rotation.empty() || !node.scale.empty())
-    bad(path, "node " + std::to_string(index) + " has translation, rotation or scale instead of a matrix");
-  glm::dmat4 t(1.0);
-  if (node.matrix.empty()) return t;
-  if (node.matrix.size() != 16) bad(path, "node " + std::to_string(index) + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers");
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) t[c][r] = node.matrix[static_cast<std::size_t>(4 * c + r)];
-  return t;
-}
-
-double max_abs(const glm::dmat4& t) {
-  double out = 0.0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out = std::max(out, std::abs(t[c][r]));
-  return out;
-}
-
-double max_difference(const glm::dmat4& a, const glm::dmat4& b) { return max_abs(a - b); }
-
-// The transform a split instance node carries in extras (see
-// add_instance_node), else `otherwise`.
-glm::dmat4 exact_transform(const tinygltf::Node& node, int index, const std::filesystem::path& path,
-                           const glm::dmat4& otherwise) {
-  if (!node.extras.Has("transform")) return otherwise;
-  const tinygltf::Value& v = node.extras.Get("transform");
-  if (!v.IsArray() || v.ArrayLen() != 16) bad(path, "node " + std::to_string(index) + "'s transform extras are not 16 numbers");
-  glm::dmat4 t;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) {
-      const tinygltf::Value& x = v.Get(4 * c + r);
-      if (!x.IsNumber()) bad(path, "node " + std::to_string(index) + "'s transform extras are not 16 numbers");
-      t[c][r] = x.GetNumberAsDouble();
-    }
-  return t;
-}
-
-// The images' bytes (kept as they were by keep_image_bytes), each shared by
-// every primitive whose material shows it.
-using ImageBytes = std::vector<std::shared_ptr<const std::string>>;
-
-// A primitive's material when it is a placed mesh's own (not the tag's
-// colour alone), as write_glb wrote it.
-std::optional<GltfMaterialData> read_material(const tinygltf::Model& m, const tinygltf::Primitive& p, const std::string& tag,
-                                              const ImageBytes& images, const std::filesystem::path& path) {
-  if (p.material < 0) return std::nullopt;
-  if (static_cast<std::size_t>(p.material) >= m.materials.size()) bad(path, "material " + std::to_string(p.material) + " is missing");
-  const tinygltf::PbrMetallicRoughness& pbr = m.materials[static_cast<std::size_t>(p.material)].pbrMetallicRoughness;
-  GltfMaterialData out;
-  if (pbr.baseColorFactor.size() != 4) bad(path, "material " + std::to_string(p.material) + "'s base colour is not 4 numbers");
-  std::copy_n(pbr.baseColorFactor.begin(), 3, out.colour.begin());
-  out.roughness = pbr.roughnessFactor;
-  out.metallic = pbr.metallicFactor;
-  if (const int t = pbr.baseColorTexture.index; t >= 0) {
-    if (static_cast<std::size_t>(t) >= m.textures.size()) bad(path, "texture " + std::to_string(t) + " is missing");
-    const int source = m.textures[static_cast<std::size_t>(t)].source;
-    if (source < 0 || static_cast<std::size_t>(source) >= images.size()) bad(path, "texture " + std::to_string(t) + " has no image");
-    out.image = images[static_cast<std::size_t>(source)];
-    if (const auto ext = pbr.baseColorTexture.extensions.find("KHR_texture_transform");
-        ext != pbr.baseColorTexture.extensions.end()) {
-      const tinygltf::Value& scale = ext->second.Get("scale");
-      if (!scale.IsArray() || scale.ArrayLen() != 2 || !scale.Get(0).IsNumber() ||
-          scale.Get(0).GetNumberAsDouble() != scale.Get(1).GetNumberAsDouble() || !(scale.Get(0).GetNumberAsDouble() > 0))
-        bad(path, "material " + std::to_string(p.material) + "'s texture transform is not one positive scale for u and v");
-      out.tile_size = 1.0 / scale.Get(0).GetNumberAsDouble();
-    }
-  }
-  GltfMaterialData plain;  // what a tag without a material of its own is written with
-  plain.colour = tag_colour(tag);
-  if (out == plain) return std::nullopt;
-  return out;
-}
-
-std::vector<GltfPrimitiveData> read_primitives(const tinygltf::Model& m, int mesh, const ImageBytes& images,
-                                               const std::filesystem::path& path) {
-  if (mesh < 0 || static_cast<std::size_t>(mesh) >= m.meshes.size()) bad(path, "mesh " + std::to_string(mesh) + " is missing");
-  std::vector<GltfPrimitiveData> out;
-  for (const tinygltf::Primitive& p : m.meshes[static_cast<std::size_t>(mesh)].primitives) {
-    GltfPrimitiveData& prim = out.emplace_back();
-    if (p.extras.Has("tag")) prim.tag = p.extras.Get("tag").Get<std::string>();
-    prim.material = read_material(m, p, prim.tag, images, path);
-    const auto pos = p.attributes.find("POSITION"), nor = p.attributes.find("NORMAL");
-    if (pos == p.attributes.end() || nor == p.attributes.end()) bad(path, "a primitive lacks POSITION or NORMAL");
-    prim.positions = read_accessor<float>(m, pos->second, kFloat, TINYGLTF_TYPE_VEC3, path);
-    prim.normals = read_accessor<float>(m, nor->second, kFloat, TINYGLTF_TYPE_VEC3, path);
-    prim.indices = read_accessor<std::uint32_t>(m, p.indices, kUint, TINYGLTF_TYPE_SCALAR, path);
-    if (const auto uv = p.attributes.find("TEXCOORD_0"); uv != p.attributes.end())
-      prim.uvs = read_accessor<float>(m, uv->second, kFloat, TINYGLTF_TYPE_VEC2, path);
-    // Writers index normals and texture coordinates by the position's index, so counts that differ or
-    // an index past the vertices would read or write past an array.
-    if (prim.normals.size() != prim.positions.size())
-      bad(path, "a primitive has " + std::to_string(prim.positions.size() / 3) + " positions but " +
-                    std::to_string(prim.normals.size() / 3) + " normals");
-    const std::size_t vertices = prim.positions.size() / 3;
-    for (const std::uint32_t i : prim.indices)
-      if (i >= vertices)
-        bad(path, "a primitive's index " + std::to_string(i) + " is past its " + std::to_string(vertices) + " vertices");
-    if (!prim.uvs.empty() && prim.uvs.size() != 2 * vertices)
-      bad(path, "a primitive has " + std::to_string(vertices) + " positions but " +
-                    std::to_string(prim.uvs.size() / 2) + " texture coordinates");
-  }
-  return out;
-}
-
 }  // namespace
 
 std::array<double, 3> tag_colour(const std::string& tag) {
@@ -1268,133 +1128,6 @@ void GlbStreamWriter::finish() {
   write_file_atomically(s.path, pieces);
 }
 
-namespace {
-
-// Reading a shard must not reach outside it: a buffer or image URI naming a
-// file (merge would copy ../../etc/passwd into its output) is refused, and
-// images (placed meshes' textures) are kept as their bytes, not decoded.
-bool refuse_external_file(std::vector<unsigned char>*, std::string* err, const std::string& name, void*) {
-  if (err) *err += "it refers to the external file '" + name + "': a .glb from procex holds everything in itself";
-  return false;
-}
-// Every name "exists", so that tinygltf hands it to refuse_external_file,
-// whose refusal says why, instead of reporting the file as not found.
-bool every_name_exists(const std::string&, void*) { return true; }
-std::string same_path(const std::string& name, void*) { return name; }
-bool keep_image_bytes(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
-                      const unsigned char* bytes, int size, void*) {
-  const std::string_view data(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(std::max(size, 0)));
-  if (image_mime_type(data).empty()) {
-    if (err) *err += "image " + std::to_string(index) + " is not a PNG or JPEG image";
-    return false;
-  }
-  image->image.assign(data.begin(), data.end());
-  return true;
-}
-
-}  // namespace
-
-GltfScene read_glb_scene(const std::filesystem::path& path) {
-  return parse_glb_scene(read_file(path, kMaxDataFileBytes), path);
-}
-
-GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path) {
-  if (bytes.size() > std::numeric_limits<unsigned int>::max())
-    throw IoError("cannot read '" + path.string() + "': too large for a glTF binary", path.string());
-  // tinygltf reads extras recursively: the JSON chunk (its length at byte
-  // 12, its text from byte 20) is checked for nesting first.
-  const std::span<const unsigned char> all(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-  if (const auto length = byte_range(all, 12, 4)) {
-    std::uint32_t n = 0;
-    std::memcpy(&n, length->data(), 4);  // little-endian, as glTF and every machine procex runs on
-    if (const auto json = byte_range(all, 20, n)) {
-      if (json_too_deep_at(std::string_view(reinterpret_cast<const char*>(json->data()), json->size())))
-        bad(path, "its JSON is nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-    }
-  }
-  tinygltf::Model m;
-  tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({&every_name_exists, &same_path, &refuse_external_file, nullptr, nullptr});
-  loader.SetImageLoader(&keep_image_bytes, nullptr);
-  std::string err, warn;
-  if (!loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                   static_cast<unsigned int>(bytes.size())))
-    throw IoError("cannot read '" + path.string() + "' as glTF binary: " + err, path.string());
-  // tinygltf keeps extras as values; the attributes are wanted back as the
-  // JSON text they were written from.
-  std::uint32_t json_length = 0;
-  std::memcpy(&json_length, bytes.data() + 12, 4);  // LoadBinaryFromMemory checked the header
-  const nlohmann::json raw = nlohmann::json::parse(bytes.begin() + 20, bytes.begin() + 20 + json_length, nullptr, false);
-  const auto attributes = [&](int node, const char* key) {
-    std::map<std::string, std::string> values;
-    if (!raw.contains("nodes") || !raw["nodes"].is_array() || static_cast<std::size_t>(node) >= raw["nodes"].size()) return values;
-    const nlohmann::json& n = raw["nodes"][static_cast<std::size_t>(node)];
-    if (!n.contains("extras") || !n["extras"].is_object() || !n["extras"].contains(key)) return values;
-    const nlohmann::json& members = n["extras"][key];
-    if (!members.is_object()) bad(path, "node " + std::to_string(node) + "'s extras." + key + " is not an object");
-    for (const auto& [name, value] : members.items()) values[name] = value.dump();
-    return values;
-  };
-  ImageBytes images;
-  for (const tinygltf::Image& image : m.images)
-    images.push_back(std::make_shared<const std::string>(image.image.begin(), image.image.end()));
-  GltfScene out;
-  // Placed meshes carry their name in extras; the others are buildings'.
-  std::map<int, std::size_t> prototype_of_mesh;
-  for (std::size_t i = 0; i < m.meshes.size(); ++i) {
-    if (!m.meshes[i].extras.Has("placed")) continue;
-    prototype_of_mesh[static_cast<int>(i)] = out.prototypes.size();
-    GltfMeshData& p = out.prototypes.emplace_back();
-    p.building = m.meshes[i].extras.Get("placed").Get<std::string>();
-    p.primitives = read_primitives(m, static_cast<int>(i), images, path);
-  }
-  if (m.scenes.empty()) return out;
-  if (const auto scenes = raw.find("scenes"); scenes != raw.end() && scenes->is_array() && !scenes->empty()) {
-    if (const auto extras = (*scenes)[0].find("extras"); extras != (*scenes)[0].end()) {
-      if (!extras->is_object()) bad(path, "scene 0's extras is not an object");
-      for (const auto& [name, value] : extras->items()) out.extras[name] = value.dump();
-    }
-  }
-  for (int ni : m.scenes[0].nodes) {
-    const tinygltf::Node& node = node_at(m, ni, path);
-    if (node.mesh < 0 && node.children.empty()) bad(path, "node " + std::to_string(ni) + " has no mesh");
-    GltfMeshData& data = out.meshes.emplace_back();
-    if (node.extras.Has("building")) data.building = node.extras.Get("building").Get<std::string>();
-    if (node.extras.Has("feature")) data.feature = node.extras.Get("feature").GetNumberAsInt();
-    if (!node.matrix.empty() || !node.rotation.empty() || !node.scale.empty())
-      bad(path, "building node " + std::to_string(ni) + " has a matrix, rotation or scale (only a translation)");
-    if (!node.translation.empty()) {
-      if (node.translation.size() != 3) bad(path, "building node " + std::to_string(ni) + "'s translation is not 3 numbers");
-      std::copy(node.translation.begin(), node.translation.end(), data.origin.begin());
-    }
-    data.properties = attributes(ni, "properties");
-    data.parameters = attributes(ni, "parameters");
-    if (node.mesh >= 0) data.primitives = read_primitives(m, node.mesh, images, path);
-    for (int ci : node.children) {
-      GltfInstanceData& instance = data.instances.emplace_back();
-      const tinygltf::Node* at = &node_at(m, ci, path);
-      if (at->extras.Has("tag")) instance.tag = at->extras.Get("tag").Get<std::string>();
-      instance.transform = node_matrix(*at, ci, path);
-      const glm::dmat4 exact = exact_transform(*at, ci, path, instance.transform);
-      for (int depth = 0; at->mesh < 0; ++depth) {  // the inner node of a split matrix
-        if (at->children.size() != 1 || depth > 1) bad(path, "instance node " + std::to_string(ci) + " leads to no mesh");
-        const int next = at->children[0];
-        at = &node_at(m, next, path);
-        instance.transform = instance.transform * node_matrix(*at, next, path);
-      }
-      if (exact != instance.transform) {
-        if (max_difference(exact, instance.transform) > 1e-6 * (1.0 + max_abs(exact)))
-          bad(path, "instance node " + std::to_string(ci) + "'s transform in extras disagrees with its node matrices");
-        instance.transform = exact;
-      }
-      const auto it = prototype_of_mesh.find(at->mesh);
-      if (it == prototype_of_mesh.end()) bad(path, "instance node " + std::to_string(ci) + " shows a mesh that is not a placed mesh");
-      instance.prototype = it->second;
-    }
-  }
-  return out;
-}
-
 void append_scene(GltfScene& into, GltfScene part) {
   const std::size_t shift = into.prototypes.size();
   for (GltfMeshData& b : part.meshes) {
@@ -1402,15 +1135,6 @@ void append_scene(GltfScene& into, GltfScene part) {
     into.meshes.push_back(std::move(b));
   }
   std::move(part.prototypes.begin(), part.prototypes.end(), std::back_inserter(into.prototypes));
-}
-
-std::vector<GltfMeshData> read_glb(const std::filesystem::path& path) {
-  GltfScene scene = read_glb_scene(path);
-  if (!scene.prototypes.empty())
-    throw IoError("'" + path.string() + "' holds placed meshes (" + std::to_string(scene.prototypes.size()) +
-                      "), which need read_glb_scene",
-                  path.string());
-  return std::move(scene.meshes);
 }
 
 }  // namespace procex

@@ -18,8 +18,8 @@
 // one child node of its building's node per instance, holding the instance's
 // matrix (a shear, which a glTF matrix cannot hold, as two nodes: see
 // core/placement/trs_split.h) and its tag in extras.
-// Reading back what was written gives the same data, so shards merge into
-// the same bytes an unsharded run writes.
+// Reading back what was written (core/io/glb_read.h) gives the same data, so
+// shards merge into the same bytes an unsharded run writes.
 #pragma once
 
 #include <array>
@@ -30,7 +30,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -173,15 +172,5 @@ class GlbStreamWriter {
   struct State;
   std::unique_ptr<State> state_;
 };
-
-// Reads a .glb written by write_glb. Throws IoError naming the file and what
-// is not as write_glb writes it; read_glb also if the file holds placed-mesh
-// instances (they need read_glb_scene's prototypes).
-std::vector<GltfMeshData> read_glb(const std::filesystem::path& path);
-GltfScene read_glb_scene(const std::filesystem::path& path);
-// The same on a file's bytes already in memory; path names it in messages.
-// External buffer and image URIs are refused: a shard holds everything.
-// Images (PNG or JPEG only) are kept as their bytes.
-GltfScene parse_glb_scene(std::string_view bytes, const std::filesystem::path& path);
 
 }  // namespace procex

@@ -14,6 +14,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "core/io/geojson.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "graph/pxg.h"
 #include "nodes/values.h"

@@ -21,6 +21,7 @@
 #include "app/cli/shard_stamp.h"
 #include "core/geom/party_walls.h"
 #include "core/io/footprint_read.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "tests/app/command_test.h"
 #include "tests/support/gltf_scripts.h"

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "app/cli/merge_command.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
 #include "core/placement/frame_transform.h"

@@ -15,6 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "base/read_file.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "tests/support/gltf_scripts.h"

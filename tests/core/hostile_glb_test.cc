@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 

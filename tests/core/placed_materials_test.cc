@@ -16,6 +16,7 @@
 
 #include "base/confined_path.h"
 #include "base/read_file.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/mesh/validate.h"
 #include "graph/evaluator.h"

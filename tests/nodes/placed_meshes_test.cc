@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
 #include "core/io/up_axis.h"

@@ -8,6 +8,7 @@
 
 #include "app/cli/feature_binding.h"
 #include "core/io/footprint_read.h"
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
 #include "graph/pxg.h"

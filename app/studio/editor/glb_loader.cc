@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 
 namespace procex::studio {
