@@ -345,15 +345,16 @@ void close_surface(Surface& surface) {
   };
   // Every half-edge, with the one before it in its loop.
   struct Half {
-    std::uint32_t from, to, prev, face;
-    std::uint32_t* slot;  // `from` in its loop
+    std::uint32_t from, to, prev, next, face;
+    std::vector<std::uint32_t>* loop;
+    std::uint32_t at;  // `from`'s place in its loop
   };
   std::vector<Half> halves;
   for (std::uint32_t f = 0; f < surface.faces.size(); ++f)
     for (auto& loop : surface.faces[f].loops) {
       const auto first = static_cast<std::uint32_t>(halves.size()), m = static_cast<std::uint32_t>(loop.size());
       for (std::uint32_t i = 0; i < m; ++i)
-        halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, f, &loop[i]});
+        halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, first + (i + 1) % m, f, &loop, i});
     }
   // The half-edges grouped by `from`, sorted by `to`, then in the order given.
   auto key = [&](std::uint32_t g) { return std::pair{halves[g].from, halves[g].to}; };
@@ -384,6 +385,7 @@ void close_surface(Surface& surface) {
   // Each half-edge meets its twin, a reverse; where parts of the solid touch
   // along an edge it has several each way, paired round it (round_edge.h).
   std::vector<std::uint32_t> twin(halves.size());
+  std::vector<std::vector<std::uint32_t>> welded;  // per edge with several faces each way: its halves running from -> to
   std::vector<FaceAtEdge> round;
   for (std::size_t i = 0; i < order.size();) {
     const Half& h = halves[order[i]];
@@ -404,6 +406,7 @@ void close_surface(Surface& surface) {
     if (!twins) fail(h.from, "faces along its edge to " + at(h.to) + " overlap or fold over each other");
     auto given = [&](std::size_t k) { return k < ahead.size() ? ahead[k] : back[k - ahead.size()]; };
     for (std::size_t k = 0; k < round.size(); ++k) twin[given(k)] = given((*twins)[k]);
+    welded.emplace_back(ahead.begin(), ahead.end());
   }
   // Round a vertex the faces form fans: from v -> a, the face on its right
   // holds the twin of the half-edge before v -> a in its loop. Where parts of
@@ -421,10 +424,41 @@ void close_surface(Surface& surface) {
     std::uint32_t g = order[i];
     do {
       in_fan[g] = 1;
-      *halves[g].slot = id;
+      (*halves[g].loop)[halves[g].at] = id;
       g = twin[halves[g].prev];
     } while (!in_fan[g]);
   }
+  // Parts that touch along an edge and are joined round both its ends (a
+  // hole's ledge stepping onto the outline's line beside its soffit) keep
+  // both ends in one fan each: the edge would then carry its pairs between
+  // the same two vertices. Each pair after the first gets a point of its own
+  // halfway along, in both its faces, so every edge has one face each way.
+  struct Insert {
+    std::vector<std::uint32_t>* loop;
+    std::uint32_t after;
+    std::uint32_t v;
+  };
+  std::vector<Insert> inserts;
+  for (const std::vector<std::uint32_t>& edge : welded) {
+    auto ends = [&](std::uint32_t g) {
+      return std::pair{(*halves[g].loop)[halves[g].at], (*halves[halves[g].next].loop)[halves[halves[g].next].at]};
+    };
+    for (std::size_t k = 1; k < edge.size(); ++k) {
+      const auto [a, b] = ends(edge[k]);
+      bool shared = false;
+      for (std::size_t j = 0; j < k; ++j) shared = shared || ends(edge[j]) == std::pair{a, b};
+      if (!shared) continue;
+      const auto mid = static_cast<std::uint32_t>(surface.vertices.size());
+      surface.vertices.push_back(0.5 * (surface.vertices[a] + surface.vertices[b]));
+      inserts.push_back({halves[edge[k]].loop, halves[edge[k]].at, mid});
+      inserts.push_back({halves[twin[edge[k]]].loop, halves[twin[edge[k]]].at, mid});
+    }
+  }
+  // Later places first, so earlier ones stay where they are.
+  std::sort(inserts.begin(), inserts.end(), [](const Insert& x, const Insert& y) {
+    return x.loop != y.loop ? x.loop < y.loop : x.after > y.after;
+  });
+  for (const Insert& i : inserts) i.loop->insert(i.loop->begin() + i.after + 1, i.v);
 }
 
 }  // namespace procex::engine
