@@ -31,6 +31,7 @@ struct Building {
   std::vector<std::string> warnings;
   WrappedMeshes meshes;  // wrapped by the worker that evaluated it
   py::object wrapped;    // their list, made with the GIL held once the workers are done
+  py::object feature;    // the feature as evaluated (a dict), None when it could not be read
 };
 
 // What the workers share with the thread that holds the GIL.
@@ -67,7 +68,7 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
     feature_of[f.index] = &f;
   }
   for (const GeoJsonFeatureError& e : collection.errors)
-    buildings[e.index] = Building{e.index, e.id, "refused", e.message, {}, {}, {}};
+    buildings[e.index] = Building{e.index, e.id, "refused", e.message, {}, {}, {}, py::none()};
 
   // Per-building results are never asked for twice: a small cache of its own,
   // where what does not depend on the building (profiles) is computed once.
@@ -123,6 +124,7 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
   py::list out(buildings.size());
   for (std::size_t i = 0; i < buildings.size(); ++i) {
     buildings[i].wrapped = to_list(buildings[i].meshes);
+    buildings[i].feature = feature_of[i] ? py::object(feature_to_python(*feature_of[i])) : py::object(py::none());
     out[i] = py::cast(std::move(buildings[i]));
   }
   return out;
@@ -139,6 +141,11 @@ void bind_batch(py::module_& m) {
       .def_readonly("reason", &Building::reason, "Why it was refused or failed, as procex batch reports it.")
       .def_readonly("warnings", &Building::warnings)
       .def_readonly("meshes", &Building::wrapped, "Its meshes (Mesh), named by building id; empty unless ok.")
+      .def_readonly("feature", &Building::feature,
+                    "The feature as it was evaluated, a GeoJSON Feature dict: its id, its properties (with party_edges "
+                    "and street_edges when the recipe reads them and procex found them), its outline in the batch's "
+                    "frame (a file's coordinates projected as procex batch projects them). "
+                    "Recipe.evaluate(footprint=feature) makes the same meshes again. None when it could not be read.")
       .def("__repr__", [](const Building& b) {
         return "<procex.Building " + b.id + " " + b.status + ", " + std::to_string(py::len(b.wrapped)) + " meshes>";
       });

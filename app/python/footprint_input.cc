@@ -85,6 +85,33 @@ GeoJsonFeature feature_from_python(py::handle footprint) {
   return std::move(c.features.front());
 }
 
+py::dict feature_to_python(const GeoJsonFeature& f) {
+  // GeoJSON rings repeat their first point at the end; the reader dropped it.
+  auto ring = [](const std::vector<glm::dvec2>& loop) {
+    py::list points;
+    for (const glm::dvec2& p : loop) points.append(py::make_tuple(p.x, p.y));
+    if (!loop.empty()) points.append(py::make_tuple(loop.front().x, loop.front().y));
+    return points;
+  };
+  py::list polygons;
+  for (std::size_t i = 0; i < f.loops.size(); ++i) {
+    const std::size_t polygon = i < f.polygon_of_loop.size() ? f.polygon_of_loop[i] : 0;
+    while (py::len(polygons) <= polygon) polygons.append(py::list());
+    polygons[polygon].cast<py::list>().append(ring(f.loops[i]));
+  }
+  py::dict geometry;
+  geometry["type"] = py::len(polygons) == 1 ? "Polygon" : "MultiPolygon";
+  geometry["coordinates"] = py::len(polygons) == 1 ? py::object(polygons[0]) : py::object(polygons);
+  py::dict properties;
+  for (const auto& [name, text] : f.properties) properties[py::str(name)] = from_json_text(text);
+  py::dict feature;
+  feature["type"] = "Feature";
+  feature["id"] = f.id;
+  feature["properties"] = properties;
+  feature["geometry"] = geometry;
+  return feature;
+}
+
 GeoJsonCollection collection_from_python(py::handle footprints) {
   if (is_path(footprints)) {
     const std::string path = py::str(py::module_::import("os").attr("fspath")(footprints));

@@ -16,6 +16,11 @@ namespace procex::python {
 // One footprint: a Feature or geometry dict, or a sequence of loops.
 GeoJsonFeature feature_from_python(pybind11::handle footprint);
 
+// The inverse: f as a GeoJSON Feature dict (its id, its properties as JSON
+// values, its loops as a Polygon or MultiPolygon in the frame they were read
+// into), which feature_from_python reads back to the same feature.
+pybind11::dict feature_to_python(const GeoJsonFeature& f);
+
 // Many: a path, a FeatureCollection dict, or a sequence of what feature_from_python takes.
 // Features that cannot be read are in the result's errors (a batch reports them and goes on).
 GeoJsonCollection collection_from_python(pybind11::handle footprints);

@@ -12,6 +12,7 @@ import collections
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 
@@ -316,4 +317,31 @@ for o in buildings:
     check(o.procex.recipe == city and o.procex.feature, f"{o.name} does not remember its recipe and feature")
     check(check_surface(o, o.name) == want["faces_per_tag"].get("wall", 0), f"{o.name}: not every wall checked")
 print(f"procex add-on: {len(buildings)} buildings imported")
+
+# ---- a building re-evaluated on its own (as after a parameter change) is the building of the batch:
+# its feature keeps the party walls procex found among its neighbours
+from procex_blender import parameters  # noqa: E402
+
+terraced = [o for o in buildings if json.loads(o["party_edges"])]
+check(len(terraced) >= 5, f"{len(terraced)} buildings of the block have party walls")
+for o in terraced:
+    before = measure(o)
+    parameters.evaluate(o)
+    check(o.procex.error == "", o.procex.error)
+    same(measure(o), before, f"{o.name} re-evaluated alone")
+
+# ---- a batch from a GeoPackage (GDAL's ogr2ogr writes it): the same buildings, the attributes as GDAL read them
+gpkg = os.path.join(tempfile.mkdtemp(), "block_gpkg.gpkg")
+subprocess.run(["ogr2ogr", "-a_srs", "EPSG:32632", gpkg, block], check=True)  # metres, as the GeoJSON
+check(bpy.ops.import_scene.procex_batch(filepath=gpkg, recipe=city) == {"FINISHED"}, "GeoPackage batch import failed")
+from_gpkg = [o for o in bpy.data.collections["block_gpkg"].objects if not o.get("procex_placed")]
+check(sorted(o.name.split(".")[0] for o in from_gpkg) == sorted(stored["buildings"]),
+      f"GeoPackage buildings: {sorted(o.name for o in from_gpkg)}")
+for o in from_gpkg:
+    name = o.name.split(".")[0]  # Blender's .001: the GeoJSON batch's objects have the names already
+    want = stored["buildings"][name]
+    close(measure(o)["volume"], want["volume"], 1e-5 * want["volume"], f"{name} from the GeoPackage: volume")
+    for key, value in features[name]["properties"].items():
+        if value is not None:
+            check(o[key] == value, f"{name} from the GeoPackage: custom property {key} = {o.get(key)!r}, want {value!r}")
 print("procex add-on test: ok")

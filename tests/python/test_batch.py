@@ -49,6 +49,29 @@ def test_a_placed_mesh_is_one_object_over_the_batch():
     assert windows[0].face_offsets[-1] == len(windows[0].face_indices) > 0
 
 
+def test_a_building_evaluates_again_from_its_feature():
+    """Building.feature is the feature as the batch evaluated it, party and
+    street edges included: evaluating it alone (as the Blender add-on does
+    after a parameter change) makes the same mesh. Without the party edges
+    the terraced buildings of the block come out with other faces."""
+    r = city()
+    buildings = procex.batch(r, BLOCK)
+    file_features = {f["id"]: f for f in json.loads(BLOCK.read_text())["features"]}
+    with_party_walls = 0
+    for b in buildings:
+        f = b.feature
+        assert f["type"] == "Feature" and f["id"] == b.id
+        for key, value in file_features[b.id]["properties"].items():
+            assert f["properties"][key] == value, (b.id, key)
+        with_party_walls += bool(f["properties"]["party_edges"])
+        (again,) = r.evaluate(footprint=f)
+        (mesh,) = b.meshes
+        np.testing.assert_array_equal(again.vertices, mesh.vertices, err_msg=b.id)
+        np.testing.assert_array_equal(again.face_indices, mesh.face_indices, err_msg=b.id)
+        assert [again.tags[t] for t in again.face_tags] == [mesh.tags[t] for t in mesh.face_tags], b.id
+    assert with_party_walls >= 5  # the block's terraces: the check above sees their party walls
+
+
 def test_progress_counts_up_to_total():
     seen = []
     procex.batch(city(), BLOCK, jobs=2, progress=lambda done, total: seen.append((done, total)))
@@ -70,7 +93,7 @@ def test_features_as_dicts_and_a_bad_one_is_refused():
     buildings = procex.batch(city(), collection)
     assert [b.status for b in buildings].count("ok") == 17
     bad = buildings[3]
-    assert bad.status == "refused" and "coordinates" in bad.reason and bad.meshes == []
+    assert bad.status == "refused" and "coordinates" in bad.reason and bad.meshes == [] and bad.feature is None
 
 
 def test_failing_building_does_not_stop_others():
@@ -156,3 +179,6 @@ def test_any_footprint_file_procex_batch_reads(tmp_path):
         buildings = procex.batch(city(), tmp_path / name)
         assert all(b.status == "ok" for b in buildings), name
         assert {b.id: b.meshes[0].vertices.shape for b in buildings} == want, name
+        # the feature's attributes as GDAL read them (a Shapefile cuts field names to 10 characters)
+        properties = buildings[0].feature["properties"]
+        assert properties["building"] == "yes" and properties["area_m2"] == 304.86, (name, properties)

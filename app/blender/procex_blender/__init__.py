@@ -3,8 +3,9 @@
 File > Import > procex recipe (.pxg) evaluates a recipe into a mesh object whose
 exposed parameters appear in the sidebar (View3D > Sidebar > procex); changing
 one re-evaluates the recipe (only the nodes the change reaches) and replaces the
-mesh in place. File > Import > procex batch (.geojson) evaluates a recipe once
-per footprint: one object per building, named by its id, the feature's
+mesh in place. File > Import > procex batch evaluates a recipe once per
+footprint of any file procex batch reads (GeoJSON, Shapefile, GeoPackage,
+FlatGeobuf, OSM): one object per building, named by its id, the feature's
 attributes as custom properties, placed meshes (windows, chimneys) as linked
 duplicates, one material per face tag (a Material node's look: a Principled BSDF,
 its texture scaled to metres per tile), procex's texture coordinates (metres) as the

@@ -1,5 +1,5 @@
-"""File > Import > procex batch (.geojson): a recipe over every footprint of a
-GeoJSON file, as procex batch runs it (in parallel, outside Python's lock)."""
+"""File > Import > procex batch: a recipe over every footprint of a footprint
+file, as procex batch runs it (in parallel, outside Python's lock)."""
 import json
 import os
 
@@ -16,19 +16,21 @@ def _property(value):
     return json.dumps(value)
 
 
-def import_batch(context, geojson, recipe_path, jobs=0):
+def import_batch(context, footprints, recipe_path, jobs=0):
     """One object per building (named by its id) in a new collection named after
-    the file; returns (collection, the procex.Building list)."""
-    with open(geojson, encoding="utf-8") as f:
-        features = json.load(f).get("features", [])
+    the file; returns (collection, the procex.Building list). The footprints are
+    any file procex batch reads (GeoJSON, Shapefile, GeoPackage, FlatGeobuf,
+    OSM): each building keeps the feature as procex evaluated it (its outline in
+    the batch's frame, its party and street edges), so a parameter change
+    re-evaluates the same building."""
     wm = context.window_manager
-    wm.progress_begin(0, max(len(features), 1))
+    wm.progress_begin(0, 1)
     try:
-        buildings = engine.procex.batch(engine.recipe(recipe_path), geojson, jobs=jobs,
-                                        progress=lambda done, total: wm.progress_update(done))
+        buildings = engine.procex.batch(engine.recipe(recipe_path), footprints, jobs=jobs,
+                                        progress=lambda done, total: wm.progress_update(done / total))
     finally:
         wm.progress_end()
-    collection = bpy.data.collections.new(os.path.splitext(os.path.basename(geojson))[0])
+    collection = bpy.data.collections.new(os.path.splitext(os.path.basename(footprints))[0])
     context.scene.collection.children.link(collection)
     shared = {}  # placed meshes: one Blender mesh each, shared by every building
     for b in buildings:
@@ -36,22 +38,21 @@ def import_batch(context, geojson, recipe_path, jobs=0):
             continue
         obj = bpy.data.objects.new(b.id, mesh_data.fill(bpy.data.meshes.new(b.id), b.meshes))
         collection.objects.link(obj)
-        feature = features[b.index]
-        for key, value in (feature.get("properties") or {}).items():
+        for key, value in b.feature["properties"].items():
             if value is not None:
                 obj[key] = _property(value)
-        parameters.load(obj, recipe_path, feature)
+        parameters.load(obj, recipe_path, b.feature)
         mesh_data.place(obj, b.meshes, shared)
     return collection, buildings
 
 
 class PROCEX_OT_import_batch(bpy.types.Operator, ProcexImporter):
-    """Evaluate a procex recipe for every footprint of a GeoJSON file: one object per building"""
+    """Evaluate a procex recipe for every footprint of a footprint file: one object per building"""
 
     bl_idname = "import_scene.procex_batch"
     bl_label = "Import procex batch"
     filename_ext = ".geojson"
-    filter_glob: bpy.props.StringProperty(default="*.geojson;*.json", options={"HIDDEN"})
+    filter_glob: bpy.props.StringProperty(default="*.geojson;*.json;*.shp;*.gpkg;*.fgb;*.osm;*.pbf", options={"HIDDEN"})
     recipe: bpy.props.StringProperty(name="Recipe", subtype="FILE_PATH",
                                      description="The .pxg recipe evaluated for every footprint")
     jobs: bpy.props.IntProperty(name="Threads", default=0, min=0, description="0: one per core")
@@ -66,7 +67,7 @@ class PROCEX_OT_import_batch(bpy.types.Operator, ProcexImporter):
 
 
 def menu(self, context):
-    self.layout.operator(PROCEX_OT_import_batch.bl_idname, text="procex batch (.geojson + .pxg)")
+    self.layout.operator(PROCEX_OT_import_batch.bl_idname, text="procex batch (footprints + .pxg)")
 
 
 OPERATOR = PROCEX_OT_import_batch
