@@ -1,7 +1,9 @@
 // Property checks on a sweep Surface, independent of OpenMesh: every directed
 // boundary edge meets its reverse exactly once (closed and consistently
 // oriented), every face is planar, and the enclosed volume by the divergence
-// theorem. Used to test the engine on its own terms.
+// theorem. Used to test the engine on its own terms. Positions are taken
+// relative to the surface's first vertex: far from the origin (a building at
+// (5e5, 5e6)) cross products of raw coordinates cancel to millimetres.
 #pragma once
 
 #include <cmath>
@@ -27,20 +29,22 @@ struct SurfaceCheck {
 inline SurfaceCheck check_surface(const Surface& s, double tolerance) {
   SurfaceCheck r;
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  const glm::dvec3 origin = s.vertices.empty() ? glm::dvec3{0.0} : s.vertices.front();
+  auto at = [&](std::uint32_t v) { return s.vertices[v] - origin; };
   for (std::size_t fi = 0; fi < s.faces.size(); ++fi) {
     const auto& f = s.faces[fi];
     glm::dvec3 normal{0.0}, centroid{0.0};
     std::size_t count = 0;
     for (const auto& loop : f.loops) {
       for (std::size_t i = 0; i < loop.size(); ++i) {
-        const glm::dvec3 a = s.vertices[loop[i]], b = s.vertices[loop[(i + 1) % loop.size()]];
+        const glm::dvec3 a = at(loop[i]), b = at(loop[(i + 1) % loop.size()]);
         normal += glm::cross(a, b);
         centroid += a;
         ++count;
         ++directed[{loop[i], loop[(i + 1) % loop.size()]}];
         // Tetrahedra (origin, loop[0], a, b): positive for outward-facing faces.
-        r.volume += glm::dot(a, glm::cross(b, s.vertices[loop[0]])) / 6.0;
-        r.max_height = std::max(r.max_height, a.z);
+        r.volume += glm::dot(a, glm::cross(b, at(loop[0]))) / 6.0;
+        r.max_height = std::max(r.max_height, s.vertices[loop[i]].z);
       }
     }
     centroid /= static_cast<double>(count);
@@ -53,7 +57,7 @@ inline SurfaceCheck check_surface(const Surface& s, double tolerance) {
     normal /= len;
     for (const auto& loop : f.loops)
       for (auto v : loop)
-        if (std::abs(glm::dot(s.vertices[v] - centroid, normal)) > tolerance) {
+        if (std::abs(glm::dot(at(v) - centroid, normal)) > tolerance) {
           r.planar = false;
           r.problem += "face " + std::to_string(fi) + " (edge " + std::to_string(f.source_edge) + ") not planar; ";
           break;

@@ -94,6 +94,19 @@ TEST(Sweep, SquareWithSquareHole) {
   EXPECT_NEAR(r.volume, 63.0, 1e-7);
 }
 
+// The same ring far from the origin, where a survey plan in UTM lies: its
+// volume and flat faces come out as at the origin, up to the last bits of
+// coordinates in the millions (relative 1e-16 of 5e6 m).
+TEST(Sweep, SquareWithSquareHoleFarFromTheOrigin) {
+  const glm::dvec2 far{512345.678, 5012345.678};
+  Pts outer = rect(0, 0, 10, 10), hole = reversed(rect(3, 3, 4, 4));
+  for (Pts* loop : {&outer, &hole})
+    for (glm::dvec2& p : *loop) p += far;
+  auto r = run(make_footprint({outer, hole}, 45));
+  EXPECT_NEAR(r.max_height, 1.5, 1e-8);
+  EXPECT_NEAR(r.volume, 63.0, 1e-6);
+}
+
 TEST(Sweep, IslandInsideHole) {
   auto r = run(make_footprint({rect(0, 0, 20, 20), reversed(rect(4, 4, 12, 12)), rect(8, 8, 4, 4)}, 45));
   EXPECT_NEAR(r.max_height, 2.0, 1e-9);
