@@ -4,11 +4,12 @@
 // instance's tag if placed with one,
 // material (its name, base colour, roughness, metalness, whether it shows a
 // texture and the texture's repeat), triangle
-// count, whether it has normals and texture coordinates,
+// count, whether it has normals (and how far from flat they are) and texture
+// coordinates,
 // and its world bounds (three.js is +Y up, as glTF). Exit code 1 if loading fails.
 import { readFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import { Box3 } from 'three';
+import { Box3, Vector3 } from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 
 // Node.js has no image decoding of a browser's: GLTFLoader's own path for an
@@ -20,6 +21,26 @@ globalThis.createImageBitmap = async (blob) => {
   const png = PNG.sync.read(Buffer.from(await blob.arrayBuffer()));
   return { width: png.width, height: png.height, data: png.data, close() {} };
 };
+
+// How far a primitive's normals are from flat normals facing as its triangles
+// wind (counter-clockwise seen from outside, as glTF says): the largest
+// 1 - cos(angle) between a corner's normal and its triangle's, 2 where a
+// corner has no normal. Triangles under 0.01 m² are left out: a sliver's own
+// direction, from float32 positions, is off by up to a degree.
+function normalError(geometry) {
+  const pos = geometry.attributes.position, normal = geometry.attributes.normal, index = geometry.index;
+  if (!normal || !index) return 2;
+  const p = [new Vector3(), new Vector3(), new Vector3()], n = new Vector3(), face = new Vector3();
+  let worst = 0;
+  for (let t = 0; t < index.count; t += 3) {
+    for (let k = 0; k < 3; ++k) p[k].fromBufferAttribute(pos, index.getX(t + k));
+    face.subVectors(p[1], p[0]).cross(n.subVectors(p[2], p[0]));
+    if (face.length() / 2 < 0.01) continue;
+    face.normalize();
+    for (let k = 0; k < 3; ++k) worst = Math.max(worst, 1 - n.fromBufferAttribute(normal, index.getX(t + k)).normalize().dot(face));
+  }
+  return worst;
+}
 
 const file = process.argv[2];
 const buffer = readFileSync(file);
@@ -40,6 +61,7 @@ new GLTFLoader().parse(data, '', (gltf) => {
       triangles: o.geometry.index ? o.geometry.index.count / 3 : 0,
       vertices: o.geometry.attributes.position.count,
       normals: o.geometry.attributes.normal !== undefined,
+      normal_error: normalError(o.geometry),
       uvs: o.geometry.attributes.uv !== undefined,
       // The _TAG attribute (three.js lower-cases it) named through the asset's tag list.
       tag_attribute: o.geometry.attributes._tag

@@ -8,12 +8,15 @@
 #include <cstdio>
 #include <fstream>
 #include <filesystem>
+#include <algorithm>
 #include <array>
 #include <map>
 #include <optional>
 #include <set>
 #include <sstream>
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -102,12 +105,19 @@ class GltfExport : public ::testing::Test {
   fs::path dir_;
 };
 
+// Every recipe in samples/ (city.pxg, whose footprint is a graph input, as
+// procex batch writes it for the sample block), as procex eval writes it.
 TEST_F(GltfExport, EverySampleValidatesWithoutErrors) {
   std::vector<fs::path> files = {city()};
-  for (const char* name : {"house", "gallery_courtyard", "gallery_tower"}) {
-    const fs::path out = dir_ / (std::string(name) + ".glb");
+  std::vector<fs::path> recipes;
+  for (const auto& entry : fs::directory_iterator(kRoot / "samples"))
+    if (entry.path().extension() == ".pxg" && entry.path().stem() != "city") recipes.push_back(entry.path());
+  std::sort(recipes.begin(), recipes.end());
+  ASSERT_GE(recipes.size(), 20u) << "samples/ lost its recipes";
+  for (const fs::path& recipe : recipes) {
+    const fs::path out = dir_ / (recipe.stem().string() + ".glb");
     std::ostringstream o, e;
-    ASSERT_EQ(run_eval({kRoot / "samples" / (std::string(name) + ".pxg"), out, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    ASSERT_EQ(run_eval({recipe, out, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << recipe << ": " << e.str();
     files.push_back(out);
   }
   for (const fs::path& f : files) {
@@ -142,6 +152,7 @@ TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
     EXPECT_EQ(m["tag"], m["material"]);
     EXPECT_EQ(m["tag_attribute"], json::array({m["tag"]}));  // every vertex's _TAG names the primitive's tag
     EXPECT_TRUE(m["normals"].get<bool>());
+    EXPECT_LT(m["normal_error"].get<double>(), 1e-6) << "flat normals, outward as the triangles wind";
     EXPECT_GT(m["triangles"].get<int>(), 0);
   }
   EXPECT_EQ(tags, (std::set<std::string>{"base", "cap", "gable", "party", "roof", "wall"}));
@@ -202,6 +213,58 @@ TEST_F(GltfExport, ThreeJsSeesBuildingsUprightAtTheirOrigins) {
     EXPECT_NEAR(box.second[1], at("max", 2), 1e-3);
     EXPECT_NEAR(box.first[2], -at("max", 1), 1e-3);  // z south
     EXPECT_NEAR(box.second[2], -at("min", 1), 1e-3);
+  }
+}
+
+// Millimetres at UTM coordinates: the sample block moved to (500 km east,
+// 4,840 km north), where float32 steps by 0.5 m, is the same block in
+// three.js (its matrices in doubles), building for building to the
+// millimetre, moved by exactly that much: each node's translation holds the
+// building's origin in double precision, its vertices are relative to it.
+TEST_F(GltfExport, ThreeJsKeepsMillimetresAtUtmCoordinates) {
+  const glm::dvec2 offset(500000.0, 4840000.0);
+  json block = json::parse(std::ifstream(kRoot / "samples" / "footprints" / "sample_block.geojson"));
+  block.erase("projection");  // its frame no longer
+  for (json& f : block["features"]) {
+    ASSERT_EQ(f["geometry"]["type"], "Polygon");
+    for (json& ring : f["geometry"]["coordinates"])
+      for (json& p : ring) p = json::array({p[0].get<double>() + offset.x, p[1].get<double>() + offset.y});
+  }
+  std::ofstream(dir_ / "block_far.geojson") << block.dump();
+  // Each building's bounds as three.js sees them (x east, y up, z south).
+  const auto bounds = [&](const fs::path& footprints, const std::string& name) {
+    BatchCommandOptions o;
+    o.recipe = kRoot / "samples" / "city.pxg";
+    o.footprints = footprints;
+    o.output = dir_ / (name + ".glb");
+    o.progress = false;
+    o.lod = 2;
+    std::ostringstream out, err;
+    EXPECT_EQ(run_batch(o, out, err), 0) << err.str();
+    std::map<std::string, std::pair<glm::dvec3, glm::dvec3>> seen;
+    const json loaded = node_json("load_gltf_three.mjs", o.output, 0);
+    for (const json& m : loaded["meshes"]) {
+      auto [it, added] = seen.try_emplace(m["building"].get<std::string>());
+      for (int k = 0; k < 3; ++k) {
+        const double lo = m["min"][k], hi = m["max"][k];
+        it->second.first[k] = added ? lo : std::min(it->second.first[k], lo);
+        it->second.second[k] = added ? hi : std::max(it->second.second[k], hi);
+      }
+    }
+    return seen;
+  };
+  const auto near = bounds(kRoot / "samples" / "footprints" / "sample_block.geojson", "near");
+  const auto far = bounds(dir_ / "block_far.geojson", "far");
+  ASSERT_EQ(near.size(), 18u);
+  ASSERT_EQ(far.size(), near.size());
+  const glm::dvec3 moved(offset.x, 0.0, -offset.y);
+  for (const auto& [id, box] : near) {
+    SCOPED_TRACE(id);
+    ASSERT_TRUE(far.count(id));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(far.at(id).first[k], box.first[k] + moved[k], 1e-3) << "axis " << k;
+      EXPECT_NEAR(far.at(id).second[k], box.second[k] + moved[k], 1e-3) << "axis " << k;
+    }
   }
 }
 
