@@ -1,8 +1,8 @@
 # Imports mesh files into Blender (headless) as an artist would, with the
 # importers' default settings, and writes what Blender made of each as JSON:
 # per mesh object its name, world bounds (Blender's Z up), UV maps, material
-# names and looks (base colour, image), and the highest point of the faces
-# of each material.
+# names and looks (base colour, image), the highest point of the faces of
+# each material, and its custom properties (what a .glb node's extras became).
 #
 #   blender -b --factory-startup --python tools/blender_import.py -- OUT.json FILE.glb FILE.obj ...
 import json
@@ -38,6 +38,15 @@ def look(material):
     return {'colour': colour, 'image': image}
 
 
+def plain(value):
+    """A custom property as JSON: groups and arrays as dicts and lists."""
+    if hasattr(value, 'to_dict'):
+        return value.to_dict()
+    if hasattr(value, 'to_list'):
+        return value.to_list()
+    return value
+
+
 def describe():
     objects = []
     for o in bpy.context.scene.objects:
@@ -60,6 +69,7 @@ def describe():
             'looks': {s.material.name: look(s.material) for s in o.material_slots if s.material},
             'top_by_material': top_by_material,
             'faces': len(mesh.polygons),
+            'properties': {k: plain(o[k]) for k in o.keys()},
         })
     return objects
 

@@ -3,7 +3,8 @@
 // a technical artist would (tools/blender_import.py reports what it made):
 // every building stands upright (its ridge above its eaves in Blender's Z),
 // is one object named by its id, has a UV map and materials named by tag, and
-// measures what the batch report says to the millimetre.
+// measures what the batch report says to the millimetre; from the .glb it has
+// its feature's attributes as custom properties.
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -56,6 +57,9 @@ TEST_F(BlenderImport, BuildingsStandUprightNamedTexturedAndToTheMillimetre) {
   std::map<std::string, json> want;  // building id -> its entry in the batch report
   for (const json& b : procex["buildings"]) want[b["id"].get<std::string>()] = b;
   ASSERT_EQ(want.size(), 18u);
+  const json block = json::parse(test::read_text(kRoot / "samples" / "footprints" / "sample_block.geojson"));
+  std::map<std::string, json> features;  // building id -> its feature's GeoJSON properties
+  for (const json& f : block["features"]) features[f["id"].get<std::string>()] = f["properties"];
 
   for (const char* file : {"city.glb", "city.obj"}) {
     SCOPED_TRACE(file);
@@ -86,6 +90,20 @@ TEST_F(BlenderImport, BuildingsStandUprightNamedTexturedAndToTheMillimetre) {
       EXPECT_GT(top["wall"].get<double>(), top["base"].get<double>() + 2.0);
       if (top.contains("roof")) {
         EXPECT_GT(top["roof"].get<double>(), top["wall"].get<double>() + 0.5);
+      }
+      // Its attributes: the .glb node's extras are the object's custom
+      // properties, its feature's GeoJSON properties among them (Blender
+      // keeps a boolean as 0 or 1); an .obj has none to give.
+      if (std::string(file) == "city.glb") {
+        const json& p = o["properties"];
+        EXPECT_EQ(p.value("building", ""), name) << p.dump();
+        ASSERT_TRUE(p.contains("properties") && features.count(name)) << p.dump();
+        for (const auto& [key, value] : features.at(name).items()) {
+          SCOPED_TRACE(key);
+          ASSERT_TRUE(p["properties"].contains(key)) << p["properties"].dump();
+          EXPECT_EQ(p["properties"][key], value.is_boolean() ? json(value.get<bool>() ? 1 : 0) : value);
+        }
+        EXPECT_FALSE(p.value("parameters", json::object()).empty()) << "the recipe's exposed values";
       }
     }
     EXPECT_EQ(seen.size(), want.size()) << "one object per building, named by its id";
