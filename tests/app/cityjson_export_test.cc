@@ -4,7 +4,8 @@
 // building a Building with LoD 1 and LoD 2 geometry, its LoD 2 faces as roof,
 // wall and ground surfaces where the batch report puts the building, its
 // LoD 1 block standing on the same ground to the same height; the CRS as
-// metadata.referenceSystem; a CRS with no EPSG code refused before any work.
+// metadata.referenceSystem; soffits as OuterCeilingSurface; a CRS with no
+// EPSG code refused before any work.
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/batch_command.h"
+#include "app/cli/eval_command.h"
 #include "tests/app/command_test.h"
 #include "tests/app/sample_block.h"
 
@@ -124,6 +126,28 @@ TEST_F(CityJsonExport, EveryBuildingLoadsWithSemanticSurfacesWhereTheReportPutsI
     }
     EXPECT_EQ(attributes, f["properties"]) << f["id"];
   }
+}
+
+// Soffits are the OuterCeilingSurface: samples/gallery_overhang.pxg's eaves
+// reach 0.5 m past its 20 x 10 m walls, so under them lies the plan's ring
+// between the roof's outline (its bounds) and the ground, 21 x 11 - 200 m².
+TEST_F(CityJsonExport, SoffitsAreOuterCeilingSurfaces) {
+  EvalCommandOptions o;
+  o.recipe = test::kRepository / "samples" / "gallery_overhang.pxg";
+  o.output = dir_ / "city.city.json";
+  o.export_options.crs = "EPSG:32632";
+  ASSERT_EQ(run_eval(o, out_, err_), 0) << err_.str();
+  const json loaded = load();
+  ASSERT_EQ(loaded["objects"].size(), 1u);
+  const json& lod2 = loaded["objects"].begin().value()["lods"]["2.2"];
+  const double ground = lod2["area"].value("GroundSurface", 0.0);
+  EXPECT_NEAR(ground, 200.0, 1e-6);
+  const double plan = (lod2["max"][0].get<double>() - lod2["min"][0].get<double>()) *
+                      (lod2["max"][1].get<double>() - lod2["min"][1].get<double>());
+  EXPECT_NEAR(plan, 21.0 * 11.0, 1e-6);
+  EXPECT_NEAR(lod2["area"].value("OuterCeilingSurface", 0.0), plan - ground, 1e-6) << lod2.dump();
+  for (const char* type : {"RoofSurface", "WallSurface"}) EXPECT_GT(lod2["triangles"].value(type, 0), 0) << type;
+  EXPECT_FALSE(lod2["triangles"].contains("none"));
 }
 
 TEST_F(CityJsonExport, ACrsWithNoEpsgCodeIsRefusedNamingTargetCrs) {
