@@ -1,7 +1,8 @@
 // File > Export driven by real X input, once per format procex eval writes,
 // each file checked by what reads it: the Khronos glTF validator (.glb),
 // procex's OBJ reader and OpenMesh's PLY reader, GDAL/OGR's Python bindings
-// (.gpkg, tools/read_geopackage.py); and each byte for byte the file
+// (.gpkg, tools/read_geopackage.py), cityjson-threejs-loader (CityJSON 2.0,
+// tools/load_cityjson_three.mjs); and each byte for byte the file
 // `procex eval` writes for the recipe, since both go through one writer.
 // A CRS a GeoPackage cannot take is refused in the status bar, nothing written.
 #include <sys/wait.h>
@@ -87,8 +88,9 @@ TEST(StudioExport, EveryFormatTheCliWritesReadsBackAndMatchesTheCliByteForByte) 
   EXPECT_FALSE(fs::exists(dir / "house.gpkg"));
   // The CRS field keeps what was typed (the refused EPSG:4326) for every
   // format that shows it: the .glb records its CRS too, so it is given again.
-  const auto takes_crs = [](const std::string& extension) { return extension == ".glb" || extension == ".gpkg"; };
-  for (const char* extension : {".glb", ".obj", ".ply", ".gpkg"}) {
+  const auto takes_crs = [](const std::string& extension) { return extension == ".glb" || extension == ".gpkg" || extension == ".json"; };
+  const auto formats = {".glb", ".obj", ".ply", ".gpkg", ".json"};
+  for (const char* extension : formats) {
     map = export_as(studio, map, extension, takes_crs(extension) ? crs : "");
     EXPECT_EQ(map["status"], "exported 1 mesh to " + (dir / "house").string() + extension);
   }
@@ -97,7 +99,7 @@ TEST(StudioExport, EveryFormatTheCliWritesReadsBackAndMatchesTheCliByteForByte) 
 
   // The same bytes as procex eval's.
   fs::create_directories(dir / "cli");
-  for (const char* extension : {".glb", ".obj", ".ply", ".gpkg"}) {
+  for (const char* extension : formats) {
     SCOPED_TRACE(extension);
     const fs::path cli = dir / "cli" / (std::string("house") + extension);
     const auto [code, out] = run(std::string(PROCEX_CLI_EXE) + " eval " + recipe.string() + " -o " + cli.string() +
@@ -130,6 +132,15 @@ TEST(StudioExport, EveryFormatTheCliWritesReadsBackAndMatchesTheCliByteForByte) 
   EXPECT_EQ(layers["buildings"]["features"], 1);
   EXPECT_EQ(layers["surfaces"]["features"].get<std::size_t>(), faces);
   EXPECT_TRUE(layers["buildings"]["crs_same"]);
+
+  const auto [city_code, city_out] = run("node " + (kTools / "load_cityjson_three.mjs").string() + " " + (dir / "house.json").string());
+  ASSERT_EQ(city_code, 0) << city_out;
+  const json city = json::parse(city_out, nullptr, false);
+  ASSERT_FALSE(city.is_discarded()) << city_out;
+  EXPECT_EQ(city["referenceSystem"], "https://www.opengis.net/def/crs/EPSG/0/32632");
+  ASSERT_EQ(city["objects"].size(), 1u);
+  EXPECT_EQ(city["objects"].begin().value()["type"], "Building");
+  EXPECT_GT(city["objects"].begin().value()["lods"]["2.2"]["triangles"].value("RoofSurface", 0), 0);
   fs::remove_all(dir);
 }
 
