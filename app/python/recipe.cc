@@ -106,7 +106,9 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
     if (e.ok) meshes = wrap_all(std::move(e.meshes));
   }
   last_stats_ = std::move(e.stats);
-  if (!e.binding_problems.empty()) raise(ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason());
+  if (!e.binding_problems.empty())
+    throw PythonError{ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason(),
+                      {{"file", file_.string()}, {"feature", feature.id}}, {}, {}, {}, {}};
   warn(file_.string() + ": feature " + feature.id, e.diagnostics);
   if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
   return to_list(meshes);

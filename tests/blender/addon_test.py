@@ -117,6 +117,11 @@ from procex_blender import engine  # noqa: E402
 
 procex = engine.procex
 check(hasattr(bpy.types, "PROCEX_PT_parameters"), "the sidebar panel is not registered")
+from procex_blender import batch_import, recipe_import  # noqa: E402
+
+file_import = bpy.types.TOPBAR_MT_file_import._dyn_ui_initialize()  # the functions drawing File > Import's entries
+check(recipe_import.menu in file_import and batch_import.menu in file_import,
+      "File > Import has no procex recipe or procex batch entry")
 
 # ---- File > Import > procex recipe
 house = os.path.join(samples, "house.pxg")
@@ -316,7 +321,10 @@ for o in buildings:
             check(o[key] == value, f"{o.name}: custom property {key} = {o.get(key)!r}, want {value!r}")
     check(o.procex.recipe == city and o.procex.feature, f"{o.name} does not remember its recipe and feature")
     check(check_surface(o, o.name) == want["faces_per_tag"].get("wall", 0), f"{o.name}: not every wall checked")
-print(f"procex add-on: {len(buildings)} buildings imported")
+windows = [o for o in collection.objects if o.get("procex_placed") and o.data.name.startswith("window")]
+check(len({o.parent.name for o in windows}) > 1, "windows are placed on fewer than two buildings")
+check(len({o.data.name for o in windows}) == 1, f"the buildings' windows are {len({o.data.name for o in windows})} meshes, not one shared")
+print(f"procex add-on: {len(buildings)} buildings imported, {len(windows)} windows sharing one mesh")
 
 # ---- a building re-evaluated on its own (as after a parameter change) is the building of the batch:
 # its feature keeps the party walls procex found among its neighbours

@@ -1,5 +1,7 @@
 """Errors arrive as procex.Error subclasses carrying what the command line
 prints for the same problem."""
+import json
+
 import pytest
 
 import procex
@@ -63,3 +65,18 @@ def test_bad_footprint_dict():
     with pytest.raises(procex.FootprintError, match="footprint"):
         r.evaluate(footprint={"type": "Feature", "properties": {}, "geometry": {"type": "Polygon",
                                                                                "coordinates": [[[0, 0], [1]]]}})
+
+
+def test_refused_feature_names_recipe_and_feature_as_the_cli(tmp_path):
+    bowtie = {"type": "Feature", "id": "b7", "properties": {},
+              "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 10], [10, 0], [0, 10], [0, 0]]]}}
+    r = procex.Recipe.load(SAMPLES / "city.pxg")
+    with pytest.raises(procex.FootprintError) as e:
+        r.evaluate(footprint=bowtie)
+    assert e.value.feature == "b7" and e.value.file == str(SAMPLES / "city.pxg")
+    footprints = tmp_path / "bowtie.geojson"
+    footprints.write_text(json.dumps({"type": "FeatureCollection", "features": [bowtie]}))
+    code, _, err = cli("eval", SAMPLES / "city.pxg", "--footprints", footprints, "--feature", "b7", "-o", tmp_path / "x.obj")
+    assert code == 2
+    reason = err.strip().split("refused: ", 1)[1]  # after "procex eval: bowtie.geojson: feature b7: refused: "
+    assert str(e.value).endswith(f"feature b7: {reason}") and "intersects itself" in reason

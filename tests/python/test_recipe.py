@@ -30,6 +30,10 @@ def test_house_exposed_parameters_come_from_declarations():
     assert pitch.type == "float" and pitch.unit == "deg"
     assert pitch.min is not None and pitch.max is not None and pitch.min < pitch.value < pitch.max
     assert pitch.node_type and pitch.doc
+    for p in exposed.values():  # the house exposes its nodes' parameters under their own names
+        declared = {d.name: d for d in procex.node_types()[p.node_type].params}[p.name]
+        assert p.default == declared.default and (p.min, p.max, p.unit) == (declared.min, declared.max, declared.unit)
+    assert pitch.default != pitch.value  # the declaration's default, not the value the recipe sets
     shape = exposed["shape"]
     assert shape.type == "enum" and shape.value in shape.choices and len(shape.choices) >= 2
     assert r.get("pitch") == pitch.value
