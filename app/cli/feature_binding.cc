@@ -19,13 +19,6 @@
 namespace procex {
 namespace {
 
-// GeoJSON property names as graph names: [a-z0-9_], lower case.
-std::string identifier(const std::string& property) {
-  std::string out;
-  for (unsigned char c : property) out += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_';
-  return out;
-}
-
 bool names_setting(const Graph& graph, const std::string& key) {
   return graph.input_index(key).has_value() ||
          std::any_of(graph.exposed_params().begin(), graph.exposed_params().end(),
@@ -33,6 +26,12 @@ bool names_setting(const Graph& graph, const std::string& key) {
 }
 
 }  // namespace
+
+std::string setting_name(const std::string& property) {
+  std::string out;
+  for (unsigned char c : property) out += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_';
+  return out;
+}
 
 namespace {
 
@@ -132,7 +131,7 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
   if (graph.input_index("building_id")) bindings["building_id"] = Value::make(f.id);
   std::map<std::string, std::string> property_of;  // setting -> the property that set it
   for (const auto& [name, json_text] : f.properties) {
-    const std::string key = identifier(name);
+    const std::string key = setting_name(name);
     if (key == "footprint" || key == "building_id" || !names_setting(graph, key)) continue;
     if (const auto [it, first] = property_of.try_emplace(key, name); !first) {
       problems.push_back("properties '" + it->second + "' and '" + name + "' both set '" + key +

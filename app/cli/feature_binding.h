@@ -70,6 +70,9 @@ std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std:
 // feature rather than evaluate it with the recipe's defaults. Properties that
 // name nothing in the recipe are ignored.
 std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOptions& options, const GeoJsonFeature& f);
+// The parameter or graph input name a feature property sets, if the recipe has
+// one of that name: the property's name lower-cased, other than [a-z0-9] as '_'.
+std::string setting_name(const std::string& property);
 
 struct MeshRecipe;
 

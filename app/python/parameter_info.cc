@@ -39,6 +39,8 @@ void bind_parameter(py::module_& m) {
       .def_readonly("choices", &Parameter::choices, "The choices of an enum, else empty.")
       .def_readonly("node", &Parameter::node, "The id of the recipe's node it belongs to (exposed parameters).")
       .def_readonly("node_type", &Parameter::node_type, "That node's type (exposed parameters).")
+      .def_readonly("property", &Parameter::property,
+                    "Recipe.exposed_for: the footprint's property that set it (its value wins over set()), else None.")
       .def("__repr__", [](const Parameter& p) {
         return "<procex.Parameter " + p.name + ": " + p.type + " = " + std::string(py::repr(p.value)) +
                (p.unit.empty() ? "" : " " + p.unit) + ">";

@@ -16,6 +16,7 @@ struct Parameter {
   std::string name, type, unit, doc, node, node_type;
   pybind11::object value, default_value, min, max;
   std::vector<std::string> choices;
+  pybind11::object property = pybind11::none();  // the feature property that set it (Recipe.exposed_for)
 };
 
 // decl's description with `value` (empty: its default); node and node_type left empty.

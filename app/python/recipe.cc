@@ -79,6 +79,26 @@ MeshRecipe Recipe::with(py::handle attributes) const {
   return r;
 }
 
+void Recipe::refuse(const GeoJsonFeature& feature, const FeatureEvaluation& e) const {
+  throw PythonError{ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason(),
+                    {{"file", file_.string()}, {"feature", feature.id}}, {}, {}, {}, {}};
+}
+
+std::vector<Parameter> Recipe::exposed_for(py::handle footprint) const {
+  const GeoJsonFeature feature = feature_from_python(footprint);
+  Graph graph = recipe_.graph;
+  Bindings bindings = recipe_.bindings;
+  EvalOptions options = recipe_.options;
+  FeatureEvaluation refused;
+  refused.binding_problems = bind_feature(graph, bindings, options, feature);
+  if (!refused.binding_problems.empty()) refuse(feature, refused);
+  std::vector<Parameter> out = exposed(graph);
+  for (const auto& [property, value] : feature.properties)
+    for (Parameter& p : out)
+      if (p.name == setting_name(property)) p.property = py::str(property);
+  return out;
+}
+
 py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
   // The recipe itself unless attributes change it: copying its graph costs about as much as evaluating the house.
   std::optional<MeshRecipe> changed;
@@ -106,9 +126,7 @@ py::list Recipe::evaluate(py::handle footprint, py::handle attributes) {
     if (e.ok) meshes = wrap_all(std::move(e.meshes));
   }
   last_stats_ = std::move(e.stats);
-  if (!e.binding_problems.empty())
-    throw PythonError{ErrorKind::Footprint, file_.string() + ": feature " + feature.id + ": " + e.reason(),
-                      {{"file", file_.string()}, {"feature", feature.id}}, {}, {}, {}, {}};
+  if (!e.binding_problems.empty()) refuse(feature, e);
   warn(file_.string() + ": feature " + feature.id, e.diagnostics);
   if (!e.ok) raise_evaluation(file_, std::move(e.diagnostics));
   return to_list(meshes);
@@ -151,6 +169,10 @@ void bind_recipe(py::module_& m) {
       .def_property_readonly("path", [](const Recipe& r) { return r.file(); })
       .def_property_readonly("exposed", [](const Recipe& r) { return exposed(r.mesh_recipe().graph); },
                              "The exposed parameters: name, type, value, default, min, max, unit, doc, choices.")
+      .def("exposed_for", &Recipe::exposed_for, py::arg("footprint"),
+           "The exposed parameters as evaluate(footprint=...) binds them: a property of the footprint named like a "
+           "parameter (lower case, other characters as '_') sets it, and Parameter.property names it. "
+           "FootprintError when evaluate() would refuse the footprint.")
       .def_property_readonly("inputs", [](const Recipe& r) { return inputs(r.mesh_recipe().graph); },
                              "The graph inputs (footprint, building_id, ...).")
       .def_property_readonly("outputs", [](const Recipe& r) { return r.mesh_recipe().outputs; },

@@ -11,7 +11,9 @@
 
 #include <pybind11/pybind11.h>
 
+#include "app/cli/feature_binding.h"
 #include "app/cli/recipe_session.h"
+#include "app/python/parameter_info.h"
 #include "graph/cache.h"
 #include "graph/evaluator.h"
 
@@ -31,10 +33,16 @@ class Recipe {
   MeshRecipe with(pybind11::handle attributes) const;
   // The recipe's meshes; raises EvaluationError with the diagnostics.
   pybind11::list evaluate(pybind11::handle footprint, pybind11::handle attributes);
+  // The exposed parameters as evaluating for `footprint` binds them (its
+  // properties set those of the same name); raises FootprintError as evaluate() would.
+  std::vector<Parameter> exposed_for(pybind11::handle footprint) const;
   // What the last evaluate() did per node (computed, cache hit, ...).
   const EvalStats& last_stats() const { return last_stats_; }
 
  private:
+  // FootprintError for a feature bind_feature refused.
+  [[noreturn]] void refuse(const GeoJsonFeature& feature, const FeatureEvaluation& e) const;
+
   std::filesystem::path file_;
   MeshRecipe recipe_;
   ResultCache cache_;

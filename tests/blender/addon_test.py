@@ -338,7 +338,23 @@ for o in terraced:
     check(o.procex.error == "", o.procex.error)
     same(measure(o), before, f"{o.name} re-evaluated alone")
 
-# ---- a batch from a GeoPackage (GDAL's ogr2ogr writes it): the same buildings, the attributes as GDAL read them
+# ---- a parameter the building's feature sets (city.pxg's `building`, from the file's property) shows the
+# feature's value in the panel, and changing it changes the building as procex makes it with that value
+o = next(o for o in terraced if o["building"] != "church")
+kind = o.procex.params["building"]
+check(kind.text_value == o["building"] and kind.property == "building",
+      f"{o.name}: the panel shows building = {kind.text_value!r} (property {kind.property!r}), the feature {o['building']!r}")
+before = measure(o)
+kind.text_value = "church"
+check(o.procex.error == "", o.procex.error)
+church = json.loads(o.procex.feature)
+church["properties"]["building"] = "church"
+want = module_summary(procex.Recipe.load(city).evaluate(footprint=church))
+same(measure(o), want, f"{o.name} as a church")
+check(measure(o)["max"][2] != before["max"][2], f"{o.name}: building = church did not change the building")
+
+# ---- a batch from a GeoPackage (GDAL's ogr2ogr writes it): the same buildings, the attributes as GDAL read them,
+# and the recipe's own values where a feature has none (not the church just set on one building)
 gpkg = os.path.join(tempfile.mkdtemp(), "block_gpkg.gpkg")
 subprocess.run(["ogr2ogr", "-a_srs", "EPSG:32632", gpkg, block], check=True)  # metres, as the GeoJSON
 check(bpy.ops.import_scene.procex_batch(filepath=gpkg, recipe=city) == {"FINISHED"}, "GeoPackage batch import failed")

@@ -222,3 +222,22 @@ def test_material_nodes_give_each_tag_its_look():
                                         "texture": None, "tile_size": 1.0}
     assert set(part.materials) == {"wall", "gable", "roof", "soffit"}
     assert "base" in part.tags
+
+
+def test_exposed_for_a_footprint_as_its_properties_bind_them():
+    r = procex.Recipe.load(SAMPLES / "city.pxg")
+    square = [[0, 0], [12, 0], [12, 12], [0, 12], [0, 0]]
+
+    def feature(properties):
+        return {"type": "Feature", "id": "b1", "properties": properties,
+                "geometry": {"type": "Polygon", "coordinates": [square]}}
+
+    own = {p.name: p for p in r.exposed}["building"]
+    assert own.property is None
+    bound = {p.name: p for p in r.exposed_for(feature({"Building": "church", "height": 9}))}["building"]
+    assert (bound.value, bound.property) == ("church", "Building")  # named as procex batch matches names
+    assert {p.name: p for p in r.exposed_for(feature({}))}["building"].value == own.value
+    assert r.get("building") == own.value  # the recipe itself is left as it was
+    with pytest.raises(procex.FootprintError) as e:  # as evaluate() refuses it
+        r.exposed_for(feature({"building": "church", "BUILDING": "house"}))
+    assert e.value.feature == "b1" and "both set 'building'" in str(e.value)

@@ -24,9 +24,10 @@ def import_batch(context, footprints, recipe_path, jobs=0):
     the batch's frame, its party and street edges), so a parameter change
     re-evaluates the same building."""
     wm = context.window_manager
+    recipe = engine.as_saved(recipe_path)
     wm.progress_begin(0, 1)
     try:
-        buildings = engine.procex.batch(engine.recipe(recipe_path), footprints, jobs=jobs,
+        buildings = engine.procex.batch(recipe, footprints, jobs=jobs,
                                         progress=lambda done, total: wm.progress_update(done / total))
     finally:
         wm.progress_end()
@@ -41,7 +42,7 @@ def import_batch(context, footprints, recipe_path, jobs=0):
         for key, value in b.feature["properties"].items():
             if value is not None:
                 obj[key] = _property(value)
-        parameters.load(obj, recipe_path, b.feature)
+        parameters.load(obj, recipe_path, b.feature, recipe)
         mesh_data.place(obj, b.meshes, shared)
     return collection, buildings
 

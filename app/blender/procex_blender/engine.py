@@ -24,5 +24,12 @@ def recipe(path):
     return r
 
 
+def as_saved(path):
+    """The recipe with its file's own values, loaded anew: the shared one of
+    recipe() carries the settings of the object evaluated last, which neither
+    a new object's panel nor a batch should start from."""
+    return procex.Recipe.load(os.path.abspath(path))
+
+
 def forget():
     _recipes.clear()

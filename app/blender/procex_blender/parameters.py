@@ -42,6 +42,9 @@ class ProcexParameter(bpy.types.PropertyGroup):
     bounds: bpy.props.StringProperty()  # JSON [min, max], null where unbounded: exact, unlike a float property
     unit: bpy.props.StringProperty()
     doc: bpy.props.StringProperty()
+    # The footprint's property that set it (batch buildings): it would win over set(), so the
+    # panel's value is written into that property of the feature before each re-evaluation.
+    property: bpy.props.StringProperty()
 
     def value(self):
         """The value as procex takes it, clamped to the declared range."""
@@ -94,20 +97,23 @@ def _kind(p):
     return "JSON"
 
 
-def load(obj, recipe_path, feature=None):
+def load(obj, recipe_path, feature=None, saved=None):
     """Points obj at a recipe and copies the recipe's exposed parameters (with
-    their declared ranges and units) onto it, without evaluating."""
+    their declared ranges and units) onto it, without evaluating; for a
+    building (feature), with the values its properties give them. saved: the
+    recipe as engine.as_saved loads it, when the caller has it already."""
     global _applying
     settings = obj.procex
-    r = engine.recipe(recipe_path)
+    r = saved or engine.as_saved(recipe_path)
     _applying = True
     try:
         settings.recipe = str(r.path)
         settings.feature = json.dumps(feature) if feature is not None else ""
         settings.params.clear()
-        for p in r.exposed:
+        for p in r.exposed if feature is None else r.exposed_for(feature):
             item = settings.params.add()
             item.name, item.kind, item.unit, item.doc = p.name, _kind(p), p.unit, p.doc
+            item.property = p.property or ""
             item.bounds = json.dumps([p.min, p.max])
             if item.kind == "FLOAT":
                 item.float_value = p.value
@@ -132,9 +138,11 @@ def evaluate(obj):
     start = time.perf_counter()
     settings = obj.procex
     r = engine.recipe(settings.recipe)
+    feature = json.loads(settings.feature) if settings.feature else None
     for p in settings.params:
         r.set(p.name, p.value())
-    feature = json.loads(settings.feature) if settings.feature else None
+        if p.property:
+            feature["properties"][p.property] = p.value()
     parts = r.evaluate(footprint=feature)
     mesh_data.fill(obj.data, parts)
     mesh_data.place(obj, parts)
