@@ -9,7 +9,7 @@ namespace procex::studio {
 
 namespace {
 
-KeyQueue* queue = nullptr;
+InputQueue* queue = nullptr;
 
 void on_key(GLFWwindow*, int key, int, int action, int) {
   if (action != GLFW_REPEAT) queue->key(key, action == GLFW_PRESS);
@@ -19,9 +19,9 @@ void on_character(GLFWwindow*, unsigned int c) { queue->character(c); }
 
 }  // namespace
 
-KeyInput::KeyInput(GLFWwindow* window) : window_(window) {
+KeyInput::KeyInput(GLFWwindow* window, InputQueue& q) : window_(window) {
   assert(!queue && "one KeyInput per process: GLFW's callbacks are plain functions");
-  queue = &queue_;
+  queue = &q;
   glfwSetKeyCallback(window_, on_key);
   glfwSetCharCallback(window_, on_character);
 }
@@ -32,12 +32,11 @@ KeyInput::~KeyInput() {
   queue = nullptr;
 }
 
-void KeyInput::before_new_frame() {
-  static_assert(KeyQueue::kKeys == IM_ARRAYSIZE(ImGuiIO{}.KeysDown), "KeyQueue holds ImGui's keys");
+void KeyInput::before_new_frame(const InputQueue::Frame& f) {
+  static_assert(InputQueue::kKeys == IM_ARRAYSIZE(ImGuiIO{}.KeysDown), "InputQueue holds ImGui's keys");
   ImGuiIO& io = ImGui::GetIO();
-  const KeyQueue::Frame f = queue_.next();
-  for (int k = 0; k < KeyQueue::kKeys; ++k) io.KeysDown[k] = f.down[static_cast<std::size_t>(k)];
-  const auto down = [&](int left, int right) { return f.down[static_cast<std::size_t>(left)] || f.down[static_cast<std::size_t>(right)]; };
+  for (int k = 0; k < InputQueue::kKeys; ++k) io.KeysDown[k] = f.keys[static_cast<std::size_t>(k)];
+  const auto down = [&](int left, int right) { return f.keys[static_cast<std::size_t>(left)] || f.keys[static_cast<std::size_t>(right)]; };
   io.KeyCtrl = down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
   io.KeyShift = down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
   io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);

@@ -27,7 +27,7 @@ std::deque<Stamp> stamps;
 using WireToEvent = Bool (*)(Display*, XEvent*, xEvent*);
 WireToEvent previous_press = nullptr, previous_release = nullptr;
 Display* hooked = nullptr;
-MouseQueue* queue = nullptr;
+InputQueue* queue = nullptr;
 
 Bool stamp_button(Display* display, XEvent* event, xEvent* wire) {
   const bool down = (wire->u.u.type & 0x7f) == ButtonPress;
@@ -51,7 +51,7 @@ void on_button(GLFWwindow* window, int button, int action, int /*mods*/) {
       e.time_ms = static_cast<std::uint32_t>(s.time);
       e.x = static_cast<float>(s.x);
       e.y = static_cast<float>(s.y);
-      queue->push(e);
+      queue->button(e);
       return;
     }
   }
@@ -61,14 +61,14 @@ void on_button(GLFWwindow* window, int button, int action, int /*mods*/) {
   e.time_ms = static_cast<std::uint32_t>(glfwGetTime() * 1e3);
   e.x = static_cast<float>(x);
   e.y = static_cast<float>(y);
-  queue->push(e);
+  queue->button(e);
 }
 
 }  // namespace
 
-MouseInput::MouseInput(GLFWwindow* window) : window_(window) {
+MouseInput::MouseInput(GLFWwindow* window, InputQueue& q) : window_(window) {
   assert(!queue && "one MouseInput per process: Xlib's hook is global");
-  queue = &queue_;
+  queue = &q;
   hooked = glXGetCurrentDisplay();  // the window's, whose context is current (glfw3native.h wants Xrandr's headers)
   if (hooked) {
     previous_press = XESetWireToEvent(hooked, ButtonPress, stamp_button);
@@ -88,18 +88,17 @@ MouseInput::~MouseInput() {
   queue = nullptr;
 }
 
-void MouseInput::before_new_frame() {
+void MouseInput::before_new_frame(const InputQueue::Frame& f) {
   ImGuiIO& io = ImGui::GetIO();
-  frame_ = queue_.next();
-  for (int b = 0; b < MouseQueue::kButtons; ++b) io.MouseDown[b] = frame_.down[static_cast<std::size_t>(b)];
-  if (frame_.at) io.MousePos = ImVec2((*frame_.at)[0], (*frame_.at)[1]);
+  for (int b = 0; b < InputQueue::kButtons; ++b) io.MouseDown[b] = f.buttons[static_cast<std::size_t>(b)];
+  if (f.at) io.MousePos = ImVec2((*f.at)[0], (*f.at)[1]);
 }
 
-void MouseInput::after_new_frame() {
+void MouseInput::after_new_frame(const InputQueue::Frame& f) {
   ImGuiIO& io = ImGui::GetIO();
-  for (int b = 0; b < MouseQueue::kButtons; ++b) {
+  for (int b = 0; b < InputQueue::kButtons; ++b) {
     if (!io.MouseClicked[b]) continue;
-    const int clicks = frame_.clicks[static_cast<std::size_t>(b)];
+    const int clicks = f.clicks[static_cast<std::size_t>(b)];
     io.MouseClickedCount[b] = io.MouseClickedLastCount[b] = static_cast<ImU16>(clicks > 0 ? clicks : 1);
     io.MouseDoubleClicked[b] = io.MouseClickedCount[b] == 2;
   }

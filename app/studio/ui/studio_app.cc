@@ -1021,8 +1021,9 @@ int run_studio(const Options& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder: LayoutSettings keeps it per user
   ImGui::StyleColorsDark();
-  auto mouse = std::make_unique<MouseInput>(window);  // first: ImGui's backend chains its button callback after it
-  auto keys = std::make_unique<KeyInput>(window);     // so too its key and character callbacks
+  InputQueue input;  // mouse and keyboard, in one order
+  auto mouse = std::make_unique<MouseInput>(window, input);  // first: ImGui's backend chains its button callback after it
+  auto keys = std::make_unique<KeyInput>(window, input);     // so too its key and character callbacks
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -1053,7 +1054,7 @@ int run_studio(const Options& options) {
       }
       const auto frame_start = Clock::now();
       // Idle: no busy loop; evaluating: poll the worker; mouse or key changes queued: show the next at once.
-      if (automated || mouse->pending() || keys->pending()) glfwPollEvents();
+      if (automated || input.pending()) glfwPollEvents();
       else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
@@ -1062,10 +1063,11 @@ int run_studio(const Options& options) {
       const bool busy = app.busy();
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
-      mouse->before_new_frame();
-      keys->before_new_frame();
+      const InputQueue::Frame changed = input.next();
+      MouseInput::before_new_frame(changed);
+      KeyInput::before_new_frame(changed);
       ImGui::NewFrame();
-      mouse->after_new_frame();
+      MouseInput::after_new_frame(changed);
       const auto build_start = Clock::now();
       app.frame();
       ImGui::Render();

@@ -368,6 +368,30 @@ TEST(StudioInteraction, KeysPressedDuringASlowFrameAreAllSeen) {
   fs::remove_all(dir);
 }
 
+// Delete, then a click on another node, while the studio is stopped: both
+// arrive in one frame, and the mouse and the keys wait in one queue, so they
+// apply in the order they were made. The selected Extrude is deleted, then
+// the Footprint clicked is selected and stays. (With a queue per device the
+// press and Delete were shown in the same frame, where the canvas handles
+// clicks first: the Footprint was selected, then deleted.)
+TEST(StudioInteraction, AKeyThenAClickInOneFrameApplyInOrder) {
+  const fs::path dir = fresh_dir("key_then_click");
+  const fs::path recipe = copy_test_recipe("house.pxg", dir);
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "2"});
+  json map = canvas_with_the_extrude_selected(studio);
+  ASSERT_TRUE(map["node_positions"].contains("1"));
+  const std::uint64_t rev = revision(map);
+  const auto [fx, fy] = pin(map, 1, 0, true);
+  studio.pause();
+  xdo("key Delete");
+  click({fx - 50, fy});  // on the Footprint's body, left of its output pin
+  studio.resume();
+  map = studio.wait("the Extrude deleted and the Footprint selected",
+                    [&](const json& j) { return revision(j) > rev && j["selected"] == 1 && !j["node_positions"].contains("2"); });
+  EXPECT_TRUE(map["node_positions"].contains("1"));
+  fs::remove_all(dir);
+}
+
 // Tab opens the node search over the canvas; typing filters it and Enter
 // places the best match at the cursor, wired from the selected node. L lays
 // the graph out again (one undo step).

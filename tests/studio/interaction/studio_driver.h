@@ -48,7 +48,7 @@ class Studio {
 
 void xdo(const std::string& args);
 // Presses and releases the keys (xdotool's "ctrl+s"); the studio shows each key change in a frame of
-// its own (editor/key_queue.h), so however slow its frames, none is lost.
+// its own (editor/input_queue.h), so however slow its frames, none is lost.
 void press(const std::string& keys);
 // Whether the map lists node `node`'s pins: a node added while the canvas was drawn is listed a frame before them.
 bool pins_shown(const json& map, std::uint64_t node);
@@ -64,7 +64,7 @@ void click(std::pair<int, int> at);
 std::uint64_t revision(const json& j);
 // Clicks `at` (a widget on `map`, the studio's newest map) once and waits until `done`.
 // The studio shows every press and release in a frame of its own
-// (editor/mouse_queue.h), so a loaded machine makes it slower, never loses the click.
+// (editor/input_queue.h), so a loaded machine makes it slower, never loses the click.
 json click_and_wait(Studio& studio, const json& map, const std::function<std::pair<int, int>(const json&)>& at, const std::string& what,
                  const std::function<bool(const json&)>& done);
 // Double-clicks `at` once and waits until `done`: the studio counts clicks by
