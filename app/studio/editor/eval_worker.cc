@@ -5,6 +5,7 @@
 #include <typeindex>
 
 #include "app/cli/feature_binding.h"
+#include "app/studio/editor/thread_cpu.h"
 #include "nodes/support/mesh_labels.h"
 
 namespace procex::studio {
@@ -102,6 +103,7 @@ bool EvalWorker::wait_idle(std::chrono::milliseconds timeout) const {
 }
 
 void EvalWorker::run() {
+  name_this_thread("procex-eval");  // apart from the UI thread in top, perf and the frame report
   std::unique_lock lock(mutex_);
   for (;;) {
     changed_.wait(lock, [this] { return stop_ || pending_; });

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/studio/editor/thread_cpu.h"
 #include "app/studio/ui/offscreen_image.h"
 
 namespace procex::studio {
@@ -247,6 +248,7 @@ void PreviewView::look_from(float yaw_deg, float pitch_deg) {
 
 void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
   if (mesh == mesh_) return;
+  const double cpu_start = thread_cpu_ms();
   mesh_ = std::move(mesh);
   stale_ = true;
   static const std::vector<float> kNone;
@@ -292,6 +294,7 @@ void PreviewView::set_mesh(std::shared_ptr<const PreviewMesh> mesh) {
     gl_->grid_vertices = static_cast<GLsizei>(grid.size() / 3);
     if (!framed_) frame_all();
   }
+  upload_cpu_ms_ += thread_cpu_ms() - cpu_start;
 }
 
 void PreviewView::frame_all() {
@@ -305,6 +308,7 @@ void PreviewView::render(int width, int height) {
   if (!stale_ && wireframe == drawn_wireframe_ && anchors == drawn_anchors_ && width == gl_->image.width() && height == gl_->image.height()) return;
   stale_ = false;
   ++renders_;
+  const double cpu_start = thread_cpu_ms();
   drawn_wireframe_ = wireframe;
   drawn_anchors_ = anchors;
   GLint previous_fbo = 0, previous_viewport[4];
@@ -351,6 +355,7 @@ void PreviewView::render(int width, int height) {
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
   glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+  render_cpu_ms_ += thread_cpu_ms() - cpu_start;
 }
 
 void PreviewView::draw() {

@@ -36,6 +36,10 @@ class PreviewView {
   // (a new count: the pixels showing it are stale).
   std::uintptr_t texture() const;
   std::uint64_t renders() const { return renders_; }
+  // The UI thread's CPU time spent so far uploading meshes and issuing the
+  // image's drawing (the rasteriser's threads fill it later): the frame report's split.
+  double upload_cpu_ms() const { return upload_cpu_ms_; }
+  double render_cpu_ms() const { return render_cpu_ms_; }
 
   bool wireframe = false;
   bool anchors = true;  // markers at the resolved anchors
@@ -55,6 +59,7 @@ class PreviewView {
   bool stale_ = true;
   bool drawn_wireframe_ = false, drawn_anchors_ = true;
   std::uint64_t renders_ = 0;
+  double upload_cpu_ms_ = 0, render_cpu_ms_ = 0;
 };
 
 }  // namespace procex::studio

@@ -29,6 +29,7 @@
 #include "app/studio/editor/export_meshes.h"
 #include "app/studio/editor/glb_loader.h"
 #include "app/studio/editor/session_files.h"
+#include "app/studio/editor/thread_cpu.h"
 #include "app/studio/ui/back_buffer_age.h"
 #include "app/studio/ui/inspector.h"
 #include "app/studio/ui/layout_settings.h"
@@ -125,6 +126,8 @@ class App {
   Document& doc() { return *doc_; }
   const EvalSnapshot* shown() const { return shown_.get(); }
   const PreviewView& preview() const { return *preview_; }
+  double preview_upload_cpu_ms() const { return preview_ ? preview_->upload_cpu_ms() : 0.0; }
+  double preview_render_cpu_ms() const { return preview_ ? preview_->render_cpu_ms() : 0.0; }
   const NodeCanvas& canvas() const { return canvas_; }
 
   void frame() {
@@ -1031,7 +1034,7 @@ int run_studio(const Options& options) {
   {
     App app(window, options);
     EditBench bench(options.bench_edits);
-    std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share;
+    std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share, frame_cpu_ms, rasteriser_cpu_ms, upload_cpu_ms, preview_cpu_ms;
     PartialRedraw redraw;
     std::uint64_t preview_renders = 0;
     // Uncovered or resized by the window system: its pixels are redrawn in full.
@@ -1046,6 +1049,8 @@ int run_studio(const Options& options) {
       for (int i = 0; i < count; ++i) static_cast<WindowEvents*>(glfwGetWindowUserPointer(w))->dropped.emplace_back(paths[i]);
     });
     const auto start = Clock::now();
+    double load_at_start[3] = {0, 0, 0};
+    if (getloadavg(load_at_start, 3) < 0) load_at_start[0] = -1;
     int settled_frames = 0;
     while (exit_code == 0) {
       if (automated && app.load_failed()) {  // a recipe, or (once read) a .glb, that does not load
@@ -1053,6 +1058,9 @@ int run_studio(const Options& options) {
         break;
       }
       const auto frame_start = Clock::now();
+      const double frame_start_cpu = thread_cpu_ms();
+      // Benchmark only: reading every thread's counters costs a few system calls.
+      const double raster_start_cpu = options.bench_edits > 0 ? threads_cpu_ms("llvmpipe-") : 0.0;
       // Idle: no busy loop; evaluating: poll the worker; mouse or key changes queued: show the next at once.
       if (automated || input.pending()) glfwPollEvents();
       else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);
@@ -1069,7 +1077,10 @@ int run_studio(const Options& options) {
       ImGui::NewFrame();
       MouseInput::after_new_frame(changed);
       const auto build_start = Clock::now();
+      const double upload_before = app.preview_upload_cpu_ms(), render_before = app.preview_render_cpu_ms();
       app.frame();
+      upload_cpu_ms.push_back(app.preview_upload_cpu_ms() - upload_before);
+      preview_cpu_ms.push_back(app.preview_render_cpu_ms() - render_before);
       ImGui::Render();
       build_ms.push_back(ms_since(build_start));
       int w = 0, h = 0;
@@ -1113,6 +1124,8 @@ int run_studio(const Options& options) {
       }
       const double ms = ms_since(frame_start);
       frame_ms.push_back(ms);
+      frame_cpu_ms.push_back(thread_cpu_ms() - frame_start_cpu);
+      if (options.bench_edits > 0) rasteriser_cpu_ms.push_back(threads_cpu_ms("llvmpipe-") - raster_start_cpu);
       if (busy) busy_frame_ms.push_back(ms);
       if (options.bench_edits > 0 && options.screenshot.empty() && (bench.done() || std::chrono::duration<double>(Clock::now() - start).count() > options.timeout_s))
         break;
@@ -1125,6 +1138,16 @@ int run_studio(const Options& options) {
       j["ui_build_ms"] = build_ms;
       j["draw_ms"] = draw_ms;
       j["redrawn_share"] = redrawn_share;
+      // The UI thread's CPU time per frame, and what every thread used in the whole run: the
+      // UI thread, the evaluation's (procex-eval) and the software rasteriser's (llvmpipe-N).
+      j["frame_cpu_ms"] = frame_cpu_ms;
+      j["rasteriser_cpu_ms"] = rasteriser_cpu_ms;  // Mesa's llvmpipe threads, per frame
+      j["upload_cpu_ms"] = upload_cpu_ms;          // of the UI thread's: new meshes to GL
+      j["preview_cpu_ms"] = preview_cpu_ms;        // and the 3D preview's drawing issued
+      for (const ThreadCpu& t : threads_cpu()) j["threads"][t.name] = {{"cpu_ms", t.cpu_ms}, {"waiting_ms", t.waiting_ms}};
+      double load_at_end[3] = {0, 0, 0};
+      if (getloadavg(load_at_end, 3) < 0) load_at_end[0] = -1;
+      j["load_average"] = {load_at_start[0], load_at_end[0]};
       try {
         write_file_atomically(options.frame_report, j.dump() + "\n");
       } catch (const std::exception& e) {
