@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <mutex>
+#include <thread>
+#include <vector>
+
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
@@ -82,6 +86,30 @@ TEST(EvalWorker, NewerSubmissionCancelsTheRunningOne) {
   ASSERT_TRUE(worker.latest());
   EXPECT_EQ(worker.latest()->revision, 2u);  // the cancelled evaluation never shows
   EXPECT_TRUE(worker.latest()->result.ok());
+}
+
+// The window sleeps until the worker wakes it: by then the result must be there to take.
+TEST(EvalWorker, FinishedIsCalledWithTheResultInPlace) {
+  std::mutex m;
+  std::vector<std::uint64_t> seen;  // latest()'s revision at each call
+  EvalWorker* self = nullptr;
+  EvalWorker worker([&] {
+    std::lock_guard lock(m);
+    seen.push_back(self->latest() ? self->latest()->revision : 0);
+  });
+  self = &worker;
+  const Graph g = load_pxg(test::house_recipe());
+  worker.submit(7, g);
+  ASSERT_TRUE(worker.wait_idle(60s));
+  // wait_idle returns when the evaluation is marked done, just before the call.
+  for (int i = 0; i < 6000; ++i) {
+    std::lock_guard lock(m);
+    if (!seen.empty()) break;
+    std::this_thread::sleep_for(10ms);
+  }
+  std::lock_guard lock(m);
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_EQ(seen[0], 7u);
 }
 
 TEST(EvalWorker, ExtraPortsAreEvaluatedToo) {

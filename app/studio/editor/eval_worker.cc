@@ -55,8 +55,8 @@ EvalSnapshot inside_group(const EvalSnapshot& s, const NodePath& scope) {
   return in;
 }
 
-EvalWorker::EvalWorker(std::size_t cache_bytes)
-    : cache_(cache_bytes), evaluator_(cache_, "procex-studio"), thread_([this] { run(); }) {}
+EvalWorker::EvalWorker(std::function<void()> finished, std::size_t cache_bytes)
+    : cache_(cache_bytes), evaluator_(cache_, "procex-studio"), finished_(std::move(finished)), thread_([this] { run(); }) {}
 
 EvalWorker::~EvalWorker() {
   {
@@ -119,6 +119,11 @@ void EvalWorker::run() {
     if (snapshot) latest_ = std::move(snapshot);
     running_ = false;
     changed_.notify_all();
+    if (finished_) {
+      lock.unlock();
+      finished_();
+      lock.lock();
+    }
   }
 }
 

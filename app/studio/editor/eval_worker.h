@@ -10,6 +10,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -71,7 +72,10 @@ EvalSnapshot inside_group(const EvalSnapshot& s, const NodePath& scope);
 
 class EvalWorker {
  public:
-  explicit EvalWorker(std::size_t cache_bytes = std::size_t{512} << 20);
+  // `finished` is called on the evaluation thread each time an evaluation
+  // ends (latest() has its result, or it was cancelled): the window wakes to
+  // show it instead of polling the worker while it waits.
+  explicit EvalWorker(std::function<void()> finished = {}, std::size_t cache_bytes = std::size_t{512} << 20);
   ~EvalWorker();
   EvalWorker(const EvalWorker&) = delete;
   EvalWorker& operator=(const EvalWorker&) = delete;
@@ -108,6 +112,7 @@ class EvalWorker {
 
   ResultCache cache_;
   Evaluator evaluator_;
+  std::function<void()> finished_;
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::optional<Job> pending_;

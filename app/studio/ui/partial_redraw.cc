@@ -13,7 +13,7 @@ namespace procex::studio {
 static_assert(sizeof(ImDrawVert) == sizeof(DrawVertex) && sizeof(ImDrawIdx) == sizeof(std::uint16_t),
               "FrameDamage copies ImGui's vertices and 16-bit indices as they are");
 
-PartialRedraw::PartialRedraw() : image_(std::make_unique<OffscreenImage>(false)) {}
+PartialRedraw::PartialRedraw(bool in_back_buffer) : image_(in_back_buffer ? nullptr : std::make_unique<OffscreenImage>(false)) {}
 PartialRedraw::~PartialRedraw() = default;
 
 namespace {
@@ -60,15 +60,22 @@ void draw_within(ImDrawData* draw, const Rect& r, int height) {
 PartialRedraw::Outcome PartialRedraw::render(ImDrawData* draw, int width, int height, int back_buffer_age,
                                              const std::vector<std::uintptr_t>& redrawn_textures, bool present) {
   const Rect screen{{0.0f, 0.0f}, {static_cast<float>(width), static_cast<float>(height)}};
-  if (image_->resize(width, height)) damage_.reset();
+  // A resized image's (or back buffer's) pixels are undefined.
+  if (image_ ? image_->resize(width, height) : width != width_ || height != height_) damage_.reset();
+  width_ = width;
+  height_ = height;
   const std::vector<Rect> damage = damage_.update(copy_lists(*draw), screen, redrawn_textures);
   Outcome outcome;
-  glBindFramebuffer(GL_FRAMEBUFFER, image_->framebuffer());
+  glBindFramebuffer(GL_FRAMEBUFFER, image_ ? image_->framebuffer() : 0);
   for (const Rect& r : damage) {
     draw_within(draw, r, height);
     outcome.pixels_redrawn += static_cast<double>(r.size().x) * r.size().y;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (!image_) {
+    outcome.copy_to_window = damage;
+    return outcome;
+  }
   // The back buffer lacks this frame's changes and those of the frames since it was last shown;
   // of unknown age, it lacks everything.
   std::vector<Rect> copy = damage;

@@ -31,6 +31,7 @@
 #include "app/studio/editor/session_files.h"
 #include "app/studio/editor/thread_cpu.h"
 #include "app/studio/ui/back_buffer_age.h"
+#include "app/studio/ui/copy_sub_buffer.h"
 #include "app/studio/ui/inspector.h"
 #include "app/studio/ui/layout_settings.h"
 #include "app/studio/ui/key_input.h"
@@ -114,7 +115,8 @@ class App {
   bool settled() const {
     return worker_.idle() && !glb_loader_.progress() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision();
   }
-  bool busy() const { return !worker_.idle() || glb_loader_.progress(); }
+  bool busy() const { return !worker_.idle() || loading_glb(); }
+  bool loading_glb() const { return glb_loader_.progress().has_value(); }
   // Stops the evaluation; false if it is still running after `timeout` (a node that never polls cancellation).
   bool stop_evaluation(std::chrono::milliseconds timeout) {
     worker_.cancel();
@@ -873,7 +875,7 @@ class App {
   fs::path home_;
   RecentFiles recent_;
   std::unique_ptr<Document> doc_;
-  EvalWorker worker_;
+  EvalWorker worker_{[] { glfwPostEmptyEvent(); }};  // a finished evaluation wakes the event loop
   std::string preview_footprint_source_;  // the footprint file (and its feature when it has one), or empty for the stand-in
   PreviewFeatures preview_features_;      // its features, bound to the recipe one by one; null: the stand-in
   std::shared_ptr<const GeoJsonCollection> footprints_;  // as read, without the edge labels preview_features_ has
@@ -1035,7 +1037,7 @@ int run_studio(const Options& options) {
     App app(window, options);
     EditBench bench(options.bench_edits);
     std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share, frame_cpu_ms, rasteriser_cpu_ms, upload_cpu_ms, preview_cpu_ms;
-    PartialRedraw redraw;
+    PartialRedraw redraw(copy_sub_buffer_available());
     std::uint64_t preview_renders = 0;
     // Uncovered or resized by the window system: its pixels are redrawn in full.
     // Files dropped: opened by the app in the next frame.
@@ -1061,9 +1063,12 @@ int run_studio(const Options& options) {
       const double frame_start_cpu = thread_cpu_ms();
       // Benchmark only: reading every thread's counters costs a few system calls.
       const double raster_start_cpu = options.bench_edits > 0 ? threads_cpu_ms("llvmpipe-") : 0.0;
-      // Idle: no busy loop; evaluating: poll the worker; mouse or key changes queued: show the next at once.
-      if (automated || input.pending()) glfwPollEvents();
-      else glfwWaitEventsTimeout(app.busy() ? 0.01 : 0.25);
+      // Mouse or key changes queued: show the next at once. Otherwise wait for an event: a finished
+      // evaluation posts one (EvalWorker's `finished`), so its result shows at once and nothing
+      // polls the worker meanwhile, taking a core from it. Automated runs (screenshots,
+      // benchmarks) go on without waiting once nothing is evaluating.
+      if (input.pending() || (automated && !app.busy())) glfwPollEvents();
+      else glfwWaitEventsTimeout(app.loading_glb() ? 0.01 : 0.25);  // a .glb's progress shows as it loads
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
       for (const fs::path& f : events.dropped) app.open_dropped(f);
@@ -1117,7 +1122,9 @@ int run_studio(const Options& options) {
           break;
         }
       }
-      if (drawn.presented) glfwSwapBuffers(window);  // otherwise the window already shows this frame
+      // Otherwise the window already shows this frame.
+      if (drawn.presented) glfwSwapBuffers(window);
+      else if (!drawn.copy_to_window.empty()) copy_sub_buffer(drawn.copy_to_window, h);
       if (options.bench_edits > 0) {
         glFinish();
         bench.step(app);
@@ -1145,6 +1152,7 @@ int run_studio(const Options& options) {
       j["upload_cpu_ms"] = upload_cpu_ms;          // of the UI thread's: new meshes to GL
       j["preview_cpu_ms"] = preview_cpu_ms;        // and the 3D preview's drawing issued
       for (const ThreadCpu& t : threads_cpu()) j["threads"][t.name] = {{"cpu_ms", t.cpu_ms}, {"waiting_ms", t.waiting_ms}};
+      j["presented_by"] = copy_sub_buffer_available() ? "copy_sub_buffer" : "swap";
       double load_at_end[3] = {0, 0, 0};
       if (getloadavg(load_at_end, 3) < 0) load_at_end[0] = -1;
       j["load_average"] = {load_at_start[0], load_at_end[0]};
