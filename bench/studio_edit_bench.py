@@ -9,7 +9,12 @@ with the 18 footprints of samples/footprints/sample_block.geojson bound
 in turn; per recipe, the medians over rounds of each run's median (and 90th
 percentile), and the edit latency as a ratio to the house's in the same round.
 Frame time counts only frames that drew something (an unchanged frame is
-neither drawn nor swapped).
+neither drawn nor shown). Those split into canvas frames (the edited value,
+the status bar: the 3D preview not redrawn) and preview frames (the new
+buildings drawn), each with its wall time and its CPU time: the UI thread's
+plus the software rasteriser's threads' (Mesa's llvmpipe), which on a loaded
+machine is what the frame cost, the rest being waits for a core. The load
+average at the start and end of the rounds is printed.
 
     python3 bench/studio_edit_bench.py [ROUNDS] [EDITS]   (from the repository root)
 
@@ -51,10 +56,17 @@ def run(recipe):
         sys.exit(f"{recipe}: {r['preview_features']} of the 18 footprints evaluated")
     # Frames in which nothing changed are neither drawn nor swapped: a new frame is one that drew something.
     drawn = [ms for ms, share in zip(r["frame_ms"], r["redrawn_share"]) if share > 0]
+    frames = list(zip(r["frame_ms"], r["redrawn_share"], r["preview_cpu_ms"], r["frame_cpu_ms"], r["rasteriser_cpu_ms"]))
+    canvas = [f for f in frames if f[1] > 0 and f[2] == 0]
+    preview = [f for f in frames if f[1] > 0 and f[2] > 0]
+    med = lambda fs, k: statistics.median(k(f) for f in fs) if fs else float("nan")
     return {"parameter": r["parameter"], "bound": r["preview_features"] or "none", "edit": statistics.median(r["edit_to_screen_ms"]), "edit_p90": p90(r["edit_to_screen_ms"]),
-            "evaluation": statistics.median(r["evaluation_ms"]), "frame": statistics.median(drawn), "frame_p90": p90(drawn)}
+            "evaluation": statistics.median(r["evaluation_ms"]), "frame": statistics.median(drawn), "frame_p90": p90(drawn),
+            "canvas": med(canvas, lambda f: f[0]), "canvas_cpu": med(canvas, lambda f: f[3] + f[4]),
+            "preview": med(preview, lambda f: f[0]), "preview_cpu": med(preview, lambda f: f[3] + f[4]), "load": r["load_average"]}
 
 
+load_start = os.getloadavg()[0]
 results = {r: [] for r in recipes}
 ratios = {r: [] for r in recipes}
 for _ in range(rounds):
@@ -63,12 +75,13 @@ for _ in range(rounds):
         results[r].append(this_round[r])
         ratios[r].append(this_round[r]["edit"] / this_round[reference]["edit"])
 
-print(f"{rounds} rounds of {edits} edits; medians over rounds (90th percentiles in brackets)\n")
-print("| recipe | nodes | footprints bound | parameter edited | edit to screen | evaluation of the edit | new frame | edit to screen / house's |")
-print("|---|---|---|---|---|---|---|---|")
+print(f"{rounds} rounds of {edits} edits; medians over rounds (90th percentiles in brackets); load average {load_start:.1f} at the start, {os.getloadavg()[0]:.1f} at the end\n")
+print("| recipe | nodes | footprints bound | parameter edited | edit to screen | evaluation of the edit | new frame | canvas frame: wall, CPU | preview frame: wall, CPU | edit to screen / house's |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for r in recipes:
     with open(r) as f:
         nodes = len(json.load(f)["nodes"])
     m = lambda k: statistics.median(x[k] for x in results[r])
     print(f"| `{r}` | {nodes} | {results[r][0]['bound']} | `{results[r][0]['parameter']}` | {m('edit'):.1f} ms ({m('edit_p90'):.1f}) | {m('evaluation'):.1f} ms | "
-          f"{m('frame'):.1f} ms ({m('frame_p90'):.1f}) | {statistics.median(ratios[r]):.2f} ({min(ratios[r]):.2f}-{max(ratios[r]):.2f}) |")
+          f"{m('frame'):.1f} ms ({m('frame_p90'):.1f}) | {m('canvas'):.1f}, {m('canvas_cpu'):.1f} ms | {m('preview'):.1f}, {m('preview_cpu'):.1f} ms | "
+          f"{statistics.median(ratios[r]):.2f} ({min(ratios[r]):.2f}-{max(ratios[r]):.2f}) |")
