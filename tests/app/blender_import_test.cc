@@ -7,6 +7,8 @@
 // its feature's attributes as custom properties.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -15,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/batch_command.h"
+#include "app/cli/eval_command.h"
 #include "tests/app/command_test.h"
 
 namespace procex {
@@ -107,6 +110,47 @@ TEST_F(BlenderImport, BuildingsStandUprightNamedTexturedAndToTheMillimetre) {
       }
     }
     EXPECT_EQ(seen.size(), want.size()) << "one object per building, named by its id";
+  }
+}
+
+// The dimensions a recipe gives, to the millimetre, in Blender: samples whose
+// stored summaries (samples/expected, reviewed against the recipes: e.g.
+// gallery_overhang's 20 x 10 m walls with 0.5 m eaves, 21 x 11 m, ridge at
+// 8.5 m) bound what procex eval writes as .glb and .obj, imported upright.
+TEST_F(BlenderImport, SamplesMeasureWhatTheirRecipesSay) {
+  const std::vector<std::string> samples = {"gallery_overhang", "gallery_gambrel", "house"};
+  const auto written = [&](const std::string& name, const char* extension) { return (dir_ / name).concat(extension); };
+  std::string files;
+  for (const std::string& name : samples)
+    for (const char* extension : {".glb", ".obj"}) {
+      EvalCommandOptions o;
+      o.recipe = (kRoot / "samples" / name).concat(".pxg");
+      o.output = written(name, extension);
+      ASSERT_EQ(run_eval(o, out_, err_), 0) << err_.str();
+      files.append(" ").append(o.output.string());
+    }
+  const fs::path report_file = dir_ / "blender.json", log = dir_ / "blender.log";
+  const int status = std::system(("blender -b --factory-startup --python " + (kRoot / "tools" / "blender_import.py").string() +
+                                  " -- " + report_file.string() + files + " > " + log.string() + " 2>&1")
+                                     .c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      << "blender (scripts/install-deps.sh installs it) failed:\n" << test::read_text(log);
+  const json blender = json::parse(test::read_text(report_file));
+  for (const std::string& name : samples) {
+    const json expected = json::parse(test::read_text((kRoot / "samples" / "expected" / name).concat(".json")))["bounds"];
+    for (const char* extension : {".glb", ".obj"}) {
+      SCOPED_TRACE(written(name, extension).filename().string());
+      const json& objects = blender.at(written(name, extension).string());
+      ASSERT_FALSE(objects.empty());
+      std::array<double, 3> low{1e300, 1e300, 1e300}, high{-1e300, -1e300, -1e300};
+      for (const json& o : objects)
+        for (int k = 0; k < 3; ++k)
+          low[k] = std::min(low[k], o["min"][k].get<double>()), high[k] = std::max(high[k], o["max"][k].get<double>());
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(low[k], expected["min"][k].get<double>(), 1e-3) << "axis " << k;
+        EXPECT_NEAR(high[k], expected["max"][k].get<double>(), 1e-3) << "axis " << k;
+      }
+    }
   }
 }
 
