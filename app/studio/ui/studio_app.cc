@@ -137,18 +137,7 @@ class App {
       preview_ = std::make_unique<PreviewView>();
       if (options_.view) preview_->look_from((*options_.view)[0], (*options_.view)[1]);
     }
-    if (submitted_ != doc_->revision() || submitted_node_ != doc_->selected()) {
-      submitted_ = doc_->revision();
-      submitted_node_ = doc_->selected();
-      label_footprints();
-      // The selected node's outputs too, for the plan and profile editors (cached: cheap).
-      // (Those of a node inside a group are no ports of the recipe: inside a group there are none.)
-      std::vector<PortRef> extra;
-      if (const Node* n = doc_->scope().empty() ? doc_->graph().node(submitted_node_) : nullptr)
-        for (std::uint32_t i = 0; i < n->decl().outputs().size(); ++i) extra.push_back({submitted_node_, i});
-      worker_.submit(submitted_, doc_->recipe(), extra, preview_bindings(doc_->recipe(), preview_footprint()),
-                     doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path(), preview_features_);
-    }
+    submit_if_changed();  // what changed between frames (a file opened, the benchmark's edit)
     // An edit of the recipe brings its preview back in place of a viewed .glb.
     if (viewed_ && viewed_->revision != doc_->revision()) close_glb();
     if (auto latest = worker_.latest(); latest && latest != shown_) {
@@ -169,6 +158,9 @@ class App {
     menu_bar();
     layout_windows();
     modals();
+    // This frame's edits go to the worker now, not at the next frame's start: with nothing queued
+    // the loop sleeps until an event (a key's release comes only when the person lets go) or 0.25 s.
+    submit_if_changed();
     update_title();
     if (!options_.ui_map.empty()) write_ui_map();
     doc_->end_frame();
@@ -241,6 +233,21 @@ class App {
   }
 
  private:
+  // The recipe to the evaluation thread when it or the selection changed since it was last sent.
+  void submit_if_changed() {
+    if (submitted_ == doc_->revision() && submitted_node_ == doc_->selected()) return;
+    submitted_ = doc_->revision();
+    submitted_node_ = doc_->selected();
+    label_footprints();
+    // The selected node's outputs too, for the plan and profile editors (cached: cheap).
+    // (Those of a node inside a group are no ports of the recipe: inside a group there are none.)
+    std::vector<PortRef> extra;
+    if (const Node* n = doc_->scope().empty() ? doc_->graph().node(submitted_node_) : nullptr)
+      for (std::uint32_t i = 0; i < n->decl().outputs().size(); ++i) extra.push_back({submitted_node_, i});
+    worker_.submit(submitted_, doc_->recipe(), extra, preview_bindings(doc_->recipe(), preview_footprint()),
+                   doc_->path().empty() ? fs::path() : fs::absolute(doc_->path()).parent_path(), preview_features_);
+  }
+
   // A .glb procex wrote, shown in the preview in place of the recipe's (read
   // only) until the recipe is edited or View > Recipe preview. The recipe
   // stays open. It is read on the loader's thread (glb_loaded takes it); a
