@@ -92,6 +92,16 @@ def test_arrays_shapes_dtypes_and_views():
     assert all((b, a) in halfedges for a, b in halfedges)
 
 
+def test_every_array_is_a_view_owned_by_its_mesh():
+    """No array is a copy made for Python: each is a read-only view whose base
+    is the procex.Mesh holding the storage, the same memory on every read."""
+    (part,) = procex.Recipe.load(SAMPLES / "house.pxg").evaluate()
+    for name in ("vertices", "face_offsets", "face_indices", "face_tags", "source_edges", "face_kinds", "uvs", "normals"):
+        a = getattr(part, name)
+        assert a.base is part and not a.flags.owndata and not a.flags.writeable, name
+        assert getattr(part, name).ctypes.data == a.ctypes.data, name
+
+
 def test_arrays_outlive_the_mesh_and_recipe():
     v = procex.Recipe.load(SAMPLES / "house.pxg").evaluate()[0].vertices
     import gc
