@@ -1,7 +1,8 @@
 // Bytes set aside while a long run goes on, to be copied into an output when
 // it ends without coming back into memory (a batch's report entries, a
 // streamed .glb's chunks): an unnamed temporary file in TMPDIR (else /tmp),
-// so it goes away with the process whatever happens.
+// or in a folder given (beside a batch's output), so it goes away with the
+// process whatever happens, SIGINT, SIGTERM and SIGKILL included.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,7 @@ namespace procex {
 class SpoolFile {
  public:
   SpoolFile();  // throws IoError naming the temporary folder
+  explicit SpoolFile(const std::string& folder);  // in `folder`; throws IoError naming it
   SpoolFile(const SpoolFile&) = delete;
   SpoolFile& operator=(const SpoolFile&) = delete;
   ~SpoolFile();
@@ -33,7 +35,9 @@ class SpoolFile {
   void flush();
   // Fills out with the file's bytes from `at` (all within written_).
   void pread_all(std::uint64_t at, std::span<char> out) const;
+  SpoolFile(std::string folder, bool from_tmpdir);
   std::string folder_;
+  bool from_tmpdir_;  // the folder is TMPDIR's (messages say how to name another)
   int fd_ = -1;
   std::string buffer_;  // appended, not yet in the file
   std::uint64_t written_ = 0;
