@@ -31,6 +31,7 @@
 #include "base/confined_path_memo.h"
 #include "base/read_file.h"
 #include "base/spool_file.h"
+#include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
 #include "core/io/gltf_crs.h"
@@ -256,6 +257,16 @@ bool is_folder_output(const std::filesystem::path& p) {
   return (!s.empty() && s.back() == '/') || std::filesystem::is_directory(p);
 }
 
+// Where the footprints' spool goes: beside the output, on the disk that is to
+// hold it (the output's folder, or the nearest folder above it that exists
+// yet: nothing is made before the footprints are read).
+std::string spool_folder(const std::filesystem::path& output, bool per_building) {
+  std::filesystem::path folder = per_building ? output : output.parent_path();
+  std::error_code ec;
+  while (!folder.empty() && !std::filesystem::is_directory(folder, ec)) folder = folder.parent_path();
+  return folder.empty() ? "." : folder.string();
+}
+
 }  // namespace
 
 bool parse_shard(const std::string& text, std::size_t& shard, std::size_t& shards) {
@@ -296,8 +307,17 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   FootprintReadOptions read;
   read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
   read.streets = options.streets, read.streets_layer = options.streets_layer;
+  // The footprints wait on disk beside the output, read back a window at a
+  // time: a million of them in memory would be most of the batch's peak.
+  std::optional<FeatureSpool> footprints;
+  try {
+    footprints.emplace(spool_folder(options.output, per_building));
+  } catch (const IoError& e) {
+    err << "procex batch: " << e.what() << "\n";
+    return kExitUnusableInput;
+  }
   const std::optional<GeoJsonCollection> opened =
-      open_footprints(recipe->graph, options.recipe, options.footprints, read, "batch", err);
+      open_footprints(recipe->graph, options.recipe, options.footprints, read, "batch", err, &*footprints);
   if (!opened) return kExitUnusableInput;
   const GeoJsonCollection& collection = *opened;
   ExportOptions export_options = options.export_options;
@@ -311,14 +331,14 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   // building are never held at once.
   struct Source {
     std::size_t index;
-    const GeoJsonFeature* feature;     // null: unreadable, see error
-    const GeoJsonFeatureError* error;
+    std::size_t spooled;               // its position in the spool, unless error
+    const GeoJsonFeatureError* error;  // not null: unreadable
   };
   std::vector<Source> sources;
-  for (const GeoJsonFeature& f : collection.features)
-    if (f.index % options.shards == options.shard) sources.push_back({f.index, &f, nullptr});
+  for (std::size_t i = 0; i < footprints->size(); ++i)
+    if (footprints->index(i) % options.shards == options.shard) sources.push_back({footprints->index(i), i, nullptr});
   for (const GeoJsonFeatureError& e : collection.errors)
-    if (e.index % options.shards == options.shard) sources.push_back({e.index, nullptr, &e});
+    if (e.index % options.shards == options.shard) sources.push_back({e.index, 0, &e});
   std::sort(sources.begin(), sources.end(), [](const Source& a, const Source& b) { return a.index < b.index; });
 
   // Shared by all workers: nodes that do not depend on the building (profiles) run once.
@@ -383,11 +403,12 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     const std::size_t window = 64 * static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
     for (std::size_t first = 0; first < sources.size() && !budget.exceeded; first += window) {
       std::vector<Building> buildings(std::min(sources.size(), first + window) - first);
+      std::vector<GeoJsonFeature> features(buildings.size());  // the window's, back from the spool
       for (std::size_t i = 0; i < buildings.size(); ++i) {
         const Source& from = sources[first + i];
         Building& b = buildings[i];
         b.index = from.index;
-        if (from.feature) b.id = from.feature->id, b.feature = from.feature;
+        if (!from.error) features[i] = footprints->at(from.spooled), b.id = features[i].id, b.feature = &features[i];
         else b.id = from.error->id, b.status = "refused", b.reason = from.error->message;
       }
       arena.execute([&] {

@@ -4,8 +4,10 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <ostream>
+#include <utility>
 
 #include "app/cli/recipe_session.h"
 #include "core/geom/error.h"
@@ -35,16 +37,18 @@ std::string setting_name(const std::string& property) {
 
 namespace {
 
-// Sets `property` of f to the JSON list ids, where it has none.
-void add_id_list(GeoJsonFeature& f, std::string_view property, const std::vector<std::int32_t>& ids) {
+// The JSON list of ids.
+std::string id_list(const std::vector<std::int32_t>& ids) {
   std::string list = "[";
   for (const std::int32_t id : ids) {
     if (list.size() > 1) list += ',';
     list += std::to_string(id);
   }
   list += ']';
-  f.properties.try_emplace(std::string(property), list);
+  return list;
 }
+
+using Labels = std::vector<std::pair<std::string, std::string>>;
 
 // Footprints per tile of the edge search: many, so that few are searched
 // again as another tile's neighbours; few, so that a tile takes little memory.
@@ -56,39 +60,69 @@ EdgeLabelsRead edge_labels_read(const Graph& recipe) {
   return {names_setting(recipe, std::string(kPartyEdgesProperty)), names_setting(recipe, std::string(kStreetEdgesProperty))};
 }
 
-void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection) {
-  const auto [party, street] = edge_labels_read(recipe);
-  if (!party && !street) return;
+namespace {
+
+// The labels of `count` footprints, wherever they are held: loops_of(i) gives
+// the i-th one's loops, label(i, labels) is called once for each footprint
+// with its lists (those the recipe reads), which it keeps where the footprint
+// has no property of that name.
+void label_edges(EdgeLabelsRead read, std::size_t count, const std::vector<StreetLine>& lines,
+                 const std::function<PlanLoops(std::size_t)>& loops_of,
+                 const std::function<void(std::size_t, const Labels&)>& label) {
   // Tile by tile (core/geom/plan_tiles.h): the edges and search grid of
   // every footprint of a large file at once take far more memory than the
   // footprints. A footprint's labels depend only on what lies within the
   // search distance of it, so they are those one search over all would give.
   std::vector<PlanBox> boxes;
-  boxes.reserve(collection.features.size());
-  for (const GeoJsonFeature& f : collection.features) boxes.push_back(plan_box(f.loops));
+  boxes.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) boxes.push_back(plan_box(loops_of(i)));
   std::vector<PlanBox> line_boxes;
-  for (const StreetLine& line : collection.lines) line_boxes.push_back(plan_box({line}));
+  for (const StreetLine& line : lines) line_boxes.push_back(plan_box({line}));
+  std::vector<bool> labelled(count, false);
   for_each_plan_tile(boxes, kPartyWallDistance, kFootprintsPerTile, [&](const PlanTile& tile) {
     std::vector<PlanLoops> plans;
-    for (const std::size_t i : tile.plans) plans.push_back(collection.features[i].loops);
-    if (party) {
+    for (const std::size_t i : tile.plans) plans.push_back(loops_of(i));
+    std::vector<Labels> own(tile.own);
+    if (read.party) {
       const auto ids = party_edges(plans, kPartyWallDistance);
-      for (std::size_t k = 0; k < tile.own; ++k) add_id_list(collection.features[tile.plans[k]], kPartyEdgesProperty, ids[k]);
+      for (std::size_t k = 0; k < tile.own; ++k) own[k].emplace_back(kPartyEdgesProperty, id_list(ids[k]));
     }
-    if (street) {
+    if (read.street) {
       plans.resize(tile.own);
       std::vector<StreetLine> near;
-      for (std::size_t l = 0; l < collection.lines.size(); ++l)
-        if (within(line_boxes[l], tile.extent, kStreetDistance)) near.push_back(collection.lines[l]);
+      for (std::size_t l = 0; l < lines.size(); ++l)
+        if (within(line_boxes[l], tile.extent, kStreetDistance)) near.push_back(lines[l]);
       const auto ids = street_edges(plans, near, kStreetDistance);
-      for (std::size_t k = 0; k < tile.own; ++k) add_id_list(collection.features[tile.plans[k]], kStreetEdgesProperty, ids[k]);
+      for (std::size_t k = 0; k < tile.own; ++k) own[k].emplace_back(kStreetEdgesProperty, id_list(ids[k]));
     }
+    for (std::size_t k = 0; k < tile.own; ++k) label(tile.plans[k], own[k]), labelled[tile.plans[k]] = true;
   });
   // A footprint without points is in no tile: none of its edges runs along anything.
-  for (GeoJsonFeature& f : collection.features) {
-    if (party) add_id_list(f, kPartyEdgesProperty, {});
-    if (street) add_id_list(f, kStreetEdgesProperty, {});
-  }
+  Labels none;
+  if (read.party) none.emplace_back(kPartyEdgesProperty, "[]");
+  if (read.street) none.emplace_back(kStreetEdgesProperty, "[]");
+  for (std::size_t i = 0; i < count; ++i)
+    if (!labelled[i]) label(i, none);
+}
+
+}  // namespace
+
+void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection) {
+  const EdgeLabelsRead read = edge_labels_read(recipe);
+  if (!read.party && !read.street) return;
+  label_edges(
+      read, collection.features.size(), collection.lines, [&](std::size_t i) { return collection.features[i].loops; },
+      [&](std::size_t i, const Labels& labels) {
+        for (const auto& [name, list] : labels) collection.features[i].properties.try_emplace(name, list);
+      });
+}
+
+void add_edge_labels(const Graph& recipe, FeatureSpool& footprints, const std::vector<StreetLine>& lines) {
+  const EdgeLabelsRead read = edge_labels_read(recipe);
+  if (!read.party && !read.street) return;
+  label_edges(
+      read, footprints.size(), lines, [&](std::size_t i) { return footprints.at(i).loops; },
+      [&](std::size_t i, const Labels& labels) { footprints.add_properties(i, labels); });
 }
 
 Status check_footprint_input(const Graph& recipe, const std::filesystem::path& recipe_file) {
@@ -101,12 +135,17 @@ Status check_footprint_input(const Graph& recipe, const std::filesystem::path& r
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
                                                  const std::filesystem::path& footprints,
                                                  const FootprintReadOptions& read, const std::string& command,
-                                                 std::ostream& err) {
+                                                 std::ostream& err, FeatureSpool* spool) {
   if (const Status s = check_footprint_input(recipe, recipe_file); !s) {
     err << s.message() << "\n";
     return std::nullopt;
   }
   try {
+    if (spool) {
+      GeoJsonCollection collection = read_footprints(footprints, read, *spool);
+      add_edge_labels(recipe, *spool, collection.lines);
+      return collection;
+    }
     GeoJsonCollection collection = read_footprints(footprints, read);
     add_edge_labels(recipe, collection);
     return collection;

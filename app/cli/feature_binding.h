@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/geom/street_edges.h"  // StreetLine
+#include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
 #include "graph/evaluator.h"
 #include "graph/graph.h"
@@ -38,6 +40,8 @@ inline constexpr double kStreetDistance = 20.0;
 // Adds the properties party_edges and street_edges to every feature of
 // `collection` that lacks them, when `recipe` reads them.
 void add_edge_labels(const Graph& recipe, GeoJsonCollection& collection);
+// The same for footprints spooled on disk (a batch's), with the collection's street lines.
+void add_edge_labels(const Graph& recipe, FeatureSpool& footprints, const std::vector<StreetLine>& lines);
 // Which of those two `recipe` reads (a graph input or exposed parameter of that name): what
 // add_edge_labels' result depends on, so a caller knows when another recipe needs them made again.
 struct EdgeLabelsRead {
@@ -53,12 +57,13 @@ Status check_footprint_input(const Graph& recipe, const std::filesystem::path& r
 // The features a recipe loaded from recipe_file is to be evaluated for: checks
 // that it has a graph input named `footprint` of type footprint, then reads
 // `footprints` (any file read_footprints reads, in the CRS `read` says), with
-// party_edges and street_edges added when the recipe reads them.
+// party_edges and street_edges added when the recipe reads them. With a
+// spool the footprints go there (labelled there), not to the collection's features.
 // nullopt after writing the problem to err ("procex <command>: ...").
 std::optional<GeoJsonCollection> open_footprints(const Graph& recipe, const std::filesystem::path& recipe_file,
                                                  const std::filesystem::path& footprints,
                                                  const FootprintReadOptions& read, const std::string& command,
-                                                 std::ostream& err);
+                                                 std::ostream& err, FeatureSpool* spool = nullptr);
 
 // Binds f to graph (a copy of the recipe) and bindings, and its properties
 // (by their own names) to the attributes expressions read with attr(). Returns

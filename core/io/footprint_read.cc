@@ -180,7 +180,8 @@ void read_geometry(const OGRGeometry* g, GeoJsonFeature& out) {
 }
 
 // The footprints of a file GDAL reads; crs is the layer's when empty.
-GeoJsonCollection read_with_gdal(const fs::path& path, const std::string& layer_asked, std::string& crs) {
+GeoJsonCollection read_with_gdal(const fs::path& path, const std::string& layer_asked, std::string& crs,
+                                 FeatureStore& footprints) {
   const std::string name = path.string();
   if (name.rfind("/vsi", 0) == 0 || name.find("://") != std::string::npos)
     refuse(path, "not a local file: footprints are read only from files on disk");
@@ -241,7 +242,7 @@ GeoJsonCollection read_with_gdal(const fs::path& path, const std::string& layer_
             add_other_tags(f->GetFieldAsString(i), feature.properties);
         }
       read_geometry(f->GetGeometryRef(), feature);
-      add_feature(std::move(feature), out);
+      add_feature(std::move(feature), out, footprints);
     } catch (const FeatureProblem& p) {
       out.errors.push_back({index, feature.id, "", where + ": " + p.why});
     }
@@ -263,16 +264,37 @@ Box box_of(const GeoJsonFeature& f) {
   return b;
 }
 
-// The rule for a file that declares no CRS (footprint_read.h).
-void refuse_unmarked_lon_lat(const GeoJsonCollection& c, const fs::path& path) {
-  double largest = 0;
-  for (const GeoJsonFeature& f : c.features) {
-    const Box b = box_of(f);
-    if (b.empty()) continue;
-    if (!b.lon_lat()) return;
-    largest = std::max({largest, b.high.x - b.low.x, b.high.y - b.low.y});
+// What settling the frame needs of the footprints, noted as they pass into
+// the store: the footprints themselves may be on disk by then.
+class BoundsNoted final : public FeatureStore {
+ public:
+  explicit BoundsNoted(FeatureStore& to) : to_(to) {}
+  void add(GeoJsonFeature f) override {
+    if (const Box b = box_of(f); !b.empty()) {
+      all.add(b.low), all.add(b.high);
+      all_lon_lat = all_lon_lat && b.lon_lat();
+      largest = std::max({largest, b.high.x - b.low.x, b.high.y - b.low.y});
+    }
+    to_.add(std::move(f));
   }
-  if (largest > 0 && largest < kLargestLonLatFootprint)
+  void clear() override {
+    all = {}, all_lon_lat = true, largest = 0;
+    to_.clear();
+  }
+  void keep_if(const std::function<bool(GeoJsonFeature&)>& keep) override { to_.keep_if(keep); }
+
+  Box all;                  // of every footprint
+  bool all_lon_lat = true;  // every footprint's box within longitude/latitude's range
+  double largest = 0;       // the largest extent of a footprint's box
+
+ private:
+  FeatureStore& to_;
+};
+
+// The rule for a file that declares no CRS (footprint_read.h).
+void refuse_unmarked_lon_lat(const BoundsNoted& bounds, const fs::path& path) {
+  if (!bounds.all_lon_lat) return;
+  if (const double largest = bounds.largest; largest > 0 && largest < kLargestLonLatFootprint)
     refuse(path, "declares no CRS and every coordinate is a longitude/latitude, with footprints under 5 cm across as "
                  "metres: it is longitude/latitude (what RFC 7946 GeoJSON means). Give --crs EPSG:4326 (or the file's "
                  "geographic CRS) to have it projected, or --crs of its metric system if it really is in metres");
@@ -300,9 +322,10 @@ std::string local_frame(const OGRSpatialReference& from, glm::dvec2 centre, cons
 }
 
 // Projects c from `source` to the frame its buildings are made in (footprint_read.h).
-void settle_frame(GeoJsonCollection& c, const std::string& source, const std::string& target, const fs::path& path) {
+void settle_frame(GeoJsonCollection& c, BoundsNoted& footprints, const std::string& source, const std::string& target,
+                  const fs::path& path) {
   if (source.empty()) {
-    refuse_unmarked_lon_lat(c, path);
+    refuse_unmarked_lon_lat(footprints, path);
     if (!target.empty()) refuse(path, "declares no CRS to project from to --target-crs: give its CRS with --crs");
     return;
   }
@@ -313,9 +336,7 @@ void settle_frame(GeoJsonCollection& c, const std::string& source, const std::st
     c.crs = source;
     return;
   }
-  Box all;
-  for (const GeoJsonFeature& f : c.features)
-    if (const Box b = box_of(f); !b.empty()) all.add(b.low), all.add(b.high);
+  Box all = footprints.all;
   for (const auto& line : c.lines)
     for (const glm::dvec2& p : line) all.add(p);
   if (all.empty()) {
@@ -335,17 +356,13 @@ void settle_frame(GeoJsonCollection& c, const std::string& source, const std::st
   std::unique_ptr<OGRCoordinateTransformation> project(OGRCreateCoordinateTransformation(&from, &to));
   if (!project) refuse(path, "PROJ cannot take its CRS '" + source + "' to '" + frame + "': " + gdal_reason());
 
-  std::vector<GeoJsonFeature> projected;
-  for (GeoJsonFeature& f : c.features) {
+  footprints.keep_if([&](GeoJsonFeature& f) {
     bool ok = true;
     for (auto& loop : f.loops)
       for (glm::dvec2& p : loop) ok = ok && project->Transform(1, &p.x, &p.y) && std::isfinite(p.x) && std::isfinite(p.y);
-    if (ok)
-      projected.push_back(std::move(f));
-    else
-      c.errors.push_back({f.index, f.id, "", "PROJ cannot project it from '" + source + "' (" + gdal_reason() + ")"});
-  }
-  c.features = std::move(projected);
+    if (!ok) c.errors.push_back({f.index, f.id, "", "PROJ cannot project it from '" + source + "' (" + gdal_reason() + ")"});
+    return ok;
+  });
   // A street PROJ cannot project is left out: it only labels the edges near it.
   std::erase_if(c.lines, [&](std::vector<glm::dvec2>& line) {
     bool ok = true;
@@ -365,17 +382,26 @@ std::string lower_extension(const fs::path& path) {
 }  // namespace
 
 GeoJsonCollection read_footprints(const fs::path& path, const FootprintReadOptions& options) {
+  std::vector<GeoJsonFeature> features;
+  FeatureList list(features);
+  GeoJsonCollection c = read_footprints(path, options, list);
+  c.features = std::move(features);
+  return c;
+}
+
+GeoJsonCollection read_footprints(const fs::path& path, const FootprintReadOptions& options, FeatureStore& footprints) {
   std::string source = options.crs;
+  BoundsNoted noted(footprints);
   GeoJsonCollection c;
   if (const std::string e = lower_extension(path); e == ".geojson" || e == ".json") {
     if (!options.layer.empty())
       refuse(path, "a GeoJSON file holds one layer, so --layer '" + options.layer + "' names nothing: leave it out");
-    c = read_geojson_file(path, options.geojson);
+    c = read_geojson_file(path, options.geojson, noted);
     if (source.empty()) source = crs_member(c, path);
   } else {
-    c = read_with_gdal(path, options.layer, source);
+    c = read_with_gdal(path, options.layer, source, noted);
   }
-  settle_frame(c, source, options.target_crs, path);
+  settle_frame(c, noted, source, options.target_crs, path);
   if (!options.streets.empty()) {
     FootprintReadOptions streets;
     streets.crs = options.crs, streets.target_crs = c.crs, streets.layer = options.streets_layer;

@@ -46,6 +46,10 @@ struct FootprintReadOptions {
 // file if it cannot be read or its CRS used; a feature that cannot be read or
 // projected goes to GeoJsonCollection::errors, naming it.
 GeoJsonCollection read_footprints(const std::filesystem::path& path, const FootprintReadOptions& options = {});
+// The same with the footprints put in `footprints` (in the frame the
+// collection's crs names), not the collection's features: a batch's spool.
+GeoJsonCollection read_footprints(const std::filesystem::path& path, const FootprintReadOptions& options,
+                                  FeatureStore& footprints);
 
 // The files read_footprints(path) reads: path, and for a Shapefile the
 // sidecars beside it (.dbf, .shx, .prj, .cpg, in either case; those missing

@@ -192,8 +192,15 @@ std::optional<double> GeoJsonFeature::property_number(const std::string& name) c
   return std::nullopt;
 }
 
-void add_feature(GeoJsonFeature f, GeoJsonCollection& c) {
-  if (f.lines.empty()) return c.features.push_back(std::move(f));
+void FeatureList::keep_if(const std::function<bool(GeoJsonFeature&)>& keep) {
+  std::vector<GeoJsonFeature> kept;
+  for (GeoJsonFeature& f : features_)
+    if (keep(f)) kept.push_back(std::move(f));
+  features_ = std::move(kept);
+}
+
+void add_feature(GeoJsonFeature f, GeoJsonCollection& c, FeatureStore& footprints) {
+  if (f.lines.empty()) return footprints.add(std::move(f));
   for (auto& line : f.lines) c.lines.push_back(std::move(line));
 }
 
@@ -207,8 +214,11 @@ namespace {
 // several times its text). Depth 1 is the root's members, 2 the elements of
 // its arrays.
 GeoJsonCollection read_collection(const std::function<json(json::parser_callback_t)>& parse,
-                                  const GeoJsonReadOptions& options, const std::string& source) {
+                                  const GeoJsonReadOptions& options, const std::string& source,
+                                  FeatureStore* footprints) {
   GeoJsonCollection out;
+  FeatureList own(out.features);
+  FeatureStore& store = footprints ? *footprints : own;
   std::string key;
   bool in_features = false;
   std::size_t i = 0;
@@ -219,7 +229,7 @@ GeoJsonCollection read_collection(const std::function<json(json::parser_callback
     f.id = feature.is_object() ? feature_id(feature, i) : std::to_string(i);
     try {
       read_feature(feature, pointer, options, f);
-      add_feature(std::move(f), out);
+      add_feature(std::move(f), out, store);
     } catch (const ValueProblem& problem) {
       out.errors.push_back({i, f.id, problem.pointer,
                             source + ": feature " + f.id + " at " + problem.pointer + ": " + problem.message});
@@ -231,7 +241,7 @@ GeoJsonCollection read_collection(const std::function<json(json::parser_callback
     if (depth == 1 && e == event::key) key = parsed.get<std::string>();
     if (depth == 1 && (e == event::array_start || e == event::object_start)) {
       in_features = e == event::array_start && key == "features";
-      if (in_features) out.features.clear(), out.errors.clear(), out.lines.clear(), i = 0;  // a repeated member: the last counts
+      if (in_features) store.clear(), out.errors.clear(), out.lines.clear(), i = 0;  // a repeated member: the last counts
     }
     if (depth == 1 && e == event::array_end) in_features = false;
     if (in_features && depth == 2 && (e == event::object_end || e == event::array_end || e == event::value)) {
@@ -257,13 +267,27 @@ GeoJsonCollection read_collection(const std::function<json(json::parser_callback
 
 GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options, const std::string& source) {
   return read_collection([&](json::parser_callback_t take) { return io_detail::parse_json(text, source, std::move(take)); },
-                         options, source);
+                         options, source, nullptr);
 }
 
+namespace {
+
 // Read a chunk at a time: a million footprints' text is not held whole either.
-GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options) {
+GeoJsonCollection read_file(const std::filesystem::path& path, const GeoJsonReadOptions& options,
+                            FeatureStore* footprints) {
   return read_collection([&](json::parser_callback_t take) { return io_detail::parse_json_file(path, std::move(take)); },
-                         options, path.string());
+                         options, path.string(), footprints);
+}
+
+}  // namespace
+
+GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options) {
+  return read_file(path, options, nullptr);
+}
+
+GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options,
+                                    FeatureStore& footprints) {
+  return read_file(path, options, &footprints);
 }
 
 Footprint to_footprint(const GeoJsonFeature& feature, double default_angle_deg) {

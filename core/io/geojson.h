@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -77,12 +78,41 @@ struct GeoJsonCollection {
   std::string crs;
 };
 
-// Adds a feature just read to c: a street's lines to c.lines, a footprint to c.features.
-void add_feature(GeoJsonFeature f, GeoJsonCollection& c);
+// Where a reader puts the footprints it reads, in file order: a collection's
+// `features` (FeatureList), or a batch's spool on disk (core/io/feature_spool.h),
+// since a million footprints held as GeoJsonFeature take 600 MB.
+class FeatureStore {
+ public:
+  virtual ~FeatureStore() = default;
+  virtual void add(GeoJsonFeature f) = 0;
+  // A repeated "features" member: the last counts, so what came before goes.
+  virtual void clear() = 0;
+  // Gives each feature, in order, to `keep`, which may change it (a
+  // projection); drops those it returns false for.
+  virtual void keep_if(const std::function<bool(GeoJsonFeature&)>& keep) = 0;
+};
+
+// The footprints in memory, in a vector (GeoJsonCollection::features).
+class FeatureList final : public FeatureStore {
+ public:
+  explicit FeatureList(std::vector<GeoJsonFeature>& features) : features_(features) {}
+  void add(GeoJsonFeature f) override { features_.push_back(std::move(f)); }
+  void clear() override { features_.clear(); }
+  void keep_if(const std::function<bool(GeoJsonFeature&)>& keep) override;
+
+ private:
+  std::vector<GeoJsonFeature>& features_;
+};
+
+// Adds a feature just read: a street's lines to c.lines, a footprint to `footprints`.
+void add_feature(GeoJsonFeature f, GeoJsonCollection& c, FeatureStore& footprints);
 
 // Throws IoError if the file cannot be read, is not JSON or is not a
 // FeatureCollection; per-feature problems go to GeoJsonCollection::errors.
 GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options = {});
+// The same with the footprints put in `footprints`, not the collection's features.
+GeoJsonCollection read_geojson_file(const std::filesystem::path& path, const GeoJsonReadOptions& options,
+                                    FeatureStore& footprints);
 // The same on text already in memory; source names it in messages.
 GeoJsonCollection parse_geojson(std::string_view text, const GeoJsonReadOptions& options = {},
                                 const std::string& source = "<memory>");

@@ -1,0 +1,156 @@
+// procex batch sets its footprints aside on disk (core/io/feature_spool.h):
+// what comes back is what the reader gives in memory, projected and labelled
+// alike; the unreadable ones are refused in the same words; and the batch's
+// peak memory does not grow with the number of footprints as it did when
+// every one was held as read.
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include <fcntl.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/cli/feature_binding.h"
+#include "app/cli/recipe_session.h"
+#include "core/io/feature_spool.h"
+#include "tests/app/command_test.h"
+#include "tests/support/sanitizers.h"
+
+extern char** environ;
+
+namespace procex {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSamples = PROCEX_SAMPLES;
+const fs::path kData = PROCEX_TEST_DATA;
+
+class BatchFootprintSpool : public test::CommandTest {
+ protected:
+  // The footprints as open_footprints gives them in memory and as it spools them.
+  void expect_spooled_as_in_memory(const fs::path& recipe_file, const fs::path& footprints,
+                                   const FootprintReadOptions& read) {
+    const std::optional<Graph> recipe = load_recipe(recipe_file, {}, err_);
+    ASSERT_TRUE(recipe) << err_.str();
+    const std::optional<GeoJsonCollection> memory = open_footprints(*recipe, recipe_file, footprints, read, "batch", err_);
+    ASSERT_TRUE(memory) << err_.str();
+    FeatureSpool spool(dir_.string());
+    const std::optional<GeoJsonCollection> spooled =
+        open_footprints(*recipe, recipe_file, footprints, read, "batch", err_, &spool);
+    ASSERT_TRUE(spooled) << err_.str();
+    EXPECT_TRUE(spooled->features.empty());
+    EXPECT_EQ(spooled->crs, memory->crs);
+    EXPECT_EQ(spooled->lines, memory->lines);
+    EXPECT_EQ(spooled->members, memory->members);
+    ASSERT_EQ(spooled->errors.size(), memory->errors.size());
+    for (std::size_t i = 0; i < memory->errors.size(); ++i) {
+      EXPECT_EQ(spooled->errors[i].index, memory->errors[i].index);
+      EXPECT_EQ(spooled->errors[i].message, memory->errors[i].message);
+    }
+    ASSERT_EQ(spool.size(), memory->features.size());
+    for (std::size_t i = 0; i < spool.size(); ++i) {
+      const GeoJsonFeature& want = memory->features[i];
+      const GeoJsonFeature got = spool.at(i);
+      SCOPED_TRACE(want.id);
+      EXPECT_EQ(got.index, want.index);
+      EXPECT_EQ(got.id, want.id);
+      EXPECT_EQ(got.loops, want.loops);  // exactly: the same projection, once
+      EXPECT_EQ(got.polygon_of_loop, want.polygon_of_loop);
+      EXPECT_EQ(got.properties, want.properties);  // party_edges and street_edges included
+      EXPECT_EQ(got.edge_angles, want.edge_angles);
+    }
+  }
+};
+
+TEST_F(BatchFootprintSpool, PartyAndStreetEdgesAsInMemory) {
+  FootprintReadOptions read;
+  read.streets = kSamples / "footprints" / "terrace_east_street.geojson";
+  expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "terrace.geojson", read);
+  expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "sample_block.geojson", {});
+}
+
+// A projection rewrites every spooled footprint (FeatureSpool::keep_if).
+TEST_F(BatchFootprintSpool, ProjectedAsInMemory) {
+  FootprintReadOptions read;
+  read.crs = "EPSG:32632", read.target_crs = "EPSG:3857";
+  expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "sample_block.geojson", read);
+  expect_spooled_as_in_memory(kSamples / "city.pxg", fs::path(PROCEX_DATA) / "footprints" / "corpus_monaco.geojson", {});
+}
+
+TEST_F(BatchFootprintSpool, UnreadableFeaturesRefusedAsInMemory) {
+  expect_spooled_as_in_memory(kSamples / "city.pxg", kData / "geojson_bad_features.geojson", {});
+}
+
+// A FeatureCollection of n small rectangles, one per 40 m cell, each with an
+// id and a property, as bench/batch_footprints.py writes them.
+void write_footprints(const fs::path& file, std::size_t n) {
+  std::ofstream out(file);
+  out << "{\"type\": \"FeatureCollection\", \"features\": [\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = 40.0 * static_cast<double>(i % 1000), y = 40.0 * static_cast<double>(i / 1000);
+    char ring[256];
+    std::snprintf(ring, sizeof ring, "[[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f]]", x, y, x + 12, y,
+                  x + 12, y + 9, x, y + 9, x, y);
+    out << (i ? "," : "") << "{\"type\":\"Feature\",\"id\":\"b" << i
+        << "\",\"properties\":{\"building:levels\":3},\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[" << ring
+        << "]}}\n";
+  }
+  out << "]}\n";
+}
+
+// Peak RSS in KiB of `procex batch` over `footprints`, a thousandth of them
+// built (--shard 0/1000): every footprint read, labelled and set aside.
+long batch_peak_kib(const fs::path& footprints, const fs::path& output) {
+  const std::string exe = PROCEX_CLI_EXE;
+  std::vector<std::string> args = {exe, "batch", (kSamples / "city.pxg").string(), "--footprints", footprints.string(),
+                                   "-o", output.string(), "--shard", "0/1000", "--jobs", "1", "--no-progress"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  EXPECT_EQ(posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  rusage usage{};
+  EXPECT_EQ(wait4(pid, &status, 0, &usage), pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+  return usage.ru_maxrss;
+}
+
+// 250,000 footprints held as read took about 550 bytes each (the records,
+// their property maps with the party edges, their rings): some 120 MB more
+// than 25,000. Spooled, what stays per footprint is its place in the spool
+// and the batch's source record (under 100 bytes), and the tiles' boxes
+// while labelling.
+TEST_F(BatchFootprintSpool, PeakMemoryDoesNotFollowTheFootprints) {
+  if (kSanitized) GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine are not the program's";
+  const fs::path few = dir_ / "few.geojson", many = dir_ / "many.geojson";
+  write_footprints(few, 25000);
+  write_footprints(many, 250000);
+  const long few_kib = batch_peak_kib(few, dir_ / "few.glb");
+  const long many_kib = batch_peak_kib(many, dir_ / "many.glb");
+  const double growth_mb = static_cast<double>(many_kib - few_kib) / 1024;
+  EXPECT_LT(growth_mb, 40) << "peak " << few_kib / 1024 << " MB at 25,000 footprints, " << many_kib / 1024
+                           << " MB at 250,000";
+  // The spool went with the batch: nothing is left beside the outputs.
+  std::vector<std::string> left;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir_)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"few.geojson", "few.glb", "many.geojson", "many.glb"}));
+}
+
+}  // namespace
+}  // namespace procex
