@@ -39,6 +39,7 @@ Bounds bounds(const Footprint& fp) {
 struct EdgeLine {
   glm::dvec2 a, b;
   EdgeSpec spec;
+  glm::dvec2 before{0.0}, after{0.0};  // the far ends of its neighbours: the previous edge's start, the next one's end
   // Distance of p from the edge's line, positive on the footprint's side (left).
   double inward(glm::dvec2 p) const {
     const glm::dvec2 d = b - a, q = p - a;
@@ -94,8 +95,10 @@ std::map<std::int32_t, EdgeLine> edges_by_id(const Footprint& fp, Ambiguity rule
   std::map<std::int32_t, EdgeLine> out;
   for (const Loop& loop : fp.loops) {
     std::vector<EdgeLine> lines;
-    for (std::size_t i = 0; i < loop.points.size(); ++i)
-      lines.push_back({loop.points[i], loop.points[(i + 1) % loop.points.size()], loop.edges[i]});
+    const std::size_t n = loop.points.size();
+    for (std::size_t i = 0; i < n; ++i)
+      lines.push_back({loop.points[i], loop.points[(i + 1) % n], loop.edges[i], loop.points[(i + n - 1) % n],
+                       loop.points[(i + 2) % n]});
     resolve_straight_runs(lines, rule, rounding);
     for (const EdgeLine& e : lines) out[e.spec.id] = e;
   }
@@ -216,14 +219,26 @@ namespace {
 // stepped further out (core/sweep/horizontal_event.cc): a plane across the
 // edge's line, leaning at one of its profile's slopes. Where along the line
 // it stands depends on the neighbour, so only its direction and slope are checked.
-bool on_a_jog(const EdgeLine& e, const Profile& profile, const PlanFace& face) {
+// A corner whose vertex lies within `tol` of its neighbours' line is one the
+// output cannot tell from straight, and may take a jog too: across the
+// corner's turn, so the jog may turn from e's line by as much as the corner.
+bool on_a_jog(const EdgeLine& e, const Profile& profile, const PlanFace& face, double tol) {
   const double length = glm::length(face.normal);
   if (!(length > 0.0)) return false;
   const glm::dvec3 n = face.normal / length;
   const double across = std::hypot(n.x, n.y);
   if (across == 0.0) return false;
   const glm::dvec2 d = glm::normalize(e.b - e.a);
-  if (std::abs(n.x * d.y - n.y * d.x) / across > 1e-6) return false;
+  double turn = 0.0;  // the largest sine of a turn at e's ends that the tolerance cannot see
+  const auto corner = [&](glm::dvec2 p, glm::dvec2 q, glm::dvec2 r) {
+    const glm::dvec2 u = glm::normalize(q - p), w = glm::normalize(r - q);
+    const double sine = std::abs(u.x * w.y - u.y * w.x);
+    if (glm::dot(u, w) > 0.0 && sine * std::min(glm::distance(p, q), glm::distance(q, r)) <= tol)
+      turn = std::max(turn, sine);
+  };
+  corner(e.before, e.a, e.b);
+  corner(e.a, e.b, e.after);
+  if (std::abs(n.x * d.y - n.y * d.x) / across > 1e-6 + turn) return false;
   const double slope = std::abs(n.z) / across;
   for (std::size_t i = 0; i + 1 < profile.points.size(); ++i) {
     const glm::dvec2 p = profile.points[i], q = profile.points[i + 1];
@@ -284,7 +299,7 @@ std::vector<std::string> check_faces_on_planes(const Footprint& footprint, const
       best = off_by(segment_plane({0.0, 0.0}, {-std::tan(e.spec.angle_deg * kDegree), 1.0}));
     }
     if (best > tol && e.spec.profile >= 0 && on_a_jog(e, footprint.profiles.at(static_cast<std::size_t>(e.spec.profile)),
-                                                      plan_face(surface, f, origin)))
+                                                      plan_face(surface, f, origin), tol))
       continue;
     if (best > tol)
       problems.add("faces off their edge's plane", face_name(surface, fi) + " is " + std::to_string(best) +
