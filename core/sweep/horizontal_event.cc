@@ -399,7 +399,18 @@ void apply_horizontal_run(State& st, EventQueue& queue, ProfileEvents& profile_e
   SweepOptions options;
   for (const auto& [s, step] : steps) options.max_height = std::max(options.max_height.value_or(0.0), std::abs(step.inward));
   options.ambiguity = st.options().ambiguity;
-  Nested n{State(st.tol(), options, st.budget()), {}, {}, {}, {}, *options.max_height};
+  // What meets at the nested sweep's top is not its to settle: an edge that
+  // a step reaches exactly there (a 1 m edge beside a 1 m ledge) shrinks to
+  // nothing at the top, and its neighbours, straight on, would be settled by
+  // the nested slopes (the steps, paper 4.5), giving the run to the edge
+  // that steps least whatever plane follows it. Whether the nested sweep saw
+  // that event at all hung on rounding (angles seed 1586: moved to (5e5,
+  // 5e6), another edge took the run). It stops a clustering distance short
+  // of the top; the new cross-section's corners are settled by the planes
+  // above it.
+  const double reach = *options.max_height;
+  options.max_height = reach - st.tol().height();
+  Nested n{State(st.tol(), options, st.budget()), {}, {}, {}, {}, reach};
   sweep_nested(n, st, loops, at, steps);
   const std::vector<std::uint32_t> vertex = flatten_vertices(n, st, z);
 
