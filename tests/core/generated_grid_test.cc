@@ -2,7 +2,8 @@
 // (tests/support/generators/): every case of the budget must pass every
 // property check_case applies, and a failure is reported minimised, as a
 // fixture to keep in tests/data. The class runs in parts, so that ctest
-// spreads it over the cores. Classes (b) and (c) are in tests/soak.
+// spreads it over the cores. Class (b) is beside it; class (c), whose cases
+// take CGAL minutes and gigabytes, is in tests/soak.
 #include <cstddef>
 
 #include <gtest/gtest.h>
