@@ -8,6 +8,7 @@
 #include <chrono>
 #include <charconv>
 #include <istream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -22,6 +23,7 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/glb_size_estimate.h"
 #include "app/cli/output_crs.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
@@ -173,6 +175,23 @@ void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_g
     }
   }
   b.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The .glb bytes each building made for a .glb takes (0: refused or failed),
+// measured by a writer of their own that is never finished.
+std::vector<std::uint64_t> glb_bytes_each(std::vector<Building>& buildings, const std::filesystem::path& output) {
+  GlbStreamWriter measure(output, {}, std::numeric_limits<std::uint64_t>::max());
+  std::vector<std::uint64_t> bytes;
+  for (Building& b : buildings) {
+    const std::uint64_t before = measure.bytes();
+    if (b.status == "ok") {
+      std::vector<GltfScene> one(1);
+      one[0] = std::move(b.gltf);
+      measure.add(std::move(one));
+    }
+    bytes.push_back(measure.bytes() - before);
+  }
+  return bytes;
 }
 
 // A bar redrawn in place on a terminal; otherwise a line every 10 %.
@@ -379,7 +398,30 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   MeshSet all;
   std::optional<GlbStreamWriter> glb;
   FileNames file_name(format);
+  std::size_t made = 0;  // buildings handed to the output so far (ok or not)
   try {
+    if (one_glb) {
+      // Whether one .glb can hold the batch, from a sample made ahead: a batch
+      // that cannot is refused before its buildings are made, not when its
+      // file passes the limit, hours in.
+      const std::vector<std::size_t> at = glb_size_sample(sources.size());
+      std::vector<Building> sample(at.size());
+      std::vector<GeoJsonFeature> features(at.size());
+      for (std::size_t i = 0; i < at.size(); ++i)
+        if (const Source& from = sources[at[i]]; !from.error)
+          features[i] = footprints->at(from.spooled), sample[i].feature = &features[i];
+        else sample[i].status = "refused";
+      arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, sample.size(), [&](std::size_t i) {
+          if (sample[i].feature) evaluate_building(*recipe, evaluator, true, budget, sample[i]);
+        });
+      });
+      if (const GlbSizeEstimate e = estimate_glb_size(glb_bytes_each(sample, options.output), sources.size());
+          e.at_least > static_cast<double>(options.glb_max_bytes)) {
+        err << "procex batch: refused: " << glb_too_large_message(options.output, e, options.glb_max_bytes) << "\n";
+        return kExitUnusableInput;
+      }
+    }
     // Meshes and report both or neither: the report is staged (beside its
     // target) before any mesh is written, so a report that cannot be written
     // stops the run before any mesh is replaced; it is put in place with its
@@ -392,7 +434,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       GltfScene head;
       head.extras["shard"] = to_json(stamp).dump();  // merge reads it from the .glb alone too
       set_gltf_crs(head, export_options.crs, options.output);
-      glb.emplace(options.output, std::move(head.extras));
+      glb.emplace(options.output, std::move(head.extras), options.glb_max_bytes);
     }
     if (per_building) std::filesystem::create_directories(options.output);
     // Buildings run a window at a time and leave it in input order: a
@@ -433,6 +475,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         else if (one_glb) window_gltf.push_back(std::move(b.gltf));
         else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
       }
+      made = first + buildings.size();
       if (one_glb) arena.execute([&] { glb->add(std::move(window_gltf)); });  // renders in parallel: --jobs holds
     }
     if (budget.exceeded) {
@@ -451,6 +494,14 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       report_file.add(options.report, report(std::chrono::steady_clock::now()));
       report_file.commit();
     }
+  } catch (const GlbTooLarge& e) {  // the sample above judged the batch to fit, and it did not
+    err << "procex batch: refused: " << e.what() << " with " << made << " of its " << sources.size()
+        << " buildings made; nothing written. "
+        << glb_too_large_advice(static_cast<double>(glb->bytes()) * static_cast<double>(sources.size()) /
+                                    static_cast<double>(std::max<std::size_t>(made, 1)),
+                                options.glb_max_bytes)
+        << "\n";
+    return kExitUnusableInput;
   } catch (const std::exception& e) {  // IoError, or a folder that cannot be made
     err << "procex batch: " << e.what() << "\n";
     return kExitUnusableInput;

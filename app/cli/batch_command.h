@@ -19,8 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "nodes/support/mesh_export.h"
 #include "app/cli/budget_settings.h"
+#include "core/io/gltf_write.h"
+#include "nodes/support/mesh_export.h"
 
 namespace procex {
 
@@ -46,6 +47,7 @@ struct BatchCommandOptions {
   std::optional<int> lod = std::nullopt;  // --lod: the level of detail (EvalOptions::lod)
   std::filesystem::path streets = {};     // --streets: street lines (FootprintReadOptions::streets)
   std::string streets_layer = {};         // --streets-layer
+  std::uint64_t glb_max_bytes = kGlbMaxBytes;  // what one .glb may hold: glTF's 4 GiB, less only in tests
 };
 
 // Parses "i/N" (0 <= i < N); false if malformed.

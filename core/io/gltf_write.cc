@@ -685,13 +685,11 @@ std::string render_tail(const BinLayout& bin, const WrittenMaterials& materials,
 }
 
 // The file's header with the JSON chunk's, and the binary chunk's header.
-// Throws IoError past what a .glb can hold.
+// Throws GlbTooLarge past max_bytes.
 std::pair<std::string, std::string> chunk_headers(const std::filesystem::path& path, std::size_t json_bytes,
-                                                  std::size_t bin_bytes) {
+                                                  std::size_t bin_bytes, std::uint64_t max_bytes = kGlbMaxBytes) {
   const std::size_t total = 12 + 8 + json_bytes + (bin_bytes > 0 ? 8 + bin_bytes : 0);  // bin_bytes: 4-byte multiple
-  if (total > UINT32_MAX)
-    throw IoError("cannot write '" + path.string() + "': " + std::to_string(total) + " bytes, more than a .glb holds (4 GiB)",
-                  path.string());
+  if (total > max_bytes) throw GlbTooLarge(path, total, max_bytes);
   std::string header = "glTF";
   append_u32(header, 2);
   append_u32(header, static_cast<std::uint32_t>(total));
@@ -961,8 +959,18 @@ void append_element(SpoolFile& spool, std::string_view json) {
 
 }  // namespace
 
+std::string glb_limit_text(std::uint64_t max_bytes) {
+  return max_bytes == kGlbMaxBytes ? "a .glb holds (4 GiB)" : "the " + std::to_string(max_bytes) + " bytes allowed";
+}
+
+GlbTooLarge::GlbTooLarge(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t max_bytes)
+    : IoError("cannot write '" + path.string() + "': " + std::to_string(bytes) + " bytes or more, more than " +
+                  glb_limit_text(max_bytes),
+              path.string()) {}
+
 struct GlbStreamWriter::State {
   std::filesystem::path path;
+  std::uint64_t max_bytes;
   std::map<std::string, std::string> extras;
   std::deque<GltfMeshData> placed;  // the placed meshes in order of first use, equal ones once
   // The buildings' materials and tags, numbered in order of first use among
@@ -986,12 +994,13 @@ struct GlbStreamWriter::State {
   }
 };
 
-GlbStreamWriter::GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras)
+GlbStreamWriter::GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras,
+                                 std::uint64_t max_bytes)
     : state_(std::make_unique<State>()) {
   if (!are_json_members(extras))
     throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
                   path.string());
-  state_->path = std::move(path), state_->extras = std::move(extras);
+  state_->path = std::move(path), state_->extras = std::move(extras), state_->max_bytes = max_bytes;
 }
 
 GlbStreamWriter::~GlbStreamWriter() = default;
@@ -1050,17 +1059,18 @@ void GlbStreamWriter::add(std::vector<GltfScene> parts) {
     }
     s.tag_values.append(bytes_of(item.tag_values));
   }
-  // Stop now, not after every building has run, when the file cannot hold
-  // them: its size is at least the spools' with each marker one digit.
+  // Stop now, not after every building has run, when the file cannot hold them.
+  if (const std::uint64_t at_least = bytes(); at_least > s.max_bytes) throw GlbTooLarge(s.path, at_least, s.max_bytes);
+}
+
+std::uint64_t GlbStreamWriter::bytes() const {
+  const State& s = *state_;
+  // The spools' bytes, with each marker one digit.
   std::uint64_t bytes = 0;
   for (const SpoolFile* spool : {&s.scene_nodes, &s.nodes, &s.meshes, &s.accessors, &s.positions, &s.normals,
                                  &s.indices, &s.uvs, &s.tag_values})
     bytes += spool->size();
-  bytes -= s.markers * (kRefBytes - 1);
-  if (bytes > UINT32_MAX)
-    throw IoError("cannot write '" + s.path.string() + "': more than " + std::to_string(bytes) +
-                      " bytes, more than a .glb holds (4 GiB)",
-                  s.path.string());
+  return bytes - s.markers * (kRefBytes - 1);
 }
 
 void GlbStreamWriter::finish() {
@@ -1105,7 +1115,7 @@ void GlbStreamWriter::finish() {
   json.add_array("accessors", placed, &Item::accessors_json, &accessors);
   const BinLayout bin = bin_layout(all, materials);
   json.add_own(render_tail(bin, materials, tag_view, json.size()));
-  const auto [header, bin_header] = chunk_headers(s.path, json.size(), bin.bytes);
+  const auto [header, bin_header] = chunk_headers(s.path, json.size(), bin.bytes, s.max_bytes);
 
   std::vector<FilePiece> pieces = {{header}};
   pieces.insert(pieces.end(), json.pieces().begin(), json.pieces().end());

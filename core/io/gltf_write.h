@@ -35,6 +35,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/io/io_error.h"
 #include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 
@@ -143,6 +144,20 @@ glm::dvec3 local_origin(const Mesh& mesh);
 // meshes): faces join the primitive of their tag, made if missing.
 void append_to_gltf_mesh(GltfMeshData& mesh, const TaggedMeshView& view);
 
+// What one .glb can hold: its header gives the file's length in 32 bits.
+inline constexpr std::uint64_t kGlbMaxBytes = UINT32_MAX;
+
+// "a .glb holds (4 GiB)", or what a test allows instead.
+std::string glb_limit_text(std::uint64_t max_bytes);
+
+// The buildings would make a .glb longer than it can hold (or than the limit
+// a test set): thrown apart from other IoErrors so that a caller can say what
+// to do instead (procex batch: split the batch into shards).
+class GlbTooLarge : public IoError {
+ public:
+  GlbTooLarge(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t max_bytes);
+};
+
 // Writes a .glb atomically. Throws IoError naming the file on failure, and
 // naming the building and instance if an instance's prototype is missing or
 // has no triangles, or its transform is not finite, affine and invertible.
@@ -158,13 +173,19 @@ void write_glb(const std::filesystem::path& path, const GltfScene& scene);
 class GlbStreamWriter {
  public:
   // Throws IoError if an extra's name is not UTF-8 or its value not JSON.
-  GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras);
+  // max_bytes: what the file may hold, kGlbMaxBytes but in tests.
+  GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras,
+                  std::uint64_t max_bytes = kGlbMaxBytes);
   GlbStreamWriter(const GlbStreamWriter&) = delete;
   GlbStreamWriter& operator=(const GlbStreamWriter&) = delete;
   ~GlbStreamWriter();
-  // Throws IoError as write_glb would for these buildings, or when the file
-  // would pass the 4 GiB a .glb holds.
+  // Throws IoError as write_glb would for these buildings, or GlbTooLarge
+  // when bytes() passes max_bytes.
   void add(std::vector<GltfScene> parts);
+  // What the buildings added so far take in the file, at least: their JSON
+  // (each number still to be settled counted as one digit) and their arrays;
+  // the file's head, placed meshes and images come on top.
+  std::uint64_t bytes() const;
   // Writes the file atomically (nothing is written before).
   void finish();
 

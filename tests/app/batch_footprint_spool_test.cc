@@ -3,16 +3,8 @@
 // alike; the unreadable ones are refused in the same words; and the batch's
 // peak memory does not grow with the number of footprints as it did when
 // every one was held as read.
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-
-#include <fcntl.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,10 +14,10 @@
 #include "app/cli/feature_binding.h"
 #include "app/cli/recipe_session.h"
 #include "core/io/feature_spool.h"
+#include "tests/app/child_peak_memory.h"
 #include "tests/app/command_test.h"
+#include "tests/app/generated_footprints.h"
 #include "tests/support/sanitizers.h"
-
-extern char** environ;
 
 namespace procex {
 namespace {
@@ -91,43 +83,11 @@ TEST_F(BatchFootprintSpool, UnreadableFeaturesRefusedAsInMemory) {
   expect_spooled_as_in_memory(kSamples / "city.pxg", kData / "geojson_bad_features.geojson", {});
 }
 
-// A FeatureCollection of n small rectangles, one per 40 m cell, each with an
-// id and a property, as bench/batch_footprints.py writes them.
-void write_footprints(const fs::path& file, std::size_t n) {
-  std::ofstream out(file);
-  out << "{\"type\": \"FeatureCollection\", \"features\": [\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = 40.0 * static_cast<double>(i % 1000), y = 40.0 * static_cast<double>(i / 1000);
-    char ring[256];
-    std::snprintf(ring, sizeof ring, "[[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f]]", x, y, x + 12, y,
-                  x + 12, y + 9, x, y + 9, x, y);
-    out << (i ? "," : "") << "{\"type\":\"Feature\",\"id\":\"b" << i
-        << "\",\"properties\":{\"building:levels\":3},\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[" << ring
-        << "]}}\n";
-  }
-  out << "]}\n";
-}
-
 // Peak RSS in KiB of `procex batch` over `footprints`, a thousandth of them
 // built (--shard 0/1000): every footprint read, labelled and set aside.
 long batch_peak_kib(const fs::path& footprints, const fs::path& output) {
-  const std::string exe = PROCEX_CLI_EXE;
-  std::vector<std::string> args = {exe, "batch", (kSamples / "city.pxg").string(), "--footprints", footprints.string(),
-                                   "-o", output.string(), "--shard", "0/1000", "--jobs", "1", "--no-progress"};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  EXPECT_EQ(posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
-  int status = 0;
-  rusage usage{};
-  EXPECT_EQ(wait4(pid, &status, 0, &usage), pid);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
-  return usage.ru_maxrss;
+  return test::procex_peak_kib({"batch", (kSamples / "city.pxg").string(), "--footprints", footprints.string(), "-o",
+                                output.string(), "--shard", "0/1000", "--jobs", "1", "--no-progress"});
 }
 
 // 250,000 footprints held as read took about 550 bytes each (the records,
@@ -138,8 +98,8 @@ long batch_peak_kib(const fs::path& footprints, const fs::path& output) {
 TEST_F(BatchFootprintSpool, PeakMemoryDoesNotFollowTheFootprints) {
   if (kSanitized) GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine are not the program's";
   const fs::path few = dir_ / "few.geojson", many = dir_ / "many.geojson";
-  write_footprints(few, 25000);
-  write_footprints(many, 250000);
+  test::write_footprints(few, 25000);
+  test::write_footprints(many, 250000);
   const long few_kib = batch_peak_kib(few, dir_ / "few.glb");
   const long many_kib = batch_peak_kib(many, dir_ / "many.glb");
   const double growth_mb = static_cast<double>(many_kib - few_kib) / 1024;
