@@ -27,12 +27,11 @@
 #include "app/cli/output_crs.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
-#include "app/cli/report_text.h"
+#include "app/cli/report_entries.h"
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "base/confined_path_memo.h"
 #include "base/read_file.h"
-#include "base/spool_file.h"
 #include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
@@ -243,34 +242,6 @@ nlohmann::ordered_json building_json(const Building& b) {
   return j;
 }
 
-// The building's element of the report's "buildings" array as report_text
-// lays it out there (two levels deep): the report is joined from these
-// instead of one JSON document of every building.
-std::string report_entry(const Building& b) {
-  const std::string flat = report_text(building_json(b));
-  std::string out = "  ";
-  for (std::size_t i = 0; i + 1 < flat.size(); ++i) out += flat[i] == '\n' ? std::string("\n  ") : std::string(1, flat[i]);
-  return out;
-}
-
-// The report's building entries, joined as the array holds them, in a
-// temporary file as buildings leave their window, copied from there into the
-// report: they take no memory however many buildings run.
-class EntrySpool {
- public:
-  void add(const std::string& entry) {
-    spool_.append(count_ == 0 ? "\n" : ",\n");
-    spool_.append(entry);
-    ++count_;
-  }
-  std::size_t count() const { return count_; }
-  const SpoolFile& file() const { return spool_; }
-
- private:
-  SpoolFile spool_;
-  std::size_t count_ = 0;
-};
-
 bool is_folder_output(const std::filesystem::path& p) {
   const std::string s = p.string();
   return (!s.empty() && s.back() == '/') || std::filesystem::is_directory(p);
@@ -373,10 +344,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   std::size_t ok = 0, refused = 0, failed = 0;
   ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
   std::chrono::steady_clock::time_point evaluated = start;
-  // The report's text as pieces: its head and tail around the buildings'
-  // entries, each made when its building left its window.
-  std::string head, tail;
-  EntrySpool spool;
+  // The buildings' entries, each made when its building left its window.
+  ReportEntries entries;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
@@ -388,12 +357,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     j["summary"] = {{"buildings", sources.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
                     {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
                     {"ms", ms(start, std::chrono::steady_clock::now())}};
-    const std::string text = report_text(j);
-    // No string value holds a raw newline, so this is the array's place.
-    const std::string empty = "\n \"buildings\": []";
-    const std::size_t at = text.find(empty) + empty.size() - 1;
-    head = text.substr(0, at), tail = text.substr(at + 1);
-    return std::vector<FilePiece>{{head}, {{}, &spool.file()}, {spool.count() == 0 ? "]" : "\n ]"}, {tail}};
+    return entries.report(j);
   };
   MeshSet all;
   std::optional<GlbStreamWriter> glb;
@@ -463,7 +427,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       std::vector<GltfScene> window_gltf;
       for (Building& b : buildings) {
         if (per_building) b.file = file_name(b);
-        spool.add(report_entry(b));
+        entries.add(ReportEntries::text(building_json(b)));
         if (b.status != "ok") {
           ++(b.status == "refused" ? refused : failed);
           err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason

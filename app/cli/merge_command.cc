@@ -8,7 +8,7 @@
 
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
-#include "app/cli/report_text.h"
+#include "app/cli/report_merge.h"
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
 #include "core/io/glb_read.h"
@@ -16,7 +16,6 @@
 #include "core/io/gltf_mesh_spool.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
-#include "core/io/json_read.h"
 
 namespace procex {
 namespace {
@@ -26,60 +25,6 @@ using json = nlohmann::ordered_json;
 // Buildings read back and written at a time: enough that the writer renders
 // them in parallel, few enough to take little memory.
 constexpr std::size_t kWindow = 256;
-
-// What the merged parts are together: the one shard of an unsharded run.
-ShardStamp whole(const ShardStamp& part) { return {0, 1, part.recipe, part.footprints}; }
-
-[[noreturn]] void not_a_report(const std::filesystem::path& file, const std::string& pointer, const std::string& what) {
-  throw IoError(file.string() + ": " + pointer + ": " + what + " (not a procex batch report)", file.string(), pointer);
-}
-
-// A member that must be a string; the report is someone's file, so every
-// type is checked before it is used.
-std::string text_member(const json& object, const char* key, const std::filesystem::path& file, const std::string& pointer) {
-  const auto it = object.find(key);
-  if (it == object.end()) return {};
-  if (!it->is_string()) not_a_report(file, pointer + "/" + key, "expected a string");
-  return it->get<std::string>();
-}
-
-// Reports: checked to be one whole batch, buildings joined and sorted by
-// feature index, the summary recounted.
-json merge_reports(const std::vector<std::filesystem::path>& files) {
-  json merged;
-  json buildings = json::array();
-  std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
-  for (const auto& file : files) {
-    json part = read_json_file(file);
-    if (!part.is_object()) not_a_report(file, "", "expected an object");
-    const auto stamp = part.find("shard");
-    shards.emplace_back(read_shard_stamp(stamp == part.end() ? json() : *stamp, file, "/shard"), file);
-    const auto list = part.find("buildings");
-    if (list == part.end() || !list->is_array()) not_a_report(file, "/buildings", "expected an array");
-    if (merged.empty())
-      for (const char* key : {"recipe", "footprints"}) merged[key] = text_member(part, key, file, "");
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      json& b = (*list)[i];
-      const std::string pointer = "/buildings/" + std::to_string(i);
-      if (!b.is_object()) not_a_report(file, pointer, "expected an object");
-      if (!b.contains("index") || !b["index"].is_number_unsigned()) not_a_report(file, pointer + "/index", "expected a feature index");
-      text_member(b, "status", file, pointer);
-      buildings.push_back(std::move(b));
-    }
-  }
-  check_whole(shards);
-  std::stable_sort(buildings.begin(), buildings.end(),
-                   [](const json& a, const json& b) { return a["index"].get<std::size_t>() < b["index"].get<std::size_t>(); });
-  std::size_t counts[3] = {0, 0, 0};
-  for (const json& b : buildings) {
-    const std::string s = b.value("status", "");
-    ++counts[s == "ok" ? 0 : s == "refused" ? 1 : 2];
-  }
-  if (!shards.empty()) merged["shard"] = to_json(whole(shards.front().first));
-  merged["buildings"] = std::move(buildings);
-  merged["summary"] = {{"buildings", merged["buildings"].size()}, {"ok", counts[0]}, {"refused", counts[1]}, {"failed", counts[2]}};
-  return merged;
-}
 
 }  // namespace
 
@@ -143,7 +88,7 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
       prototypes.insert(prototypes.end(), part.prototypes().begin(), part.prototypes().end());
     }
     check_whole(shards);
-    if (!shards.empty()) extras["shard"] = to_json(whole(shards.front().first)).dump();
+    if (!shards.empty()) extras["shard"] = to_json(whole_run(shards.front().first)).dump();
     std::stable_sort(buildings.begin(), buildings.end(),
                      [](const Building& a, const Building& b) { return a.feature < b.feature; });
     // A feature in two parts: the same shard given twice, or parts of different splits.
@@ -160,12 +105,12 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     // target before the mesh, and put in place once the mesh is.
     AtomicFileSet report_file;
     if (!options.report.empty()) {
-      const json merged = merge_reports(reports);
-      if (!shards.empty() && merged.contains("shard") && merged["shard"].dump() != extras["shard"])
+      MergedReport merged(reports);
+      if (!shards.empty() && !merged.shard().empty() && merged.shard() != extras["shard"])
         throw IoError("the reports and the .glb parts come from different runs: give the mesh and the report of "
                       "every shard of one run",
                       options.output.string());
-      report_file.add(options.report, report_text(merged));
+      report_file.add(options.report, merged.pieces());
     }
     GlbStreamWriter glb(options.output, std::move(extras));
     for (std::size_t first = 0; first < buildings.size(); first += kWindow) {

@@ -28,6 +28,9 @@ nlohmann::ordered_json to_json(const ShardStamp& stamp);
 ShardStamp read_shard_stamp(const nlohmann::ordered_json& object, const std::filesystem::path& file,
                             const std::string& pointer);
 
+// What the parts of one run are together: the one shard of an unsharded run.
+inline ShardStamp whole_run(const ShardStamp& part) { return {0, 1, part.recipe, part.footprints}; }
+
 // Throws IoError unless the stamps are one of each index of the same count,
 // from the same recipe and footprints: a shard twice, one missing, shards of
 // two splits or two runs would merge into a file that looks complete and is

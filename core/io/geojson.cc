@@ -219,10 +219,7 @@ GeoJsonCollection read_collection(const std::function<json(json::parser_callback
   GeoJsonCollection out;
   FeatureList own(out.features);
   FeatureStore& store = footprints ? *footprints : own;
-  std::string key;
-  bool in_features = false;
-  std::size_t i = 0;
-  auto read_element = [&](const json& feature) {
+  auto read_element = [&](const json& feature, std::size_t i) {
     const std::string pointer = "/features/" + std::to_string(i);
     GeoJsonFeature f;
     f.index = i;
@@ -234,22 +231,9 @@ GeoJsonCollection read_collection(const std::function<json(json::parser_callback
       out.errors.push_back({i, f.id, problem.pointer,
                             source + ": feature " + f.id + " at " + problem.pointer + ": " + problem.message});
     }
-    ++i;
   };
-  using event = json::parse_event_t;
-  const json doc = parse([&](int depth, event e, json& parsed) {
-    if (depth == 1 && e == event::key) key = parsed.get<std::string>();
-    if (depth == 1 && (e == event::array_start || e == event::object_start)) {
-      in_features = e == event::array_start && key == "features";
-      if (in_features) store.clear(), out.errors.clear(), out.lines.clear(), i = 0;  // a repeated member: the last counts
-    }
-    if (depth == 1 && e == event::array_end) in_features = false;
-    if (in_features && depth == 2 && (e == event::object_end || e == event::array_end || e == event::value)) {
-      read_element(parsed);
-      return false;
-    }
-    return true;
-  });
+  const json doc = parse(io_detail::elements_of<json>(
+      "features", [&] { store.clear(), out.errors.clear(), out.lines.clear(); }, read_element));
   if (!doc.is_object()) throw IoError(source + ": the document is not a JSON object", source, "");
   const auto type = doc.find("type");
   if (type == doc.end() || *type != "FeatureCollection")

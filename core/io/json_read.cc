@@ -108,6 +108,8 @@ Json parse_json_file(const std::filesystem::path& path, typename Json::parser_ca
 }
 
 template nlohmann::json parse_json_file<nlohmann::json>(const std::filesystem::path&, nlohmann::json::parser_callback_t);
+template nlohmann::ordered_json parse_json_file<nlohmann::ordered_json>(const std::filesystem::path&,
+                                                                        nlohmann::ordered_json::parser_callback_t);
 
 std::string pointer_token(std::string_view key) {
   std::string out;

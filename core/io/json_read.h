@@ -5,7 +5,10 @@
 // io_detail helpers are for the readers in core/io. Include only from .cc files.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -46,6 +49,40 @@ template <class Json = nlohmann::json>
 Json parse_json_file(const std::filesystem::path& path, typename Json::parser_callback_t callback);
 extern template nlohmann::json parse_json_file<nlohmann::json>(const std::filesystem::path&,
                                                                nlohmann::json::parser_callback_t);
+extern template nlohmann::ordered_json parse_json_file<nlohmann::ordered_json>(const std::filesystem::path&,
+                                                                               nlohmann::ordered_json::parser_callback_t);
+
+// A callback for parse_json and parse_json_file that takes the elements of
+// the array in the document's top-level member `member` one at a time: each
+// goes to `take`, with its position, as the parser finishes it, and is left
+// out of the document, where the member stays, empty. `restart` is called
+// where the array begins, and again where the object repeats the member (the
+// last one counts, as in a parsed document).
+template <class Json>
+typename Json::parser_callback_t elements_of(std::string member, std::function<void()> restart,
+                                             std::function<void(const Json&, std::size_t)> take) {
+  struct State {
+    std::string key;
+    bool in = false;
+    std::size_t next = 0;
+  };
+  auto s = std::make_shared<State>();
+  return [s, member = std::move(member), restart = std::move(restart), take = std::move(take)](
+             int depth, typename Json::parse_event_t e, Json& parsed) {
+    using event = typename Json::parse_event_t;
+    if (depth == 1 && e == event::key) s->key = parsed.template get<std::string>();
+    if (depth == 1 && (e == event::array_start || e == event::object_start)) {
+      s->in = e == event::array_start && s->key == member;
+      if (s->in) s->next = 0, restart();
+    }
+    if (depth == 1 && e == event::array_end) s->in = false;
+    if (s->in && depth == 2 && (e == event::object_end || e == event::array_end || e == event::value)) {
+      take(parsed, s->next++);
+      return false;
+    }
+    return true;
+  };
+}
 
 // A JSON pointer reference token with '~' and '/' escaped (RFC 6901).
 std::string pointer_token(std::string_view key);
