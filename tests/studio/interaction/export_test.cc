@@ -141,7 +141,6 @@ TEST(StudioExport, EveryFormatTheCliWritesReadsBackAndMatchesTheCliByteForByte) 
   ASSERT_EQ(city["objects"].size(), 1u);
   EXPECT_EQ(city["objects"].begin().value()["type"], "Building");
   EXPECT_GT(city["objects"].begin().value()["lods"]["2.2"]["triangles"].value("RoofSurface", 0), 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -113,7 +113,6 @@ TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused
   ASSERT_TRUE(shape->expressions.count(depth));
   EXPECT_EQ(shape->expressions.at(depth)->text(), "width / 2");
   EXPECT_DOUBLE_EQ(shape->params[*shape->decl().param_index("width")].get<double>(), 20.0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -123,7 +123,6 @@ TEST(StudioGroupEdit, OpensAGroupEditsInsideAndBacksOutByTheBreadcrumb) {
   EXPECT_EQ(body.node(3)->type->name(), "Footprint Shape");
   EXPECT_EQ(body.source(PortRef{2, 0}), (PortRef{1, 0})) << "the wiring undone";
   EXPECT_EQ(g.nodes().size(), 1u);
-  fs::remove_all(dir);
 }
 
 }  // namespace

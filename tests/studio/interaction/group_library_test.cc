@@ -70,7 +70,6 @@ TEST(StudioGroupLibrary, SavesAGroupAndPlacesItFromTheLibraryTab) {
   ASSERT_TRUE(g.groups().count("building2"));
   EXPECT_EQ(g.groups().at("building2").file, "lib/building.pxg");
   EXPECT_EQ(g.nodes().size(), nodes_before + 1);
-  fs::remove_all(dir);
 }
 
 }  // namespace

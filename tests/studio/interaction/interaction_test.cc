@@ -90,7 +90,6 @@ TEST(StudioInteraction, AddConnectEditUndoSave) {
   EXPECT_EQ(g.source({kGraphOutputs, 0}), (PortRef{3, 0}));
   EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("rotate")].get<double>(), 30.0);
   EXPECT_DOUBLE_EQ(t->params[*t->decl().param_index("scale")].get<double>(), 1.0);  // undone
-  fs::remove_all(dir);
 }
 
 // An edit autosaved, then the studio killed: the next start offers the edit back.
@@ -130,7 +129,6 @@ TEST(StudioInteraction, RecoversAutosavedEditsAfterACrash) {
   EXPECT_DOUBLE_EQ(load_pxg(recipe).node(1)->params[1].get<double>(), 23.0);
   // Saving removed the autosave: nothing is offered next time.
   EXPECT_TRUE(fs::is_empty(dir / "home" / "autosave"));
-  fs::remove_all(dir);
 }
 
 bool has_pin(const json& map, std::uint64_t node, int port, bool output) {
@@ -177,7 +175,6 @@ TEST(StudioInteraction, ChangesAPortCountAndRefusesToDropAConnectedPort) {
   EXPECT_EQ(merge->params[*merge->decl().param_index("inputs")].get<std::int64_t>(), 3);
   EXPECT_EQ(merge->decl().inputs().size(), 3u);
   EXPECT_EQ(g.source({3, 1}), (PortRef{2, 0}));
-  fs::remove_all(dir);
 }
 
 // The plan editor's Add hole / Delete hole on a Footprint Polygon: two
@@ -221,7 +218,6 @@ TEST(StudioInteraction, AddsAndDeletesHoles) {
   map = click_and_wait(studio, map, delete_hole, "hole 1 deleted", [&](const json& j) { return j["settled"] && j["preview_faces"] == one_hole; });
   save_and_quit(studio);
   EXPECT_EQ(holes_of(), std::vector<std::vector<Vec2>>{two[1]});
-  fs::remove_all(dir);
 }
 
 // The profile editor: a clicked segment's tag edited in place; a point
@@ -253,7 +249,6 @@ TEST(StudioInteraction, EditsAProfileSegmentsTagAndKeepsTagsPerSegment) {
   EXPECT_EQ(profile->params[1].get<std::vector<Vec2>>().size(), 7u);
   EXPECT_EQ(profile->params[2].get<std::vector<std::string>>(),
             (std::vector<std::string>{"wall", "ledge", "wall", "eave_soffit", "eave_soffit", "roof"}));
-  fs::remove_all(dir);
 }
 
 // The plan editor's Place anchor: a click on an edge adds an Anchor node wired
@@ -301,7 +296,6 @@ TEST(StudioInteraction, PlacesAnAnchorOnAnEdgeAndDragsItAlong) {
   const Node* extrude = g.node(2);
   EXPECT_EQ(extrude->params[*extrude->decl().param_index("anchors")].get<std::int64_t>(), 1);
   EXPECT_EQ(g.source({2, static_cast<std::uint32_t>(*extrude->decl().input_index("anchor_1"))}), (PortRef{anchor->id, 0}));
-  fs::remove_all(dir);
 }
 
 // The profile editor shows a Profile Offset's step as a handle: dragged up
@@ -331,7 +325,6 @@ TEST(StudioInteraction, DragsAProfileOffsetHandle) {
   save_and_quit(studio);
   EXPECT_DOUBLE_EQ(offset("height"), 4.0);
   EXPECT_DOUBLE_EQ(offset("distance"), 0.8);
-  fs::remove_all(dir);
 }
 
 // Waits for the house (started with --select 2) to evaluate, then gives the
@@ -365,7 +358,6 @@ TEST(StudioInteraction, KeysPressedDuringASlowFrameAreAllSeen) {
   studio.resume();
   map = studio.wait("the placing undone", [&](const json& j) { return revision(j) > rev && j["links"].size() == 2; });
   EXPECT_FALSE(map["node_positions"].contains("3"));
-  fs::remove_all(dir);
 }
 
 // Delete, then a click on another node, while the studio is stopped: both
@@ -389,7 +381,6 @@ TEST(StudioInteraction, AKeyThenAClickInOneFrameApplyInOrder) {
   map = studio.wait("the Extrude deleted and the Footprint selected",
                     [&](const json& j) { return revision(j) > rev && j["selected"] == 1 && !j["node_positions"].contains("2"); });
   EXPECT_TRUE(map["node_positions"].contains("1"));
-  fs::remove_all(dir);
 }
 
 // Tab opens the node search over the canvas; typing filters it and Enter
@@ -424,7 +415,6 @@ TEST(StudioInteraction, TabSearchPlacesAWiredNodeAndLTidiesTheLayout) {
   // Laid out in layers: each node right of the one feeding it.
   EXPECT_LT(g.node(1)->editor.x, g.node(2)->editor.x);
   EXPECT_LT(g.node(2)->editor.x, g.node(3)->editor.x);
-  fs::remove_all(dir);
 }
 
 // Each node's outcome and time are written under its box: after an edit of
@@ -465,7 +455,6 @@ TEST(StudioInteraction, ShowsEachNodesOutcomeAndTimeUnderItsBox) {
   const long cached = label(after, "1", grey_blue), computed = label(after, "2", green);
   EXPECT_GE(cached, 10) << "the footprint's 'cache hit' on screen";
   EXPECT_GE(computed, 10) << "the Extrude's time on screen";
-  fs::remove_all(dir);
 }
 
 // Files dragged onto the window: each feature of a GeoJSON is bound to the
@@ -528,7 +517,6 @@ TEST(StudioInteraction, DroppedGeoJsonBindsTheFootprintAndADroppedRecipeOpens) {
   EXPECT_EQ(map["errors"], 0);
   press("ctrl+q");
   EXPECT_EQ(studio.wait_exit(20s), 0);
-  fs::remove_all(dir);
 }
 
 // A footprint file dropped on a recipe that reads no party or street edges,
@@ -560,7 +548,6 @@ TEST(StudioInteraction, ADroppedFootprintFilesEdgesAreFoundAgainForTheRecipeOpen
   EXPECT_EQ(map["preview_faces"], started_on_file) << "the party and street edges the city reads, found for it";
   press("ctrl+q");
   EXPECT_EQ(studio.wait_exit(20s), 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -75,7 +75,6 @@ TEST(StudioLayout, DraggedSplitIsKeptForTheNextStartAndReset) {
     press("ctrl+q");
     EXPECT_EQ(studio.wait_exit(20s), 0);
   }
-  fs::remove_all(dir);
 }
 
 TEST(StudioLayout, ASettingsFileThatIsNotTheStudiosLeavesTheDefault) {
@@ -104,7 +103,6 @@ TEST(StudioLayout, ASettingsFileThatIsNotTheStudiosLeavesTheDefault) {
     press("ctrl+q");
     EXPECT_EQ(studio.wait_exit(20s), 0);
   }
-  fs::remove_all(dir);
 }
 
 }  // namespace

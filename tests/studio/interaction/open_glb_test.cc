@@ -88,7 +88,6 @@ TEST(StudioOpenGlb, ShowsTheFileInThePreviewUntilAskedBack) {
   EXPECT_GT(map["preview_instances"].get<int>(), 0);
   press("ctrl+q");
   EXPECT_EQ(studio.wait_exit(20s), 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

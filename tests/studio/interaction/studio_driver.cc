@@ -224,10 +224,40 @@ void save_and_quit(Studio& studio) {
   EXPECT_EQ(studio.wait_exit(20s), 0);
 }
 
+namespace {
+
+// Removes the folders fresh_dir made once their test has ended, so after its
+// studios are killed: a studio still running writes its ui map as the folder
+// goes, and removing it then fails with "Directory not empty". A failed
+// test's folder stays, to look at.
+class FreshDirs : public ::testing::EmptyTestEventListener {
+ public:
+  static FreshDirs& instance() {
+    static FreshDirs* dirs = [] {
+      auto* d = new FreshDirs;
+      ::testing::UnitTest::GetInstance()->listeners().Append(d);  // owned by gtest from here
+      return d;
+    }();
+    return *dirs;
+  }
+  void add(const fs::path& dir) { dirs_.push_back(dir); }
+  void OnTestEnd(const ::testing::TestInfo& test) override {
+    if (test.result()->Passed())
+      for (const fs::path& dir : dirs_) fs::remove_all(dir);
+    dirs_.clear();
+  }
+
+ private:
+  std::vector<fs::path> dirs_;
+};
+
+}  // namespace
+
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("procex_studio_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  FreshDirs::instance().add(dir);
   return dir;
 }
 

@@ -99,7 +99,8 @@ std::pair<long, long> window_origin(const json& map);
 
 // Ctrl+S, then Ctrl+Q: saved, and a clean exit.
 void save_and_quit(Studio& studio);
-// An empty folder for one test's files (removed by the test when it passes).
+// An empty folder for one test's files, removed when the test has ended (its studios
+// killed) if it passed.
 fs::path fresh_dir(const std::string& name);
 // A copy of one of tests/studio/data's recipes in `dir`, to edit and save.
 fs::path copy_test_recipe(const std::string& name, const fs::path& dir);
