@@ -116,6 +116,12 @@ class App {
     return worker_.idle() && !glb_loader_.progress() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision();
   }
   bool busy() const { return !worker_.idle() || loading_glb(); }
+  // Whether this frame put a panel elsewhere than the last frame did. The first frame places
+  // the panels before ImGui has measured the menu bar (the viewport's work area shrinks to
+  // below it a frame later), so everything moves down in the second: that frame is drawn at
+  // once rather than at the next event, and the ui map calls nothing settled until the
+  // panels stand still (a click aimed from the first frame's map landed above its button).
+  bool layout_moving() const { return layout_moving_; }
   bool loading_glb() const { return glb_loader_.progress().has_value(); }
   // Stops the evaluation; false if it is still running after `timeout` (a node that never polls cancellation).
   bool stop_evaluation(std::chrono::milliseconds timeout) {
@@ -471,8 +477,10 @@ class App {
       float left, top, right, bottom;
     };
     Edges placed{};
+    std::vector<float> placements;  // each panel's edges, in order
     auto place = [&](float x, float y, float ww, float hh) {
       placed = {vp->WorkPos.x + x, top + y, vp->WorkPos.x + x + ww, top + y + hh};
+      placements.insert(placements.end(), {placed.left, placed.top, placed.right, placed.bottom});
       ImGui::SetNextWindowPos(ImVec2(placed.left, placed.top));
       ImGui::SetNextWindowSize(ImVec2(ww, hh));
     };
@@ -519,6 +527,8 @@ class App {
     ImGui::End();
     layout = layout.clamped();
     if (!(layout == before)) layout_.mark_changed();
+    layout_moving_ = placements != last_placements_;
+    last_placements_ = std::move(placements);
   }
 
   void evaluation_panel() {
@@ -800,7 +810,7 @@ class App {
     nlohmann::json j;
     j["window"] = {wx, wy};
     j["revision"] = doc_->revision();
-    j["settled"] = settled();
+    j["settled"] = settled() && !layout_moving_;
     j["dirty"] = doc_->dirty();
     j["selected"] = doc_->selected();
     // Where keys go: the canvas's shortcuts, or a text field (typed characters); tests type once they do.
@@ -911,6 +921,8 @@ class App {
   const bool interactive_;  // a person's session: no screenshot or benchmark
   bool keep_layout_ = false;
   std::string status_, title_, ui_map_text_;
+  std::vector<float> last_placements_;  // the last frame's panels (layout_windows)
+  bool layout_moving_ = true;
   std::uint64_t title_revision_ = 0;
   Clock::time_point title_checked_;
   WidgetRects buttons_;
@@ -1070,11 +1082,11 @@ int run_studio(const Options& options) {
       const double frame_start_cpu = thread_cpu_ms();
       // Benchmark only: reading every thread's counters costs a few system calls.
       const double raster_start_cpu = options.bench_edits > 0 ? threads_cpu_ms("llvmpipe-") : 0.0;
-      // Mouse or key changes queued: show the next at once. Otherwise wait for an event: a finished
-      // evaluation posts one (EvalWorker's `finished`), so its result shows at once and nothing
-      // polls the worker meanwhile, taking a core from it. Automated runs (screenshots,
-      // benchmarks) go on without waiting once nothing is evaluating.
-      if (input.pending() || (automated && !app.busy())) glfwPollEvents();
+      // Mouse or key changes queued, or panels moved in the last frame: show the next at once.
+      // Otherwise wait for an event: a finished evaluation posts one (EvalWorker's `finished`), so
+      // its result shows at once and nothing polls the worker meanwhile, taking a core from it.
+      // Automated runs (screenshots, benchmarks) go on without waiting once nothing is evaluating.
+      if (input.pending() || app.layout_moving() || (automated && !app.busy())) glfwPollEvents();
       else glfwWaitEventsTimeout(app.loading_glb() ? 0.01 : 0.25);  // a .glb's progress shows as it loads
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
