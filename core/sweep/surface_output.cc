@@ -147,26 +147,35 @@ void add_own_vertex_cuts(const State& st, const FaceGroup& f, ChainScratch& x, C
   }
 }
 
+// Appends from -> to, cut where it or its reverse is, and each piece cut
+// again where it is itself a cut half-edge. Where three planes meet straight
+// on at a horizontal step and one takes the run from both (angles seed 4229),
+// the two faces given over each run along themselves, with cuts at different
+// vertices (one face's 9 -> 15 at 16, the other's 16 -> 15 at 8); the face
+// across 15 -> 9 must meet both, at 16 and at 8. Each piece is shorter than
+// its half-edge by more than the clustering distance, so the cutting ends;
+// `depth` bounds it anyway.
+void append_cut(std::uint32_t from, std::uint32_t to, const Cuts& cuts, std::vector<HalfEdge>& out, std::size_t depth) {
+  const auto ahead = cuts.find({from, to});
+  const auto back = ahead == cuts.end() ? cuts.find({to, from}) : cuts.end();
+  if ((ahead == cuts.end() && back == cuts.end()) || depth > cuts.size()) {
+    out.push_back({from, to});
+    return;
+  }
+  auto step = [&](std::uint32_t v) {
+    append_cut(from, v, cuts, out, depth + 1);
+    from = v;
+  };
+  if (ahead != cuts.end()) std::for_each(ahead->second.begin(), ahead->second.end(), step);
+  if (back != cuts.end()) std::for_each(back->second.rbegin(), back->second.rend(), step);
+  append_cut(from, to, cuts, out, depth + 1);
+}
+
 // The face's half-edges, cut where they or their reverses are (into x.given).
 void cut_half_edges(const FaceGroup& f, const Cuts& cuts, ChainScratch& x) {
   x.given.clear();
-  for (const HalfEdge& h : f.half_edges) {
-    if (h.from == h.to) continue;
-    const auto ahead = cuts.find({h.from, h.to});
-    const auto back = ahead == cuts.end() ? cuts.find({h.to, h.from}) : cuts.end();
-    if (ahead == cuts.end() && back == cuts.end()) {
-      x.given.push_back(h);
-      continue;
-    }
-    std::uint32_t from = h.from;
-    auto step = [&](std::uint32_t v) {
-      x.given.push_back({from, v});
-      from = v;
-    };
-    if (ahead != cuts.end()) std::for_each(ahead->second.begin(), ahead->second.end(), step);
-    if (back != cuts.end()) std::for_each(back->second.rbegin(), back->second.rend(), step);
-    x.given.push_back({from, h.to});
-  }
+  for (const HalfEdge& h : f.half_edges)
+    if (h.from != h.to) append_cut(h.from, h.to, cuts, x.given, 0);
 }
 
 // Chains a face's half-edges into closed loops (into x.loops). Where the face
