@@ -41,6 +41,16 @@ bool straight_up_to_rounding(const glm::dvec2& a, const glm::dvec2& b, const glm
   return std::abs(u.x * w.y - u.y * w.x) <= kStraightTurnSine * lu * lw + rounding * (lu + lw);
 }
 
+// Whether s lies on the segment from a to c up to rounding, strictly between
+// its ends. Vertices of a rotated grid plan on one line in exact terms are
+// not on it in floating point: to the exact predicates one can lie a hair
+// outside an ear whose new edge passes through it, and clipping that ear
+// runs the ring back over it (angles seed 3650: a hole's collinear vertices
+// on the line from another hole's corner; the base face's pieces overlapped).
+bool between_up_to_rounding(const glm::dvec2& a, const glm::dvec2& s, const glm::dvec2& c) {
+  return glm::dot(s - a, c - s) > 0.0 && straight_up_to_rounding(a, s, c);
+}
+
 // Turn at b on the way a -> b -> c: +1 left, -1 right, 0 straight on, and
 // 2 for a reversal (c back along b -> a), which is never convex. Straight and
 // back up to rounding count as such: a piece cut there (vertices of holes on
@@ -211,8 +221,12 @@ class Partitioner {
     const Index p = nodes_[v].prev, n = nodes_[v].next;
     const glm::dvec2 a = pos(p), b = pos(v), c = pos(n);
     if (orient2d(a, b, c) <= 0 || turn(a, b, c) == 0) return false;
-    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
-    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    // The box reaches as far as rounding puts a vertex off the new edge c -> a.
+    const double margin = kStraightTurnSine * glm::distance(a, c) +
+                          8.0 * std::numeric_limits<double>::epsilon() *
+                              std::max({std::abs(a.x), std::abs(a.y), std::abs(c.x), std::abs(c.y)});
+    const double lo_x = std::min({a.x, b.x, c.x}) - margin, hi_x = std::max({a.x, b.x, c.x}) + margin;
+    const double lo_y = std::min({a.y, b.y, c.y}) - margin, hi_y = std::max({a.y, b.y, c.y}) + margin;
     // Only a vertex that is not strictly convex can lie inside an ear.
     for (const Index q : reflex_) {
       if (nodes_[q].removed || q == p || q == v || q == n) continue;
@@ -220,6 +234,8 @@ class Partitioner {
       if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) continue;
       if (s == a || s == b || s == c) continue;
       if (orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) return false;
+      // The ear's one new edge, c -> a, must not pass through the ring.
+      if (between_up_to_rounding(c, s, a)) return false;
     }
     return true;
   }
