@@ -1,11 +1,17 @@
 #include "app/python/batch.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
+#include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
+
+#include <pthread.h>
 
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
@@ -17,6 +23,9 @@
 #include "app/python/mesh_arrays.h"
 #include "app/python/recipe.h"
 #include "base/confined_path_memo.h"
+#include "core/io/feature_spool.h"
+#include "core/io/footprint_read.h"
+#include "core/io/io_error.h"
 
 namespace py = pybind11;
 
@@ -130,6 +139,177 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
   return out;
 }
 
+// procex.batch_iter: the buildings handed over one at a time, in feature
+// order, so that a city is batched in bounded memory (batch() holds every
+// building's meshes, 16.5 KB a city building). The footprints wait in a
+// FeatureSpool (unnamed temporary file: it goes with the spool, or the
+// process) as procex batch keeps them; one worker thread evaluates a window
+// of buildings ahead, in parallel, and waits while a window is ready and not
+// taken. The worker never touches a Python object.
+class BatchStream {
+ public:
+  BatchStream(std::shared_ptr<Recipe> recipe, py::handle footprints, int jobs, py::handle attributes,
+              py::handle streets)
+      : source_recipe_(std::move(recipe)),
+        recipe_(source_recipe_->with(attributes)),
+        arena_(jobs > 0 ? jobs : tbb::task_arena::automatic) {
+    recipe_.options.resolved_paths = std::make_shared<ConfinedPathMemo>();
+    if (const Status s = check_footprint_input(recipe_.graph, source_recipe_->file()); !s)
+      raise(ErrorKind::Recipe, s.message());
+    const std::string temp = py::str(py::module_::import("tempfile").attr("gettempdir")());
+    GeoJsonCollection collection;
+    try {
+      spool_.emplace(temp);
+      if (py::isinstance<py::str>(footprints) || py::hasattr(footprints, "__fspath__")) {
+        const std::string path = py::str(py::module_::import("os").attr("fspath")(footprints));
+        collection = read_footprints(path, {}, *spool_);  // as batch() reads it, into the spool
+      } else {
+        collection = collection_from_python(footprints);  // in Python's memory already
+        for (GeoJsonFeature& f : collection.features) spool_->add(std::move(f));
+        collection.features.clear();
+      }
+      add_streets(collection, streets);
+      add_edge_labels(recipe_.graph, *spool_, collection.lines);
+    } catch (const IoError& e) {
+      raise(ErrorKind::Footprint, e.what());
+    }
+    for (std::size_t i = 0; i < spool_->size(); ++i) sources_.push_back({spool_->index(i), i, {}, {}, true});
+    for (GeoJsonFeatureError& e : collection.errors)
+      sources_.push_back({e.index, 0, std::move(e.id), std::move(e.message), false});
+    std::sort(sources_.begin(), sources_.end(), [](const Source& a, const Source& b) { return a.index < b.index; });
+    window_ = 4 * static_cast<std::size_t>(std::max(1, arena_.max_concurrency()));
+    worker_ = std::thread([this] { run(); });
+    pthread_setname_np(worker_.native_handle(), "procex-batch");  // what top -H (and a test) sees of it
+  }
+  ~BatchStream() { close(); }
+
+  std::size_t size() const { return sources_.size(); }
+
+  // The next building (with the GIL); StopIteration after the last or once closed.
+  py::object next() {
+    Pending p;
+    for (;;) {
+      bool got = false, finished = false;
+      {
+        py::gil_scoped_release release;
+        std::unique_lock lock(mutex_);
+        changed_.wait_for(lock, std::chrono::milliseconds(100), [&] { return !ready_.empty() || finished_; });
+        if (!ready_.empty()) {
+          p = std::move(ready_.front());
+          ready_.pop_front();
+          got = true;
+          changed_.notify_all();
+        } else {
+          finished = finished_;
+        }
+      }
+      if (got) break;
+      if (finished) {
+        const std::exception_ptr error = error_;
+        close();
+        if (error) {
+          try {
+            std::rethrow_exception(error);
+          } catch (const IoError& e) {  // the spool could not be read back
+            raise(ErrorKind::Footprint, e.what());
+          }
+        }
+        throw py::stop_iteration();
+      }
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+    p.building.wrapped = to_list(p.building.meshes);
+    p.building.feature = p.feature ? py::object(feature_to_python(*p.feature)) : py::object(py::none());
+    return py::cast(std::move(p.building));
+  }
+
+  // Stops the worker (buildings being evaluated are cancelled), joins it and
+  // drops the spool. Idempotent; the destructor calls it.
+  void close() {
+    stop_ = true;
+    recipe_.options.cancel.cancel();
+    {
+      std::lock_guard lock(mutex_);
+      changed_.notify_all();
+    }
+    if (worker_.joinable()) {
+      if (PyGILState_Check()) {
+        py::gil_scoped_release release;
+        worker_.join();
+      } else {
+        worker_.join();
+      }
+    }
+    ready_.clear();
+    spool_.reset();
+  }
+
+ private:
+  struct Source {
+    std::size_t index;    // in the footprints given
+    std::size_t spooled;  // its position in the spool, when readable
+    std::string id, error;
+    bool readable;
+  };
+  struct Pending {
+    Building building;                     // its Python members are made by next()
+    std::optional<GeoJsonFeature> feature;  // as evaluated, for Building.feature
+  };
+
+  void run() {
+    try {
+      for (std::size_t first = 0; first < sources_.size(); first += window_) {
+        {
+          std::unique_lock lock(mutex_);
+          changed_.wait(lock, [&] { return stop_ || ready_.size() < window_; });
+        }
+        if (stop_) break;
+        std::vector<Pending> chunk(std::min(window_, sources_.size() - first));
+        for (std::size_t i = 0; i < chunk.size(); ++i) {
+          const Source& s = sources_[first + i];
+          Building& b = chunk[i].building;
+          b.index = s.index;
+          if (s.readable) chunk[i].feature = spool_->at(s.spooled), b.id = chunk[i].feature->id;
+          else b.id = s.id, b.status = "refused", b.reason = s.error;
+        }
+        arena_.execute([&] {
+          tbb::parallel_for(std::size_t{0}, chunk.size(), [&](std::size_t i) {
+            if (chunk[i].feature && !stop_)
+              evaluate(recipe_, evaluator_, *chunk[i].feature, placeables_, chunk[i].building);
+          });
+        });
+        std::lock_guard lock(mutex_);
+        for (Pending& p : chunk) ready_.push_back(std::move(p));
+        changed_.notify_all();
+      }
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      error_ = std::current_exception();
+    }
+    std::lock_guard lock(mutex_);
+    finished_ = true;
+    changed_.notify_all();
+  }
+
+  std::shared_ptr<Recipe> source_recipe_;
+  MeshRecipe recipe_;
+  std::optional<FeatureSpool> spool_;
+  std::vector<Source> sources_;
+  // As batch(): nodes that do not depend on the building run once; the rest are never asked twice.
+  ResultCache cache_{std::size_t{32} << 20};
+  Evaluator evaluator_{cache_, kEngineSalt};
+  PlaceableCache placeables_;
+  tbb::task_arena arena_;
+  std::size_t window_ = 0;  // buildings evaluated at once, and at most ready and not taken
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Pending> ready_;
+  bool finished_ = false;
+  std::exception_ptr error_;
+  std::atomic<bool> stop_{false};
+  std::thread worker_;
+};
+
 }  // namespace
 
 void bind_batch(py::module_& m) {
@@ -161,6 +341,30 @@ void bind_batch(py::module_& m) {
         "threads (0: one per core). progress(done, total) is called from this thread as buildings finish. The GIL "
         "is released while the buildings are evaluated; an exception in progress (or Ctrl+C) stops the rest. "
         "Returns one Building per footprint, in order: a building that fails does not stop the others.");
+  py::class_<BatchStream>(m, "BatchIterator",
+                          "What batch_iter returns: the batch's buildings one at a time, in footprint order. "
+                          "close() (or leaving a with block, or dropping it) stops the workers and removes the "
+                          "footprints' temporary file.")
+      .def("__iter__", [](py::object self) { return self; })
+      .def("__next__", &BatchStream::next)
+      .def("__len__", &BatchStream::size, "The number of buildings (footprints, readable or not).")
+      .def("close", &BatchStream::close, "Stops evaluating: the workers are joined, the temporary file removed.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](BatchStream& s, py::args) { s.close(); });
+  m.def(
+      "batch_iter",
+      [](std::shared_ptr<Recipe> recipe, py::handle footprints, int jobs, py::handle attributes, py::handle streets) {
+        return std::make_unique<BatchStream>(std::move(recipe), footprints, jobs, attributes, streets);
+      },
+      py::arg("recipe"), py::arg("footprints"), py::arg("jobs") = 0, py::arg("attributes") = py::none(),
+      py::arg("streets") = py::none(),
+      "batch() in bounded memory: an iterator over the same Buildings, in the same order, handed over one at a "
+      "time. The footprints are set aside in a temporary file as procex batch keeps them (a file's path is read "
+      "feature by feature, never whole), and the worker threads evaluate only a window of buildings ahead (four per "
+      "job) while the GIL is released, so memory does not grow with the number of footprints as long as the caller "
+      "does not keep the buildings. A footprint that cannot be read or a building that fails is a Building with "
+      "that status; the rest go on. Arguments as batch(). Use it in a with block (or call close()) to stop early: "
+      "dropping it does the same.");
 }
 
 }  // namespace procex::python

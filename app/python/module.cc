@@ -15,7 +15,7 @@ PYBIND11_MODULE(procex, m) {
   m.doc() =
       "procex: procedural extrusions (Kelly & Wonka) for buildings. Load a .pxg recipe (Recipe.load), set its exposed "
       "parameters, evaluate it to meshes as NumPy arrays; run the sweep engine alone on loops (sweep); or a recipe "
-      "over many footprints in parallel (batch). Errors are procex.Error subclasses carrying the command line's "
+      "over many footprints in parallel (batch, or batch_iter: one building at a time, in bounded memory). Errors are procex.Error subclasses carrying the command line's "
       "diagnostics.";
   m.attr("__version__") = PROCEX_VERSION;
   python::bind_errors(m);

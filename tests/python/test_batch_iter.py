@@ -1,0 +1,131 @@
+"""procex.batch_iter: batch()'s buildings handed over one at a time, in the
+same order and with the same meshes and features; a bad footprint reported
+in its item while the rest go on; dropped early, no worker thread and no
+temporary file left; and its peak memory not growing with the footprints."""
+import gc
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import procex
+from conftest import ROOT, SAMPLES
+
+BLOCK = SAMPLES / "footprints" / "sample_block.geojson"
+
+
+def city():
+    return procex.Recipe.load(SAMPLES / "city.pxg")
+
+
+def assert_same_buildings(want, got):
+    assert [(b.index, b.id, b.status) for b in got] == [(b.index, b.id, b.status) for b in want]
+    for a, b in zip(want, got):
+        assert a.reason == b.reason and a.warnings == b.warnings and a.feature == b.feature, a.id
+        assert len(a.meshes) == len(b.meshes), a.id
+        for m, n in zip(a.meshes, b.meshes):
+            assert (m.building, m.tags) == (n.building, n.tags)
+            for name in ("vertices", "face_offsets", "face_indices", "face_tags", "source_edges"):
+                np.testing.assert_array_equal(getattr(m, name), getattr(n, name), err_msg=f"{a.id} {name}")
+            assert [(p.mesh.name, p.matrix.tolist()) for p in m.placed] == \
+                [(p.mesh.name, p.matrix.tolist()) for p in n.placed]
+
+
+def threads():
+    """The iterators' worker threads, named so by batch_iter. With jobs=1 it
+    evaluates on that thread alone; with more, TBB's pool of workers is the
+    process's, kept or ended as TBB decides, and a worker it starts from
+    there inherits the name. So this test runs first, with jobs=1."""
+    names = []
+    for task in os.listdir("/proc/self/task"):
+        try:
+            names.append(open(f"/proc/self/task/{task}/comm").read().strip())
+        except FileNotFoundError:  # a thread that has just ended
+            pass
+    return names.count("procex-batch")
+
+
+def open_files():
+    return sorted(os.readlink(f"/proc/self/fd/{fd}") for fd in os.listdir("/proc/self/fd")
+                  if os.path.exists(f"/proc/self/fd/{fd}"))
+
+
+def test_dropped_early_leaves_no_thread_or_temporary_file():
+    gc.collect()
+    threads_before, files_before = threads(), open_files()
+    it = procex.batch_iter(city(), BLOCK, jobs=1)
+    # The footprints' spool is an unnamed temporary file open while the iterator lives.
+    assert any("(deleted)" in f or "#" in f for f in set(open_files()) - set(files_before))
+    assert threads() == threads_before + 1  # its worker
+    got = [next(it) for _ in range(3)]
+    assert [b.index for b in got] == [0, 1, 2]
+    del it
+    gc.collect()
+    assert threads() <= threads_before
+    assert open_files() == files_before
+    # close() and a with block do the same, and an iterator closed yields nothing more.
+    with procex.batch_iter(city(), BLOCK, jobs=1) as it:
+        next(it)
+    assert threads() <= threads_before and open_files() == files_before
+    with pytest.raises(StopIteration):
+        next(it)
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_yields_what_batch_returns_in_order(jobs):
+    want = procex.batch(city(), BLOCK, jobs=jobs)
+    it = procex.batch_iter(city(), BLOCK, jobs=jobs)
+    assert len(it) == 18 and iter(it) is it
+    assert_same_buildings(want, list(it))
+    with pytest.raises(StopIteration):
+        next(it)
+
+
+def test_a_bad_footprint_is_reported_and_the_rest_go_on(tmp_path):
+    collection = json.loads(BLOCK.read_text())
+    collection["features"][3]["geometry"]["coordinates"] = "not coordinates"
+    collection["features"][7]["geometry"]["coordinates"] = [[[0, 0], [10, 10], [10, 0], [0, 10], [0, 0]]]
+    path = tmp_path / "bad.geojson"
+    path.write_text(json.dumps(collection))
+    for footprints in (path, collection):  # a file read into the spool, and a dict
+        got = list(procex.batch_iter(city(), footprints, jobs=2))
+        assert [b.status for b in got].count("ok") == 16
+        assert got[3].status == "refused" and "coordinates" in got[3].reason and got[3].meshes == []
+        assert got[3].feature is None
+        assert got[7].status == "refused" and "intersects itself" in got[7].reason
+        assert_same_buildings(procex.batch(city(), footprints, jobs=2), got)
+
+
+PEAK = """
+import resource, sys
+import procex
+recipe = procex.Recipe.load(sys.argv[1])
+n = 0
+for b in procex.{call}(recipe, sys.argv[2], jobs=2):
+    n += b.status == "ok" and len(b.meshes) > 0
+assert n == int(sys.argv[3]), n
+print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+"""
+
+
+def peak_kb(call, footprints, n):
+    r = subprocess.run([sys.executable, "-c", PEAK.format(call=call), str(SAMPLES / "city.pxg"), str(footprints),
+                        str(n)], capture_output=True, text=True, env=os.environ)
+    assert r.returncode == 0, r.stderr
+    return int(r.stdout)
+
+
+def test_peak_memory_does_not_follow_the_footprints(tmp_path):
+    """batch() holds every building (16.5 KB a city building, BENCHMARKS); the
+    iterator a window of them and 40 bytes a footprint of the spool's index."""
+    files = {}
+    for n in (2_000, 20_000):
+        files[n] = tmp_path / f"{n}.geojson"
+        subprocess.run([sys.executable, ROOT / "bench" / "batch_footprints.py", str(n), files[n]], check=True)
+    small, large = (peak_kb("batch_iter", files[n], n) for n in (2_000, 20_000))
+    print(f"batch_iter peak RSS: 2,000 footprints {small / 1024:.0f} MB, 20,000 {large / 1024:.0f} MB")
+    # 18,000 more buildings held would be about 290 MB more.
+    assert large - small < 20 * 1024, (small, large)
