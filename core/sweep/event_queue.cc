@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <iterator>
 
 #include <glm/geometric.hpp>
 
@@ -65,14 +67,6 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   heap_.push({std::max(at, z), at, c, n, kNone, kNone});
 }
 
-void EventQueue::Targets::clear() {
-  edge.clear();
-  nx.clear();
-  ny.clear();
-  k.clear();
-  c.clear();
-}
-
 void EventQueue::Targets::add(int e, const Plane& pl) {
   edge.push_back(e);
   nx.push_back(pl.n.x);
@@ -81,14 +75,21 @@ void EventQueue::Targets::add(int e, const Plane& pl) {
   c.push_back(pl.c);
 }
 
+bool EventQueue::Targets::same_as(const Targets& o) const {
+  const auto bits = [](const auto& a, const auto& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+  };
+  return bits(edge, o.edge) && bits(nx, o.nx) && bits(ny, o.ny) && bits(k, o.k) && bits(c, o.c);
+}
+
 void EventQueue::refresh_live(State& st) {
   const std::size_t corners = st.corners.size();
   if (corners == live_corners_) return;
   // Listing only the edges of new corners is O(1) per corner; the edges that
   // lost their spans are dropped by a full pass once half as many corners
-  // came.
-  if (corners - rebuilt_at_ > std::max<std::size_t>(64, live_.edge.size() / 2)) {
-    live_.clear();
+  // came. The pass starts a new set: lists of the old one still read it.
+  if (corners - rebuilt_at_ > std::max<std::size_t>(64, live_->edge.size() / 2)) {
+    live_ = std::make_shared<Targets>();
     listed_.assign(st.edges.size(), 0);
     for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
       if (!st.spans(e).empty()) list_live(st, e);
@@ -104,7 +105,7 @@ void EventQueue::refresh_live(State& st) {
 void EventQueue::list_live(const State& st, int e) {
   if (listed_[e]) return;
   listed_[e] = 1;
-  live_.add(e, st.edges[e].plane);
+  live_->add(e, st.edges[e].plane);
 }
 
 void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
@@ -115,28 +116,24 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
   schedule_edge_event(st, c);
   if (!may_split(st, c)) return;
   refresh_live(st);
-  add_splits(st, c, live_, resolved);
+  add_splits(st, c, live_, live_->edge.size(), resolved);
 }
 
 void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
   if (!may_split(st, c)) return;
-  some_.clear();
-  for (int e : edges) some_.add(e, st.edges[e].plane);
-  add_splits(st, c, some_, resolved);
+  // Callers give every corner the same new planes in turn: one copy serves them all.
+  auto some = std::make_shared<Targets>();
+  for (int e : edges) some->add(e, st.edges[e].plane);
+  if (!some_ || !some_->same_as(*some)) some_ = std::move(some);
+  add_splits(st, c, some_, some_->edge.size(), resolved);
 }
 
-void EventQueue::add_splits(const State& st, int c, const Targets& t, const std::vector<int>& resolved) {
-  const Corner& k = st.corners[c];
-  const double z = st.height;
-  const glm::dvec2 p = st.position(c, z);
-  const double earliest = z - st.tol().height();
-  // Nothing above the cap is ever resolved.
-  const double cap = st.options().max_height.value_or(HUGE_VAL);
-  const bool outward = st.any_outward;
-  const std::size_t n = t.edge.size();
+void EventQueue::find_splits(const SplitList& list) {
+  const Targets& t = *list.targets;
+  const std::size_t n = list.size;
   at_.resize(n);
-  meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, p, k.velocity, z, earliest, cap, outward,
-                  at_.data());
+  meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, list.p, list.v, list.z, list.earliest,
+                  list.cap, list.outward, at_.data());
   const double* meet = at_.data();
   // The few that meet, gathered without a branch per edge; in a capped
   // (nested) sweep whole runs of edges are out of reach.
@@ -153,7 +150,22 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
       m += meet[j] != HUGE_VAL;
     }
   }
-  if (m == 0) return;
+  found_.clear();
+  for (std::size_t h = 0; h < m; ++h) {
+    const std::size_t j = hits_[h];
+    const int e = t.edge[j];
+    const double at = meet[j];
+    if (e == list.prev_edge || e == list.next_edge) continue;
+    // A corner made by a collision with this edge meets it there because of it.
+    if (at <= list.near && std::find(list.resolved.begin(), list.resolved.end(), e) != list.resolved.end()) continue;
+    found_.push_back({at, e});
+  }
+}
+
+void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Targets> targets, std::size_t size,
+                            const std::vector<int>& resolved) {
+  if (size == 0) return;
+  const Corner& k = st.corners[c];
   int i;
   if (free_lists_.empty()) {
     i = static_cast<int>(lists_.size());
@@ -163,38 +175,77 @@ void EventQueue::add_splits(const State& st, int c, const Targets& t, const std:
     free_lists_.pop_back();
   }
   SplitList& list = lists_[i];
+  list.targets = std::move(targets);
+  list.size = size;
+  list.z = st.height;
+  list.p = st.position(c, list.z);
+  list.v = k.velocity;
+  list.earliest = list.z - st.tol().height();
+  list.near = list.z + st.tol().height();
+  // Nothing above the cap is ever resolved.
+  list.cap = st.options().max_height.value_or(HUGE_VAL);
+  list.outward = st.any_outward;
+  list.prev_edge = k.prev_edge;
+  list.next_edge = k.next_edge;
+  list.resolved = resolved;
   list.splits.clear();
-  list.splits.reserve(m);
-  list.picked = 0;
-  list.z = z;
-  for (std::size_t h = 0; h < m; ++h) {
-    const std::size_t j = hits_[h];
-    const int e = t.edge[j];
-    const double at = meet[j];
-    if (e == k.prev_edge || e == k.next_edge) continue;
-    // A corner made by a collision with this edge meets it there because of it.
-    if (at <= z + st.tol().height() && std::find(resolved.begin(), resolved.end(), e) != resolved.end()) continue;
-    list.splits.push_back({at, e});
-  }
-  st.count_events(list.splits.size());
+  list.last = {0.0, kNone};
+  list.same = 0;
+  find_splits(list);
+  list.left = found_.size();
+  st.count_events(found_.size());
+  hold_next(i);
   advance(i, c);
+}
+
+void EventQueue::hold_next(int i) {
+  SplitList& list = lists_[i];
+  const SplitEarlier earlier{list.z};
+  // Those queued already: up to the last, and as many equal to it as were queued.
+  auto end = found_.end();
+  if (list.last.edge != kNone) {
+    std::size_t same = list.same;
+    end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) {
+      if (earlier(list.last, s)) return false;
+      if (!earlier(s, list.last) && same == 0) return false;
+      if (!earlier(s, list.last)) --same;
+      return true;
+    });
+  }
+  // The lowest few, the lowest last.
+  const auto keep = std::min<std::ptrdiff_t>(kHeld, end - found_.begin());
+  std::partial_sort(found_.begin(), found_.begin() + keep, end, earlier);
+  list.splits.assign(std::make_reverse_iterator(found_.begin() + keep), std::make_reverse_iterator(found_.begin()));
+  held_ += list.splits.size();
+  peak_held_ = std::max(peak_held_, held_);
+}
+
+void EventQueue::free_list(int i) {
+  SplitList& list = lists_[i];
+  held_ -= list.splits.size();
+  list.splits.clear();
+  list.targets.reset();
+  list.left = 0;
+  free_lists_.push_back(i);
 }
 
 void EventQueue::advance(int i, int c) {
   SplitList& list = lists_[i];
-  if (list.splits.empty()) {
-    free_lists_.push_back(i);
+  if (list.left == 0) {
+    free_list(i);
     return;
   }
-  if (list.picked == 0) {
-    // The lowest few to the back, the lowest last.
-    list.picked = std::min<std::size_t>(4, list.splits.size());
-    std::partial_sort(list.splits.rbegin(), list.splits.rbegin() + static_cast<std::ptrdiff_t>(list.picked),
-                      list.splits.rend(), SplitEarlier{list.z});
+  if (list.splits.empty()) {
+    find_splits(list);
+    hold_next(i);
   }
   const Split s = list.splits.back();
   list.splits.pop_back();
-  --list.picked;
+  --held_;
+  --list.left;
+  const SplitEarlier earlier{list.z};
+  list.same = list.last.edge != kNone && !earlier(list.last, s) && !earlier(s, list.last) ? list.same + 1 : 1;
+  list.last = s;
   heap_.push({std::max(s.at, list.z), s.at, c, kNone, s.edge, i});
 }
 
@@ -207,7 +258,7 @@ const std::vector<Candidate>& EventQueue::pop_cluster(const State& st) {
     heap_.pop();
     // A dead corner's events are void, and so is the rest of its list.
     if (!st.corners[e.corner].alive) {
-      if (e.list != kNone) free_lists_.push_back(e.list);
+      if (e.list != kNone) free_list(e.list);
       continue;
     }
     if (e.list != kNone) advance(e.list, e.corner);

@@ -4,14 +4,19 @@
 //
 // A reflex corner may run into any live edge: O(n) potential split events per
 // corner, most of which never happen (the corner dies first, or the edge's
-// spans are elsewhere by then). Each scheduling keeps its split candidates in
-// a list of its own, and only the lowest of each list sits in the height
-// queue; popping it brings up the list's next one. The queue stays O(n), and
-// a list whose corner has died is dropped unread.
+// spans are elsewhere by then). Each scheduling is a list of its own, and only
+// the lowest of each list sits in the height queue; popping it brings up the
+// list's next one. A list holds only its lowest few splits: when they are used
+// up it works the rest out again from what it was listed against (the edges'
+// planes as they were then, kept shared by every list of that time) and picks
+// the next few above the last it queued. So the queue and the lists stay O(n)
+// however many reflex corners there are, and a list whose corner has died is
+// dropped unread.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <queue>
 #include <vector>
 
@@ -52,21 +57,49 @@ class EventQueue {
   // returns those of live corners, lowest first (valid until the next call).
   const std::vector<Candidate>& pop_cluster(const State& st);
 
+  // Split candidates held in lists now, and the most held at once: what the
+  // lists cost in memory (a few per list, however many edges are live).
+  std::size_t held() const { return held_; }
+  std::size_t peak_held() const { return peak_held_; }
+
  private:
-  // A split candidate waiting in its corner's list: where the corner meets
-  // the edge's plane (queued no lower than the list's height).
+  // A split candidate: where the corner meets the edge's plane.
   struct Split {
     double at;
     int edge;
   };
-  // One scheduling's split candidates. A corner lives to see only a few of
-  // them popped, so they are not kept sorted: the lowest few are picked out
-  // (one pass) into the back, lowest last, and picked again when used up.
-  struct SplitList {
-    std::vector<Split> splits;
-    std::size_t picked = 0;  // the last `picked` splits are the lowest, in order
-    double z = 0.0;          // the sweep plane's height when listed
+  // Edges a corner may run into, their planes' coefficients side by side
+  // (the test of every corner against every edge is the sweep's inner loop).
+  // Only appended to: a list reads the first `size` edges, as they were when
+  // it was listed, however many came since.
+  struct Targets {
+    std::vector<int> edge;
+    std::vector<double> nx, ny, k, c;
+    void add(int e, const Plane& pl);
+    // The same edges with the same coefficients, to the bit.
+    bool same_as(const Targets& o) const;
   };
+  // One scheduling's split candidates: what corner c was at when listed, and
+  // the edges it was listed against, so that its splits can be worked out
+  // again to the same bits. Only the lowest few are held, lowest last.
+  struct SplitList {
+    std::shared_ptr<const Targets> targets;
+    std::size_t size = 0;  // the first `size` of targets
+    glm::dvec2 p{0.0}, v{0.0};
+    double z = 0.0;  // the sweep plane's height when listed
+    double earliest = 0.0, near = 0.0, cap = 0.0;
+    bool outward = false;
+    int prev_edge = kNone, next_edge = kNone;
+    std::vector<int> resolved;  // edges of the collision that made the corner
+    std::vector<Split> splits;  // the lowest not yet queued, lowest last
+    std::size_t left = 0;       // splits not yet queued, held or not
+    Split last{0.0, kNone};     // the last queued
+    std::size_t same = 0;       // queued in a row equal to `last` (an edge listed twice)
+  };
+  // Splits a list holds at once. A corner lives to see only a few of them
+  // popped; each time the held ones run out, the list is worked out again
+  // (one pass over its edges), so this trades that pass against memory.
+  static constexpr std::ptrdiff_t kHeld = 8;
   // A candidate in the height queue; its point is worked out when it is popped.
   struct Entry {
     double z, at;  // queued at height z; the planes meet at height `at`
@@ -84,33 +117,34 @@ class EventQueue {
       return za != zb ? za < zb : a.edge < b.edge;
     }
   };
-  // Edges a corner may run into, their planes' coefficients side by side
-  // (the test of every corner against every edge is the sweep's inner loop).
-  struct Targets {
-    std::vector<int> edge;
-    std::vector<double> nx, ny, k, c;
-    void clear();
-    void add(int e, const Plane& pl);
-  };
   // The edges with live spans. Edges gain spans only with new corners, which
   // add their edges; an edge that lost its spans since only costs candidates
-  // that fail validation, until a full pass drops it.
+  // that fail validation, until a full pass starts a new set and drops it.
   void refresh_live(State& st);
   void list_live(const State& st, int e);
-  // Lists the splits of corner c against `targets`.
-  void add_splits(const State& st, int c, const Targets& targets, const std::vector<int>& resolved);
+  // Lists the splits of corner c against the first `size` of `targets`.
+  void add_splits(const State& st, int c, std::shared_ptr<const Targets> targets, std::size_t size,
+                  const std::vector<int>& resolved);
+  // Works out list i's splits into found_ (all of them, unordered).
+  void find_splits(const SplitList& list);
+  // Holds the lowest few of found_ after the last list i queued.
+  void hold_next(int i);
   // Puts the lowest split of list i (of corner c) in the queue, or frees the list.
   void advance(int i, int c);
+  void free_list(int i);
 
   std::priority_queue<Entry, std::vector<Entry>, EntryLater> heap_;
   std::vector<SplitList> lists_;
   std::vector<int> free_lists_;
-  Targets live_, some_;
-  std::vector<char> listed_;                        // edge -> in live_
-  std::vector<char> outward_;                       // corner -> scheduled once a plane leaned out
+  std::shared_ptr<Targets> live_ = std::make_shared<Targets>();
+  std::shared_ptr<const Targets> some_;               // the last edges schedule_splits was given
+  std::vector<char> listed_;                          // edge -> in live_
+  std::vector<char> outward_;                         // corner -> scheduled once a plane leaned out
   std::size_t live_corners_ = 0, rebuilt_at_ = 0;    // corners seen by live_, at its last full pass
-  std::vector<double> at_;                          // scratch of add_splits
+  std::size_t held_ = 0, peak_held_ = 0;
+  std::vector<double> at_;  // scratch of find_splits
   std::vector<std::uint32_t> hits_;
+  std::vector<Split> found_;
   std::vector<Candidate> cluster_;  // what pop_cluster returned last
 };
 
