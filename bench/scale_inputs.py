@@ -4,7 +4,7 @@ polygons at n = 1k .. 1M vertices, written in the synthetic polyjson format
 (core/io/polyjson.h) as <family>_<n>.json. Deterministic: the same arguments
 give the same bytes.
 
-  bench/scale_inputs.py OUT_DIR [--max-n N] [--families a,b,...]
+  bench/scale_inputs.py OUT_DIR [--max-n N] [--sizes n,n,...] [--families a,b,...]
 
 Families (n is the requested vertex count; the file holds about that many):
   regular   regular n-gon of circumradius 100 m
@@ -75,13 +75,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out_dir")
     parser.add_argument("--max-n", type=int, default=SIZES[-1])
+    parser.add_argument("--sizes", default=",".join(map(str, SIZES)), help="the n to write (default: the scale run's)")
     parser.add_argument("--families", default=",".join(FAMILIES))
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     for family in args.families.split(","):
         if family not in FAMILIES:
             parser.error(f"unknown family {family!r}; known: {', '.join(FAMILIES)}")
-        for n in (s for s in SIZES if s <= args.max_n):
+        for n in (s for s in map(int, args.sizes.split(",")) if s <= args.max_n):
             path = os.path.join(args.out_dir, f"{family}_{n}.json")
             with open(path + ".tmp", "w") as f:
                 json.dump({"loops": FAMILIES[family](n)}, f, separators=(",", ":"))
