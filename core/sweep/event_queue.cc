@@ -189,6 +189,7 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   list.next_edge = k.next_edge;
   list.resolved = resolved;
   list.splits.clear();
+  list.hold = kHeld;
   list.last = {0.0, kNone};
   list.same = 0;
   find_splits(list);
@@ -213,7 +214,7 @@ void EventQueue::hold_next(int i) {
     });
   }
   // The lowest few, the lowest last.
-  const auto keep = std::min<std::ptrdiff_t>(kHeld, end - found_.begin());
+  const auto keep = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(list.hold), end - found_.begin());
   std::partial_sort(found_.begin(), found_.begin() + keep, end, earlier);
   list.splits.assign(std::make_reverse_iterator(found_.begin() + keep), std::make_reverse_iterator(found_.begin()));
   held_ += list.splits.size();
@@ -236,6 +237,7 @@ void EventQueue::advance(int i, int c) {
     return;
   }
   if (list.splits.empty()) {
+    list.hold = std::min(2 * list.hold, kHeldMost);
     find_splits(list);
     hold_next(i);
   }

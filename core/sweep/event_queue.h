@@ -92,14 +92,18 @@ class EventQueue {
     int prev_edge = kNone, next_edge = kNone;
     std::vector<int> resolved;  // edges of the collision that made the corner
     std::vector<Split> splits;  // the lowest not yet queued, lowest last
+    std::size_t hold = 0;       // how many it holds when it works them out
     std::size_t left = 0;       // splits not yet queued, held or not
     Split last{0.0, kNone};     // the last queued
     std::size_t same = 0;       // queued in a row equal to `last` (an edge listed twice)
   };
-  // Splits a list holds at once. A corner lives to see only a few of them
+  // Splits a list holds at once. Most corners live to see only a few of them
   // popped; each time the held ones run out, the list is worked out again
-  // (one pass over its edges), so this trades that pass against memory.
-  static constexpr std::ptrdiff_t kHeld = 8;
+  // (one pass over its edges), so a list that runs out holds twice as many
+  // the next time, up to kHeldMost: a long-lived corner whose splits keep
+  // failing (a star's, passed by the edges' spans) costs a pass per
+  // kHeldMost splits, not per kHeld.
+  static constexpr std::size_t kHeld = 8, kHeldMost = 128;
   // A candidate in the height queue; its point is worked out when it is popped.
   struct Entry {
     double z, at;  // queued at height z; the planes meet at height `at`
