@@ -3,6 +3,8 @@
 // footprint in millimetres and one in kilometres behave the same.
 #pragma once
 
+#include <algorithm>
+
 #include "core/geom/footprint.h"
 
 namespace procex {
@@ -41,6 +43,9 @@ struct SweepTolerances {
 
   // Paper delta2: events whose heights differ by less than this form one cluster.
   double height() const { return relative * scale; }
+  // Heights closer than this differ only by rounding (the finest delta2, at
+  // any clustering scale): events there are one instant, whatever their order.
+  double simultaneous() const { return std::min(relative, retry_relative[0]) * scale; }
   // Paper delta3: events within this plan distance at one height are one point.
   double position() const { return relative * scale; }
   // Paper delta1: how far a collision may lie outside an edge's span and still hit it.

@@ -161,6 +161,14 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const s
   throw SweepError(msg.str(), st.height, ids);
 }
 
+// What rewiring one cluster made, to settle once every cluster of its instant
+// is rewired: its new corners, its planes and the height it was resolved at.
+struct Rewired {
+  std::vector<int> made;
+  std::vector<int> edges;
+  double z;
+};
+
 // Whether the wedge outside the solid between an incoming ray (edge a, at
 // angle in_angle) and the next outgoing ray counter-clockwise (edge b) closes
 // as the sweep rises: the lines of a and b then cross inside that wedge, or on
@@ -202,7 +210,8 @@ bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle
   return at <= out;
 }
 
-void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>& cs, const std::vector<int>& members) {
+void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vector<int>& members,
+                     std::vector<Rewired>& out) {
   const double z = st.height;
   glm::dvec2 p{0.0};
   // The participating edges, each once: a corner meeting a thousand planes
@@ -399,12 +408,7 @@ void resolve_cluster(State& st, EventQueue& queue, const std::vector<Collision>&
     open.pop_back();
   }
 
-  const std::vector<int> live = settle(st, made);
-  for (int n : live) {
-    if (!st.corners[n].alive) continue;
-    queue.schedule(st, n, edges);
-    queue.schedule_edge_event(st, st.corners[n].prev);
-  }
+  out.push_back({std::move(made), std::move(edges), z});
 }
 
 }  // namespace
@@ -425,10 +429,39 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   std::vector<std::size_t> order(groups.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return zs[a] < zs[b]; });
+  // Clusters at one height up to rounding are one instant, so their order is
+  // rounding's: rewire them all before any settles. Settling folds spikes,
+  // hands runs to parallel neighbours and closes flat loops, reaching along
+  // whole spans; done after one cluster, it can reach the point of another
+  // still waiting (fronts meeting each other and walls head-on along whole
+  // spans, in recesses cut into a 1 m wing), take a span that cluster needs
+  // and leave it void, so the roof would depend on which of the two rounding
+  // put lower. Clusters further apart in height (at a coarser clustering
+  // scale) follow each other, each settled before the next.
+  std::vector<Rewired> rewired;
+  auto settle_rewired = [&] {
+    const double top = st.height;
+    for (const Rewired& r : rewired) {
+      st.height = r.z;
+      for (int n : settle(st, r.made)) {
+        if (!st.corners[n].alive) continue;
+        queue.schedule(st, n, r.edges);
+        queue.schedule_edge_event(st, st.corners[n].prev);
+      }
+    }
+    st.height = top;
+    rewired.clear();
+  };
+  double instant = -HUGE_VAL;
   for (std::size_t g : order) {
+    if (zs[g] > instant + st.tol().simultaneous()) {
+      settle_rewired();
+      instant = zs[g];
+    }
     st.height = std::max(st.height, zs[g]);
-    resolve_cluster(st, queue, cs, groups[g]);
+    resolve_cluster(st, cs, groups[g], rewired);
   }
+  settle_rewired();
 }
 
 }  // namespace procex::engine

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
@@ -28,6 +29,9 @@ namespace {
 struct LocalFrame {
   glm::dvec2 centre;
   double extent;
+  // How far rounding may have moved one point from another: a coordinate
+  // carries up to an ulp of its magnitude, the difference of two up to two.
+  double rounding;
 };
 
 LocalFrame local_frame(const Footprint& fp) {
@@ -39,7 +43,8 @@ LocalFrame local_frame(const Footprint& fp) {
     }
   const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
   if (!(extent > 0.0) || !std::isfinite(extent)) throw InputError("footprint has no extent");
-  return {0.5 * (lo + hi), extent};
+  const double magnitude = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)});
+  return {0.5 * (lo + hi), extent, 2.0 * std::numeric_limits<double>::epsilon() * magnitude};
 }
 
 Footprint moved(Footprint fp, glm::dvec2 by) {
@@ -166,7 +171,13 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   engine::Budget budget(options.budget);
   std::exception_ptr first;  // the first attempt's error, of its own type (an open roof stays one)
   int retries = 0;
+  // A clustering distance finer than the rounding the plan took where it
+  // stands (a footprint a few centimetres across at x = 5e6) would tell
+  // points apart by where it stands: such scales are not tried, the coarsest
+  // always is.
   for (double relative : engine::Tolerances::retry_relative) {
+    if (relative * frame.extent < frame.rounding && relative != std::end(engine::Tolerances::retry_relative)[-1])
+      continue;
     tol.relative = relative;
     try {
       Surface s = sweep_with(local, options, tol, budget);
