@@ -77,7 +77,8 @@ void EventQueue::Targets::add(int e, const Plane& pl) {
 
 bool EventQueue::Targets::same_as(const Targets& o) const {
   const auto bits = [](const auto& a, const auto& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    // An empty vector's data() may be null, which memcmp must not be given even for no bytes.
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
   };
   return bits(edge, o.edge) && bits(nx, o.nx) && bits(ny, o.ny) && bits(k, o.k) && bits(c, o.c);
 }
