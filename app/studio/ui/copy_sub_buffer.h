@@ -11,6 +11,16 @@
 // back buffer as it was, and it is never swapped, so it keeps the whole
 // window from frame to frame: a frame draws the rectangles that changed into
 // it and copies those to the window, nothing else.
+//
+// The back buffer's age (GLX_EXT_buffer_age, ui/back_buffer_age.h) plays no
+// part here, rightly: it counts swaps since the back buffer was last shown,
+// and this back buffer is never swapped, so it holds exactly what the studio
+// drew into it. A server that reports the age would say 0 (undefined) for
+// it every frame (Mesa's DRI3 loader gives 0 to a buffer never swapped), and
+// heeding that would redraw the whole window each time. What does take its
+// pixels is handled apart: a resize gives a new back buffer (PartialRedraw
+// sees the size change and redraws all), and an exposed window is drawn and
+// copied again in full (PartialRedraw::invalidate).
 #pragma once
 
 #include <vector>

@@ -72,7 +72,7 @@ PartialRedraw::Outcome PartialRedraw::render(ImDrawData* draw, int width, int he
     outcome.pixels_redrawn += static_cast<double>(r.size().x) * r.size().y;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (!image_) {
+  if (!image_) {  // never swapped: the back buffer holds every earlier frame, whatever its age says (copy_sub_buffer.h)
     outcome.copy_to_window = damage;
     return outcome;
   }
