@@ -810,6 +810,10 @@ class App {
     nlohmann::json j;
     j["window"] = {wx, wy};
     j["revision"] = doc_->revision();
+    // The revision the evaluation thread was last given. The map is written after the frame has sent
+    // its own edits (submit_if_changed), so it is never behind `revision` here: an edit does not wait
+    // for the next frame, which comes only with the next event (a held key's release) or wake-up.
+    j["sent"] = submitted_;
     j["settled"] = settled() && !layout_moving_;
     j["dirty"] = doc_->dirty();
     j["selected"] = doc_->selected();

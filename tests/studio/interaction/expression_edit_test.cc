@@ -115,5 +115,43 @@ TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused
   EXPECT_DOUBLE_EQ(shape->params[*shape->decl().param_index("width")].get<double>(), 20.0);
 }
 
+// An edit made by a key press goes to the evaluation in the frame that made it. Enter in a field
+// commits it while the key is still down; the next X event is the key's release, so an edit left
+// for the next frame would wait for it (or for the loop's idle wake-up). Here Enter is held until
+// the preview shows the result, and every ui map read meanwhile (each written at a frame's end)
+// must show the edit already sent (`sent`, the revision the evaluation thread was last given).
+TEST(StudioExpressions, AnEditCommittedByEnterIsEvaluatedWhileTheKeyIsHeld) {
+  const fs::path dir = fresh_dir("held_enter");
+  const fs::path recipe = dir / "block.pxg";
+  std::ofstream(recipe) << R"({
+  "format": "procex-graph", "version": 2, "metadata": {"name": "block"}, "inputs": [],
+  "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
+  "nodes": [
+    {"id": 1, "type": "Footprint Shape", "version": 1, "params": {"shape": "rectangle", "width": 14.0, "depth": 11.0}},
+    {"id": 2, "type": "Extrude", "version": 1, "params": {}}
+  ],
+  "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "@mesh"}],
+  "exposed": [{"name": "width", "node": 1, "param": "width"}],
+  "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}}}
+})";
+  Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
+  json map = studio.wait("the block evaluated", [](const json& j) { return j["settled"] && j["params"].contains("depth") && extent_is(j, 14, 11); });
+  menu(studio, map, "depth", "expression_menu");
+  map = type_into_focused_field(studio, "the expression field", "width / 2");
+  const std::uint64_t rev = revision(map);
+  EXPECT_EQ(map["sent"], map["revision"]);
+  xdo("keydown Return");
+  std::size_t maps_read = 0, behind = 0;
+  map = studio.wait("the depth from the width, Return still held", [&](const json& j) {
+    ++maps_read;
+    if (revision(j) > rev && j["sent"] != j["revision"]) ++behind;
+    return revision(j) > rev && j["settled"] && extent_is(j, 14, 7);
+  });
+  xdo("keyup Return");
+  EXPECT_EQ(behind, 0u) << "of " << maps_read << " ui maps read, " << behind << " showed the edit made but not yet sent to the evaluation";
+  EXPECT_EQ(revision(map), rev + 1);
+  EXPECT_EQ(map["errors"], 0);
+}
+
 }  // namespace
 }  // namespace procex::studio
