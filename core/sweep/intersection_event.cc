@@ -74,8 +74,15 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
 // first-member order. Collisions that share a corner there are one event
 // (a corner meeting many planes at once, the corners of a regular polygon
 // meeting at its centre): they are joined through their corners first, and
-// the plan grid compares one point per such group, so a thousand-fold
-// coincidence costs a thousand steps, not a million pairs.
+// the plan grid compares one point per such group.
+//
+// The grid's cells are two thirds of delta3 wide, so any two points in one
+// cell are within delta3 and a cell joins as a whole, without a comparison;
+// two cells (at most two apart) are compared point by point only while their
+// groups are apart, and only until one pair is close enough. Thousands of
+// corners of a jittered star racing through its centre within one delta2,
+// each meeting the planes at its own height, are joined in as many steps,
+// not compared pair by pair (hundreds of thousands of points in a few cells).
 std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collision>& cs) {
   const double radius = st.tol().position();
   std::vector<int> parent(cs.size());
@@ -90,26 +97,50 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
       const auto [it, fresh] = by_corner.try_emplace(c, i);
       if (!fresh && glm::length(cs[i].p - cs[it->second].p) <= radius) parent[find(i)] = find(it->second);
     }
-  std::vector<int> leader(cs.size());
-  for (int i = 0; i < static_cast<int>(cs.size()); ++i) leader[i] = find(i);
-  // Grid of cell size `radius`: only neighbouring cells can hold partners.
-  std::unordered_map<std::uint64_t, std::vector<int>> grid;
-  // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
-  auto key = [](long long x, long long y) {
-    return static_cast<std::uint64_t>(x) * 73856093ULL ^ static_cast<std::uint64_t>(y) * 19349663ULL;
+  struct Cell {
+    long long x, y;
+    bool operator==(const Cell&) const = default;
   };
+  struct CellHash {
+    // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
+    std::size_t operator()(const Cell& c) const {
+      return static_cast<std::size_t>(static_cast<std::uint64_t>(c.x) * 73856093ULL ^
+                                      static_cast<std::uint64_t>(c.y) * 19349663ULL);
+    }
+  };
+  // A cell's diagonal (0.94 delta3) stays within delta3 after rounding, and
+  // points three cells apart are more than delta3 apart.
+  const double side = radius / 1.5;
+  std::unordered_map<Cell, std::vector<int>, CellHash> grid;
+  std::vector<Cell> cells;  // in first-member order
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
-    if (leader[i] != i) continue;
-    const long long gx = static_cast<long long>(std::floor(cs[i].p.x / radius));
-    const long long gy = static_cast<long long>(std::floor(cs[i].p.y / radius));
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy) {
-        auto it = grid.find(key(gx + dx, gy + dy));
+    if (find(i) != i) continue;  // one point per group joined through its corners
+    const Cell cell{static_cast<long long>(std::floor(cs[i].p.x / side)),
+                    static_cast<long long>(std::floor(cs[i].p.y / side))};
+    std::vector<int>& members = grid[cell];
+    if (members.empty()) cells.push_back(cell);
+    members.push_back(i);
+  }
+  for (const Cell& cell : cells) {
+    const std::vector<int>& members = grid.at(cell);
+    for (int m : members) parent[find(m)] = find(members.front());
+  }
+  for (const Cell& cell : cells) {
+    const std::vector<int>& here = grid.at(cell);
+    for (long long dx = -2; dx <= 2; ++dx)
+      for (long long dy = -2; dy <= 2; ++dy) {
+        if (dx < 0 || (dx == 0 && dy <= 0)) continue;  // each pair of cells once
+        const auto it = grid.find({cell.x + dx, cell.y + dy});
         if (it == grid.end()) continue;
-        for (int j : it->second)
-          if (find(i) != find(j) && glm::length(cs[i].p - cs[j].p) <= radius) parent[find(i)] = find(j);
+        const std::vector<int>& there = it->second;
+        bool joined = find(here.front()) == find(there.front());
+        for (std::size_t a = 0; a < here.size() && !joined; ++a)
+          for (std::size_t b = 0; b < there.size() && !joined; ++b)
+            if (glm::length(cs[here[a]].p - cs[there[b]].p) <= radius) {
+              parent[find(here[a])] = find(there[b]);
+              joined = true;
+            }
       }
-    grid[key(gx, gy)].push_back(i);
   }
   std::vector<std::vector<int>> groups;
   std::unordered_map<int, int> group_of;

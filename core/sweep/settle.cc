@@ -22,18 +22,22 @@ bool close_if_degenerate(State& st, int start) {
   const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
   double worst_turn = 0.0, extent = 0.0;
   const glm::dvec2 p0 = st.position(start, st.height);
+  // On one line as runs_straight judges a plan: the edges' directions part by
+  // less than the clustering distance over the loop (edges of a plan far from
+  // the origin, on one grid line in exact terms, differ by 1e-10 rad).
+  const auto collinear = [&] {
+    return worst_turn <= Tolerances::parallel_sin || worst_turn * extent <= st.tol().position();
+  };
   do {
     loop.push_back(c);
     worst_turn = std::max(worst_turn, std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)));
     extent = std::max(extent, glm::length(st.position(c, st.height) - p0));
+    // Both only grow: a loop of three corners off one line has area, and the
+    // rest of it (thousands of corners, for every corner made) is not walked.
+    if (loop.size() > 2 && !collinear()) return false;
     c = st.corners[c].next;
     if (loop.size() > st.corners.size()) throw SweepError("sweep: corrupt loop at height " + std::to_string(st.height), st.height, {});
   } while (c != start);
-  // On one line as runs_straight judges a plan: the edges' directions part by
-  // less than the clustering distance over the loop (edges of a plan far from
-  // the origin, on one grid line in exact terms, differ by 1e-10 rad).
-  const bool collinear = worst_turn <= Tolerances::parallel_sin || worst_turn * extent <= st.tol().position();
-  if (loop.size() > 2 && !collinear) return false;
   std::vector<std::uint32_t> v;
   std::vector<double> along;
   for (int x : loop) {
