@@ -125,7 +125,7 @@ TEST(Generators, PlansAreValidFootprintsOfTheirSize) {
 }
 
 TEST(Generators, ASeedGivesTheSameCaseEveryTime) {
-  for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size}) {
+  for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size, CaseClass::Stars, CaseClass::LargeStars}) {
     for (std::uint64_t seed : {0u, 7u, 12345u}) {
       const GeneratedCase a = generate_case(cls, seed), b = generate_case(cls, seed);
       EXPECT_EQ(a.description, b.description);

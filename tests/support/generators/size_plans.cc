@@ -34,6 +34,15 @@ NamedPlan star(std::size_t n, double outer, double inner) {
                even_angles(n), radii);
 }
 
+NamedPlan jittered_star(std::size_t n, double outer, double inner, double jitter, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> moved(-jitter, jitter);
+  std::vector<double> radii(n);
+  for (std::size_t i = 0; i < n; ++i) radii[i] = (i % 2 == 0 ? outer : inner) + moved(rng);
+  return polar("star of " + std::to_string(n) + " vertices, radii " + std::to_string(outer) + "/" +
+                   std::to_string(inner) + " each moved by up to " + std::to_string(jitter),
+               even_angles(n), radii);
+}
+
 NamedPlan random_star_shaped(std::size_t n, double radius, std::mt19937_64& rng) {
   // Angles jittered within their own slot keep order and a positive gap.
   std::uniform_real_distribution<double> unit(0.0, 1.0);

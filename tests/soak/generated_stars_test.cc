@@ -1,0 +1,38 @@
+// Jittered stars (class (c) of issue 12, tests/support/generators/): stars of
+// radii 100 and 90 m whose vertices are moved by up to a millimetre, so that
+// thousands of events fall within micrometres of one height and the last
+// ones within a millimetre of one point. Every case must pass every property
+// check_case applies, CGAL's skeleton included (inexact constructions above
+// kExactOracleVertices); a failure is printed when found and minimised by
+// halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices
+// (meant for CI once the class passes; TESTING.md records its runs) and
+// 3,000 to 12,000. Label `soak`: a case takes CGAL a minute or more.
+#include <cstddef>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/generators/run_generated.h"
+
+namespace procex::testing {
+namespace {
+
+constexpr std::size_t kParts = 4;
+
+class GeneratedStars : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedStars, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::Stars, GetParam(), kParts, {.normal = 12, .soak = 400, .shrink_tries = 4});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedStars, ::testing::Range<std::size_t>(0, kParts));
+
+class GeneratedLargeStars : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedLargeStars, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::LargeStars, GetParam(), kParts, {.normal = 12, .soak = 400, .shrink_tries = 4});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedLargeStars, ::testing::Range<std::size_t>(0, kParts));
+
+}  // namespace
+}  // namespace procex::testing
