@@ -136,9 +136,9 @@ void for_each_skeleton(const std::vector<PolygonWithHoles>& polygons, Visit&& vi
     const auto ss = CGAL::create_interior_straight_skeleton_2(outer.vertices_begin(), outer.vertices_end(),
                                                               holes.begin(), holes.end(), Kernel());
     if (!ss)
-      throw std::runtime_error("CGAL create_interior_straight_skeleton_2 failed on polygon " + std::to_string(i) +
-                               " (" + std::to_string(outer.size()) + " outer vertices, " +
-                               std::to_string(holes.size()) + " holes)");
+      throw CgalNoSkeleton("CGAL create_interior_straight_skeleton_2 gave no skeleton for polygon " + std::to_string(i) +
+                           " (" + std::to_string(outer.size()) + " outer vertices, " + std::to_string(holes.size()) +
+                           " holes)");
     visit(*ss);
   }
 }
@@ -147,7 +147,7 @@ void for_each_skeleton(const std::vector<PolygonWithHoles>& polygons, Visit&& vi
 // MergeCoincidentNodes on plans with exactly coincident events (CGAL issue
 // 7203, fixed in later releases), and whether it does depends on the heap's
 // layout: the same plan passes in one process and crashes in another. The
-// skeleton is built in a child process, so a crash is a CgalCrash the oracle
+// skeleton is built in a child process, so a crash is a CgalNoSkeleton the oracle
 // weighs, not the end of the test run that met it.
 template <class T>
 void put_array(std::string& out, const std::vector<T>& v) {
@@ -230,6 +230,8 @@ CgalSkeleton in_child_process(std::size_t memory, Build build) {
       put_array(answer, s.nodes);
       put_array(answer, adjacent);
       put_array(answer, faces);
+    } catch (const CgalNoSkeleton& e) {
+      answer = std::string("N") + e.what();
     } catch (const std::exception& e) {
       answer = std::string("E") + e.what();
     }
@@ -256,10 +258,11 @@ CgalSkeleton in_child_process(std::size_t memory, Build build) {
     throw CgalOutOfMemory("CGAL's straight skeleton of this plan needs more than its cap of " +
                           std::to_string(memory >> 20) + " MB (kCgalChildMemory): no oracle for it");
   if (WIFSIGNALED(status))
-    throw CgalCrash("CGAL's straight skeleton crashed on this plan (" + std::string(strsignal(WTERMSIG(status))) +
+    throw CgalNoSkeleton("CGAL's straight skeleton crashed on this plan (" + std::string(strsignal(WTERMSIG(status))) +
                     "; CGAL 5.5.1's MergeCoincidentNodes, CGAL issue 7203)");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || answer.empty())
     throw std::runtime_error("cgal_skeleton: the child building the skeleton gave no answer");
+  if (answer[0] == 'N') throw CgalNoSkeleton(answer.substr(1));
   if (answer[0] == 'E') throw std::runtime_error(answer.substr(1));
   std::size_t at = 1;
   CgalSkeleton out;

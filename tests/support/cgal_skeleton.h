@@ -31,9 +31,11 @@ struct CgalSkeleton {
   std::vector<std::pair<std::int32_t, std::size_t>> faces_per_edge;
 };
 
-// CGAL crashed building a skeleton (it runs in a child process, see
-// cgal_skeleton.cc): the plan has no CGAL skeleton to compare with.
-struct CgalCrash : std::runtime_error {
+// CGAL gave no skeleton for the plan: it crashed building one (it runs in a
+// child process, see cgal_skeleton.cc), or create_interior_straight_skeleton_2
+// returned none, as CGAL 5.5 does for some plans whose events coincide exactly
+// (a polyomino turned by 45 degrees). There is nothing to compare with.
+struct CgalNoSkeleton : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
@@ -77,7 +79,7 @@ class CgalSkeletonInput {
   // than min_ridge are not ridges: CGAL splits a node where more than three
   // faces meet into several joined by zero-length bisectors. Built in a child
   // process of at most `memory` bytes more address space than the caller's:
-  // throws CgalCrash if CGAL crashes, CgalOutOfMemory if it needs more.
+  // throws CgalNoSkeleton if CGAL crashes or gives none, CgalOutOfMemory if it needs more.
   CgalSkeleton skeleton(double min_ridge, CgalConstructions constructions = CgalConstructions::Exact,
                         std::size_t memory = kCgalChildMemory) const;
 

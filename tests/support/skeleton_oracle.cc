@@ -69,7 +69,7 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   try {
     cgal = CgalSkeletonInput(footprint).skeleton(
         tol, vertices > kExactOracleVertices ? CgalConstructions::Inexact : CgalConstructions::Exact);
-  } catch (const CgalCrash& e) {
+  } catch (const CgalNoSkeleton& e) {
     // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
     problems.push_back(e.what());
     return problems;
