@@ -48,9 +48,8 @@ void type_and_enter(const std::string& text) {
   press("Return");
 }
 
-TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused) {
-  const fs::path dir = fresh_dir("expression");
-  const fs::path recipe = dir / "block.pxg";
+// A 14 x 11 m block whose width is exposed, its depth free for an expression.
+void write_block(const fs::path& recipe) {
   std::ofstream(recipe) << R"({
   "format": "procex-graph", "version": 2, "metadata": {"name": "block"}, "inputs": [],
   "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
@@ -62,6 +61,12 @@ TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused
   "exposed": [{"name": "width", "node": 1, "param": "width"}],
   "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}}}
 })";
+}
+
+TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused) {
+  const fs::path dir = fresh_dir("expression");
+  const fs::path recipe = dir / "block.pxg";
+  write_block(recipe);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
   json map = studio.wait("the block evaluated", [](const json& j) { return j["settled"] && j["params"].contains("depth") && extent_is(j, 14, 11); });
 
@@ -123,17 +128,7 @@ TEST(StudioExpressions, AnExpressionFollowsAnExposedParameterAndABadOneIsRefused
 TEST(StudioExpressions, AnEditCommittedByEnterIsEvaluatedWhileTheKeyIsHeld) {
   const fs::path dir = fresh_dir("held_enter");
   const fs::path recipe = dir / "block.pxg";
-  std::ofstream(recipe) << R"({
-  "format": "procex-graph", "version": 2, "metadata": {"name": "block"}, "inputs": [],
-  "outputs": [{"name": "mesh", "type": "mesh", "doc": ""}],
-  "nodes": [
-    {"id": 1, "type": "Footprint Shape", "version": 1, "params": {"shape": "rectangle", "width": 14.0, "depth": 11.0}},
-    {"id": 2, "type": "Extrude", "version": 1, "params": {}}
-  ],
-  "links": [{"from": "1.footprint", "to": "2.footprint"}, {"from": "2.mesh", "to": "@mesh"}],
-  "exposed": [{"name": "width", "node": 1, "param": "width"}],
-  "editor": {"nodes": {"1": {"x": 0, "y": 0}, "2": {"x": 260, "y": 20}}}
-})";
+  write_block(recipe);
   Studio studio(recipe, dir, {"--autosave", "0", "--select", "1"});
   json map = studio.wait("the block evaluated", [](const json& j) { return j["settled"] && j["params"].contains("depth") && extent_is(j, 14, 11); });
   menu(studio, map, "depth", "expression_menu");
