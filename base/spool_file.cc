@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
-#include <utility>
 #include <vector>
 
 #include "base/io_error.h"
@@ -19,19 +17,14 @@ namespace {
 // that a spool's memory does not matter beside what it saves.
 constexpr std::size_t kChunk = std::size_t{1} << 20;
 
-// The folder of the default spool: TMPDIR, else /tmp.
-std::string temporary_folder() {
-  const char* tmpdir = std::getenv("TMPDIR");
-  return tmpdir && *tmpdir ? tmpdir : "/tmp";
-}
-
 }  // namespace
 
-SpoolFile::SpoolFile() : SpoolFile(temporary_folder(), true) {}
+std::string folder_beside(const std::filesystem::path& file) {
+  const std::filesystem::path folder = file.parent_path();
+  return folder.empty() ? "." : folder.string();
+}
 
-SpoolFile::SpoolFile(const std::string& folder) : SpoolFile(folder, false) {}
-
-SpoolFile::SpoolFile(std::string folder, bool from_tmpdir) : folder_(std::move(folder)), from_tmpdir_(from_tmpdir) {
+SpoolFile::SpoolFile(const std::string& folder) : folder_(folder) {
   fd_ = ::open(folder_.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
   if (fd_ < 0) {  // a file system without O_TMPFILE: a named file, unlinked at once
     std::string name = folder_ + "/procex-spool-XXXXXX";
@@ -39,9 +32,7 @@ SpoolFile::SpoolFile(std::string folder, bool from_tmpdir) : folder_(std::move(f
     if (fd_ >= 0) ::unlink(name.c_str());
   }
   if (fd_ < 0)
-    throw IoError("cannot make a temporary file in '" + folder_ + "': " + std::strerror(errno) +
-                      (from_tmpdir_ ? " (TMPDIR names the folder)" : ""),
-                  folder_);
+    throw IoError("cannot make a temporary file in '" + folder_ + "': " + std::strerror(errno), folder_);
   buffer_.reserve(kChunk);
 }
 
@@ -66,7 +57,7 @@ void SpoolFile::flush() {
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0)
       throw IoError("cannot write a temporary file in '" + folder_ + "': " + std::strerror(n < 0 ? errno : ENOSPC) +
-                        (from_tmpdir_ ? " (is the folder full? TMPDIR names another)" : " (is the folder full?)"),
+                        " (is the disk full?)",
                     folder_);
     done += static_cast<std::size_t>(n);
   }

@@ -1,11 +1,14 @@
 // Bytes set aside while a long run goes on, to be copied into an output when
 // it ends without coming back into memory (a batch's report entries, a
-// streamed .glb's chunks): an unnamed temporary file in TMPDIR (else /tmp),
-// or in a folder given (beside a batch's output), so it goes away with the
-// process whatever happens, SIGINT, SIGTERM and SIGKILL included.
+// streamed .glb's chunks): an unnamed temporary file (O_TMPFILE) in the
+// folder given, beside the output it is for (folder_beside): on the disk that
+// is to hold the output, not filling /tmp, and gone with the process whatever
+// happens, SIGINT, SIGTERM and SIGKILL included. On a file system without
+// O_TMPFILE it is a file named procex-spool-XXXXXX, unlinked as it is made.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <span>
 #include <string>
@@ -15,7 +18,6 @@ namespace procex {
 
 class SpoolFile {
  public:
-  SpoolFile();  // throws IoError naming the temporary folder
   explicit SpoolFile(const std::string& folder);  // in `folder`; throws IoError naming it
   SpoolFile(const SpoolFile&) = delete;
   SpoolFile& operator=(const SpoolFile&) = delete;
@@ -35,12 +37,13 @@ class SpoolFile {
   void flush();
   // Fills out with the file's bytes from `at` (all within written_).
   void pread_all(std::uint64_t at, std::span<char> out) const;
-  SpoolFile(std::string folder, bool from_tmpdir);
   std::string folder_;
-  bool from_tmpdir_;  // the folder is TMPDIR's (messages say how to name another)
   int fd_ = -1;
   std::string buffer_;  // appended, not yet in the file
   std::uint64_t written_ = 0;
 };
+
+// The folder a file is (to be) written in, for its spools: "." for a bare name.
+std::string folder_beside(const std::filesystem::path& file);
 
 }  // namespace procex

@@ -298,10 +298,14 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
   read.streets = options.streets, read.streets_layer = options.streets_layer;
   // The footprints wait on disk beside the output, read back a window at a
-  // time: a million of them in memory would be most of the batch's peak.
+  // time: a million of them in memory would be most of the batch's peak. So
+  // do the report's entries (and a .glb's parts, GlbStreamWriter): every
+  // temporary file on the disk that is to hold the output, none in /tmp.
   std::optional<FeatureSpool> footprints;
+  std::optional<ReportEntries> entries;
   try {
     footprints.emplace(spool_folder(options.output, per_building));
+    entries.emplace(spool_folder(options.output, per_building));
   } catch (const IoError& e) {
     err << "procex batch: " << e.what() << "\n";
     return kExitUnusableInput;
@@ -344,8 +348,6 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   std::size_t ok = 0, refused = 0, failed = 0;
   ShardStamp stamp{options.shard, options.shards, {}, {}};  // its hashes read when a report or a .glb is written
   std::chrono::steady_clock::time_point evaluated = start;
-  // The buildings' entries, each made when its building left its window.
-  ReportEntries entries;
   auto report = [&](std::chrono::steady_clock::time_point written) {
     nlohmann::ordered_json j;
     j["recipe"] = options.recipe.string();
@@ -357,7 +359,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     j["summary"] = {{"buildings", sources.size()}, {"ok", ok}, {"refused", refused}, {"failed", failed},
                     {"evaluate_ms", ms(start, evaluated)}, {"write_ms", ms(evaluated, written)},
                     {"ms", ms(start, std::chrono::steady_clock::now())}};
-    return entries.report(j);
+    return entries->report(j);
   };
   MeshSet all;
   std::optional<GlbStreamWriter> glb;
@@ -427,7 +429,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       std::vector<GltfScene> window_gltf;
       for (Building& b : buildings) {
         if (per_building) b.file = file_name(b);
-        entries.add(ReportEntries::text(building_json(b)));
+        entries->add(ReportEntries::text(building_json(b)));  // made as it leaves its window
         if (b.status != "ok") {
           ++(b.status == "refused" ? refused : failed);
           err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason

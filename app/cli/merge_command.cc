@@ -51,7 +51,9 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     // part's index and a window of buildings, whatever the parts' size. Each
     // part's placed meshes come along (renumbered, as append_scene does); the
     // writer keeps one of equal ones, so the bytes are those of an unsharded run.
-    GltfMeshSpool spool;
+    // Every temporary file goes beside the output, on the disk that is to hold it.
+    const std::string folder = folder_beside(options.output);
+    GltfMeshSpool spool(folder);
     struct Building {
       std::int64_t feature;
       std::string id;
@@ -105,7 +107,7 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     // target before the mesh, and put in place once the mesh is.
     AtomicFileSet report_file;
     if (!options.report.empty()) {
-      MergedReport merged(reports);
+      MergedReport merged(reports, folder);
       if (!shards.empty() && !merged.shard().empty() && merged.shard() != extras["shard"])
         throw IoError("the reports and the .glb parts come from different runs: give the mesh and the report of "
                       "every shard of one run",

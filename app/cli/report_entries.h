@@ -18,6 +18,9 @@ namespace procex {
 
 class ReportEntries {
  public:
+  // The elements wait in `folder` (beside the outputs). Throws IoError
+  // naming it if no temporary file can be made there.
+  explicit ReportEntries(const std::string& folder) : spool_(folder) {}
   // An element's text as report_text lays it out in a top-level member's
   // array (two levels deep), without separators.
   static std::string text(const nlohmann::ordered_json& entry);

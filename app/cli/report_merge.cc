@@ -32,7 +32,8 @@ std::string text_member(const json& object, const char* key, const std::filesyst
 // One part's entries, rendered, in its order: records of the feature index
 // and the text's length (8 bytes each) and the text, read back one at a time.
 struct PartEntries {
-  std::unique_ptr<SpoolFile> records = std::make_unique<SpoolFile>();
+  explicit PartEntries(const std::string& folder) : records(std::make_unique<SpoolFile>(folder)) {}
+  std::unique_ptr<SpoolFile> records;
   std::size_t count = 0, counts[3] = {0, 0, 0};  // ok, refused, failed
   std::uint64_t next = 0;                         // where the next record to read back starts
 
@@ -58,8 +59,10 @@ struct PartEntries {
 
 }  // namespace
 
-MergedReport::MergedReport(const std::vector<std::filesystem::path>& files) {
-  std::vector<PartEntries> parts(files.size());
+MergedReport::MergedReport(const std::vector<std::filesystem::path>& files, const std::string& folder)
+    : entries_(folder) {
+  std::vector<PartEntries> parts;
+  for (std::size_t p = 0; p < files.size(); ++p) parts.emplace_back(folder);
   std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
   for (std::size_t p = 0; p < files.size(); ++p) {
     const std::filesystem::path& file = files[p];
@@ -67,7 +70,7 @@ MergedReport::MergedReport(const std::vector<std::filesystem::path>& files) {
     std::uint64_t last = 0;
     const json doc = io_detail::parse_json_file<json>(
         file, io_detail::elements_of<json>(
-                  "buildings", [&] { part = PartEntries(); },
+                  "buildings", [&] { part = PartEntries(folder); },
                   [&](const json& b, std::size_t i) {
                     const std::string pointer = "/buildings/" + std::to_string(i);
                     if (!b.is_object()) not_a_report(file, pointer, "expected an object");

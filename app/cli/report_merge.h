@@ -21,8 +21,9 @@ namespace procex {
 class MergedReport {
  public:
   // Throws IoError naming the part that is not a batch report, or the parts
-  // that are not one run.
-  explicit MergedReport(const std::vector<std::filesystem::path>& parts);
+  // that are not one run. The entries wait in temporary files in `folder`
+  // (beside the merged report).
+  MergedReport(const std::vector<std::filesystem::path>& parts, const std::string& folder);
   // The run's shard stamp as compact JSON (a .glb scene's extras.shard), or
   // "" when there were no parts.
   const std::string& shard() const { return shard_; }

@@ -20,6 +20,9 @@ class GltfMeshSpool {
     std::uint64_t offset = 0;
     std::uint64_t length = 0;
   };
+  // Set aside in `folder` (beside what they are read back for). Throws
+  // IoError naming it if no temporary file can be made there.
+  explicit GltfMeshSpool(const std::string& folder) : spool_(folder) {}
   // Throws IoError if the temporary folder is full.
   Place add(const GltfMeshData& mesh);
   // The building as added (an image shared by buildings is shared again).

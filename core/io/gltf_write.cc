@@ -969,7 +969,12 @@ GlbTooLarge::GlbTooLarge(const std::filesystem::path& path, std::uint64_t bytes,
               path.string()) {}
 
 struct GlbStreamWriter::State {
+  // The spools go beside the output: on the disk that is to hold it.
+  explicit State(std::filesystem::path output)
+      : path(std::move(output)), folder(folder_beside(path)), scene_nodes(folder), nodes(folder), meshes(folder),
+        accessors(folder), positions(folder), normals(folder), indices(folder), uvs(folder), tag_values(folder) {}
   std::filesystem::path path;
+  std::string folder;
   std::uint64_t max_bytes;
   std::map<std::string, std::string> extras;
   std::deque<GltfMeshData> placed;  // the placed meshes in order of first use, equal ones once
@@ -996,11 +1001,12 @@ struct GlbStreamWriter::State {
 
 GlbStreamWriter::GlbStreamWriter(std::filesystem::path path, std::map<std::string, std::string> extras,
                                  std::uint64_t max_bytes)
-    : state_(std::make_unique<State>()) {
+{
   if (!are_json_members(extras))
     throw IoError("cannot write '" + path.string() + "': a scene extra's name is not UTF-8 or its value not JSON",
                   path.string());
-  state_->path = std::move(path), state_->extras = std::move(extras), state_->max_bytes = max_bytes;
+  state_ = std::make_unique<State>(std::move(path));
+  state_->extras = std::move(extras), state_->max_bytes = max_bytes;
 }
 
 GlbStreamWriter::~GlbStreamWriter() = default;
@@ -1098,7 +1104,7 @@ void GlbStreamWriter::finish() {
   bases.accessor = before.accessors, bases.mesh = before.meshes, bases.vertex_bytes = before.floats * sizeof(float);
   bases.index_bytes = before.indices * sizeof(std::uint32_t), bases.uv_bytes = before.uv_floats * sizeof(float);
   bases.tag_bytes = before.floats / 3 * sizeof(float), bases.tag_view = static_cast<std::size_t>(tag_view);
-  SpoolFile nodes, meshes, accessors, tag_values;
+  SpoolFile nodes(s.folder), meshes(s.folder), accessors(s.folder), tag_values(s.folder);
   resolve_refs(s.nodes, nodes, bases);
   resolve_refs(s.meshes, meshes, bases);
   resolve_refs(s.accessors, accessors, bases);

@@ -166,7 +166,7 @@ void write_glb(const std::filesystem::path& path, const GltfScene& scene);
 // A .glb written as buildings come, in memory that does not grow with their
 // number: the bytes write_glb writes for the scene the parts make together
 // (append_scene in the order added; extras the scene's). Each part's
-// triangles go to temporary files (SpoolFile) with its buildings' JSON,
+// triangles go to temporary files (SpoolFile) beside the output with its buildings' JSON,
 // rendered in parallel (within the caller's TBB arena); what the file's JSON
 // needs of the placed meshes, materials and tags, which come first in it but
 // are known only at the end, is filled in when finish() puts the file together.

@@ -33,7 +33,7 @@ std::vector<std::string> appends() {
 }
 
 TEST(SpoolFile, GivesBackEveryByteInOrder) {
-  SpoolFile spool;
+  SpoolFile spool(fs::temp_directory_path());
   std::string expected;
   for (const std::string& s : appends()) {
     spool.append(s);
@@ -48,7 +48,7 @@ TEST(SpoolFile, GivesBackEveryByteInOrder) {
 // Each append read back alone, from the file, the buffer or across the two,
 // and a range past the end refused.
 TEST(SpoolFile, GivesBackARangeAlone) {
-  SpoolFile spool;
+  SpoolFile spool(fs::temp_directory_path());
   std::string all;
   std::vector<std::pair<std::uint64_t, std::string>> records;
   for (const std::string& s : appends()) {
@@ -64,7 +64,7 @@ TEST(SpoolFile, GivesBackARangeAlone) {
 TEST(SpoolFile, IsCopiedIntoAFileBetweenOtherPieces) {
   const fs::path dir = fs::temp_directory_path() / ("procex_spool_file_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  SpoolFile spool, empty;
+  SpoolFile spool(dir), empty(dir);
   std::string middle;
   for (const std::string& s : appends()) spool.append(s), middle += s;
   const FilePiece pieces[] = {{"head "}, {{}, &spool}, {{}, &empty}, {" tail"}};
@@ -74,6 +74,42 @@ TEST(SpoolFile, IsCopiedIntoAFileBetweenOtherPieces) {
   s << in.rdbuf();
   EXPECT_EQ(s.str(), "head " + middle + " tail");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), {}), 1);  // no temporary file left beside it
+  fs::remove_all(dir);
+}
+
+// The files this process has open in `folder` (an unnamed one shows as
+// "folder/#inode (deleted)").
+std::vector<std::string> open_in(const fs::path& folder) {
+  std::vector<std::string> out;
+  for (const auto& fd : fs::directory_iterator("/proc/self/fd")) {
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(fd.path(), ec);
+    if (!ec && target.parent_path() == folder) out.push_back(target.string());
+  }
+  return out;
+}
+
+// A spool is made in the folder it is given (beside an output, on its disk),
+// leaves no name there, and is gone when dropped; a folder where none can be
+// made is named in the error.
+TEST(SpoolFile, LivesInItsFolderAndGoesWhenDropped) {
+  const fs::path dir = fs::temp_directory_path() / ("procex_spool_folder_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    SpoolFile spool(dir.string());
+    spool.append(std::string(3 << 20, 'x'));  // past the buffer: in the file
+    EXPECT_EQ(open_in(dir).size(), 1u);
+    EXPECT_TRUE(fs::is_empty(dir));
+  }
+  EXPECT_TRUE(open_in(dir).empty());
+  try {
+    SpoolFile spool((dir / "missing").string());
+    ADD_FAILURE() << "a spool in a missing folder was made";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "missing").string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(folder_beside("city.glb"), ".");
+  EXPECT_EQ(folder_beside(dir / "city.glb"), dir.string());
   fs::remove_all(dir);
 }
 

@@ -2,6 +2,8 @@
 // a material image shared by several shared again.
 #include "core/io/gltf_mesh_spool.h"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 namespace procex {
@@ -29,7 +31,7 @@ GltfMeshData building(int i, const std::shared_ptr<const std::string>& image) {
 
 TEST(GltfMeshSpool, BuildingsComeBackAsTheyWere) {
   const auto image = std::make_shared<const std::string>("\x89PNG not really");
-  GltfMeshSpool spool;
+  GltfMeshSpool spool(std::filesystem::temp_directory_path().string());
   std::vector<GltfMeshSpool::Place> places;
   for (int i = 0; i < 40; ++i) places.push_back(spool.add(building(i, i % 4 ? image : std::make_shared<const std::string>(*image))));
   std::shared_ptr<const std::string> seen;
