@@ -32,9 +32,7 @@ GlbSizeEstimate estimate_glb_size(std::span<const std::uint64_t> sampled_bytes, 
   return e;
 }
 
-namespace {
-
-std::string size_text(double bytes) {
+std::string byte_size_text(double bytes) {
   static constexpr const char* kUnits[] = {"bytes", "KB", "MB", "GB", "TB"};
   int unit = 0;
   while (bytes >= 1000 && unit < 4) bytes /= 1000, ++unit;
@@ -43,12 +41,10 @@ std::string size_text(double bytes) {
   return text;
 }
 
-}  // namespace
-
 std::string glb_too_large_message(const std::filesystem::path& output, const GlbSizeEstimate& estimate,
                                   std::uint64_t max_bytes) {
   return output.string() + ": its " + std::to_string(estimate.buildings) + " buildings would make about " +
-         size_text(estimate.total) + " of .glb (" + size_text(estimate.per_building) + " each, judged from " +
+         byte_size_text(estimate.total) + " of .glb (" + byte_size_text(estimate.per_building) + " each, judged from " +
          std::to_string(estimate.sampled) + " of them made ahead across the batch), more than " +
          glb_limit_text(max_bytes) + "; nothing made. " + glb_too_large_advice(estimate.total, max_bytes);
 }

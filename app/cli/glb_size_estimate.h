@@ -48,4 +48,7 @@ std::string glb_too_large_message(const std::filesystem::path& output, const Glb
 // with room to spare, and what not to do with them.
 std::string glb_too_large_advice(double total, std::uint64_t max_bytes);
 
+// Bytes as a person reads them: "13.8 GB", "512 bytes".
+std::string byte_size_text(double bytes);
+
 }  // namespace procex

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/cli/merge_glb_limit.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
 #include "app/cli/report_merge.h"
@@ -44,6 +45,9 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
   try {
+    for (const auto& p : meshes)
+      if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
+    refuse_merge_past_glb_limit(meshes, options.output);
     // Each part is read a building at a time (GlbReader: its JSON indexed,
     // each building's elements and arrays read by their ranges), its
     // buildings set aside on disk (GltfMeshSpool); they are then read back in
@@ -64,7 +68,6 @@ int run_merge(const MergeCommandOptions& options, std::ostream& out, std::ostrea
     std::map<std::string, std::string> extras;
     std::vector<std::pair<ShardStamp, std::filesystem::path>> shards;
     for (const auto& p : meshes) {
-      if (p.extension() != ".glb") throw IoError(p.string() + ": only .glb shard outputs can be merged", p.string());
       const GlbReader part(p);
       const auto stamp = part.extras().find("shard");
       if (stamp == part.extras().end())

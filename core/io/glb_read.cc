@@ -230,6 +230,7 @@ struct GlbReader::State {
   std::map<std::string, std::string> extras;
   std::vector<GltfMeshData> prototypes;
   std::map<std::uint64_t, std::size_t> prototype_of_mesh;
+  std::uint64_t buffer_length = 0;
 
   [[noreturn]] void refuse(const std::string& what) const { bad(path, what); }
 
@@ -340,7 +341,6 @@ json GlbReader::State::element(Array array, std::uint64_t i) const {
 void GlbReader::State::read_buffers_and_views() {
   // In a .glb, buffer 0 without a URI is the binary chunk; procex writes no other.
   if (count(kBuffers) > 1) refuse("it has " + std::to_string(count(kBuffers)) + " buffers; procex writes one, its binary chunk");
-  std::uint64_t buffer_length = 0;
   if (count(kBuffers) == 1) {
     const json buffer = element(kBuffers, 0);
     if (const json* uri = member(buffer, "uri"))
@@ -584,9 +584,35 @@ GlbReader::GlbReader(std::string_view bytes, const std::filesystem::path& path) 
 
 GlbReader::~GlbReader() = default;
 
+std::uint64_t GlbReader::length(const std::filesystem::path& path) {
+  State s;
+  s.path = path;
+  s.source.file = std::make_unique<RangedFile>(path, std::numeric_limits<std::uint32_t>::max());
+  s.read_header();
+  return s.source.size();
+}
+
 const std::map<std::string, std::string>& GlbReader::extras() const { return state_->extras; }
 const std::vector<GltfMeshData>& GlbReader::prototypes() const { return state_->prototypes; }
 std::size_t GlbReader::buildings() const { return state_->scene_nodes.size(); }
+
+std::uint64_t GlbReader::building_bytes() const {
+  const State& s = *state_;
+  std::uint64_t json = 0;
+  // Every node is a building's or an instance a building places.
+  for (const Span& node : s.index[kNodes]) json += node.length;
+  for (std::uint64_t i = 0; i < s.count(kMeshes); ++i)
+    if (!s.prototype_of_mesh.count(i)) json += s.index[kMeshes][static_cast<std::size_t>(i)].length;
+  // At most what the placed meshes' arrays (a tag value a vertex too) and
+  // the images (each padded to 4 bytes) take of the buffer.
+  std::uint64_t shared = 0;
+  for (const GltfMeshData& p : s.prototypes)
+    for (const GltfPrimitiveData& prim : p.primitives)
+      shared += sizeof(float) * (prim.positions.size() + prim.normals.size() + prim.uvs.size() + prim.positions.size() / 3) +
+                sizeof(std::uint32_t) * prim.indices.size();
+  for (const auto& image : s.images) shared += image->size() + 3;
+  return json + (s.buffer_length > shared ? s.buffer_length - shared : 0);
+}
 
 GltfMeshData GlbReader::building(std::size_t i) const {
   const State& s = *state_;

@@ -36,6 +36,10 @@ class GlbReader {
   GlbReader(const GlbReader&) = delete;
   GlbReader& operator=(const GlbReader&) = delete;
   ~GlbReader();
+  // The length the file's header gives, checked as the constructor checks it
+  // (against the file's size and its chunks' lengths) without reading on:
+  // what the file claims to hold. Throws IoError naming the file.
+  static std::uint64_t length(const std::filesystem::path& path);
 
   // The scene's extras, each value as compact JSON text.
   const std::map<std::string, std::string>& extras() const;
@@ -46,6 +50,11 @@ class GlbReader {
   // Building i (in file order), read from the file now. Throws IoError as
   // the constructor does.
   GltfMeshData building(std::size_t i) const;
+  // What the buildings take of the file, at least: their nodes' and meshes'
+  // JSON and the binary buffer less all the placed meshes' and images' bytes
+  // could take. A .glb they are merged into holds all of it whatever else it
+  // holds (the file's head, placed meshes and images are what parts share).
+  std::uint64_t building_bytes() const;
 
  private:
   struct State;
