@@ -1,5 +1,6 @@
 """File > Import > procex batch: a recipe over every footprint of a footprint
-file, as procex batch runs it (in parallel, outside Python's lock)."""
+file, as procex batch runs it (in parallel, outside Python's lock, a window of
+buildings at a time)."""
 import json
 import os
 
@@ -18,33 +19,40 @@ def _property(value):
 
 def import_batch(context, footprints, recipe_path, jobs=0):
     """One object per building (named by its id) in a new collection named after
-    the file; returns (collection, the procex.Building list). The footprints are
-    any file procex batch reads (GeoJSON, Shapefile, GeoPackage, FlatGeobuf,
-    OSM): each building keeps the feature as procex evaluated it (its outline in
-    the batch's frame, its party and street edges), so a parameter change
-    re-evaluates the same building."""
+    the file; returns (collection, the buildings that are not ok, how many there
+    were). The footprints are any file procex batch reads (GeoJSON, Shapefile,
+    GeoPackage, FlatGeobuf, OSM): each building keeps the feature as procex
+    evaluated it (its outline in the batch's frame, its party and street edges),
+    so a parameter change re-evaluates the same building. The buildings come
+    from procex.batch_iter one at a time and are dropped once in Blender, so
+    procex holds a few windows of them, never the whole city's meshes."""
     wm = context.window_manager
     recipe = engine.as_saved(recipe_path)
+    shared = {}  # placed meshes: one Blender mesh each, shared by every building
+    not_ok = []
     wm.progress_begin(0, 1)
     try:
-        buildings = engine.procex.batch(recipe, footprints, jobs=jobs,
-                                        progress=lambda done, total: wm.progress_update(done / total))
+        # The with block stops procex's workers if Blender fails (or Ctrl+C) part way.
+        with engine.procex.batch_iter(recipe, footprints, jobs=jobs) as buildings:
+            total = len(buildings)
+            # Made once the footprints are read: a file procex refuses leaves no empty collection.
+            collection = bpy.data.collections.new(os.path.splitext(os.path.basename(footprints))[0])
+            context.scene.collection.children.link(collection)
+            for done, b in enumerate(buildings, 1):
+                wm.progress_update(done / total)
+                if b.status != "ok":
+                    not_ok.append(b)
+                    continue
+                obj = bpy.data.objects.new(b.id, mesh_data.fill(bpy.data.meshes.new(b.id), b.meshes))
+                collection.objects.link(obj)
+                for key, value in b.feature["properties"].items():
+                    if value is not None:
+                        obj[key] = _property(value)
+                parameters.load(obj, recipe_path, b.feature, recipe)
+                mesh_data.place(obj, b.meshes, shared)
     finally:
         wm.progress_end()
-    collection = bpy.data.collections.new(os.path.splitext(os.path.basename(footprints))[0])
-    context.scene.collection.children.link(collection)
-    shared = {}  # placed meshes: one Blender mesh each, shared by every building
-    for b in buildings:
-        if b.status != "ok":
-            continue
-        obj = bpy.data.objects.new(b.id, mesh_data.fill(bpy.data.meshes.new(b.id), b.meshes))
-        collection.objects.link(obj)
-        for key, value in b.feature["properties"].items():
-            if value is not None:
-                obj[key] = _property(value)
-        parameters.load(obj, recipe_path, b.feature, recipe)
-        mesh_data.place(obj, b.meshes, shared)
-    return collection, buildings
+    return collection, not_ok, total
 
 
 class PROCEX_OT_import_batch(bpy.types.Operator, ProcexImporter):
@@ -59,11 +67,10 @@ class PROCEX_OT_import_batch(bpy.types.Operator, ProcexImporter):
     jobs: bpy.props.IntProperty(name="Threads", default=0, min=0, description="0: one per core")
 
     def run(self, context):
-        _, buildings = import_batch(context, self.filepath, bpy.path.abspath(self.recipe), self.jobs)
-        failed = [b for b in buildings if b.status != "ok"]
+        _, failed, total = import_batch(context, self.filepath, bpy.path.abspath(self.recipe), self.jobs)
         for b in failed:
             self.report({"WARNING"}, f"{b.id}: {b.status}: {b.reason}")
-        self.report({"INFO"}, f"{len(buildings) - len(failed)} of {len(buildings)} buildings")
+        self.report({"INFO"}, f"{total - len(failed)} of {total} buildings")
         return {"FINISHED"}
 
 
