@@ -19,5 +19,11 @@ int main(int argc, char** argv) {
     std::fputs(procex::studio::usage().c_str(), stdout);
     return 0;
   }
-  return procex::studio::run_studio(options);
+  // What the studio cannot go on without (a context for the 3D preview) ends it with the reason.
+  try {
+    return procex::studio::run_studio(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "procex-studio: %s\n", e.what());
+    return 1;
+  }
 }

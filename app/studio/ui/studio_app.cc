@@ -113,7 +113,8 @@ class App {
 
   // Whether the last finished evaluation is of the current revision and its preview is on screen (and no .glb is loading).
   bool settled() const {
-    return worker_.idle() && !glb_loader_.progress() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision();
+    return worker_.idle() && !glb_loader_.progress() && shown_ && shown_->revision == doc_->revision() && submitted_ == doc_->revision() &&
+           preview_ && preview_->current();
   }
   bool busy() const { return !worker_.idle() || loading_glb(); }
   // Whether this frame put a panel elsewhere than the last frame did. The first frame places
@@ -134,13 +135,17 @@ class App {
   Document& doc() { return *doc_; }
   const EvalSnapshot* shown() const { return shown_.get(); }
   const PreviewView& preview() const { return *preview_; }
-  double preview_upload_cpu_ms() const { return preview_ ? preview_->upload_cpu_ms() : 0.0; }
   double preview_render_cpu_ms() const { return preview_ ? preview_->render_cpu_ms() : 0.0; }
+  // An image of the preview asked for and not yet shown: its thread wakes the loop when it is finished.
+  bool preview_pending() const { return preview_ && !preview_->current(); }
+  // Whether the preview's thread is drawing an image, and how many it has finished.
+  bool preview_drawing() const { return preview_ && preview_->drawing(); }
+  std::uint64_t preview_images() const { return preview_ ? preview_->images_finished() : 0; }
   const NodeCanvas& canvas() const { return canvas_; }
 
   void frame() {
     if (!preview_) {
-      preview_ = std::make_unique<PreviewView>();
+      preview_ = std::make_unique<PreviewView>(window_);
       if (options_.view) preview_->look_from((*options_.view)[0], (*options_.view)[1]);
     }
     submit_if_changed();  // what changed between frames (a file opened, the benchmark's edit)
@@ -539,7 +544,7 @@ class App {
     }
     if (ImGui::BeginTabItem("Recipe")) {
       recipe_panel_.draw(*doc_, status_, [this](const fs::path& png) {
-        save_texture_png(static_cast<unsigned>(preview_->texture()), static_cast<int>(preview_->image_w), static_cast<int>(preview_->image_h), png);
+        save_texture_png(static_cast<unsigned>(preview_->texture()), preview_->texture_width(), preview_->texture_height(), png);
       });
       ImGui::EndTabItem();
     }
@@ -860,6 +865,9 @@ class App {
     if (shown_mesh && !shown_mesh->empty())
       j["preview_bounds"] = {shown_mesh->min.x, shown_mesh->min.y, shown_mesh->min.z, shown_mesh->max.x, shown_mesh->max.y, shown_mesh->max.z};
     j["preview"] = {preview_->image_x, preview_->image_y, preview_->image_w, preview_->image_h};
+    // Images of the 3D preview shown so far. They are drawn on a thread of their own, so the image of a
+    // new mesh is shown some frames after the frame that received the mesh (ui/preview_renderer.h).
+    j["preview_images"] = preview_->renders();
     std::size_t errors = 0;
     if (shown_)
       for (const Diagnostic& d : shown_->result.diagnostics) errors += d.severity == Severity::kError;
@@ -1059,7 +1067,8 @@ int run_studio(const Options& options) {
   {
     App app(window, options);
     EditBench bench(options.bench_edits);
-    std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share, frame_cpu_ms, rasteriser_cpu_ms, upload_cpu_ms, preview_cpu_ms;
+    std::vector<double> frame_ms, busy_frame_ms, build_ms, draw_ms, redrawn_share, frame_cpu_ms, rasteriser_cpu_ms, preview_thread_cpu_ms;
+    std::vector<int> preview_shown, preview_drawing;
     PartialRedraw redraw(copy_sub_buffer_available());
     std::uint64_t preview_renders = 0;
     // Uncovered or resized by the window system: its pixels are redrawn in full.
@@ -1084,13 +1093,19 @@ int run_studio(const Options& options) {
       }
       const auto frame_start = Clock::now();
       const double frame_start_cpu = thread_cpu_ms();
-      // Benchmark only: reading every thread's counters costs a few system calls.
+      // Benchmark only: reading every thread's counters costs a few system calls. The rasteriser's
+      // threads are shared with the preview's context (ui/preview_renderer.h): a frame during which
+      // the preview's thread drew counts that image's filling too, and is marked (preview_drawing).
       const double raster_start_cpu = options.bench_edits > 0 ? threads_cpu_ms("llvmpipe-") : 0.0;
+      const bool preview_drawing_at_start = app.preview_drawing();
+      const double preview_thread_start_cpu = app.preview_render_cpu_ms();
+      const std::uint64_t preview_images_at_start = app.preview_images();
       // Mouse or key changes queued, or panels moved in the last frame: show the next at once.
       // Otherwise wait for an event: a finished evaluation posts one (EvalWorker's `finished`), so
       // its result shows at once and nothing polls the worker meanwhile, taking a core from it.
       // Automated runs (screenshots, benchmarks) go on without waiting once nothing is evaluating.
-      if (input.pending() || app.layout_moving() || (automated && !app.busy())) glfwPollEvents();
+      // So do they while an image of the preview is being drawn: its thread posts an event when it is finished.
+      if (input.pending() || app.layout_moving() || (automated && !app.busy() && !app.preview_pending())) glfwPollEvents();
       else glfwWaitEventsTimeout(app.loading_glb() ? 0.01 : 0.25);  // a .glb's progress shows as it loads
       if (glfwWindowShouldClose(window)) app.request_quit();
       if (app.quit()) break;
@@ -1105,10 +1120,7 @@ int run_studio(const Options& options) {
       ImGui::NewFrame();
       MouseInput::after_new_frame(changed);
       const auto build_start = Clock::now();
-      const double upload_before = app.preview_upload_cpu_ms(), render_before = app.preview_render_cpu_ms();
       app.frame();
-      upload_cpu_ms.push_back(app.preview_upload_cpu_ms() - upload_before);
-      preview_cpu_ms.push_back(app.preview_render_cpu_ms() - render_before);
       ImGui::Render();
       build_ms.push_back(ms_since(build_start));
       int w = 0, h = 0;
@@ -1120,6 +1132,7 @@ int run_studio(const Options& options) {
       const bool shoot = !options.screenshot.empty() && ((settled_frames >= 3 && bench.done()) || timed_out);
       std::vector<std::uintptr_t> redrawn;
       if (app.preview().renders() != preview_renders) redrawn.push_back(app.preview().texture());
+      preview_shown.push_back(app.preview().renders() != preview_renders);
       preview_renders = app.preview().renders();
       if (events.exposed || options.full_redraw) redraw.invalidate();  // uncovered by the window system: everything is drawn again
       events.exposed = false;
@@ -1155,6 +1168,8 @@ int run_studio(const Options& options) {
       const double ms = ms_since(frame_start);
       frame_ms.push_back(ms);
       frame_cpu_ms.push_back(thread_cpu_ms() - frame_start_cpu);
+      preview_drawing.push_back(preview_drawing_at_start || app.preview_drawing() || app.preview_images() != preview_images_at_start);
+      preview_thread_cpu_ms.push_back(app.preview_render_cpu_ms() - preview_thread_start_cpu);
       if (options.bench_edits > 0) rasteriser_cpu_ms.push_back(threads_cpu_ms("llvmpipe-") - raster_start_cpu);
       if (busy) busy_frame_ms.push_back(ms);
       if (options.bench_edits > 0 && options.screenshot.empty() && (bench.done() || std::chrono::duration<double>(Clock::now() - start).count() > options.timeout_s))
@@ -1171,9 +1186,14 @@ int run_studio(const Options& options) {
       // The UI thread's CPU time per frame, and what every thread used in the whole run: the
       // UI thread, the evaluation's (procex-eval) and the software rasteriser's (llvmpipe-N).
       j["frame_cpu_ms"] = frame_cpu_ms;
-      j["rasteriser_cpu_ms"] = rasteriser_cpu_ms;  // Mesa's llvmpipe threads, per frame
-      j["upload_cpu_ms"] = upload_cpu_ms;          // of the UI thread's: new meshes to GL
-      j["preview_cpu_ms"] = preview_cpu_ms;        // and the 3D preview's drawing issued
+      j["rasteriser_cpu_ms"] = rasteriser_cpu_ms;  // the llvmpipe threads, per frame
+      // The frames that showed a new image of the 3D preview; those during which its thread drew
+      // (their rasteriser CPU time counts that image's filling too); the CPU time its thread
+      // (procex-preview) used in each frame's time, counted when an image is finished: uploading
+      // meshes and issuing the drawing.
+      j["preview_shown"] = preview_shown;
+      j["preview_drawing"] = preview_drawing;
+      j["preview_thread_cpu_ms"] = preview_thread_cpu_ms;
       for (const ThreadCpu& t : threads_cpu()) j["threads"][t.name] = {{"cpu_ms", t.cpu_ms}, {"waiting_ms", t.waiting_ms}};
       j["presented_by"] = copy_sub_buffer_available() ? "copy_sub_buffer" : "swap";
       double load_at_end[3] = {0, 0, 0};

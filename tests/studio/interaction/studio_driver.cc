@@ -2,14 +2,18 @@
 
 #include <signal.h>
 #include <spawn.h>
+#include <sys/ptrace.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 extern char** environ;
@@ -69,6 +73,51 @@ int Studio::wait_exit(std::chrono::seconds timeout) {
 void Studio::pause() { ASSERT_EQ(kill(pid_, SIGSTOP), 0); }
 
 void Studio::resume() { ASSERT_EQ(kill(pid_, SIGCONT), 0); }
+
+namespace {
+
+// The state letter of /proc/PID/task/TID/stat ('S': asleep, 't': stopped by a tracer), or 0.
+char thread_state(pid_t pid, pid_t tid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(tid) + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t name_end = stat.rfind(')');  // the name, in brackets, may hold spaces
+  return name_end != std::string::npos && name_end + 2 < stat.size() ? stat[name_end + 2] : 0;
+}
+
+}  // namespace
+
+HeldThread::HeldThread(pid_t pid, const std::string& name) {
+  pid_t tid = -1;
+  std::error_code ec;
+  for (const auto& task : fs::directory_iterator("/proc/" + std::to_string(pid) + "/task", ec)) {
+    std::ifstream comm(task.path() / "comm");
+    std::string n;
+    if (std::getline(comm, n) && n == name) tid = std::stoi(task.path().filename().string());
+  }
+  if (tid < 0) {
+    ADD_FAILURE() << "the studio has no thread named " << name;
+    return;
+  }
+  if (const char state = thread_state(pid, tid); state != 'S') {
+    ADD_FAILURE() << "thread " << name << " is not asleep (state " << state << ")";
+    return;
+  }
+  if (ptrace(PTRACE_SEIZE, tid, nullptr, nullptr) != 0) {
+    ADD_FAILURE() << "ptrace(PTRACE_SEIZE) of thread " << name << ": " << std::strerror(errno);
+    return;
+  }
+  tid_ = tid;
+  int status = 0;
+  if (ptrace(PTRACE_INTERRUPT, tid, nullptr, nullptr) != 0 || waitpid(tid, &status, __WALL) != tid || !WIFSTOPPED(status)) {
+    ADD_FAILURE() << "thread " << name << " did not stop: " << std::strerror(errno);
+    release();
+  }
+}
+
+void HeldThread::release() {
+  if (tid_ > 0) ptrace(PTRACE_DETACH, tid_, nullptr, nullptr);
+  tid_ = -1;
+}
 
 void xdo(const std::string& args) {
   const std::string cmd = "xdotool " + args;

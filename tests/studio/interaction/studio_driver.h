@@ -40,10 +40,27 @@ class Studio {
   // at once, as during one slow frame.
   void pause();
   void resume();
+  pid_t pid() const { return pid_; }
 
  private:
   fs::path map_;
   pid_t pid_ = -1;
+};
+
+// One thread of a studio, found by its name, held still (ptrace: that thread alone stops, the others
+// go on) until release() or destruction. Only a thread asleep (waiting, in a system call) is taken: one
+// stopped while it holds a lock the window's thread takes would stop that thread too.
+class HeldThread {
+ public:
+  HeldThread(pid_t pid, const std::string& name);
+  ~HeldThread() { release(); }
+  HeldThread(const HeldThread&) = delete;
+  HeldThread& operator=(const HeldThread&) = delete;
+  bool held() const { return tid_ > 0; }
+  void release();
+
+ private:
+  pid_t tid_ = -1;
 };
 
 void xdo(const std::string& args);
