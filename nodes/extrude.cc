@@ -48,7 +48,8 @@ void declare(NodeDecl& d) {
       .default_value(static_cast<std::int64_t>(budget.max_events)).range(0, 1e15)
       .doc("refuse a footprint whose sweep queues more potential events than this (0: no limit)").index();
   par.max_seconds = d.param<double>("max_seconds").default_value(budget.max_seconds).range(0, 1e6).unit("s")
-      .doc("refuse a footprint whose sweep takes longer than this (0: no limit)").index();
+      .doc("refuse a footprint whose sweep takes more CPU seconds than this (its thread's: the machine's load "
+           "does not change the result; 0: no limit)").index();
   d.output<MeshSet>("mesh");
 }
 

@@ -96,7 +96,8 @@ void add_budget_options(CLI::App* cmd, BudgetSettings& budget) {
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{1'000'000'000'000'000}));
   cmd->add_option_function<double>(
          "--max-seconds", [&budget](double s) { budget.max_seconds = s; },
-         "Refuse a footprint whose sweep takes longer (0: no limit; default " +
+         "Refuse a footprint whose sweep takes more CPU seconds (its thread's, so the machine's load does not "
+         "change the result; 0: no limit; default " +
              std::to_string(static_cast<int>(defaults.max_seconds)) + ")")
       ->check(kFinite & CLI::Range(0.0, 1e6));
 }

@@ -1,17 +1,21 @@
 #include "core/sweep/budget.h"
 
-#include <algorithm>
+#include <time.h>
+
+#include <cstdio>
 #include <string>
 
 #include "core/geom/error.h"
 
 namespace procex::engine {
 
-Budget::Budget(const SweepBudget& limits) : limits_(limits) {
-  const auto now = std::chrono::steady_clock::now();
-  // Beyond a year the limit is none (and the sum would overflow).
-  const double seconds = limits.max_seconds > 0.0 ? std::min(limits.max_seconds, 3.2e7) : 3.2e7;
-  deadline_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+Budget::Budget(const SweepBudget& limits)
+    : limits_(limits), deadline_(limits.max_seconds > 0.0 ? thread_cpu_seconds() + limits.max_seconds : 0.0) {}
+
+double Budget::thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 void Budget::vertices_exceeded(double z) const {
@@ -29,12 +33,11 @@ void Budget::events_exceeded(double z) const {
 }
 
 void Budget::time_exceeded(double z) const {
-  std::string seconds = std::to_string(limits_.max_seconds);
-  seconds.erase(seconds.find_last_not_of('0') + 1);
-  if (seconds.back() == '.') seconds.pop_back();
-  throw SweepBudgetError("sweep: refused after " + seconds +
-                             " s (the time budget): the footprint makes the sweep run away; raise the budget "
-                             "(max_seconds) if it is really this slow",
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", limits_.max_seconds);
+  throw SweepBudgetError("sweep: refused after " + std::string(seconds) +
+                             " CPU seconds (the time budget): the footprint makes the sweep run away; raise the "
+                             "budget (max_seconds) if it is really this slow",
                          z, {});
 }
 

@@ -1,9 +1,12 @@
 // The limits of one sweep() call in force (SweepBudget): what every state of
 // an attempt makes (nested sweeps included) is counted, against one deadline
-// for all attempts.
+// for all attempts. The deadline is in the CPU time of the thread that made
+// the Budget (a sweep runs on one thread): on a busy machine wall time passes
+// while the sweep waits for a core, so a wall-clock deadline would refuse a
+// footprint there that a quiet machine passes, and a batch's output would
+// follow the machine's load.
 #pragma once
 
-#include <chrono>
 #include <cstddef>
 
 #include "core/sweep/sweep.h"
@@ -24,21 +27,23 @@ class Budget {
     events_ += n;
     if (events_ > limits_.max_events && limits_.max_events > 0) events_exceeded(z);
   }
-  // Reads the clock only every few calls: it is called once per event batch.
+  // Reads the clock only every few calls: it is called once per event batch
+  // (and the thread's CPU clock is a system call, not the vDSO).
   void check_time(double z) {
     if (++since_clock_ < kClockStride || !(limits_.max_seconds > 0.0)) return;
     since_clock_ = 0;
-    if (std::chrono::steady_clock::now() > deadline_) time_exceeded(z);
+    if (thread_cpu_seconds() > deadline_) time_exceeded(z);
   }
 
  private:
   static constexpr std::size_t kClockStride = 64;
+  static double thread_cpu_seconds();
   [[noreturn]] void vertices_exceeded(double z) const;
   [[noreturn]] void events_exceeded(double z) const;
   [[noreturn]] void time_exceeded(double z) const;
 
   SweepBudget limits_;
-  std::chrono::steady_clock::time_point deadline_;
+  double deadline_;  // in thread_cpu_seconds()
   std::size_t vertices_ = 0, events_ = 0, since_clock_ = 0;
 };
 

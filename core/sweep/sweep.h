@@ -31,7 +31,8 @@ struct SweepBudget {
   // their corner lives): a reflex corner lists one per live plane, so this
   // grows as vertices times reflex corners.
   std::size_t max_events = 1'000'000'000;
-  // Seconds from the start of sweep(), its retries included.
+  // CPU seconds of the thread running sweep(), its retries included (not wall
+  // time: a footprint must not pass on a quiet machine and fail on a busy one).
   double max_seconds = 600.0;
 };
 

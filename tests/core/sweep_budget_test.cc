@@ -1,12 +1,17 @@
 // The sweep's budget (SweepBudget): past a limit the sweep stops with a
 // SweepBudgetError naming it, whatever the input; within it nothing changes.
+#include <sys/resource.h>
+
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/geom/error.h"
+#include "core/sweep/budget.h"
 #include "core/sweep/sweep.h"
 
 namespace procex {
@@ -61,7 +66,36 @@ TEST(SweepBudget, TimePastTheLimitRefusesTheFootprint) {
   }
   SweepBudget b;
   b.max_seconds = 1e-9;
-  EXPECT_NE(refusal(make_footprint({p}, 45), b).find("s (the time budget)"), std::string::npos);
+  const std::string why = refusal(make_footprint({p}, 45), b);
+  EXPECT_NE(why.find("refused after 1e-09 CPU seconds (the time budget)"), std::string::npos) << why;
+}
+
+// This thread's CPU time as the kernel accounts it (getrusage, not the
+// clock the budget reads).
+double thread_rusage_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_THREAD, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// The time budget is spent by the sweep's thread running, not by the clock
+// on the wall: a thread that waits (for a core on a busy machine; here it
+// sleeps, which is deterministic) spends none of it, one that runs spends it.
+TEST(SweepBudget, TimeIsTheSweepingThreadsCpuTime) {
+  const double start = thread_rusage_seconds();
+  SweepBudget limits;
+  limits.max_seconds = 0.05;
+  engine::Budget budget(limits);
+  const auto check = [&budget] {
+    for (int i = 0; i < 1000; ++i) budget.check_time(1.0);  // past the clock's stride
+  };
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // four budgets of wall time
+  EXPECT_NO_THROW(check());
+  volatile double sink = 0;
+  while (thread_rusage_seconds() - start < 0.1)  // twice the budget of CPU time
+    for (int i = 0; i < 10000; ++i) sink = sink + std::sqrt(static_cast<double>(i));
+  EXPECT_THROW(check(), SweepBudgetError);
 }
 
 TEST(SweepBudget, DefaultsLeaveLargeInputsAlone) {
