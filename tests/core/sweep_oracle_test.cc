@@ -216,6 +216,25 @@ TEST(CgalOracle, ASkeletonOverItsMemoryCapIsReportedAsSuch) {
   }
 }
 
+// The child building the skeleton has a CPU-time cap too: CGAL 5.5.1 loops
+// for ever on this polyomino turned by 45 degrees (generated grid seed 6912,
+// minimised; CGAL issue 7470), with either kernel. Past the cap it is a
+// CgalNoSkeleton naming the cap, which the oracle weighs like a crash (by the
+// plan's generic neighbours), not a test run that never ends.
+TEST(CgalOracle, ASkeletonPastItsTimeCapIsReportedAsSuch) {
+  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/cgal_loops_grid_6912.geojson");
+  ASSERT_EQ(read.features.size(), 1u);
+  const Footprint fp = to_footprint(read.features[0], 60.0);
+  for (const CgalConstructions kernel : {CgalConstructions::Exact, CgalConstructions::Inexact}) {
+    try {
+      CgalSkeletonInput(fp).skeleton(1e-6, kernel, kCgalChildMemory, 1);
+      ADD_FAILURE() << "CGAL built this skeleton: the plan no longer shows the cap at work";
+    } catch (const CgalNoSkeleton& e) {
+      EXPECT_NE(std::string(e.what()).find("cap of 1 CPU seconds"), std::string::npos) << e.what();
+    }
+  }
+}
+
 // ---- synthetic cases (shared/data/synthetic, see its README) ----
 
 std::vector<std::string> synthetic_cases() {

@@ -1,5 +1,6 @@
 #include "tests/support/cgal_skeleton.h"
 
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -210,15 +211,31 @@ void cap_memory(std::size_t memory) {
   mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
 }
 
+// Caps the child's CPU time: past `seconds` the kernel sends SIGXCPU, which
+// ends it (CGAL does not catch it), and SIGKILL a second later in case
+// anything does. CPU time, not wall time, so a loaded machine gives the same
+// verdicts.
+void cap_time(std::size_t seconds) {
+  const rlim_t soft = seconds;
+  const rlimit limit{soft, soft + 1};
+  setrlimit(RLIMIT_CPU, &limit);
+}
+
 template <class Build>
-CgalSkeleton in_child_process(std::size_t memory, Build build) {
+CgalSkeleton in_child_process(std::size_t memory, std::size_t seconds, Build build) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("cgal_skeleton: pipe: ") + std::strerror(errno));
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error(std::string("cgal_skeleton: fork: ") + std::strerror(errno));
   if (pid == 0) {
+    // A test run stopped from outside (ctest's timeout, a shell's timeout)
+    // must not leave a skeleton building on for minutes in an orphan.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(3);
     close(fds[0]);
     cap_memory(memory);
+    cap_time(seconds);
     std::string answer;
     try {
       const CgalSkeleton s = build();
@@ -257,6 +274,10 @@ CgalSkeleton in_child_process(std::size_t memory, Build build) {
   if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryExit)
     throw CgalOutOfMemory("CGAL's straight skeleton of this plan needs more than its cap of " +
                           std::to_string(memory >> 20) + " MB (kCgalChildMemory): no oracle for it");
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
+    throw CgalNoSkeleton("CGAL's straight skeleton of this plan took more than its cap of " + std::to_string(seconds) +
+                         " CPU seconds (cgal_child_seconds; CGAL 5.5.1 can loop for ever at events that coincide, "
+                         "CGAL issue 7470)");
   if (WIFSIGNALED(status))
     throw CgalNoSkeleton("CGAL's straight skeleton crashed on this plan (" + std::string(strsignal(WTERMSIG(status))) +
                     "; CGAL 5.5.1's MergeCoincidentNodes, CGAL issue 7203)");
@@ -344,9 +365,19 @@ CgalSkeleton CgalSkeletonInput::Impl::skeleton(double min_ridge) const {
   return out;
 }
 
-CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge, CgalConstructions constructions,
-                                         std::size_t memory) const {
-  return in_child_process(memory, [&] {
+std::size_t cgal_child_seconds(std::size_t vertices) {
+  const std::size_t hundreds = vertices / 100;
+  return (60 + hundreds * hundreds) * (kSanitized ? 20 : 1);
+}
+
+CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge, CgalConstructions constructions, std::size_t memory,
+                                         std::optional<std::size_t> seconds) const {
+  std::size_t vertices = 0;
+  for (const PolygonWithHoles& p : impl_->polygons) {
+    vertices += p.outer.size();
+    for (const auto& hole : p.holes) vertices += hole.size();
+  }
+  return in_child_process(memory, seconds.value_or(cgal_child_seconds(vertices)), [&] {
     return constructions == CgalConstructions::Exact
                ? impl_->skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(min_ridge)
                : impl_->skeleton<CGAL::Exact_predicates_inexact_constructions_kernel>(min_ridge);

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -32,9 +33,9 @@ struct CgalSkeleton {
 };
 
 // CGAL gave no skeleton for the plan: it crashed building one (it runs in a
-// child process, see cgal_skeleton.cc), or create_interior_straight_skeleton_2
-// returned none, as CGAL 5.5 does for some plans whose events coincide exactly
-// (a polyomino turned by 45 degrees). There is nothing to compare with.
+// child process, see cgal_skeleton.cc), ran past its CPU-time cap, or
+// create_interior_straight_skeleton_2 returned none, as CGAL 5.5 does for
+// some plans whose events coincide exactly (a polyomino turned by 45 degrees). There is nothing to compare with.
 struct CgalNoSkeleton : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -49,6 +50,15 @@ struct CgalOutOfMemory : std::runtime_error {
 // inherits, by default. The exact kernel on a star of 10,000 vertices grew past 20 GB
 // (TESTING.md, the size class); the tests share a machine of 23 GB.
 constexpr std::size_t kCgalChildMemory = std::size_t{4} << 30;
+
+// How many CPU seconds the child building a skeleton of a plan of `vertices`
+// may take, by default: 60 + (vertices / 100)^2, twenty times that under the
+// sanitizers. CGAL 5.5.1's builder can loop for ever on a plan whose events
+// coincide (CGAL issue 7470; generated grid seed 6912, a polyomino of 42
+// vertices turned by 45 degrees, ran for hours with either kernel), where a
+// skeleton of those 42 vertices takes it milliseconds; at 1,000 vertices the exact
+// kernel took minutes (the size class, TESTING.md), hence the square.
+std::size_t cgal_child_seconds(std::size_t vertices);
 
 // Which kernel builds the oracle's skeleton. Exact: CGAL's
 // Exact_predicates_exact_constructions_kernel, nodes exact up to the final
@@ -78,10 +88,12 @@ class CgalSkeletonInput {
   // The oracle: the skeleton built with the given kernel. Bisectors no longer
   // than min_ridge are not ridges: CGAL splits a node where more than three
   // faces meet into several joined by zero-length bisectors. Built in a child
-  // process of at most `memory` bytes more address space than the caller's:
-  // throws CgalNoSkeleton if CGAL crashes or gives none, CgalOutOfMemory if it needs more.
+  // process of at most `memory` bytes more address space than the caller's
+  // and at most `seconds` of CPU time (cgal_child_seconds of the plan's
+  // vertices when not given): throws CgalNoSkeleton if CGAL crashes, gives
+  // none or runs out of time, CgalOutOfMemory if it needs more memory.
   CgalSkeleton skeleton(double min_ridge, CgalConstructions constructions = CgalConstructions::Exact,
-                        std::size_t memory = kCgalChildMemory) const;
+                        std::size_t memory = kCgalChildMemory, std::optional<std::size_t> seconds = std::nullopt) const;
 
  private:
   struct Impl;
