@@ -32,6 +32,7 @@
 #include "base/atomic_file_set.h"
 #include "base/confined_path_memo.h"
 #include "base/read_file.h"
+#include "core/io/feature_sources.h"
 #include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
 #include "core/io/geojson.h"
@@ -323,17 +324,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   // The shard's features, readable or not, in input order: each window's
   // building records are made from these as it starts, so records for every
   // building are never held at once.
-  struct Source {
-    std::size_t index;
-    std::size_t spooled;               // its position in the spool, unless error
-    const GeoJsonFeatureError* error;  // not null: unreadable
-  };
-  std::vector<Source> sources;
-  for (std::size_t i = 0; i < footprints->size(); ++i)
-    if (footprints->index(i) % options.shards == options.shard) sources.push_back({footprints->index(i), i, nullptr});
-  for (const GeoJsonFeatureError& e : collection.errors)
-    if (e.index % options.shards == options.shard) sources.push_back({e.index, 0, &e});
-  std::sort(sources.begin(), sources.end(), [](const Source& a, const Source& b) { return a.index < b.index; });
+  const std::vector<FeatureSource> sources =
+      feature_sources(*footprints, collection.errors, options.shard, options.shards);
 
   // Shared by all workers: nodes that do not depend on the building (profiles) run once.
   // Per-building results are never asked for twice, so the cache stays small.
@@ -374,7 +366,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       std::vector<Building> sample(at.size());
       std::vector<GeoJsonFeature> features(at.size());
       for (std::size_t i = 0; i < at.size(); ++i)
-        if (const Source& from = sources[at[i]]; !from.error)
+        if (const FeatureSource& from = sources[at[i]]; !from.error)
           features[i] = footprints->at(from.spooled), sample[i].feature = &features[i];
         else sample[i].status = "refused";
       arena.execute([&] {
@@ -413,7 +405,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       std::vector<Building> buildings(std::min(sources.size(), first + window) - first);
       std::vector<GeoJsonFeature> features(buildings.size());  // the window's, back from the spool
       for (std::size_t i = 0; i < buildings.size(); ++i) {
-        const Source& from = sources[first + i];
+        const FeatureSource& from = sources[first + i];
         Building& b = buildings[i];
         b.index = from.index;
         if (!from.error) features[i] = footprints->at(from.spooled), b.id = features[i].id, b.feature = &features[i];

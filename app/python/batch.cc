@@ -23,6 +23,7 @@
 #include "app/python/mesh_arrays.h"
 #include "app/python/recipe.h"
 #include "base/confined_path_memo.h"
+#include "core/io/feature_sources.h"
 #include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
 #include "core/io/io_error.h"
@@ -174,10 +175,7 @@ class BatchStream {
       raise(ErrorKind::Footprint, e.what());
     }
     errors_ = std::move(collection.errors);
-    sources_.reserve(spool_->size() + errors_.size());
-    for (std::size_t i = 0; i < spool_->size(); ++i) sources_.push_back({spool_->index(i), i, nullptr});
-    for (const GeoJsonFeatureError& e : errors_) sources_.push_back({e.index, 0, &e});
-    std::sort(sources_.begin(), sources_.end(), [](const Source& a, const Source& b) { return a.index < b.index; });
+    sources_ = feature_sources(*spool_, errors_);
     window_ = 4 * static_cast<std::size_t>(std::max(1, arena_.max_concurrency()));
     worker_ = std::thread([this] { run(); });
     pthread_setname_np(worker_.native_handle(), "procex-batch");  // what top -H (and a test) sees of it
@@ -246,15 +244,6 @@ class BatchStream {
   }
 
  private:
-  // 24 bytes a footprint, as procex batch's: what a footprint that cannot
-  // be read says is kept once, in errors_ (two strings in every Source were
-  // 88 bytes, and with the vector's doubling most of the iterator's growth
-  // with the footprints: BENCHMARKS).
-  struct Source {
-    std::size_t index;                 // in the footprints given
-    std::size_t spooled;               // its position in the spool, unless error
-    const GeoJsonFeatureError* error;  // not null: unreadable
-  };
   struct Pending {
     Building building;                     // its Python members are made by next()
     std::optional<GeoJsonFeature> feature;  // as evaluated, for Building.feature
@@ -270,7 +259,7 @@ class BatchStream {
         if (stop_) break;
         std::vector<Pending> chunk(std::min(window_, sources_.size() - first));
         for (std::size_t i = 0; i < chunk.size(); ++i) {
-          const Source& s = sources_[first + i];
+          const FeatureSource& s = sources_[first + i];
           Building& b = chunk[i].building;
           b.index = s.index;
           if (!s.error) chunk[i].feature = spool_->at(s.spooled), b.id = chunk[i].feature->id;
@@ -298,8 +287,8 @@ class BatchStream {
   std::shared_ptr<Recipe> source_recipe_;
   MeshRecipe recipe_;
   std::optional<FeatureSpool> spool_;
-  std::vector<GeoJsonFeatureError> errors_;
-  std::vector<Source> sources_;
+  std::vector<GeoJsonFeatureError> errors_;  // what the unreadable footprints say, kept once
+  std::vector<FeatureSource> sources_;
   // As batch(): nodes that do not depend on the building run once; the rest are never asked twice.
   ResultCache cache_{std::size_t{32} << 20};
   Evaluator evaluator_{cache_, kEngineSalt};

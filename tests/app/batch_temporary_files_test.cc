@@ -6,11 +6,8 @@
 // /proc/PID/fd as "FOLDER/#INODE (deleted)"); the staged output and report
 // are named TARGET.tmp-PID-N beside their targets.
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <fcntl.h>
 
 #include <algorithm>
 #include <chrono>
@@ -27,8 +24,7 @@
 #include "app/cli/recipe_session.h"
 #include "tests/app/command_test.h"
 #include "tests/app/generated_footprints.h"
-
-extern char** environ;
+#include "tests/app/spawn_procex.h"
 
 namespace procex {
 namespace {
@@ -85,27 +81,10 @@ class BatchTemporaryFiles : public test::CommandTest {
 
   // Starts `procex batch` into out/city.glb with TMPDIR set to tmp/.
   pid_t start() {
-    const std::string exe = PROCEX_CLI_EXE;
-    std::vector<std::string> args = {exe, "batch", (kSamples / "city.pxg").string(), "--footprints",
-                                     (dir_ / "footprints.geojson").string(), "-o", (out_dir_ / "city.glb").string(),
-                                     "--report", (out_dir_ / "city.json").string(), "--jobs", "1", "--no-progress"};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::vector<std::string> env = {"TMPDIR=" + tmp_dir_.string()};
-    for (char** e = environ; *e; ++e)
-      if (std::string(*e).rfind("TMPDIR=", 0) != 0) env.emplace_back(*e);
-    std::vector<char*> envp;
-    for (std::string& e : env) envp.push_back(e.data());
-    envp.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    EXPECT_EQ(posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), envp.data()), 0);
-    posix_spawn_file_actions_destroy(&actions);
-    return pid;
+    return test::spawn_procex({"batch", (kSamples / "city.pxg").string(), "--footprints",
+                               (dir_ / "footprints.geojson").string(), "-o", (out_dir_ / "city.glb").string(),
+                               "--report", (out_dir_ / "city.json").string(), "--jobs", "1", "--no-progress"},
+                              {"TMPDIR=" + tmp_dir_.string()}, test::ChildStderr::kDiscard);
   }
 
   // Watches the run's open files until `ready` says so (true) or it ends
