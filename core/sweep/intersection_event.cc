@@ -51,7 +51,16 @@ int span_through(State& st, int e, glm::dvec2 p, double z, double reach) {
   return kNone;
 }
 
-std::optional<Collision> validate(State& st, const Candidate& c) {
+// Whether a split's edge has a span through its point, at the candidate's own
+// height: a batch spans delta2, over which a plane leaning at k moves
+// k delta2, more than delta3 wherever k > 1.
+bool hits_span(State& st, const Candidate& c) {
+  return span_through(st, c.edge, c.p, c.z, st.tol().position()) != kNone;
+}
+
+// The collision a candidate stands for while its corners live, its span not
+// yet checked (hits_span): that is checked when the sweep reaches it.
+std::optional<Collision> meets(State& st, const Candidate& c) {
   const Corner& k = st.corners[c.corner];
   if (!k.alive) return std::nullopt;
   if (c.edge == kNone) {
@@ -64,9 +73,6 @@ std::optional<Collision> validate(State& st, const Candidate& c) {
   // antiparallel planes) covers real distance within delta2, and one made at
   // this height has already passed a plane it met below.
   if (glm::length(st.position(c.corner, c.z) - c.p) > st.tol().position()) return std::nullopt;
-  // At the candidate's own height: a batch spans delta2, over which a plane
-  // leaning at k moves k delta2, more than delta3 wherever k > 1.
-  if (span_through(st, c.edge, c.p, c.z, st.tol().position()) == kNone) return std::nullopt;
   return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
 }
 
@@ -445,9 +451,21 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
 }  // namespace
 
 void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candidate>& batch) {
+  // Collisions real when the batch is popped are clustered. A split whose
+  // edge has no span through its point yet may get one from a lower cluster
+  // of this batch that rewires the edge's span (paper 4.3: each chain
+  // recovers its current corners); it waits for its own height and is
+  // checked against the loops as they are then.
   std::vector<Collision> cs;
-  for (const Candidate& c : batch)
-    if (auto col = validate(st, c)) cs.push_back(std::move(*col));
+  std::vector<Candidate> waiting;
+  for (const Candidate& c : batch) {
+    auto col = meets(st, c);
+    if (!col) continue;
+    if (c.edge == kNone || hits_span(st, c))
+      cs.push_back(std::move(*col));
+    else
+      waiting.push_back(c);
+  }
   // Each cluster is resolved at its own height, lowest first: a corner that
   // races along a nearly horizontal line can cover real distance within delta2.
   auto groups = cluster(st, cs);
@@ -456,6 +474,12 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     double z = 0.0;
     for (int m : g) z += cs[m].z;
     zs.push_back(z / static_cast<double>(g.size()));
+  }
+  const std::size_t clustered = groups.size();
+  for (const Candidate& c : waiting) {
+    groups.push_back({static_cast<int>(cs.size())});
+    zs.push_back(c.z);
+    cs.push_back(*meets(st, c));
   }
   std::vector<std::size_t> order(groups.size());
   std::iota(order.begin(), order.end(), 0);
@@ -485,10 +509,13 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   };
   double instant = -HUGE_VAL;
   for (std::size_t g : order) {
-    if (zs[g] > instant + st.tol().simultaneous()) {
-      settle_rewired();
-      instant = zs[g];
+    const bool later = zs[g] > instant + st.tol().simultaneous();
+    if (later) settle_rewired();
+    if (g >= clustered) {
+      const Candidate& c = waiting[g - clustered];
+      if (!st.corners[c.corner].alive || !hits_span(st, c)) continue;
     }
+    if (later) instant = zs[g];
     st.height = std::max(st.height, zs[g]);
     resolve_cluster(st, cs, groups[g], rewired);
   }
