@@ -396,6 +396,12 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     const Chain& cin = chains[in.chain];
     const Chain& cout = chains[out.chain];
     const int n = st.add_corner(cin.in_edge, cout.out_edge, v);
+    // The new corner's line runs through this cluster's own point, not the
+    // vertex it may share with another cluster within delta2 and delta3: a
+    // corner between nearly parallel planes (hundreds of m per m of rise)
+    // started there would run a tenth of a millimetre off both its planes.
+    st.corners[n].base = glm::dvec2(meet);
+    st.corners[n].base_z = meet.z;
     st.link(cin.in_corner, n);
     st.link(n, cout.out_corner);
     made.push_back(n);
