@@ -463,18 +463,69 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // recovers its current corners); it waits for its own height and is
   // checked against the loops as they are then.
   std::vector<Collision> cs;
-  std::vector<Candidate> waiting;
+  std::vector<const Candidate*> source;  // the candidate of each collision
+  std::vector<const Candidate*> waiting;
   for (const Candidate& c : batch) {
     auto col = meets(st, c);
     if (!col) continue;
-    if (c.edge == kNone || hits_span(st, c))
+    if (c.edge == kNone || hits_span(st, c)) {
       cs.push_back(std::move(*col));
-    else
-      waiting.push_back(c);
+      source.push_back(&c);
+    } else {
+      waiting.push_back(&c);
+    }
   }
-  // Each cluster is resolved at its own height, lowest first: a corner that
-  // races along a nearly horizontal line can cover real distance within delta2.
+  // Clusters are resolved in the order of their first collision, each at its
+  // members' mean height: a corner that races along a nearly horizontal line
+  // (hundreds of m per m of rise) covers real distance within delta2, so the
+  // clusters that share it lie apart, and the collision that happens first
+  // decides which of them takes it.
   auto groups = cluster(st, cs);
+  std::vector<double> first;
+  for (const auto& g : groups) {
+    double lowest = HUGE_VAL;
+    for (int m : g) lowest = std::min(lowest, cs[m].z);
+    first.push_back(lowest);
+  }
+  // A member that meets a corner later than a cluster resolved after its own
+  // meets that corner would take the corner from that earlier collision (a
+  // neighbour's edge event joined to the cluster by position): it waits for
+  // its own height too, when its corners may be gone.
+  struct Meeting {
+    int group;
+    double z;
+  };
+  // Corner -> its lowest collision in each cluster it is in (a few clusters:
+  // its collisions at one point are one cluster, however many planes it meets).
+  std::unordered_map<int, std::vector<Meeting>> meetings;
+  for (int g = 0; g < static_cast<int>(groups.size()); ++g)
+    for (int m : groups[g])
+      for (int c : cs[m].corners) {
+        std::vector<Meeting>& list = meetings[c];
+        auto it = std::find_if(list.begin(), list.end(), [&](const Meeting& x) { return x.group == g; });
+        if (it == list.end())
+          list.push_back({g, cs[m].z});
+        else
+          it->z = std::min(it->z, cs[m].z);
+      }
+  for (int g = 0; g < static_cast<int>(groups.size()); ++g) {
+    auto late = [&](int m) {
+      for (int c : cs[m].corners)
+        for (const Meeting& o : meetings[c])
+          if (o.group != g && o.z < cs[m].z && first[o.group] >= first[g]) return true;
+      return false;
+    };
+    // A cluster's first collision is never late: a cluster that meets one of
+    // its corners lower is resolved before it.
+    std::vector<int> kept;
+    for (int m : groups[g]) {
+      if (late(m))
+        waiting.push_back(source[m]);
+      else
+        kept.push_back(m);
+    }
+    groups[g] = std::move(kept);
+  }
   std::vector<double> zs;
   for (const auto& g : groups) {
     double z = 0.0;
@@ -482,14 +533,15 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     zs.push_back(z / static_cast<double>(g.size()));
   }
   const std::size_t clustered = groups.size();
-  for (const Candidate& c : waiting) {
+  for (const Candidate* c : waiting) {
     groups.push_back({static_cast<int>(cs.size())});
-    zs.push_back(c.z);
-    cs.push_back(*meets(st, c));
+    zs.push_back(c->z);
+    first.push_back(c->z);
+    cs.push_back(*meets(st, *c));
   }
   std::vector<std::size_t> order(groups.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return zs[a] < zs[b]; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first[a] < first[b]; });
   // Clusters at one height up to rounding are one instant, so their order is
   // rounding's: rewire them all before any settles. Settling folds spikes,
   // hands runs to parallel neighbours and closes flat loops, reaching along
@@ -515,13 +567,13 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   };
   double instant = -HUGE_VAL;
   for (std::size_t g : order) {
-    const bool later = zs[g] > instant + st.tol().simultaneous();
+    const bool later = first[g] > instant + st.tol().simultaneous();
     if (later) settle_rewired();
     if (g >= clustered) {
-      const Candidate& c = waiting[g - clustered];
-      if (!st.corners[c.corner].alive || !hits_span(st, c)) continue;
+      const Candidate& c = *waiting[g - clustered];
+      if (!meets(st, c) || (c.edge != kNone && !hits_span(st, c))) continue;
     }
-    if (later) instant = zs[g];
+    if (later) instant = first[g];
     st.height = std::max(st.height, zs[g]);
     resolve_cluster(st, cs, groups[g], rewired);
   }
