@@ -4,20 +4,17 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-#include <deque>
-#include <exception>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
-
-#include <pthread.h>
 
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 #include <pybind11/stl.h>
 
 #include "app/cli/feature_binding.h"
+#include "app/cli/ordered_pipeline.h"
 #include "app/python/errors.h"
 #include "app/python/footprint_input.h"
 #include "app/python/mesh_arrays.h"
@@ -144,9 +141,13 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
 // order, so that a city is batched in bounded memory (batch() holds every
 // building's meshes, 16.5 KB a city building). The footprints wait in a
 // FeatureSpool (unnamed temporary file: it goes with the spool, or the
-// process) as procex batch keeps them; one worker thread evaluates a window
-// of buildings ahead, in parallel, and waits while a window is ready and not
-// taken. The worker never touches a Python object.
+// process) as procex batch keeps them; an OrderedPipeline reads them back in
+// order and evaluates them in parallel, going on past a slow building while
+// the caller waits for it. It holds at most 64 buildings a job ahead of the
+// one the caller waits for and 64 a job evaluated and not taken, procex
+// batch's window (about 2 MB a job of city buildings): with 4 a job, one
+// intricate building among houses (150 times their time) stalled the others
+// as windows did (BENCHMARKS). Its threads never touch a Python object.
 class BatchStream {
  public:
   BatchStream(std::shared_ptr<Recipe> recipe, py::handle footprints, int jobs, py::handle attributes,
@@ -176,9 +177,13 @@ class BatchStream {
     }
     errors_ = std::move(collection.errors);
     sources_ = feature_sources(*spool_, errors_);
-    window_ = 4 * static_cast<std::size_t>(std::max(1, arena_.max_concurrency()));
-    worker_ = std::thread([this] { run(); });
-    pthread_setname_np(worker_.native_handle(), "procex-batch");  // what top -H (and a test) sees of it
+    const std::size_t ahead = 64 * static_cast<std::size_t>(std::max(1, arena_.max_concurrency()));
+    pipeline_.emplace(
+        sources_.size(), ahead, arena_, [this](std::size_t i) { return pending(i); },
+        [this](Pending& p) {
+          if (p.feature) evaluate(recipe_, evaluator_, *p.feature, placeables_, p.building);
+        },
+        "procex-batch");  // what top -H (and a test) sees of it
   }
   ~BatchStream() { close(); }
 
@@ -188,31 +193,20 @@ class BatchStream {
   py::object next() {
     Pending p;
     for (;;) {
-      bool got = false, finished = false;
-      {
+      Pipeline::Next n = Pipeline::Next::kEnd;
+      try {
         py::gil_scoped_release release;
-        std::unique_lock lock(mutex_);
-        changed_.wait_for(lock, std::chrono::milliseconds(100), [&] { return !ready_.empty() || finished_; });
-        if (!ready_.empty()) {
-          p = std::move(ready_.front());
-          ready_.pop_front();
-          got = true;
-          changed_.notify_all();
-        } else {
-          finished = finished_;
-        }
-      }
-      if (got) break;
-      if (finished) {
-        const std::exception_ptr error = error_;
+        n = pipeline_->next(p, std::chrono::milliseconds(100));
+      } catch (const IoError& e) {  // the spool could not be read back
         close();
-        if (error) {
-          try {
-            std::rethrow_exception(error);
-          } catch (const IoError& e) {  // the spool could not be read back
-            raise(ErrorKind::Footprint, e.what());
-          }
-        }
+        raise(ErrorKind::Footprint, e.what());
+      } catch (...) {
+        close();
+        throw;
+      }
+      if (n == Pipeline::Next::kItem) break;
+      if (n == Pipeline::Next::kEnd) {
+        close();
         throw py::stop_iteration();
       }
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
@@ -222,24 +216,17 @@ class BatchStream {
     return py::cast(std::move(p.building));
   }
 
-  // Stops the worker (buildings being evaluated are cancelled), joins it and
-  // drops the spool. Idempotent; the destructor calls it.
+  // Stops the workers (buildings being evaluated are cancelled), joins them
+  // and drops the spool. Idempotent; the destructor calls it.
   void close() {
-    stop_ = true;
     recipe_.options.cancel.cancel();
-    {
-      std::lock_guard lock(mutex_);
-      changed_.notify_all();
+    if (!pipeline_) return;
+    if (PyGILState_Check()) {
+      py::gil_scoped_release release;
+      pipeline_->close();
+    } else {
+      pipeline_->close();
     }
-    if (worker_.joinable()) {
-      if (PyGILState_Check()) {
-        py::gil_scoped_release release;
-        worker_.join();
-      } else {
-        worker_.join();
-      }
-    }
-    ready_.clear();
     spool_.reset();
   }
 
@@ -248,40 +235,17 @@ class BatchStream {
     Building building;                     // its Python members are made by next()
     std::optional<GeoJsonFeature> feature;  // as evaluated, for Building.feature
   };
+  using Pipeline = OrderedPipeline<Pending>;
 
-  void run() {
-    try {
-      for (std::size_t first = 0; first < sources_.size(); first += window_) {
-        {
-          std::unique_lock lock(mutex_);
-          changed_.wait(lock, [&] { return stop_ || ready_.size() < window_; });
-        }
-        if (stop_) break;
-        std::vector<Pending> chunk(std::min(window_, sources_.size() - first));
-        for (std::size_t i = 0; i < chunk.size(); ++i) {
-          const FeatureSource& s = sources_[first + i];
-          Building& b = chunk[i].building;
-          b.index = s.index;
-          if (!s.error) chunk[i].feature = spool_->at(s.spooled), b.id = chunk[i].feature->id;
-          else b.id = s.error->id, b.status = "refused", b.reason = s.error->message;
-        }
-        arena_.execute([&] {
-          tbb::parallel_for(std::size_t{0}, chunk.size(), [&](std::size_t i) {
-            if (chunk[i].feature && !stop_)
-              evaluate(recipe_, evaluator_, *chunk[i].feature, placeables_, chunk[i].building);
-          });
-        });
-        std::lock_guard lock(mutex_);
-        for (Pending& p : chunk) ready_.push_back(std::move(p));
-        changed_.notify_all();
-      }
-    } catch (...) {
-      std::lock_guard lock(mutex_);
-      error_ = std::current_exception();
-    }
-    std::lock_guard lock(mutex_);
-    finished_ = true;
-    changed_.notify_all();
+  // The i-th building as the workers take it: its feature back from the
+  // spool (on the pipeline's thread, one at a time), or refused.
+  Pending pending(std::size_t i) const {
+    const FeatureSource& s = sources_[i];
+    Pending p;
+    p.building.index = s.index;
+    if (!s.error) p.feature = spool_->at(s.spooled), p.building.id = p.feature->id;
+    else p.building.id = s.error->id, p.building.status = "refused", p.building.reason = s.error->message;
+    return p;
   }
 
   std::shared_ptr<Recipe> source_recipe_;
@@ -294,14 +258,7 @@ class BatchStream {
   Evaluator evaluator_{cache_, kEngineSalt};
   PlaceableCache placeables_;
   tbb::task_arena arena_;
-  std::size_t window_ = 0;  // buildings evaluated at once, and at most ready and not taken
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<Pending> ready_;
-  bool finished_ = false;
-  std::exception_ptr error_;
-  std::atomic<bool> stop_{false};
-  std::thread worker_;
+  std::optional<Pipeline> pipeline_;  // last: it stops before what it reads goes
 };
 
 }  // namespace
@@ -354,8 +311,9 @@ void bind_batch(py::module_& m) {
       py::arg("streets") = py::none(),
       "batch() in bounded memory: an iterator over the same Buildings, in the same order, handed over one at a "
       "time. The footprints are set aside in a temporary file as procex batch keeps them (a file's path is read "
-      "feature by feature, never whole), and the worker threads evaluate only a window of buildings ahead (four per "
-      "job) while the GIL is released, so memory does not grow with the number of footprints as long as the caller "
+      "feature by feature, never whole), and the worker threads evaluate while the GIL is released, going on past a "
+      "slow building while you wait for it, but at most 64 buildings per job ahead of it and 64 per job made "
+      "and not yet handed over, so memory does not grow with the number of footprints as long as the caller "
       "does not keep the buildings. A footprint that cannot be read or a building that fails is a Building with "
       "that status; the rest go on. Arguments as batch(). Use it in a with block (or call close()) to stop early: "
       "dropping it does the same.");

@@ -5,6 +5,7 @@ temporary file left; its peak memory not growing with the footprints, and a few
 dozen bytes kept a footprint."""
 import gc
 import json
+import math
 import os
 import subprocess
 import sys
@@ -83,6 +84,33 @@ def test_yields_what_batch_returns_in_order(jobs):
     assert_same_buildings(want, list(it))
     with pytest.raises(StopIteration):
         next(it)
+
+
+def star(n, radius):
+    """A star of n vertices, alternately at radius and 0.6 radius: with the
+    city recipe about 150 times a generated footprint's time at n = 1024."""
+    ring = [[radius * (1 if k % 2 else 0.6) * math.cos(2 * math.pi * k / n),
+             radius * (1 if k % 2 else 0.6) * math.sin(2 * math.pi * k / n)] for k in range(n)]
+    return {"type": "Polygon", "coordinates": [ring + [ring[0]]]}
+
+
+def test_a_slow_building_among_many_keeps_the_order(tmp_path):
+    """More buildings than the iterator holds (64 a job ahead, 64 a job
+    ready: 256 at jobs=2), a slow one early and one further on: the others
+    are evaluated past it while the caller waits for it
+    (tests/app/ordered_pipeline_test.cc shows that without timing), and still
+    come out in footprint order with batch()'s results."""
+    path = tmp_path / "many.geojson"
+    subprocess.run([sys.executable, ROOT / "bench" / "batch_footprints.py", "600", path], check=True)
+    collection = json.loads(path.read_text())
+    for i in (5, 400):
+        collection["features"][i]["geometry"] = star(1024, 15)
+    want = procex.batch(city(), collection, jobs=2)
+    got = list(procex.batch_iter(city(), collection, jobs=2))
+    assert [b.index for b in got] == list(range(600))
+    assert [b.status for b in got].count("ok") == 600
+    assert len(got[5].meshes[0].face_offsets) > 1024  # the star, evaluated
+    assert_same_buildings(want, got)
 
 
 def test_a_bad_footprint_is_reported_and_the_rest_go_on(tmp_path):
