@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -491,28 +492,35 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // meets that corner would take the corner from that earlier collision (a
   // neighbour's edge event joined to the cluster by position): it waits for
   // its own height too, when its corners may be gone.
+  // Each corner's lowest collision in each cluster it is in (a few clusters:
+  // its collisions at one point are one cluster, however many planes it
+  // meets), as a flat list sorted by corner. A batch of one cluster (most of
+  // them) has no other cluster to take a corner from: nothing to list.
   struct Meeting {
+    int corner;
     int group;
     double z;
   };
-  // Corner -> its lowest collision in each cluster it is in (a few clusters:
-  // its collisions at one point are one cluster, however many planes it meets).
-  std::unordered_map<int, std::vector<Meeting>> meetings;
-  for (int g = 0; g < static_cast<int>(groups.size()); ++g)
-    for (int m : groups[g])
-      for (int c : cs[m].corners) {
-        std::vector<Meeting>& list = meetings[c];
-        auto it = std::find_if(list.begin(), list.end(), [&](const Meeting& x) { return x.group == g; });
-        if (it == list.end())
-          list.push_back({g, cs[m].z});
-        else
-          it->z = std::min(it->z, cs[m].z);
-      }
-  for (int g = 0; g < static_cast<int>(groups.size()); ++g) {
+  std::vector<Meeting> meetings;
+  if (groups.size() > 1) {
+    for (int g = 0; g < static_cast<int>(groups.size()); ++g)
+      for (int m : groups[g])
+        for (int c : cs[m].corners) meetings.push_back({c, g, cs[m].z});
+    std::sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& b) {
+      return std::tie(a.corner, a.group, a.z) < std::tie(b.corner, b.group, b.z);
+    });
+    meetings.erase(std::unique(meetings.begin(), meetings.end(),
+                               [](const Meeting& a, const Meeting& b) { return a.corner == b.corner && a.group == b.group; }),
+                   meetings.end());
+  }
+  const auto by_corner = [](const Meeting& a, const Meeting& b) { return a.corner < b.corner; };
+  for (int g = 0; g < static_cast<int>(groups.size()) && !meetings.empty(); ++g) {
     auto late = [&](int m) {
-      for (int c : cs[m].corners)
-        for (const Meeting& o : meetings[c])
-          if (o.group != g && o.z < cs[m].z && first[o.group] >= first[g]) return true;
+      for (int c : cs[m].corners) {
+        const auto [from, to] = std::equal_range(meetings.begin(), meetings.end(), Meeting{c, 0, 0.0}, by_corner);
+        for (auto o = from; o != to; ++o)
+          if (o->group != g && o->z < cs[m].z && first[o->group] >= first[g]) return true;
+      }
       return false;
     };
     // A cluster's first collision is never late: a cluster that meets one of
