@@ -27,8 +27,8 @@ constexpr std::size_t kExactOracleVertices = 4096;
 
 // Empty when `roof` and CGAL's skeleton of `footprint` agree, else one line
 // per disagreement (a few of each kind). Every edge of `footprint` must have
-// the same angle, in (0, 90). Throws CgalOutOfMemory when CGAL needs more
-// than its cap.
+// the same angle, in (0, 90). Where CGAL gives no skeleton (a crash, none,
+// past its CPU or memory cap: CgalNoSkeleton) that is one problem line.
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof);
 
 // The footprint without the vertices where a loop runs straight on: |sin| of
@@ -47,8 +47,9 @@ Footprint without_straight_vertices(const Footprint& footprint);
 // Drops the straight vertices, sweeps and compares. Where they disagree on a
 // valid roof, the roof may still be the limit of generic neighbours of the
 // input that agree with CGAL (exactly coincident events: see the .cc); then
-// it passes. A sweep or CGAL exception becomes a problem line, CGAL running
-// out of its memory cap too (with no neighbours tried: they need as much).
+// it passes; so it does where CGAL gives the input no skeleton (CgalNoSkeleton,
+// its caps included) and the neighbours agree. A sweep exception becomes a
+// problem line.
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint);
 
 }  // namespace procex::testing
