@@ -58,6 +58,26 @@ Footprint without_straight_vertices(const Footprint& fp) {
   return out;
 }
 
+namespace {
+
+// CGAL's skeleton with exact constructions up to kExactOracleVertices, and
+// with inexact ones beyond, or where the exact kernel runs out of its memory
+// cap: it keeps every node's whole arithmetic history, and jittered stars of
+// 1,000-3,000 vertices, their events micrometres apart, took it past 4 GB
+// (the star class, TESTING.md), where the inexact kernel decides the same
+// events exactly and rounds only the nodes, far below the comparison's
+// tolerance (CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance).
+CgalSkeleton oracle_skeleton(const CgalSkeletonInput& input, double min_ridge, std::size_t vertices) {
+  if (vertices > kExactOracleVertices) return input.skeleton(min_ridge, CgalConstructions::Inexact);
+  try {
+    return input.skeleton(min_ridge, CgalConstructions::Exact);
+  } catch (const CgalOutOfMemory&) {
+    return input.skeleton(min_ridge, CgalConstructions::Inexact);
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof) {
   const double tol = roof_tolerance(footprint);
   const double rise = 1.0 / std::tan(footprint.loops.at(0).edges.at(0).angle_deg * M_PI / 180.0);
@@ -67,8 +87,7 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   for (const Loop& loop : footprint.loops) vertices += loop.points.size();
   CgalSkeleton cgal;
   try {
-    cgal = CgalSkeletonInput(footprint).skeleton(
-        tol, vertices > kExactOracleVertices ? CgalConstructions::Inexact : CgalConstructions::Exact);
+    cgal = oracle_skeleton(CgalSkeletonInput(footprint), tol, vertices);
   } catch (const CgalNoSkeleton& e) {
     // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
     problems.push_back(e.what());

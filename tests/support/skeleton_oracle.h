@@ -14,7 +14,8 @@
 
 namespace procex::testing {
 
-// Plans of more vertices than this are compared with CGAL's inexact-
+// Plans of more vertices than this, and those whose exact skeleton runs out
+// of its memory cap, are compared with CGAL's inexact-
 // construction kernel: its exact one ran past 20 GB and 75 minutes on a star
 // of 10,000 vertices (the size class, TESTING.md). The inexact kernel decides
 // every event exactly and rounds only the nodes it constructs, by far less
