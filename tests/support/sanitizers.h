@@ -2,16 +2,18 @@
 // Debug code is 20-100x slower: the heaviest test inputs are trimmed there.
 #pragma once
 
-namespace procex {
-
 #if defined(__SANITIZE_ADDRESS__)
-inline constexpr bool kSanitized = true;
+#define PROCEX_ASAN 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-inline constexpr bool kSanitized = true;
-#else
-inline constexpr bool kSanitized = false;
+#define PROCEX_ASAN 1
 #endif
+#endif
+
+namespace procex {
+
+#if defined(PROCEX_ASAN)
+inline constexpr bool kSanitized = true;
 #else
 inline constexpr bool kSanitized = false;
 #endif
