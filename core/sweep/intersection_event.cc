@@ -207,6 +207,18 @@ struct Rewired {
   double z;
 };
 
+// Whether a crossing that runs `along` per unit height along `ray`, a
+// standing wall's ray from the collision, stays ahead of the corner between
+// edges e and f, its own chain's, which bounds the wall's span on that ray if
+// the chains stay apart. A split (e == f) or parallel planes make no corner.
+bool ahead_of_corner(const State& st, int e, int f, glm::dvec2 ray, double along) {
+  if (e == f) return true;
+  const Plane& pe = st.edges[e].plane;
+  const Plane& pf = st.edges[f].plane;
+  if (std::abs(cross(pe.n, pf.n)) <= Tolerances::parallel_sin) return true;
+  return along > glm::dot(crossing_velocity(pe, pf), ray);
+}
+
 // Whether the wedge outside the solid between an incoming ray (edge a, at
 // angle in_angle) and the next outgoing ray counter-clockwise (edge b) closes
 // as the sweep rises: the lines of a and b then cross inside that wedge, or on
@@ -215,7 +227,13 @@ struct Rewired {
 // the gap eats into the edge's span (a wall leaning out across a notch meets
 // the opposite wall), and the angle of the computed velocity, equal to the
 // ray's only up to rounding, cannot say on which side of the ray it runs.
-bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle) {
+// Even so the crossing closes the gap only if it runs onto the wall's span:
+// a_with | a (b | b_with), the corner of the wall's own chain, bounds that
+// span on the ray, and where it runs out faster the crossing stays behind it,
+// on no edge at all (angles seed 13108: an edge leaning out at 0.6 m per m
+// follows, on its line, the other loop's edge leaning in at 1 m per m; the
+// loops only touched).
+bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in_angle, double out_angle) {
   if (a == b) return false;
   const Plane& pa = st.edges[a].plane;
   const Plane& pb = st.edges[b].plane;
@@ -236,9 +254,13 @@ bool gap_closes(const State& st, int a, int b, double in_angle, double out_angle
   } else if (pa.k == 0.0) {
     // Along a's line; b moves k_b / (n_b . dir_a) per unit height along dir_a,
     // and the in-ray points along -dir_a.
-    at = pb.k / glm::dot(pb.n, st.edges[a].dir) < 0.0 ? 0.0 : M_PI;
+    const double along = -pb.k / glm::dot(pb.n, st.edges[a].dir);
+    if (along > 0.0 && !ahead_of_corner(st, a_with, a, -st.edges[a].dir, along)) return false;
+    at = along > 0.0 ? 0.0 : M_PI;
   } else if (pb.k == 0.0) {
-    at = pa.k / glm::dot(pa.n, st.edges[b].dir) > 0.0 ? out : ccw_from_in(out_angle + M_PI);
+    const double along = pa.k / glm::dot(pa.n, st.edges[b].dir);
+    if (along > 0.0 && !ahead_of_corner(st, b, b_with, st.edges[b].dir, along)) return false;
+    at = along > 0.0 ? out : ccw_from_in(out_angle + M_PI);
   } else {
     const glm::dvec2 v = crossing_velocity(pa, pb);
     if (v == glm::dvec2(0.0)) return false;
@@ -417,8 +439,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const std::size_t j = (i + 1) % rays.size();
       if (!taken[i] && !taken[j] && rays[i].in && !rays[j].in && rays[i].chain != rays[j].chain &&
-          gap_closes(st, chains[rays[i].chain].in_edge, chains[rays[j].chain].out_edge, rays[i].angle,
-                     rays[j].angle)) {
+          gap_closes(st, chains[rays[i].chain].out_edge, chains[rays[i].chain].in_edge,
+                     chains[rays[j].chain].out_edge, chains[rays[j].chain].in_edge, rays[i].angle, rays[j].angle)) {
         join(rays[i], rays[j]);
         taken[i] = taken[j] = 1;
       }
