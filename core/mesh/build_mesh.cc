@@ -23,6 +23,33 @@ std::string face_text(std::size_t index, const SurfaceFace& face) {
          std::to_string(face.source_edge) + ")";
 }
 
+// The face's loops with each hole that touches the outer loop at a vertex
+// (the same id: a notch of the face whose tip is on its boundary, angles seed
+// 75421) spliced into the outer loop there, which then passes that vertex
+// twice, once on each side of the notch. Left a hole, its tip would be the
+// outer loop's vertex again at the same point, and bridging it in makes
+// pieces that pass the point twice.
+std::vector<std::vector<std::uint32_t>> splice_touching_holes(const SurfaceFace& face) {
+  std::vector<std::vector<std::uint32_t>> loops{face.loops[0]};
+  for (std::size_t li = 1; li < face.loops.size(); ++li) {
+    const auto& hole = face.loops[li];
+    std::vector<std::uint32_t>& outer = loops[0];
+    std::size_t at = outer.size(), from = 0;
+    for (std::size_t k = 0; k < hole.size() && at == outer.size(); ++k) {
+      at = static_cast<std::size_t>(std::find(outer.begin(), outer.end(), hole[k]) - outer.begin());
+      from = k;
+    }
+    if (at == outer.size()) {
+      loops.push_back(hole);
+      continue;
+    }
+    std::vector<std::uint32_t> notch;
+    for (std::size_t k = 1; k <= hole.size(); ++k) notch.push_back(hole[(from + k) % hole.size()]);
+    outer.insert(outer.begin() + static_cast<std::ptrdiff_t>(at) + 1, notch.begin(), notch.end());
+  }
+  return loops;
+}
+
 // A face with holes, as simple planar polygons over its own vertex ids.
 std::vector<std::vector<std::uint32_t>> split_face(const Surface& surface, std::size_t index, const SurfaceFace& face) {
   std::vector<glm::dvec3> outer;
@@ -30,7 +57,7 @@ std::vector<std::vector<std::uint32_t>> split_face(const Surface& surface, std::
   const glm::dvec3 normal = newell_normal(outer);
   std::vector<std::vector<glm::dvec2>> flat;
   std::vector<std::uint32_t> ids;
-  for (const auto& loop : face.loops) {
+  for (const auto& loop : splice_touching_holes(face)) {
     std::vector<glm::dvec3> pts;
     for (std::uint32_t v : loop) pts.push_back(surface.vertices[v]);
     flat.push_back(drop_axis(pts, normal));

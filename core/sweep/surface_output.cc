@@ -22,12 +22,13 @@ struct FaceFrame {
   glm::dvec2 to2d(glm::dvec3 p) const { return {glm::dot(p, u), glm::dot(p, w)}; }
 };
 
-FaceFrame frame_of(const FaceGroup& f) {
-  const glm::dvec3 n = f.outward;
+FaceFrame frame_of(glm::dvec3 n) {
   const glm::dvec3 helper = std::abs(n.z) < 0.9 ? glm::dvec3{0, 0, 1} : glm::dvec3{1, 0, 0};
   const glm::dvec3 u = glm::normalize(glm::cross(helper, n));
   return {u, glm::cross(n, u)};
 }
+
+FaceFrame frame_of(const FaceGroup& f) { return frame_of(f.outward); }
 
 double signed_area(std::span<const glm::dvec2> pts) {
   double a = 0.0;
@@ -78,7 +79,7 @@ struct ChainScratch {
   std::vector<std::pair<double, std::uint32_t>> corners, inside;  // (position, vertex)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> links;     // (vertex, a neighbour in the face)
   std::vector<char> used;
-  std::vector<std::uint32_t> seen;  // vertex -> the last loop that passed it
+  std::vector<std::uint32_t> seen;  // vertex -> the last loop (or a face's outer loops) that passed it
   std::uint32_t loop_id = 0;
   std::vector<std::uint32_t> loop;
   std::vector<std::vector<std::uint32_t>> loops;  // what chain_loops made
@@ -292,10 +293,24 @@ Surface assemble(const State& st, const Cuts& cuts, ChainScratch& x, std::vector
     }
     x.outer_from.push_back(x.pts.size());
     const std::size_t outers = x.outer_area.size();
+    // A hole split off where it touches an outer loop begins at the vertex
+    // they share, on that loop's boundary, where the inside test goes either
+    // way (angles seed 75421: a triangle of a face's plane that two merging
+    // loops fill, pinched at the top where the face's next plane takes over,
+    // was dropped as a sliver and left the surface open). So a hole is tested
+    // at a vertex no outer loop passes, or else halfway along its first edge.
+    if (!x.holes.empty()) {
+      ++x.loop_id;
+      for (std::size_t i = 0; i < outers; ++i)
+        for (std::uint32_t v : s.faces[first_face + i].loops.front()) x.seen[v] = x.loop_id;
+    }
     for (std::size_t hole : x.holes) {
       // A hole belongs to the smallest outer loop around it.
       int best = -1;
-      const glm::dvec2 q = fr.to2d(st.vertices[x.loops[hole][0]]);
+      const std::vector<std::uint32_t>& h = x.loops[hole];
+      const auto own = std::find_if(h.begin(), h.end(), [&](std::uint32_t v) { return x.seen[v] != x.loop_id; });
+      const glm::dvec2 q = own != h.end() ? fr.to2d(st.vertices[*own])
+                                          : 0.5 * (fr.to2d(st.vertices[h[0]]) + fr.to2d(st.vertices[h[1]]));
       for (std::size_t i = 0; i < outers; ++i) {
         const auto outer = std::span(x.pts).subspan(x.outer_from[i], x.outer_from[i + 1] - x.outer_from[i]);
         if (inside(outer, q) && (best < 0 || x.outer_area[i] < x.outer_area[best])) best = static_cast<int>(i);
@@ -365,6 +380,41 @@ void close_surface(Surface& surface) {
       for (std::uint32_t i = 0; i < m; ++i)
         halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, first + (i + 1) % m, f, &loop, i});
     }
+  // A hole touching its face's outer loop at a vertex (angles seed 75421: a
+  // triangle of the face's plane that two merging loops fill, its apex on the
+  // line where the face's next plane takes over) passes the vertex in both
+  // loops. The face's corners there are not the loops' own: the way on from a
+  // half-edge arriving is the face's half-edge leaving that turns least
+  // clockwise from it, as the loops were chained, so the fans round the
+  // vertex pass from one loop to the other.
+  for (std::uint32_t f = 0, first = 0; f < surface.faces.size(); ++f) {
+    const SurfaceFace& face = surface.faces[f];
+    std::uint32_t end = first;
+    for (const auto& loop : face.loops) end += static_cast<std::uint32_t>(loop.size());
+    if (face.loops.size() > 1) {
+      std::vector<glm::dvec3> points;
+      for (std::uint32_t v : face.loops.front()) points.push_back(surface.vertices[v]);
+      const FaceFrame fr = frame_of(glm::normalize(newell_normal(points)));
+      auto toward = [&](std::uint32_t a, std::uint32_t b) { return fr.to2d(surface.vertices[b] - surface.vertices[a]); };
+      std::map<std::uint32_t, std::vector<std::uint32_t>> leaving;
+      for (std::uint32_t g = first; g < end; ++g) leaving[halves[g].from].push_back(g);
+      for (std::uint32_t g = first; g < end; ++g) {
+        const std::vector<std::uint32_t>& ways = leaving[halves[g].to];
+        if (ways.size() < 2) continue;
+        const glm::dvec2 back = toward(halves[g].to, halves[g].from);
+        std::uint32_t best = halves[g].next;
+        double best_turn = 1e300;
+        for (std::uint32_t o : ways)
+          if (const double turn = clockwise_turn(back, toward(halves[o].from, halves[o].to)); turn < best_turn) {
+            best_turn = turn;
+            best = o;
+          }
+        halves[g].next = best;
+        halves[best].prev = g;
+      }
+    }
+    first = end;
+  }
   // The half-edges grouped by `from`, sorted by `to`, then in the order given.
   auto key = [&](std::uint32_t g) { return std::pair{halves[g].from, halves[g].to}; };
   std::vector<std::uint32_t> order(halves.size());
