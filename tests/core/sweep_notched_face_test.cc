@@ -1,6 +1,8 @@
 // A face whose plane two merging blocks fill in a triangle whose tip is on the
 // face's own boundary (generated angles finding 75421, built in code). Block
-// M (x in [-5, 0]) and block S (x in [1, 3], y in [1, 2]) lean out towards
+// M (x in [-5, 0], y in [-1, 4]: its south roof reaches S's south wall's line
+// only at 2 m, after S has gone, so no edges of different angles run on from
+// each other there) and block S (x in [1, 3], y in [1, 2]) lean out towards
 // each other at 0.6 m per m for their first metre, then roof back at 0.9 m
 // per m; the other edges are roofs at 45 degrees but for S's south wall,
 // which stands. The leaning walls meet at 5/6 m along S's west edge, and the
@@ -29,7 +31,7 @@ Profile lean() { return {"lean", {{0, 0}, {0.6, 1}, {-3, 5}}, {"overhang", "roof
 
 Footprint blocks(bool with_m, bool with_s) {
   std::vector<std::vector<glm::dvec2>> loops;
-  if (with_m) loops.push_back({{-5, 0}, {0, 0}, {0, 4}, {-5, 4}});
+  if (with_m) loops.push_back({{-5, -1}, {0, -1}, {0, 4}, {-5, 4}});
   if (with_s) loops.push_back({{1, 1}, {3, 1}, {3, 2}, {1, 2}});
   Footprint fp = make_footprint(loops, 45.0);
   fp.profiles = {lean()};
