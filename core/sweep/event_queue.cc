@@ -4,8 +4,11 @@
 #include <cmath>
 #include <cstring>
 #include <iterator>
+#include <optional>
 
 #include <glm/geometric.hpp>
+
+#include "core/sweep/meeting_heights.h"
 
 namespace procex::engine {
 namespace {
@@ -15,28 +18,6 @@ namespace {
 bool may_split(const State& st, int c) {
   const Corner& k = st.corners[c];
   return st.any_outward || k.motion != Motion::Regular || st.reflex(c);
-}
-
-// The height where a corner at p (at height z, moving by v per unit of
-// height) meets each plane, or HUGE_VAL where it is not worth queueing.
-// Without branches, so the loop vectorizes (wider where the CPU allows:
-// add, multiply, divide and compare round the same at any width, and no
-// fused multiply-add is enabled, so every width gives the same bits).
-[[gnu::target_clones("avx2", "default")]] void meeting_heights(const double* nx, const double* ny, const double* kk,
-                                                               const double* cc, std::size_t n, glm::dvec2 p,
-                                                               glm::dvec2 v, double z, double earliest, double cap,
-                                                               bool outward, double* meet) {
-  for (std::size_t j = 0; j < n; ++j) {
-    // Signed distance from the edge's line changes at `rate`: a corner inside
-    // meets it when the distance falls to zero, a corner of another polygon
-    // growing towards it (from outside) when it rises to zero.
-    const double rate = nx[j] * v.x + ny[j] * v.y - kk[j];
-    const double distance = nx[j] * p.x + ny[j] * p.y - (cc[j] + kk[j] * z);
-    const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
-    // A meeting point below the sweep plane means the planes diverge from here.
-    const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    meet[j] = (meets & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
-  }
 }
 
 }  // namespace
@@ -91,6 +72,7 @@ void EventQueue::refresh_live(State& st) {
   // came. The pass starts a new set: lists of the old one still read it.
   if (corners - rebuilt_at_ > std::max<std::size_t>(64, live_->edge.size() / 2)) {
     live_ = std::make_shared<Targets>();
+    live_->live = true;
     listed_.assign(st.edges.size(), 0);
     for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
       if (!st.spans(e).empty()) list_live(st, e);
@@ -154,12 +136,11 @@ void EventQueue::find_splits(const SplitList& list) {
   found_.clear();
   for (std::size_t h = 0; h < m; ++h) {
     const std::size_t j = hits_[h];
-    const int e = t.edge[j];
+    // Built in place: a Split put together on the stack and copied whole
+    // stalls on store forwarding, which cost the every-edge path a third.
     const double at = meet[j];
-    if (e == list.prev_edge || e == list.next_edge) continue;
-    // A corner made by a collision with this edge meets it there because of it.
-    if (at <= list.near && std::find(list.resolved.begin(), list.resolved.end(), e) != list.resolved.end()) continue;
-    found_.push_back({at, e});
+    const int e = t.edge[j];
+    if (queues(list, at, e)) found_.push_back({at, e});
   }
 }
 
@@ -191,35 +172,60 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   list.resolved = resolved;
   list.splits.clear();
   list.hold = kHeld;
+  list.complete = false;
   list.last = {0.0, kNone};
   list.same = 0;
-  find_splits(list);
-  list.left = found_.size();
-  st.count_events(found_.size());
-  hold_next(i);
+  st.count_events(hold_next(i));
   advance(i, c);
 }
 
-void EventQueue::hold_next(int i) {
+std::size_t EventQueue::hold_next(int i) {
   SplitList& list = lists_[i];
   const SplitEarlier earlier{list.z};
-  // Those queued already: up to the last, and as many equal to it as were queued.
+  const Targets& t = *list.targets;
+  std::optional<std::size_t> worked;
+  bool every = true;  // found_ holds every split not yet queued
   auto end = found_.end();
-  if (list.last.edge != kNone) {
-    std::size_t same = list.same;
-    end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) {
-      if (earlier(list.last, s)) return false;
-      if (!earlier(s, list.last) && same == 0) return false;
-      if (!earlier(s, list.last)) --same;
-      return true;
-    });
+  if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(list.p.x) &&
+      std::isfinite(list.p.y) && std::isfinite(list.v.x) && std::isfinite(list.v.y) && std::isfinite(list.z)) {
+    // The live edges are each listed once, so the splits not queued yet are
+    // those after the last queued. Of the lowest of them, the list does not
+    // queue at most its two edges' and its collision's: as many more hold
+    // the lowest it queues.
+    const std::size_t more = 2 + list.resolved.size();
+    t.index.extend(t.planes(), list.size, list.p);
+    worked = t.index.lowest(t.planes(),
+                            {list.p, list.v, list.z, list.earliest, list.cap, list.outward, list.size, list.last},
+                            list.hold + more, found_, index_scratch_);
+    if (worked) {
+      every = found_.size() < list.hold + more;
+      end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) { return !queues(list, s.at, s.edge); });
+    }
+  }
+  if (!worked) {
+    find_splits(list);
+    worked = found_.size();
+    // Those queued already: up to the last, and as many equal to it as were queued.
+    end = found_.end();
+    if (list.last.edge != kNone) {
+      std::size_t same = list.same;
+      end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) {
+        if (earlier(list.last, s)) return false;
+        if (!earlier(s, list.last) && same == 0) return false;
+        if (!earlier(s, list.last)) --same;
+        return true;
+      });
+    }
   }
   // The lowest few, the lowest last.
   const auto keep = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(list.hold), end - found_.begin());
   std::partial_sort(found_.begin(), found_.begin() + keep, end, earlier);
   list.splits.assign(std::make_reverse_iterator(found_.begin() + keep), std::make_reverse_iterator(found_.begin()));
+  list.complete = every && keep == end - found_.begin();
   held_ += list.splits.size();
   peak_held_ = std::max(peak_held_, held_);
+  worked_ += *worked;
+  return *worked;
 }
 
 void EventQueue::free_list(int i) {
@@ -227,25 +233,22 @@ void EventQueue::free_list(int i) {
   held_ -= list.splits.size();
   list.splits.clear();
   list.targets.reset();
-  list.left = 0;
   free_lists_.push_back(i);
 }
 
 void EventQueue::advance(int i, int c) {
   SplitList& list = lists_[i];
-  if (list.left == 0) {
-    free_list(i);
-    return;
+  if (list.splits.empty() && !list.complete) {
+    list.hold = std::min(2 * list.hold, kHeldMost);
+    hold_next(i);
   }
   if (list.splits.empty()) {
-    list.hold = std::min(2 * list.hold, kHeldMost);
-    find_splits(list);
-    hold_next(i);
+    free_list(i);
+    return;
   }
   const Split s = list.splits.back();
   list.splits.pop_back();
   --held_;
-  --list.left;
   const SplitEarlier earlier{list.z};
   list.same = list.last.edge != kNone && !earlier(list.last, s) && !earlier(s, list.last) ? list.same + 1 : 1;
   list.last = s;

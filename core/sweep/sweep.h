@@ -27,9 +27,10 @@ struct SweepBudget {
   // Vertices made by one attempt (nested sweeps included): corners, planes
   // and faces grow with them, so this bounds the engine's memory.
   std::size_t max_vertices = 10'000'000;
-  // Potential events queued by one attempt (a few words of memory each while
-  // their corner lives): a reflex corner lists one per live plane, so this
-  // grows as vertices times reflex corners.
+  // Potential events worked out by one attempt as its corners are listed: a
+  // reflex corner lists one per live plane it meets, or among many thousands
+  // of live planes those its list's index search reached (at least its
+  // lowest few), so this grows as vertices times reflex corners at most.
   std::size_t max_events = 1'000'000'000;
   // CPU seconds of the thread running sweep(), its retries included (not wall
   // time: a footprint must not pass on a quiet machine and fail on a busy one).

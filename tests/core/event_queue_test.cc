@@ -3,7 +3,9 @@
 // only its lowest few, working out the rest again when they run out. So the
 // queue must still hand out every candidate lowest first, drop a dead
 // corner's, list none above the cap, and hold O(n) candidates, not one per
-// reflex corner and edge. The L-shape, every edge at 45 degrees:
+// reflex corner and edge. Lists of many edges are worked out through a
+// PlaneIndex, which must hand out what testing every edge gives, to the bit,
+// for less than O(n) work each. The L-shape, every edge at 45 degrees:
 //
 //   (0,4) +---+ (2,4)
 //         |   |
@@ -15,7 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <map>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -30,14 +35,16 @@ namespace {
 
 constexpr int kReflex = 3;  // the corner at (2, 2): between edges 2 and 3
 
-State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol, const SweepOptions& options = {}) {
+State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol, const SweepOptions& options = {},
+             std::vector<double> slopes = {}) {
+  if (slopes.empty()) slopes.assign(points.size(), 1.0);
   State st(tol, options);
   FaceGroup base;
   base.kind = FaceKind::Base;
   st.base_face = 0;
   st.faces.push_back(base);
   for (std::size_t j = 0; j < points.size(); ++j) st.sources.push_back(Source{static_cast<std::int32_t>(j)});
-  load_loop(st, points, std::vector<double>(points.size(), 1.0), std::vector<std::string>(points.size()), 0, 0);
+  load_loop(st, points, std::move(slopes), std::vector<std::string>(points.size()), 0, 0);
   return st;
 }
 
@@ -176,6 +183,132 @@ TEST(EventQueue, HoldsSplitCandidatesInLinearMemory) {
   EXPECT_GT(small, 0u);
   EXPECT_LT(large, 6 * small) << small << " candidates held at 500 corners, " << large << " at 2,000";
   EXPECT_LT(large, 8u * 2000u) << "a few per corner";
+}
+
+
+// A random star-shaped polygon as bench/scale_inputs.py makes them (sorted
+// random angles, radii 50-100 m): about half its corners reflex, their lines
+// running every way.
+std::vector<glm::dvec2> random_star_shaped(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), radius(50.0, 100.0);
+  std::vector<double> angles(static_cast<std::size_t>(n));
+  for (double& a : angles) a = angle(rng);
+  std::sort(angles.begin(), angles.end());
+  std::vector<glm::dvec2> points;
+  for (double a : angles) {
+    const double r = radius(rng);
+    points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return points;
+}
+
+bool same_bits(const Candidate& a, const Candidate& b) {
+  return std::memcmp(&a.z, &b.z, sizeof a.z) == 0 && std::memcmp(&a.p, &b.p, sizeof a.p) == 0 &&
+         a.corner == b.corner && a.next == b.next && a.edge == b.edge;
+}
+
+// Every list worked out through the PlaneIndex against the oracle of testing
+// every edge: the same candidates in the same order, to the bit, each list
+// handed out to its end (so worked out again many times over).
+void expect_indexed_lists_as_every_edge(const std::vector<glm::dvec2>& points, const std::vector<double>& slopes,
+                                        const SweepOptions& options = {}) {
+  State every_state = loaded(points, kStarTolerances, options, slopes);
+  State indexed_state = loaded(points, kStarTolerances, options, slopes);
+  EventQueue every(SIZE_MAX), indexed(0);
+  schedule_all(every_state, every);
+  schedule_all(indexed_state, indexed);
+  const std::vector<Candidate> expected = drain(every, every_state), got = drain(indexed, indexed_state);
+  ASSERT_EQ(got.size(), expected.size());
+  std::size_t splits = 0;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    ASSERT_TRUE(same_bits(got[i], expected[i]))
+        << "candidate " << i << ": corner " << got[i].corner << " edge " << got[i].edge << " at " << got[i].z
+        << ", expected corner " << expected[i].corner << " edge " << expected[i].edge << " at " << expected[i].z;
+    splits += got[i].edge != kNone;
+  }
+  EXPECT_GT(splits, 20 * points.size()) << "the lists run out and are worked out again many times";
+  EXPECT_EQ(indexed.held(), 0u);
+}
+
+TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesOnARandomPolygon) {
+  const std::vector<glm::dvec2> points = random_star_shaped(1200, 7);
+  expect_indexed_lists_as_every_edge(points, std::vector<double>(points.size(), 1.0));
+}
+
+TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesOnAStar) {
+  expect_indexed_lists_as_every_edge(star(1000), std::vector<double>(1000, 1.0));
+}
+
+// Far from the origin (projected coordinates): the index's bounds are taken
+// about its own origin, and must stay sound where the coordinates' rounding is
+// a thousand times coarser.
+TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesFarFromTheOrigin) {
+  std::vector<glm::dvec2> points = random_star_shaped(1000, 3);
+  for (glm::dvec2& p : points) p += glm::dvec2(512345.6, 5012345.7);
+  expect_indexed_lists_as_every_edge(points, std::vector<double>(points.size(), 1.0));
+}
+
+// Slopes from vertical walls to planes leaning out (every corner then splits,
+// and meets planes from outside), and a cap that cuts lists short.
+TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesWithMixedSlopesAndACap) {
+  const std::vector<glm::dvec2> points = random_star_shaped(900, 11);
+  std::vector<double> slopes;
+  const double kinds[] = {1.0, 0.0, 2.5, -0.4, 0.7};
+  for (std::size_t j = 0; j < points.size(); ++j) slopes.push_back(kinds[(j * 7) % 5]);
+  expect_indexed_lists_as_every_edge(points, slopes);
+  SweepOptions capped;
+  capped.max_height = 6.0;
+  expect_indexed_lists_as_every_edge(points, slopes, capped);
+}
+
+// Whole sweeps, the lists made and remade as corners come and go (and the
+// live edges' index with them): the roofs are the same to the bit.
+void expect_indexed_sweep_as_every_edge(const std::vector<glm::dvec2>& points) {
+  State every_state = loaded(points, kStarTolerances), indexed_state = loaded(points, kStarTolerances);
+  EventQueue every(SIZE_MAX), indexed(0);
+  ProfileEvents every_profiles, indexed_profiles;
+  schedule_all(every_state, every);
+  run_events(every_state, every, every_profiles);
+  schedule_all(indexed_state, indexed);
+  run_events(indexed_state, indexed, indexed_profiles);
+  ASSERT_EQ(indexed_state.vertices.size(), every_state.vertices.size());
+  EXPECT_EQ(std::memcmp(indexed_state.vertices.data(), every_state.vertices.data(),
+                        every_state.vertices.size() * sizeof every_state.vertices[0]),
+            0);
+  ASSERT_EQ(indexed_state.faces.size(), every_state.faces.size());
+  for (std::size_t f = 0; f < every_state.faces.size(); ++f) {
+    const std::vector<HalfEdge>& a = indexed_state.faces[f].half_edges;
+    const std::vector<HalfEdge>& b = every_state.faces[f].half_edges;
+    ASSERT_EQ(a.size(), b.size()) << "face " << f;
+    for (std::size_t h = 0; h < a.size(); ++h)
+      EXPECT_TRUE(a[h].from == b[h].from && a[h].to == b[h].to) << "face " << f << ", half-edge " << h;
+  }
+}
+
+TEST(EventQueue, IndexedSweepsMakeTheSameRoofs) {
+  expect_indexed_sweep_as_every_edge(random_star_shaped(1500, 5));
+  expect_indexed_sweep_as_every_edge(star(1200));
+}
+
+// The index's point: on a random polygon of 16,000 corners (where the queue
+// uses it by default) its lists work out a fraction of the splits that testing
+// every edge for every reflex corner does, for the same roof.
+TEST(EventQueue, IndexedListsWorkOutFarFewerSplits) {
+  const std::vector<glm::dvec2> points = random_star_shaped(16000, 5);
+  State every_state = loaded(points, kStarTolerances), indexed_state = loaded(points, kStarTolerances);
+  EventQueue every(SIZE_MAX), indexed;
+  ProfileEvents every_profiles, indexed_profiles;
+  schedule_all(every_state, every);
+  run_events(every_state, every, every_profiles);
+  schedule_all(indexed_state, indexed);
+  run_events(indexed_state, indexed, indexed_profiles);
+  ASSERT_EQ(indexed_state.vertices.size(), every_state.vertices.size());
+  EXPECT_EQ(std::memcmp(indexed_state.vertices.data(), every_state.vertices.data(),
+                        every_state.vertices.size() * sizeof every_state.vertices[0]),
+            0);
+  EXPECT_LT(3 * indexed.worked(), every.worked()) << indexed.worked() << " splits worked out through the index, "
+                                                  << every.worked() << " testing every edge";
 }
 
 }  // namespace
