@@ -44,7 +44,7 @@ constexpr std::size_t kSanitizedStride = kSanitized ? 40 : 1;
 
 TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
   const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
-  const CgalSkeleton ss = CgalSkeletonInput(square).skeleton(1e-9);
+  const CgalSkeleton ss = CgalSkeletonInput(square).skeleton();
   ASSERT_FALSE(ss.nodes.empty());
   for (const glm::dvec3& n : ss.nodes) {
     EXPECT_NEAR(n.x, 2.0, 1e-12);
@@ -53,7 +53,7 @@ TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
   }
   // Four hips, no ridge between opposite sides: they meet only at the centre.
   const std::vector<std::pair<std::int32_t, std::int32_t>> expected{{0, 1}, {0, 3}, {1, 2}, {2, 3}};
-  EXPECT_EQ(ss.adjacent_edges, expected);
+  EXPECT_EQ(ridges_longer_than(ss, 1e-9), expected);
   ASSERT_EQ(ss.faces_per_edge.size(), 4u);
   for (const auto& [id, n] : ss.faces_per_edge) EXPECT_EQ(n, 1u) << "edge " << id;
 }
@@ -63,14 +63,14 @@ TEST(CgalOracle, SquareHasItsCentreAtHalfTheSide) {
 //   +-----------+   at height 2 (half the width), between edges 0 and 2
 TEST(CgalOracle, RectangleRidge) {
   const Footprint rect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
-  CgalSkeleton ss = CgalSkeletonInput(rect).skeleton(1e-9);
+  CgalSkeleton ss = CgalSkeletonInput(rect).skeleton();
   std::sort(ss.nodes.begin(), ss.nodes.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
   ASSERT_EQ(ss.nodes.size(), 2u);
   EXPECT_NEAR(glm::distance(ss.nodes[0], glm::dvec3(2, 2, 2)), 0.0, 1e-12);
   EXPECT_NEAR(glm::distance(ss.nodes[1], glm::dvec3(8, 2, 2)), 0.0, 1e-12);
   // The hips join every side to both ends, the ridge joins the long sides.
   const std::vector<std::pair<std::int32_t, std::int32_t>> expected{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {2, 3}};
-  EXPECT_EQ(ss.adjacent_edges, expected);
+  EXPECT_EQ(ridges_longer_than(ss, 1e-9), expected);
 }
 
 // An island inside a hole is its own polygon; the hole belongs to the outer loop.
@@ -90,7 +90,7 @@ TEST(CgalOracle, SplitsNestedLoopsIntoPolygonsWithHoles) {
   // The frame between outer and hole is 5 wide: its nodes stand at most 2.5 high.
   // The 6 x 6 island peaks at 3.
   double highest = 0.0;
-  for (const glm::dvec3& n : input.skeleton(1e-9).nodes) highest = std::max(highest, n.z);
+  for (const glm::dvec3& n : input.skeleton().nodes) highest = std::max(highest, n.z);
   EXPECT_NEAR(highest, 3.0, 1e-12);
 }
 
@@ -114,6 +114,30 @@ TEST(CgalOracle, ComparisonNoticesAWrongRoof) {
   EXPECT_FALSE(compare_with_cgal(rect, renamed).empty());
 }
 
+// Nodes match within the tolerance at either end, so a ridge's length may
+// differ by up to twice the tolerance between roof and CGAL. A 4 x (4 + d)
+// rectangle has a ridge d long; the square's hip roof, moved to stand midway,
+// has its apex within d / 2 of both ends. For d of 1.5 tolerances, the roof
+// without that ridge is as right as rounding can tell (grid seed 95959's
+// neighbours: a CGAL ridge 1.06 tolerances long, a roof edge just short of
+// one); for d of 100, the missing ridge is named.
+TEST(CgalOracle, ARidgeOnlyAsLongAsTheTolerancesReachMayBeMissing) {
+  for (const double tolerances : {1.5, 100.0}) {
+    const Footprint square = make_footprint({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, 45.0);
+    const double d = tolerances * testing::roof_tolerance(square);
+    const Footprint rect = make_footprint({{{0, 0}, {4, 0}, {4, 4 + d}, {0, 4 + d}}}, 45.0);
+    Surface apex = sweep(square);
+    for (glm::dvec3& v : apex.vertices) v.y += d / 2;
+    bool named = false;
+    for (const std::string& p : compare_with_cgal(rect, apex))
+      named = named || p.find("share a bisector, the roof's faces meet in no ridge") != std::string::npos;
+    EXPECT_EQ(named, tolerances > 3.0) << tolerances << " tolerances";
+    if (tolerances < 3.0) {
+      EXPECT_TRUE(compare_with_cgal(rect, apex).empty());
+    }
+  }
+}
+
 // CGAL builds the skeleton of a plan far from the origin differently from
 // the skeleton of the same plan at the origin (nodes metres apart at a
 // rotated grid plan's coincident events, even with exact constructions), so
@@ -130,10 +154,10 @@ TEST(CgalOracle, APlanGivesTheSameSkeletonWhereverItStands) {
   Footprint here = far;
   for (Loop& loop : here.loops)
     for (glm::dvec2& p : loop.points) p -= by;
-  const CgalSkeleton there = CgalSkeletonInput(far).skeleton(1e-6);
-  const CgalSkeleton exact = CgalSkeletonInput(here).skeleton(1e-6);
+  const CgalSkeleton there = CgalSkeletonInput(far).skeleton();
+  const CgalSkeleton exact = CgalSkeletonInput(here).skeleton();
   ASSERT_EQ(there.nodes.size(), exact.nodes.size());
-  EXPECT_EQ(there.adjacent_edges, exact.adjacent_edges);
+  EXPECT_EQ(ridges_longer_than(there, 1e-6), ridges_longer_than(exact, 1e-6));
   for (const glm::dvec3& n : exact.nodes) {
     double nearest = 1e300;
     for (const glm::dvec3& m : there.nodes) nearest = std::min(nearest, glm::distance(n + glm::dvec3(by, 0.0), m));
@@ -191,8 +215,8 @@ TEST(CgalOracle, TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance) {
     const Footprint fp = make_footprint(plan.loops, 45.0);
     const double tol = testing::roof_tolerance(fp);
     const CgalSkeletonInput input(fp);
-    const CgalSkeleton exact = input.skeleton(tol), inexact = input.skeleton(tol, CgalConstructions::Inexact);
-    EXPECT_EQ(inexact.adjacent_edges, exact.adjacent_edges) << plan.name;
+    const CgalSkeleton exact = input.skeleton(), inexact = input.skeleton(CgalConstructions::Inexact);
+    EXPECT_EQ(ridges_longer_than(inexact, tol), ridges_longer_than(exact, tol)) << plan.name;
     EXPECT_EQ(inexact.faces_per_edge, exact.faces_per_edge) << plan.name;
     const testing::PointSet exact_nodes(exact.nodes), inexact_nodes(inexact.nodes);
     double worst = 0.0;
@@ -209,7 +233,7 @@ TEST(CgalOracle, ASkeletonOverItsMemoryCapIsReportedAsSuch) {
   if (kSanitized) GTEST_SKIP() << "no memory cap under AddressSanitizer (cap_memory in tests/support/cgal_skeleton.cc)";
   const Footprint fp = make_footprint(testing::star(2000, 50.0, 31.0).loops, 45.0);
   try {
-    CgalSkeletonInput(fp).skeleton(1e-6, CgalConstructions::Exact, std::size_t{1} << 20);
+    CgalSkeletonInput(fp).skeleton(CgalConstructions::Exact, std::size_t{1} << 20);
     ADD_FAILURE() << "a skeleton of 2,000 vertices was built in 1 MB";
   } catch (const CgalOutOfMemory& e) {
     EXPECT_NE(std::string(e.what()).find("cap of 1 MB"), std::string::npos) << e.what();
@@ -223,7 +247,7 @@ TEST(CgalOracle, ASkeletonOverItsMemoryCapIsReportedAsSuch) {
 TEST(CgalOracle, ASkeletonPastItsTimeCapIsReportedAsSuch) {
   const Footprint fp = make_footprint(testing::star(2000, 50.0, 31.0).loops, 45.0);
   try {
-    CgalSkeletonInput(fp).skeleton(1e-6, CgalConstructions::Exact, kCgalChildMemory, 1);
+    CgalSkeletonInput(fp).skeleton(CgalConstructions::Exact, kCgalChildMemory, 1);
     ADD_FAILURE() << "a skeleton of 2,000 vertices was built in one CPU second";
   } catch (const CgalNoSkeleton& e) {
     EXPECT_NE(std::string(e.what()).find("cap of 1 CPU seconds"), std::string::npos) << e.what();
@@ -241,7 +265,7 @@ TEST(CgalOracle, APlanCgalLoopsOnEndsWithinTheCap) {
   ASSERT_EQ(read.features.size(), 1u);
   const Footprint fp = to_footprint(read.features[0], 60.0);
   for (const CgalConstructions kernel : {CgalConstructions::Exact, CgalConstructions::Inexact})
-    EXPECT_THROW(CgalSkeletonInput(fp).skeleton(1e-6, kernel, kCgalChildMemory, 1), CgalNoSkeleton);
+    EXPECT_THROW(CgalSkeletonInput(fp).skeleton(kernel, kCgalChildMemory, 1), CgalNoSkeleton);
 }
 
 // ---- synthetic cases (shared/data/synthetic, see its README) ----

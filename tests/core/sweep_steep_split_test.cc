@@ -130,7 +130,7 @@ TEST(SweepSteepSplit, RowHouseWithBaysClosesUnderTheMansard) {
   // The roof's top is where the skeleton's last node stands (about 7.14 m),
   // and above the mansard's break the roof is the skeleton's.
   const Profile& mansard = fp.profiles[kMansard];
-  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(fp).skeleton(0.0).nodes;
+  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(fp).skeleton().nodes;
   ASSERT_FALSE(nodes.empty());
   const double tol = 1e-6 * length_scale(fp);
   const double break_height = mansard.points[2].y;
@@ -150,7 +150,7 @@ TEST(SweepSteepSplit, RowHouseWithBaysClosesAt70Degrees) {
   expect_valid(surface);
 
   const double slope = std::tan(70.0 * M_PI / 180.0);
-  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(fp).skeleton(0.0).nodes;
+  const std::vector<glm::dvec3> nodes = CgalSkeletonInput(fp).skeleton().nodes;
   ASSERT_FALSE(nodes.empty());
   const double tol = 1e-6 * length_scale(fp);
   EXPECT_NEAR(highest(surface.vertices), highest(nodes) / slope, tol);

@@ -16,12 +16,12 @@
 #include <limits>
 #include <map>
 #include <new>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -257,11 +257,10 @@ CgalSkeleton in_child_process(std::size_t memory, std::size_t seconds, Build bui
       const CgalSkeleton s = build();
       answer = "S";
       // Pairs as plain numbers: std::pair is not trivially copyable.
-      std::vector<std::array<std::int64_t, 2>> adjacent, faces;
-      for (const auto& [i, j] : s.adjacent_edges) adjacent.push_back({i, j});
+      std::vector<std::array<std::int64_t, 2>> faces;
       for (const auto& [id, n] : s.faces_per_edge) faces.push_back({id, static_cast<std::int64_t>(n)});
       put_array(answer, s.nodes);
-      put_array(answer, adjacent);
+      put_array(answer, s.ridges);
       put_array(answer, faces);
     } catch (const CgalNoSkeleton& e) {
       answer = std::string("N") + e.what();
@@ -306,8 +305,7 @@ CgalSkeleton in_child_process(std::size_t memory, std::size_t seconds, Build bui
   std::size_t at = 1;
   CgalSkeleton out;
   out.nodes = get_array<glm::dvec3>(answer, at);
-  for (const auto& [i, j] : get_array<std::array<std::int64_t, 2>>(answer, at))
-    out.adjacent_edges.emplace_back(static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
+  out.ridges = get_array<CgalRidge>(answer, at);
   for (const auto& [id, n] : get_array<std::array<std::int64_t, 2>>(answer, at))
     out.faces_per_edge.emplace_back(static_cast<std::int32_t>(id), static_cast<std::size_t>(n));
   return out;
@@ -327,7 +325,7 @@ struct CgalSkeletonInput::Impl {
   }
 
   template <class Kernel>
-  CgalSkeleton skeleton(double min_ridge) const;
+  CgalSkeleton skeleton() const;
 };
 
 CgalSkeletonInput::CgalSkeletonInput(const Footprint& footprint) : impl_(std::make_unique<Impl>()) {
@@ -352,9 +350,9 @@ std::size_t CgalSkeletonInput::skeletonise() const {
 }
 
 template <class Kernel>
-CgalSkeleton CgalSkeletonInput::Impl::skeleton(double min_ridge) const {
+CgalSkeleton CgalSkeletonInput::Impl::skeleton() const {
   CgalSkeleton out;
-  std::set<std::pair<std::int32_t, std::int32_t>> adjacent;
+  std::map<std::pair<std::int32_t, std::int32_t>, CgalRidge> longest;
   std::map<std::int32_t, std::size_t> faces;
   for (const auto& [key, id] : edge_ids) faces[id] = 0;
   for_each_skeleton<Kernel>(polygons, [&](const auto& ss) {
@@ -372,13 +370,14 @@ CgalSkeleton CgalSkeletonInput::Impl::skeleton(double min_ridge) const {
     for (auto f = ss.faces_begin(); f != ss.faces_end(); ++f) ++faces[face_edge(f)];
     for (auto h = ss.halfedges_begin(); h != ss.halfedges_end(); ++h) {
       if (!h->is_bisector() || h->face() == nullptr || h->opposite()->face() == nullptr) continue;
-      const glm::dvec3 d = node(h->vertex()) - node(h->opposite()->vertex());
-      if (std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) <= min_ridge) continue;
       const std::int32_t i = face_edge(h->face()), j = face_edge(h->opposite()->face());
-      if (i != j) adjacent.insert({std::min(i, j), std::max(i, j)});
+      if (i == j) continue;
+      const CgalRidge r{std::min(i, j), std::max(i, j), node(h->opposite()->vertex()), node(h->vertex())};
+      const auto [it, added] = longest.try_emplace({r.a, r.b}, r);
+      if (!added && glm::distance(r.from, r.to) > glm::distance(it->second.from, it->second.to)) it->second = r;
     }
   });
-  out.adjacent_edges.assign(adjacent.begin(), adjacent.end());
+  for (const auto& [pair, r] : longest) out.ridges.push_back(r);
   out.faces_per_edge.assign(faces.begin(), faces.end());
   return out;
 }
@@ -388,7 +387,7 @@ std::size_t cgal_child_seconds(std::size_t vertices) {
   return (60 + hundreds * hundreds) * (kSanitized ? 20 : 1);
 }
 
-CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge, CgalConstructions constructions, std::size_t memory,
+CgalSkeleton CgalSkeletonInput::skeleton(CgalConstructions constructions, std::size_t memory,
                                          std::optional<std::size_t> seconds) const {
   std::size_t vertices = 0;
   for (const PolygonWithHoles& p : impl_->polygons) {
@@ -397,9 +396,18 @@ CgalSkeleton CgalSkeletonInput::skeleton(double min_ridge, CgalConstructions con
   }
   return in_child_process(memory, seconds.value_or(cgal_child_seconds(vertices)), [&] {
     return constructions == CgalConstructions::Exact
-               ? impl_->skeleton<CGAL::Exact_predicates_exact_constructions_kernel>(min_ridge)
-               : impl_->skeleton<CGAL::Exact_predicates_inexact_constructions_kernel>(min_ridge);
+               ? impl_->skeleton<CGAL::Exact_predicates_exact_constructions_kernel>()
+               : impl_->skeleton<CGAL::Exact_predicates_inexact_constructions_kernel>();
   });
+}
+
+std::vector<std::pair<std::int32_t, std::int32_t>> ridges_longer_than(const CgalSkeleton& skeleton, double length,
+                                                                      double rise) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> out;
+  const glm::dvec3 scale(1.0, 1.0, rise);
+  for (const CgalRidge& r : skeleton.ridges)
+    if (glm::distance(r.from * scale, r.to * scale) > length) out.emplace_back(r.a, r.b);
+  return out;
 }
 
 }  // namespace procex

@@ -19,14 +19,22 @@
 
 namespace procex {
 
+// The longest bisector between the skeleton faces of footprint edges a < b,
+// its ends as (x, y, time).
+struct CgalRidge {
+  std::int32_t a = 0, b = 0;
+  glm::dvec3 from{0.0}, to{0.0};
+};
+
 // What the oracle compares: skeleton nodes and which edges' faces meet.
 struct CgalSkeleton {
   // The inner nodes (not the contour vertices) as (x, y, time).
   std::vector<glm::dvec3> nodes;
-  // Pairs of footprint edge ids (EdgeSpec::id, smaller first, sorted, unique)
-  // whose skeleton faces share a bisector longer than the length given to
-  // CgalSkeletonInput::skeleton().
-  std::vector<std::pair<std::int32_t, std::int32_t>> adjacent_edges;
+  // For every pair of footprint edges (EdgeSpec::id, smaller first, sorted)
+  // whose skeleton faces share a bisector, the longest such bisector: which
+  // of them count as ridges depends on the comparison's tolerance
+  // (ridges_longer_than).
+  std::vector<CgalRidge> ridges;
   // Number of skeleton faces per footprint edge id, in id order of
   // CgalSkeletonInput::edge_ids(); a straight skeleton has exactly one.
   std::vector<std::pair<std::int32_t, std::size_t>> faces_per_edge;
@@ -88,20 +96,25 @@ class CgalSkeletonInput {
   // Throws std::runtime_error naming the polygon if CGAL gives up.
   std::size_t skeletonise() const;
 
-  // The oracle: the skeleton built with the given kernel. Bisectors no longer
-  // than min_ridge are not ridges: CGAL splits a node where more than three
-  // faces meet into several joined by zero-length bisectors. Built in a child
+  // The oracle: the skeleton built with the given kernel. Built in a child
   // process of at most `memory` bytes more address space than the caller's
   // and at most `seconds` of CPU time (cgal_child_seconds of the plan's
   // vertices when not given): throws CgalNoSkeleton if CGAL crashes, gives
   // none or runs out of time, CgalOutOfMemory (a CgalNoSkeleton) if it
   // needs more memory.
-  CgalSkeleton skeleton(double min_ridge, CgalConstructions constructions = CgalConstructions::Exact,
+  CgalSkeleton skeleton(CgalConstructions constructions = CgalConstructions::Exact,
                         std::size_t memory = kCgalChildMemory, std::optional<std::size_t> seconds = std::nullopt) const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The pairs of edges (smaller first, sorted) whose faces share a bisector
+// longer than `length`, with time scaled by `rise` into height. CGAL splits a
+// node where more than three faces meet into several joined by bisectors of
+// length zero, which are no ridges.
+std::vector<std::pair<std::int32_t, std::int32_t>> ridges_longer_than(const CgalSkeleton& skeleton, double length,
+                                                                      double rise = 1.0);
 
 }  // namespace procex

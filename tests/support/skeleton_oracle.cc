@@ -67,12 +67,12 @@ namespace {
 // (the star class, TESTING.md), where the inexact kernel decides the same
 // events exactly and rounds only the nodes, far below the comparison's
 // tolerance (CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance).
-CgalSkeleton oracle_skeleton(const CgalSkeletonInput& input, double min_ridge, std::size_t vertices) {
-  if (vertices > kExactOracleVertices) return input.skeleton(min_ridge, CgalConstructions::Inexact);
+CgalSkeleton oracle_skeleton(const CgalSkeletonInput& input, std::size_t vertices) {
+  if (vertices > kExactOracleVertices) return input.skeleton(CgalConstructions::Inexact);
   try {
-    return input.skeleton(min_ridge, CgalConstructions::Exact);
+    return input.skeleton(CgalConstructions::Exact);
   } catch (const CgalOutOfMemory&) {
-    return input.skeleton(min_ridge, CgalConstructions::Inexact);
+    return input.skeleton(CgalConstructions::Inexact);
   }
 }
 
@@ -87,7 +87,7 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   for (const Loop& loop : footprint.loops) vertices += loop.points.size();
   CgalSkeleton cgal;
   try {
-    cgal = oracle_skeleton(CgalSkeletonInput(footprint), tol, vertices);
+    cgal = oracle_skeleton(CgalSkeletonInput(footprint), vertices);
   } catch (const CgalNoSkeleton& e) {
     // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
     problems.push_back(e.what());
@@ -109,27 +109,42 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
       problems.push_back("edge " + std::to_string(id) + " has " + std::to_string(ours) + " roof faces, not 1");
   }
 
-  // Which edges' faces meet along a ridge (an edge longer than tol between two roof faces).
-  std::set<std::pair<std::int32_t, std::int32_t>> ridges;
+  // Which edges' faces meet along a ridge, and how long the longest is.
+  // Nodes match within tol at either end, so a ridge's length may differ by
+  // up to 2 tol between the roof and CGAL: one side must show a ridge the
+  // other has longer than 3 tol, and may show one the other has shorter.
+  std::map<std::pair<std::int32_t, std::int32_t>, double> ours_longest;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::int32_t> half;
   for (const SurfaceFace& f : roof.faces) {
     if (f.kind != FaceKind::Side) continue;
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-        if (glm::distance(roof.vertices[a], roof.vertices[b]) <= tol) continue;
         const auto other = half.find({b, a});
-        if (other != half.end() && other->second != f.source_edge)
-          ridges.insert({std::min(other->second, f.source_edge), std::max(other->second, f.source_edge)});
+        if (other != half.end() && other->second != f.source_edge) {
+          double& longest = ours_longest[{std::min(other->second, f.source_edge), std::max(other->second, f.source_edge)}];
+          longest = std::max(longest, glm::distance(roof.vertices[a], roof.vertices[b]));
+        }
         half[{a, b}] = f.source_edge;
       }
   }
-  const std::set<std::pair<std::int32_t, std::int32_t>> theirs(cgal.adjacent_edges.begin(), cgal.adjacent_edges.end());
+  using Pairs = std::set<std::pair<std::int32_t, std::int32_t>>;
+  const auto ours_longer_than = [&](double length) {
+    Pairs out;
+    for (const auto& [p, longest] : ours_longest)
+      if (longest > length) out.insert(p);
+    return out;
+  };
+  const auto theirs_longer_than = [&](double length) {
+    const auto pairs = ridges_longer_than(cgal, length, rise);
+    return Pairs(pairs.begin(), pairs.end());
+  };
+  const Pairs ridges = ours_longer_than(tol), theirs = theirs_longer_than(tol);
   std::size_t missing_ridges = 0, extra_ridges = 0;
-  for (const auto& p : theirs)
+  for (const auto& p : theirs_longer_than(3.0 * tol))
     if (!ridges.count(p) && ++missing_ridges <= kShown)
       problems.push_back("CGAL's faces of edges " + pair_text(p) + " share a bisector, the roof's faces meet in no ridge");
-  for (const auto& p : ridges)
+  for (const auto& p : ours_longer_than(3.0 * tol))
     if (!theirs.count(p) && ++extra_ridges <= kShown)
       problems.push_back("the roof's faces of edges " + pair_text(p) + " meet in a ridge, CGAL's share no bisector");
 
