@@ -36,6 +36,11 @@ struct Candidate {
 
 class EventQueue {
  public:
+  // Below this many live edges testing each costs less than building and
+  // searching the index (measured with it from 1,024, before searches gave
+  // up: random polygons of 1,024 vertices 1.7x and jittered stars of 4,096
+  // 1.5x slower through it).
+  static constexpr std::size_t kIndexedFrom = 8192;
   // Lists of at least `indexed_from` live edges are worked out through their
   // PlaneIndex, smaller ones by testing every edge (tests choose either).
   explicit EventQueue(std::size_t indexed_from = kIndexedFrom) : indexed_from_(indexed_from) {}
@@ -115,11 +120,6 @@ class EventQueue {
   // failing (a star's, passed by the edges' spans) costs a pass per
   // kHeldMost splits, not per kHeld.
   static constexpr std::size_t kHeld = 8, kHeldMost = 128;
-  // Below this many live edges testing each costs less than building and
-  // searching the index (measured with it from 1,024, before searches gave
-  // up: random polygons of 1,024 vertices 1.7x and jittered stars of 4,096
-  // 1.5x slower through it).
-  static constexpr std::size_t kIndexedFrom = 8192;
   // A candidate in the height queue; its point is worked out when it is popped.
   struct Entry {
     double z, at;  // queued at height z; the planes meet at height `at`
