@@ -22,6 +22,7 @@
 
 #include "base/confined_path.h"
 #include "base/confined_path_memo.h"
+#include "base/file_version_memo.h"
 #include "graph/cancel.h"
 #include "graph/diagnostic.h"
 #include "graph/node_decl.h"
@@ -38,7 +39,8 @@ class EvalContext {
  public:
   EvalContext(const NodeDecl& decl, const std::vector<Value>& params, const std::vector<Value>& inputs,
               const CancelToken& cancel, const std::filesystem::path& folder = {},
-              std::span<const std::filesystem::path> allowed_folders = {}, ConfinedPathMemo* resolved_paths = nullptr)
+              std::span<const std::filesystem::path> allowed_folders = {}, ConfinedPathMemo* resolved_paths = nullptr,
+              FileVersionMemo* file_versions = nullptr)
       : decl_(decl),
         params_(params),
         inputs_(inputs),
@@ -46,7 +48,8 @@ class EvalContext {
         cancel_(cancel),
         folder_(folder),
         allowed_folders_(allowed_folders),
-        resolved_paths_(resolved_paths) {}
+        resolved_paths_(resolved_paths),
+        file_versions_(file_versions) {}
 
   const NodeDecl& decl() const { return decl_; }
   // Where relative file paths in parameters resolve (EvalOptions::folder; usually the recipe's).
@@ -61,6 +64,10 @@ class EvalContext {
     return resolved_paths_ ? resolved_paths_->resolve(folder_, name, allowed_folders_)
                            : confined_path(folder_, name, allowed_folders_);
   }
+
+  // The versions of the files this evaluation reads, a batch's
+  // (EvalOptions::file_versions); null: each file's own, looked at again.
+  FileVersionMemo* file_versions() const { return file_versions_; }
 
   // False for an unconnected optional input.
   bool has_input(std::size_t i) const { return !inputs_.at(i).empty(); }
@@ -132,6 +139,7 @@ class EvalContext {
   std::filesystem::path folder_;
   std::span<const std::filesystem::path> allowed_folders_;
   ConfinedPathMemo* resolved_paths_;  // null: resolve every time
+  FileVersionMemo* file_versions_;    // null: look at every time
 };
 
 }  // namespace procex

@@ -405,7 +405,7 @@ class Run {
     h.hash(salt_).hash(node->type->key);
     for (const Value& v : n.params()) v.hash(h);
     for (const auto& [p, e] : node->expressions) h.u64(p).str(e->text());
-    if (decl.hash_extra()) decl.hash_extra()(n.params(), options_.folder, h);
+    if (decl.hash_extra()) decl.hash_extra()(n.params(), options_.folder, options_.file_versions.get(), h);
     n.inputs.reserve(decl.inputs().size());
     const std::optional<std::uint32_t> only = passed_input(f, id);
     for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
@@ -545,7 +545,7 @@ class Run {
       return;
     }
     EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders,
-                    options_.resolved_paths.get());
+                    options_.resolved_paths.get(), options_.file_versions.get());
     const auto t0 = Clock::now();
     try {
       n.node->type->evaluate(ctx);

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "base/confined_path_memo.h"
+#include "base/file_version_memo.h"
 #include "graph/cache.h"
 #include "graph/cancel.h"
 #include "graph/diagnostic.h"
@@ -60,6 +61,15 @@ struct EvalOptions {
   // a single evaluation): resolved at every evaluation, so an edited symlink
   // is seen.
   std::shared_ptr<ConfinedPathMemo> resolved_paths;
+  // Set by a batch too: each file's version is looked at once, and every
+  // building is keyed and made from that version (base/file_version_memo.h).
+  // Null: looked at whenever the graph is hashed, so an edited file is seen.
+  std::shared_ptr<FileVersionMemo> file_versions;
+  // Both of the above, fresh: what a batch sets before its first building.
+  void pin_files_for_a_batch() {
+    resolved_paths = std::make_shared<ConfinedPathMemo>();
+    file_versions = std::make_shared<FileVersionMemo>();
+  }
   // hash_outputs only: graph inputs without binding or default count as bound
   // (to a value known only by name), so checking a recipe before its inputs
   // are known reports every other problem. evaluate() asserts it is off.

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "base/file_version.h"
+#include "base/file_version_memo.h"
 #include "graph/hash.h"
 
 namespace procex {
@@ -223,8 +223,8 @@ std::string NodeDecl::markdown() const {
   return md.str();
 }
 
-void hash_file_stamp(const std::filesystem::path& file, Hasher& h) {
-  const FileVersion v = file_version(file);
+void hash_file_stamp(const std::filesystem::path& file, FileVersionMemo* versions, Hasher& h) {
+  const FileVersion v = file_version(file, versions);
   h.u64(v.size).i64(v.time).u64(v.content);
 }
 

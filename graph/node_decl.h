@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/file_version_memo.h"
 #include "graph/status.h"
 #include "graph/value.h"
 
@@ -115,13 +116,16 @@ using UpgradeFn = void (*)(int saved_version, nlohmann::json& params);
 // Adds to a node's cache key what its result depends on beyond parameters and
 // inputs -- typically the size and modification time of a file it reads, so an
 // edited file is read again (relative paths resolve against `folder`, see
-// EvalOptions::folder). Must be cheap: it runs whenever the graph is hashed.
-using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h);
+// EvalOptions::folder; `versions` is a batch's, EvalOptions::file_versions,
+// else null). Must be cheap: it runs whenever the graph is hashed.
+using HashExtraFn = void (*)(const std::vector<Value>& params, const std::filesystem::path& folder,
+                             FileVersionMemo* versions, Hasher& h);
 
 // What a HashExtraFn usually adds for a file it reads: its version
 // (base/file_version.h: size, modification time and a hash of its bytes; a
-// missing file hashes as such, and reading it fails later).
-void hash_file_stamp(const std::filesystem::path& file, Hasher& h);
+// missing file hashes as such, and reading it fails later), as `versions`
+// first saw it where a batch keeps them.
+void hash_file_stamp(const std::filesystem::path& file, FileVersionMemo* versions, Hasher& h);
 
 // Levels of detail, counted as CityGML counts them: 0 the footprint, 1 a
 // block, 2 the shape, kFullDetail everything. An evaluation shows one

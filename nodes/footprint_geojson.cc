@@ -14,8 +14,10 @@ struct Params {
 Params par;
 
 // An edited file is read again, a Shapefile's .dbf and .prj included.
-void hash_file(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
-  for (const std::filesystem::path& f : footprint_files(folder / params[par.file].get<std::string>())) hash_file_stamp(f, h);
+void hash_file(const std::vector<Value>& params, const std::filesystem::path& folder, FileVersionMemo* versions,
+               Hasher& h) {
+  for (const std::filesystem::path& f : footprint_files(folder / params[par.file].get<std::string>()))
+    hash_file_stamp(f, versions, h);
 }
 
 void declare(NodeDecl& d) {

@@ -29,9 +29,10 @@ struct Params {
 Params par;
 
 // An edited texture is read again.
-void hash_texture(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
+void hash_texture(const std::vector<Value>& params, const std::filesystem::path& folder, FileVersionMemo* versions,
+                  Hasher& h) {
   const std::string& texture = params[par.texture].get<std::string>();
-  if (!texture.empty()) hash_file_stamp(folder / texture, h);
+  if (!texture.empty()) hash_file_stamp(folder / texture, versions, h);
 }
 
 void declare(NodeDecl& d) {
@@ -111,7 +112,7 @@ void evaluate(EvalContext& ctx) {
   if (const std::string& texture = ctx.param<std::string>(par.texture); !texture.empty()) {
     try {
       material.texture = ctx.file(texture);
-      shared_texture_image(material.texture);  // refused here, not at the first writer
+      shared_texture_image(material.texture, ctx.file_versions());  // refused here, not at the first writer
     } catch (const IoError& e) {
       return ctx.error("texture: " + std::string(e.what()));
     }

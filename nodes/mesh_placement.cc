@@ -8,7 +8,7 @@
 #include <optional>
 #include <set>
 
-#include "base/file_version.h"
+#include "base/file_version_memo.h"
 #include "core/geom/error.h"
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
@@ -39,11 +39,12 @@ Params par;
 // The files `file` names, by what `names` finds in it, read once per version
 // of the file (base/file_version.h): the graph is hashed for every building
 // of a batch.
-std::vector<fs::path> named_in(const fs::path& file, std::vector<fs::path> (*names)(const fs::path&)) {
+std::vector<fs::path> named_in(const fs::path& file, std::vector<fs::path> (*names)(const fs::path&),
+                               FileVersionMemo* versions) {
   using Key = std::pair<std::string, FileVersion>;
   static std::mutex mutex;
   static std::map<Key, std::vector<fs::path>> cache;
-  const Key key{fs::absolute(file).string(), file_version(file)};
+  const Key key{fs::absolute(file).string(), file_version(file, versions)};
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   if (cache.size() >= 256) cache.clear();  // edited files leave old versions behind
@@ -53,18 +54,19 @@ std::vector<fs::path> named_in(const fs::path& file, std::vector<fs::path> (*nam
 // The version of the mesh file and of every file it is read with (its
 // material libraries, their textures): an edit to any of them reads the mesh
 // again and makes a new key.
-Hash128 mesh_files_stamp(const fs::path& obj) {
+Hash128 mesh_files_stamp(const fs::path& obj, FileVersionMemo* versions) {
   Hasher h;
-  hash_file_stamp(obj, h);
-  for (const fs::path& library : named_in(obj, obj_material_libraries)) {
-    hash_file_stamp(library, h);
-    for (const fs::path& texture : named_in(library, material_library_textures)) hash_file_stamp(texture, h);
+  hash_file_stamp(obj, versions, h);
+  for (const fs::path& library : named_in(obj, obj_material_libraries, versions)) {
+    hash_file_stamp(library, versions, h);
+    for (const fs::path& texture : named_in(library, material_library_textures, versions))
+      hash_file_stamp(texture, versions, h);
   }
   return h.result();
 }
 
-void hash_file(const std::vector<Value>& params, const fs::path& folder, Hasher& h) {
-  h.hash(mesh_files_stamp(folder / params[par.file].get<std::string>()));
+void hash_file(const std::vector<Value>& params, const fs::path& folder, FileVersionMemo* versions, Hasher& h) {
+  h.hash(mesh_files_stamp(folder / params[par.file].get<std::string>(), versions));
 }
 
 void declare(NodeDecl& d) {
@@ -154,13 +156,12 @@ SharedMesh read_mesh(const fs::path& path, const ReferencedFileResolver& resolve
 
 // Files the OBJ names (its material library, textures) are confined as the
 // recipe's own.
-SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) return read_mesh(path, resolve);  // read_mesh_file says what is wrong
+SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve, FileVersionMemo* versions) {
+  if (file_version(path, versions).content == 0) return read_mesh(path, resolve);  // read_mesh_file says what is wrong
   using Key = std::pair<std::string, Hash128>;
   static std::mutex mutex;
   static std::map<Key, SharedMesh> cache;
-  const Key key{fs::absolute(path).string(), mesh_files_stamp(path)};
+  const Key key{fs::absolute(path).string(), mesh_files_stamp(path, versions)};
   std::lock_guard lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   SharedMesh m = read_mesh(path, resolve);
@@ -245,7 +246,7 @@ void evaluate(EvalContext& ctx) {
   SharedMesh read;
   try {
     path = ctx.file(file);
-    read = read_shared(path, [&](const fs::path& name) { return ctx.file(name.string()); });
+    read = read_shared(path, [&](const fs::path& name) { return ctx.file(name.string()); }, ctx.file_versions());
   } catch (const IoError& e) {
     return ctx.error(e.what());
   }

@@ -30,7 +30,6 @@
 #include "app/cli/report_entries.h"
 #include "app/cli/shard_stamp.h"
 #include "base/atomic_file_set.h"
-#include "base/confined_path_memo.h"
 #include "base/read_file.h"
 #include "core/io/feature_sources.h"
 #include "core/io/feature_spool.h"
@@ -294,7 +293,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
                                                           options.budget);
   if (!recipe) return kExitUnusableInput;
   recipe->options.lod = options.lod;
-  recipe->options.resolved_paths = std::make_shared<ConfinedPathMemo>();  // the same files for every building
+  recipe->options.pin_files_for_a_batch();  // the same files for every building
   FootprintReadOptions read;
   read.crs = options.export_options.crs, read.target_crs = options.target_crs, read.layer = options.layer;
   read.streets = options.streets, read.streets_layer = options.streets_layer;

@@ -19,7 +19,6 @@
 #include "app/python/footprint_input.h"
 #include "app/python/mesh_arrays.h"
 #include "app/python/recipe.h"
-#include "base/confined_path_memo.h"
 #include "core/io/feature_sources.h"
 #include "core/io/feature_spool.h"
 #include "core/io/footprint_read.h"
@@ -62,7 +61,7 @@ void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeatu
 py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int jobs, py::handle progress,
                py::handle attributes, py::handle streets) {
   MeshRecipe r = recipe->with(attributes);
-  r.options.resolved_paths = std::make_shared<ConfinedPathMemo>();  // the same files for every building
+  r.options.pin_files_for_a_batch();  // the same files for every building
   if (const Status s = check_footprint_input(r.graph, recipe->file()); !s) raise(ErrorKind::Recipe, s.message());
   GeoJsonCollection collection = collection_from_python(footprints);
   add_streets(collection, streets);
@@ -155,7 +154,7 @@ class BatchStream {
       : source_recipe_(std::move(recipe)),
         recipe_(source_recipe_->with(attributes)),
         arena_(jobs > 0 ? jobs : tbb::task_arena::automatic) {
-    recipe_.options.resolved_paths = std::make_shared<ConfinedPathMemo>();
+    recipe_.options.pin_files_for_a_batch();
     if (const Status s = check_footprint_input(recipe_.graph, source_recipe_->file()); !s)
       raise(ErrorKind::Recipe, s.message());
     const std::string temp = py::str(py::module_::import("tempfile").attr("gettempdir")());

@@ -4,7 +4,7 @@
 #include <mutex>
 #include <utility>
 
-#include "base/file_version.h"
+#include "base/file_version_memo.h"
 #include "base/read_file.h"
 #include "core/io/io_error.h"
 
@@ -25,8 +25,8 @@ std::string read_texture_image(const std::filesystem::path& path) {
   return bytes;
 }
 
-std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path) {
-  const FileVersion version = file_version(path);
+std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path, FileVersionMemo* versions) {
+  const FileVersion version = file_version(path, versions);
   if (version.content == 0) return std::make_shared<const std::string>(read_texture_image(path));  // it says why
   using Key = std::pair<std::string, FileVersion>;
   static std::mutex mutex;

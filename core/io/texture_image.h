@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "base/file_version_memo.h"
+
 namespace procex {
 
 // Largest texture read (a 8192 x 8192 RGBA PNG is at most about this).
@@ -21,8 +23,10 @@ std::string_view image_mime_type(std::string_view bytes);
 std::string read_texture_image(const std::filesystem::path& path);
 // The same, read once per version of the file (base/file_version.h) and
 // shared: a batch's every building shows the same roof texture, and
-// the glTF writer then finds it embedded already by its address.
+// the glTF writer then finds it embedded already by its address. The version
+// is `versions`' where a batch keeps them (EvalOptions::file_versions).
 // Thread-safe.
-std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path);
+std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path,
+                                                        FileVersionMemo* versions = nullptr);
 
 }  // namespace procex

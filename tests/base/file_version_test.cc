@@ -1,6 +1,7 @@
 // file_version: an edit shows in the version even where it keeps the file's
 // size and modification time (written again within one tick of the file
 // system's clock); an unchanged file keeps its version; a missing one has its own.
+// A FileVersionMemo answers each file as it first saw it.
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "base/file_version.h"
+#include "base/file_version_memo.h"
 
 namespace procex {
 namespace {
@@ -49,6 +51,21 @@ TEST_F(FileVersionTest, AMissingFileOrAFolderHasNoContent) {
   EXPECT_EQ(file_version(dir_).content, 0u);
   std::ofstream(dir_ / "missing.png") << "x";
   EXPECT_NE(file_version(dir_ / "missing.png"), missing);
+}
+
+TEST_F(FileVersionTest, AMemoKeepsTheVersionItSawFirst) {
+  const fs::path file = dir_ / "window.obj";
+  std::ofstream(file) << "v 0 0 0\n";
+  FileVersionMemo memo;
+  const FileVersion first = memo.version(file);
+  EXPECT_EQ(first, file_version(file));
+  std::ofstream(file) << "v 0 0 0\nv 1 0 0\n";
+  EXPECT_NE(file_version(file), first);
+  EXPECT_EQ(memo.version(file), first);
+  EXPECT_EQ(file_version(file, &memo), first);
+  EXPECT_EQ(file_version(file, nullptr), file_version(file));
+  FileVersionMemo later;
+  EXPECT_EQ(later.version(file), file_version(file));
 }
 
 }  // namespace

@@ -376,6 +376,31 @@ TEST_F(EvaluatorTest, NodesReadingFilesKeyOnTheFileState) {
   std::filesystem::remove_all(dir);
 }
 
+// A batch looks at each file once: a file edited while it runs keys (and
+// makes) no building differently; the next batch sees the edit.
+TEST_F(EvaluatorTest, ABatchKeysEveryBuildingOnTheFileVersionsItSawFirst) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("procex_eval_batch_file_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "data.txt") << "12345";
+  Graph g;
+  const NodeId n = add(g, "test.FileSize");
+  ASSERT_TRUE(g.set_param(n, "path", Value::make(std::string("data.txt"))));
+  ASSERT_TRUE(g.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
+  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+  EvalOptions options;
+  options.folder = dir;
+  options.pin_files_for_a_batch();
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+  std::ofstream(dir / "data.txt") << "1234567";
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+  EXPECT_EQ(test::evaluations(), 1);
+  options.pin_files_for_a_batch();
+  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 7);
+  EXPECT_EQ(test::evaluations(), 2);
+  std::filesystem::remove_all(dir);
+}
+
 TEST_F(EvaluatorTest, StatsPrintATable) {
   test::Diamond d = test::diamond();
   EvalResult r = ev.evaluate(d.g, {});

@@ -126,9 +126,10 @@ void eval_slow(EvalContext& ctx) {
 std::filesystem::path resolve(const std::vector<Value>& params, const std::filesystem::path& folder) {
   return folder / params[0].get<std::string>();
 }
-void hash_file_state(const std::vector<Value>& params, const std::filesystem::path& folder, Hasher& h) {
+void hash_file_state(const std::vector<Value>& params, const std::filesystem::path& folder, FileVersionMemo* versions,
+                     Hasher& h) {
   ++file_size_hashes();
-  hash_file_stamp(resolve(params, folder), h);
+  hash_file_stamp(resolve(params, folder), versions, h);
 }
 void declare_file_size(NodeDecl& d) {
   d.doc("Size of a file in bytes.").category("Test");
