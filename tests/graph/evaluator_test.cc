@@ -356,49 +356,49 @@ TEST_F(EvaluatorTest, GroupsThatMultiplyAreRefusedNotExpanded) {
       << all.substr(0, 500);
 }
 
-TEST_F(EvaluatorTest, NodesReadingFilesKeyOnTheFileState) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("procex_eval_file_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "data.txt") << "12345";
-  Graph g;
-  const NodeId n = add(g, "test.FileSize");
-  ASSERT_TRUE(g.set_param(n, "path", Value::make(std::string("data.txt"))));
-  ASSERT_TRUE(g.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
-  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
-  EvalOptions options;
-  options.folder = dir;
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+// test.FileSize of data.txt in a folder of its own, the file holding 5 bytes.
+class FileSizeGraphTest : public EvaluatorTest {
+ protected:
+  void SetUp() override {
+    EvaluatorTest::SetUp();
+    std::filesystem::create_directories(dir_);
+    std::ofstream(dir_ / "data.txt") << "12345";
+    const NodeId n = add(g_, "test.FileSize");
+    ASSERT_TRUE(g_.set_param(n, "path", Value::make(std::string("data.txt"))));
+    ASSERT_TRUE(g_.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
+    ASSERT_TRUE(g_.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
+    options_.folder = dir_;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::int64_t bytes() { return ev.evaluate(g_, {}, {}, options_).output("bytes")->get<std::int64_t>(); }
+  void rewrite(const std::string& text) { std::ofstream(dir_ / "data.txt") << text; }
+
+  const std::filesystem::path dir_ =
+      std::filesystem::temp_directory_path() / ("procex_eval_file_" + std::to_string(::getpid()));
+  Graph g_;
+  EvalOptions options_;
+};
+
+TEST_F(FileSizeGraphTest, NodesReadingFilesKeyOnTheFileState) {
+  EXPECT_EQ(bytes(), 5);
+  EXPECT_EQ(bytes(), 5);
   EXPECT_EQ(test::evaluations(), 1);
-  std::ofstream(dir / "data.txt") << "1234567";
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 7);
+  rewrite("1234567");
+  EXPECT_EQ(bytes(), 7);
   EXPECT_EQ(test::evaluations(), 2);
-  std::filesystem::remove_all(dir);
 }
 
 // A batch looks at each file once: a file edited while it runs keys (and
 // makes) no building differently; the next batch sees the edit.
-TEST_F(EvaluatorTest, ABatchKeysEveryBuildingOnTheFileVersionsItSawFirst) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("procex_eval_batch_file_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "data.txt") << "12345";
-  Graph g;
-  const NodeId n = add(g, "test.FileSize");
-  ASSERT_TRUE(g.set_param(n, "path", Value::make(std::string("data.txt"))));
-  ASSERT_TRUE(g.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
-  ASSERT_TRUE(g.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
-  EvalOptions options;
-  options.folder = dir;
-  options.pin_files_for_a_batch();
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
-  std::ofstream(dir / "data.txt") << "1234567";
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 5);
+TEST_F(FileSizeGraphTest, ABatchKeysEveryBuildingOnTheFileVersionsItSawFirst) {
+  options_.pin_files_for_a_batch();
+  EXPECT_EQ(bytes(), 5);
+  rewrite("1234567");
+  EXPECT_EQ(bytes(), 5);
   EXPECT_EQ(test::evaluations(), 1);
-  options.pin_files_for_a_batch();
-  EXPECT_EQ(ev.evaluate(g, {}, {}, options).output("bytes")->get<std::int64_t>(), 7);
+  options_.pin_files_for_a_batch();
+  EXPECT_EQ(bytes(), 7);
   EXPECT_EQ(test::evaluations(), 2);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_F(EvaluatorTest, StatsPrintATable) {
