@@ -562,16 +562,17 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     for (int m : g) z += cs[m].z;
     zs.push_back(z / static_cast<double>(g.size()));
   }
+  // Then each waiting candidate at its own height, after the clusters there.
+  // Most never meet: in a square with k x k holes every hole's corner meets
+  // the planes of the k edges along each of its walls' lines at one height,
+  // and the batch there holds O(n^1.5) of them, few by a span. So a waiting
+  // candidate's collision is made only when it meets; made for all at once,
+  // they were most of such a sweep's memory.
   const std::size_t clustered = groups.size();
-  for (const Candidate* c : waiting) {
-    groups.push_back({static_cast<int>(cs.size())});
-    zs.push_back(c->z);
-    first.push_back(c->z);
-    cs.push_back(*meets(st, *c));
-  }
-  std::vector<std::size_t> order(groups.size());
+  const auto first_of = [&](std::size_t g) { return g < clustered ? first[g] : waiting[g - clustered]->z; };
+  std::vector<std::size_t> order(clustered + waiting.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first[a] < first[b]; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); });
   // Clusters at one height up to rounding are one instant, so their order is
   // rounding's: rewire them all before any settles. Settling folds spikes,
   // hands runs to parallel neighbours and closes flat loops, reaching along
@@ -596,16 +597,22 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     rewired.clear();
   };
   double instant = -HUGE_VAL;
+  std::vector<int> lone;  // a waiting candidate's collision, as a cluster of one
   for (std::size_t g : order) {
-    const bool later = first[g] > instant + st.tol().simultaneous();
+    const bool later = first_of(g) > instant + st.tol().simultaneous();
     if (later) settle_rewired();
     if (g >= clustered) {
+      // A corner's edges never change: its collision now is the one it had
+      // when the batch was popped.
       const Candidate& c = *waiting[g - clustered];
-      if (!meets(st, c) || (c.edge != kNone && !hits_span(st, c))) continue;
+      auto col = meets(st, c);
+      if (!col || (c.edge != kNone && !hits_span(st, c))) continue;
+      cs.push_back(std::move(*col));
+      lone = {static_cast<int>(cs.size()) - 1};
     }
-    if (later) instant = first[g];
-    st.height = std::max(st.height, zs[g]);
-    resolve_cluster(st, cs, groups[g], rewired);
+    if (later) instant = first_of(g);
+    st.height = std::max(st.height, g < clustered ? zs[g] : waiting[g - clustered]->z);
+    resolve_cluster(st, cs, g < clustered ? groups[g] : lone, rewired);
   }
   settle_rewired();
 }
