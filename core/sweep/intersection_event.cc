@@ -592,6 +592,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // they were most of such a sweep's memory.
   const std::size_t clustered = groups.size();
   const auto first_of = [&](std::size_t g) { return g < clustered ? first[g] : waiting[g - clustered]->z; };
+  const auto height_of = [&](std::size_t g) { return g < clustered ? zs[g] : waiting[g - clustered]->z; };
   std::vector<std::size_t> order(clustered + waiting.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); });
@@ -633,7 +634,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       lone = {static_cast<int>(cs.size()) - 1};
     }
     if (later) instant = first_of(g);
-    st.height = std::max(st.height, g < clustered ? zs[g] : waiting[g - clustered]->z);
+    st.height = std::max(st.height, height_of(g));
     resolve_cluster(st, cs, g < clustered ? groups[g] : lone, rewired);
   }
   settle_rewired();

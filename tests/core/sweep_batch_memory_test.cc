@@ -4,8 +4,6 @@
 // few of them by a span. Those that do not wait for their own height; their
 // collisions used to be made for all of them at once, which was most of such
 // a sweep's memory (16,388 vertices: 592 MB, 189 MB without them).
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <vector>
@@ -15,6 +13,7 @@
 #include "core/geom/footprint.h"
 #include "core/geom/prepare.h"
 #include "core/sweep/sweep.h"
+#include "tests/support/child_peak_memory.h"
 #include "tests/support/sanitizers.h"
 
 namespace procex {
@@ -40,11 +39,7 @@ long swept_peak_kib(const Footprint& fp) {
     const Surface s = sweep(fp);
     _exit(s.vertices.empty() ? 1 : 0);
   }
-  int status = 0;
-  rusage usage{};
-  EXPECT_EQ(wait4(pid, &status, 0, &usage), pid);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
-  return usage.ru_maxrss;
+  return test::child_peak_kib(pid);
 }
 
 TEST(SweepBatchMemory, WaitingSplitsCostMemoryOnlyWhenTheyMeet) {
