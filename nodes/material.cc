@@ -112,7 +112,7 @@ void evaluate(EvalContext& ctx) {
   if (const std::string& texture = ctx.param<std::string>(par.texture); !texture.empty()) {
     try {
       material.texture = ctx.file(texture);
-      shared_texture_image(material.texture, ctx.file_versions());  // refused here, not at the first writer
+      material.image = shared_texture_image(material.texture, ctx.file_versions());  // refused here, not by a writer
     } catch (const IoError& e) {
       return ctx.error("texture: " + std::string(e.what()));
     }

@@ -842,7 +842,7 @@ void append_to_gltf_mesh(GltfMeshData& out, const TaggedMeshView& view) {
         material.roughness = m->second.roughness;
         material.metallic = m->second.metallic;
         material.tile_size = m->second.tile_size;
-        if (!m->second.texture.empty()) material.image = shared_texture_image(m->second.texture);
+        material.image = m->second.image;
       }
     }
     GltfPrimitiveData& prim = out.primitives[static_cast<std::size_t>(slot)];

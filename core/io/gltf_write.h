@@ -132,8 +132,7 @@ std::array<double, 3> tag_colour(const std::string& tag);
 
 // Triangulates every face (convex pieces, fanned); faces with zero area are
 // dropped. A tag with a material of the mesh's (core/mesh/material.h) gets
-// it, its texture read (throws IoError naming the file if it is not a PNG or
-// JPEG image). Positions and normals turn into glTF's frame here: every
+// it, with the image the material was made with (Material::image). Positions and normals turn into glTF's frame here: every
 // GltfMeshData is in glTF's frame, so files read back write the same bytes.
 // `origin` (procex's frame) becomes GltfMeshData::origin.
 GltfMeshData to_gltf_mesh(const TaggedMeshView& view, const glm::dvec3& origin = {0, 0, 0});

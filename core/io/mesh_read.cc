@@ -257,7 +257,7 @@ Materials read_material_library(const Path& path, const ReferencedFileResolver& 
       if (name.empty() || name[0] == '-')
         fail_at(path, line_no, line, "a texture (map_Kd) needs a file name and no options (procex does not apply -s, -o, ...)");
       current->texture = resolve(path.parent_path() / name);
-      read_texture_image(current->texture);
+      current->image = shared_texture_image(current->texture);
     }
   });
   return out;

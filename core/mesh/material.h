@@ -26,6 +26,11 @@ struct Material {
   // A PNG or JPEG image (MTL map_Kd), resolved and confined to the recipe's
   // folder when read; empty if none.
   std::filesystem::path texture;
+  // Its bytes as they were read when the material was made: what the .glb
+  // embeds and the studio shows, so that an image saved since (mid-batch)
+  // never goes out beside meshes keyed and made on the version before. Null
+  // if there is no texture.
+  std::shared_ptr<const std::string> image;
   // How far one repeat of the texture reaches in texture coordinates: procex's
   // own faces have them in metres, so this is metres per tile; a placed mesh's
   // own coordinates address its image once per 1. The writers divide the
@@ -35,7 +40,10 @@ struct Material {
 
   static constexpr double kDefaultRoughness = 0.9;
 
-  bool operator==(const Material&) const = default;
+  bool operator==(const Material& o) const {
+    return colour == o.colour && roughness == o.roughness && metallic == o.metallic && texture == o.texture &&
+           tile_size == o.tile_size && (image == o.image || (image && o.image && *image == *o.image));
+  }
 };
 
 // Materials by face tag.

@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include "base/read_file.h"
+#include "core/io/gltf_write.h"
 #include "core/io/mesh_read.h"
+#include "core/io/texture_image.h"
 #include "core/mesh/material.h"
 #include "core/placement/placement.h"
 #include "graph/pxg.h"
@@ -54,6 +57,29 @@ TEST_F(MaterialNode, TexturedHouseGivesEachTagItsLook) {
   const MeshSet plain = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "house.pxg"), kSamples));
   EXPECT_EQ(plain.parts[0].mesh->n_faces(), set.parts[0].mesh->n_faces());
   EXPECT_TRUE(materials_of(plain.parts[0].materials).empty());
+}
+
+// A texture saved after its material was made (a batch running while the
+// artist paints) changes nothing made from it: the .glb embeds the image the
+// material was made with, the one the building's key holds.
+TEST_F(MaterialNode, AMeshKeepsTheImageItsMaterialWasMadeWith) {
+  fs::create_directories(dir_ / "textures");
+  fs::copy_file(kSamples / "textures" / "brick.png", dir_ / "textures" / "brick.png");
+  fs::copy_file(kSamples / "textures" / "roof_tiles.png", dir_ / "textures" / "roof_tiles.png");
+  const MeshSet set = mesh_of(test::evaluate_mesh(load_pxg(kSamples / "textured_house.pxg"), dir_));
+  const std::string brick = read_file(kSamples / "textures" / "brick.png", kMaxTextureBytes);
+  fs::copy_file(kSamples / "textures" / "roof_tiles.png", dir_ / "textures" / "brick.png",
+                fs::copy_options::overwrite_existing);
+  const GltfScene scene = to_gltf(set);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  int walls = 0;
+  for (const GltfPrimitiveData& p : scene.meshes[0].primitives)
+    if (p.tag == "wall") {
+      ++walls;
+      ASSERT_TRUE(p.material && p.material->image);
+      EXPECT_TRUE(*p.material->image == brick) << "the .glb would embed the image saved since";
+    }
+  EXPECT_EQ(walls, 1);
 }
 
 // One part: the window frame's mesh, every face tagged wall.

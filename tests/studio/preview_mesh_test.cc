@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/geom/footprint.h"
+#include "core/io/texture_image.h"
 #include "core/mesh/material.h"
 #include "core/mesh/mesh.h"
 #include "core/sweep/sweep.h"
@@ -212,6 +213,7 @@ TEST(PreviewMesh, TexturedMaterialsGetTheirImageAndTileScaledCoordinates) {
   Material brick;
   brick.colour = {1.0, 0.5, 0.5};
   brick.texture = std::filesystem::path(PROCEX_SAMPLES) / "textures" / "brick.png";
+  brick.image = shared_texture_image(brick.texture);
   brick.tile_size = 2.0;
   TaggedMesh part = l_block(3.0);
   part.materials = material_table({{"side", brick}});

@@ -15,8 +15,6 @@
 #include <glm/vec2.hpp>
 
 #include "core/geom/convex_partition.h"
-#include "core/io/io_error.h"
-#include "core/io/texture_image.h"
 #include "core/io/up_axis.h"
 #include "core/mesh/material.h"
 #include "core/mesh/uv_frames.h"
@@ -327,13 +325,7 @@ class Builder {
     if (m == materials.end()) return {t.color, -1, 1.0};
     const Material& mat = m->second;
     Look l{glm::vec3(mat.colour[0], mat.colour[1], mat.colour[2]), -1, mat.tile_size};
-    if (!mat.texture.empty()) {
-      try {
-        l.texture = texture(shared_texture_image(mat.texture), l.color);
-      } catch (const IoError&) {
-        // The image went away since the evaluation read it: its colour alone.
-      }
-    }
+    if (mat.image) l.texture = texture(mat.image, l.color);
     return summarise(t, l);
   }
   Look glb_look(TagSummary& t, const GltfPrimitiveData& prim) {
