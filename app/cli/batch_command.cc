@@ -10,7 +10,6 @@
 #include <istream>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <ostream>
 #include <set>
@@ -24,6 +23,7 @@
 
 #include "app/cli/feature_binding.h"
 #include "app/cli/glb_size_estimate.h"
+#include "app/cli/ordered_pipeline.h"
 #include "app/cli/output_crs.h"
 #include "app/cli/output_paths.h"
 #include "app/cli/recipe_session.h"
@@ -48,13 +48,13 @@ namespace {
 struct Building {
   std::size_t index = 0;  // in the file's features array
   std::string id;
-  const GeoJsonFeature* feature = nullptr;  // null: the feature could not be read
+  std::optional<GeoJsonFeature> feature;    // none: it could not be read (or the building is made)
   std::string status = "ok";                // ok, refused (unreadable feature), failed
   std::string reason;
   std::string file;  // per-building output: its file name in the folder
   std::vector<std::string> warnings;
   MeshSet meshes;                     // dropped once converted for a single .glb
-  GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel, streamed out with its window
+  GltfScene gltf;                     // for a single .glb: converted by the worker, in parallel
   MeshSummary summary;
   double ms = 0;
 };
@@ -124,8 +124,7 @@ class FileNames {
 // What a batch into one file holds until it is written, counted as buildings
 // finish: a batch over its budget stops early and writes nothing, whatever the
 // order its buildings ran in, instead of running out of memory. (Per-building
-// files and a single .glb stream out as their window of buildings finishes:
-// no budget.)
+// files and a single .glb stream out as buildings finish: no budget.)
 struct BatchBudget {
   std::size_t max_faces, max_placed;
   std::atomic<std::size_t> faces{0}, placed{0};
@@ -144,29 +143,16 @@ struct BatchBudget {
 
 void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb, BatchBudget& budget, Building& b) {
   const auto start = std::chrono::steady_clock::now();
-  Graph graph = recipe.graph;
-  Bindings bindings = recipe.bindings;
-  EvalOptions options = recipe.options;
-  if (const std::vector<std::string> problems = bind_feature(graph, bindings, options, *b.feature); !problems.empty()) {
-    b.status = "refused";
-    for (const std::string& p : problems) b.reason += (b.reason.empty() ? "" : "; ") + p;
-    return;
-  }
-  options.parallel = false;  // buildings run in parallel already
-  const EvalResult r = evaluator.evaluate(graph, bindings, recipe.outputs, options);
-  for (const Diagnostic& d : r.diagnostics) {
-    if (d.severity == Severity::kWarning) b.warnings.push_back(d.to_string());
-    else b.reason += (b.reason.empty() ? "" : "; ") + d.to_string();
-  }
-  if (!r.ok()) {
-    b.status = "failed";
-    if (b.reason.empty()) b.reason = "an output is missing";
-  } else {
-    b.meshes = gather_meshes(r);
+  FeatureEvaluation e = evaluate_feature(recipe, evaluator, *b.feature, /*parallel=*/false);  // buildings are parallel
+  b.feature.reset();
+  b.status = e.status();
+  b.warnings = e.warnings();
+  b.reason = e.reason();
+  if (!e.binding_problems.empty()) return;
+  if (e.ok) {
+    b.meshes = std::move(e.meshes);
     budget.add(b.meshes);
     if (budget.exceeded) return;  // the batch is refused: free nothing more
-    label_parts(b.meshes, *b.feature);
-    label_parameters(b.meshes, graph);
     b.summary = summarize(b.meshes);
     if (to_glb) {
       b.gltf = to_gltf(b.meshes);
@@ -198,10 +184,10 @@ class Progress {
  public:
   Progress(std::ostream& err, std::size_t total, bool enabled)
       : err_(err), total_(total), enabled_(enabled && total > 0), tty_(isatty(STDERR_FILENO) != 0) {}
+  // A building written (called one at a time, as the batch's other messages are).
   void step() {
     const std::size_t done = ++done_;
     if (!enabled_) return;
-    std::lock_guard lock(mutex_);
     const std::size_t percent = done * 100 / total_;
     if (tty_) {
       if (percent == last_ && done != total_) return;
@@ -218,9 +204,7 @@ class Progress {
   std::ostream& err_;
   std::size_t total_;
   bool enabled_, tty_;
-  std::atomic<std::size_t> done_{0};
-  std::mutex mutex_;
-  std::size_t last_ = 0;
+  std::size_t done_ = 0, last_ = 0;
 };
 
 nlohmann::ordered_json building_json(const Building& b) {
@@ -320,8 +304,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     return kExitUnusableInput;
   }
 
-  // The shard's features, readable or not, in input order: each window's
-  // building records are made from these as it starts, so records for every
+  // The shard's features, readable or not, in input order: each building's
+  // record is made from these as it is read back, so records for every
   // building are never held at once.
   const std::vector<FeatureSource> sources =
       feature_sources(*footprints, collection.errors, options.shard, options.shards);
@@ -363,10 +347,8 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       // file passes the limit, hours in.
       const std::vector<std::size_t> at = glb_size_sample(sources.size());
       std::vector<Building> sample(at.size());
-      std::vector<GeoJsonFeature> features(at.size());
       for (std::size_t i = 0; i < at.size(); ++i)
-        if (const FeatureSource& from = sources[at[i]]; !from.error)
-          features[i] = footprints->at(from.spooled), sample[i].feature = &features[i];
+        if (const FeatureSource& from = sources[at[i]]; !from.error) sample[i].feature = footprints->at(from.spooled);
         else sample[i].status = "refused";
       arena.execute([&] {
         tbb::parallel_for(std::size_t{0}, sample.size(), [&](std::size_t i) {
@@ -394,47 +376,54 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
       glb.emplace(options.output, std::move(head.extras), options.glb_max_bytes);
     }
     if (per_building) std::filesystem::create_directories(options.output);
-    // Buildings run a window at a time and leave it in input order: a
-    // building's meshes are written (per-building files, the single .glb's
-    // temporary files) or converted to what the single output keeps, then
-    // freed, so the meshes in memory at once are a window's, however many
-    // buildings the batch has.
-    const std::size_t window = 64 * static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
-    for (std::size_t first = 0; first < sources.size() && !budget.exceeded; first += window) {
-      std::vector<Building> buildings(std::min(sources.size(), first + window) - first);
-      std::vector<GeoJsonFeature> features(buildings.size());  // the window's, back from the spool
-      for (std::size_t i = 0; i < buildings.size(); ++i) {
-        const FeatureSource& from = sources[first + i];
-        Building& b = buildings[i];
-        b.index = from.index;
-        if (!from.error) features[i] = footprints->at(from.spooled), b.id = features[i].id, b.feature = &features[i];
-        else b.id = from.error->id, b.status = "refused", b.reason = from.error->message;
+    // Buildings are read back from the spool in input order (and named, for
+    // per-building files), evaluated and written to their own files in
+    // parallel, and leave in input order: into the report, and into the
+    // single .glb's temporary files (a group at a time, rendered in parallel)
+    // or what another single output keeps. Their meshes are freed as they
+    // leave, so the meshes in memory at once are those of the `ahead`
+    // buildings between read and left, however many the batch has.
+    const std::size_t jobs = static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
+    const std::size_t glb_group = 16 * jobs;
+    std::vector<GltfScene> group;
+    const auto make = [&](std::size_t i) {
+      const FeatureSource& from = sources[i];
+      Building b;
+      b.index = from.index;
+      if (!from.error) b.feature = footprints->at(from.spooled), b.id = b.feature->id;
+      else b.id = from.error->id, b.status = "refused", b.reason = from.error->message;
+      if (per_building) b.file = file_name(b);
+      return b;
+    };
+    const auto work = [&](Building& b) {
+      if (!b.feature || budget.exceeded) return;
+      evaluate_building(*recipe, evaluator, one_glb, budget, b);
+      if (per_building && b.status == "ok")
+        write_mesh_set(options.output / b.file, std::exchange(b.meshes, {}), export_options);
+    };
+    const auto finish = [&](Building& b) {
+      if (budget.exceeded) return;
+      progress.step();
+      entries->add(ReportEntries::text(building_json(b)));  // made as it leaves
+      ++made;
+      if (b.status != "ok") {
+        ++(b.status == "refused" ? refused : failed);
+        err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason
+            << "\n";
+        return;
       }
-      arena.execute([&] {
-        tbb::parallel_for(std::size_t{0}, buildings.size(), [&](std::size_t i) {
-          if (buildings[i].feature && !budget.exceeded) evaluate_building(*recipe, evaluator, one_glb, budget, buildings[i]);
-          progress.step();
-        });
-      });
-      if (budget.exceeded) break;
-      std::vector<GltfScene> window_gltf;
-      for (Building& b : buildings) {
-        if (per_building) b.file = file_name(b);
-        entries->add(ReportEntries::text(building_json(b)));  // made as it leaves its window
-        if (b.status != "ok") {
-          ++(b.status == "refused" ? refused : failed);
-          err << "procex batch: feature " << b.id << " (index " << b.index << "): " << b.status << ": " << b.reason
-              << "\n";
-          continue;
-        }
-        ++ok;
-        if (per_building) write_mesh_set(options.output / b.file, b.meshes, export_options);
-        else if (one_glb) window_gltf.push_back(std::move(b.gltf));
-        else all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
+      ++ok;
+      if (one_glb) {
+        group.push_back(std::move(b.gltf));
+        if (group.size() == glb_group) glb->add(std::exchange(group, {}));
+      } else if (!per_building) {
+        all.parts.insert(all.parts.end(), b.meshes.parts.begin(), b.meshes.parts.end());
       }
-      made = first + buildings.size();
-      if (one_glb) arena.execute([&] { glb->add(std::move(window_gltf)); });  // renders in parallel: --jobs holds
-    }
+    };
+    arena.execute([&] {
+      run_in_order<Building>(sources.size(), 64 * jobs, make, work, finish, [&] { return budget.exceeded.load(); });
+      if (one_glb && !budget.exceeded) glb->add(std::move(group));  // renders in parallel: --jobs holds
+    });
     if (budget.exceeded) {
       err << "procex batch: refused: the buildings would hold more than " << options.max_faces << " faces or "
           << options.max_placed << " placed meshes (" << budget.faces << " faces, " << budget.placed

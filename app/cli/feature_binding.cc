@@ -190,6 +190,8 @@ std::vector<std::string> bind_feature(Graph& graph, Bindings& bindings, EvalOpti
   return problems;
 }
 
+std::string FeatureEvaluation::status() const { return ok ? "ok" : binding_problems.empty() ? "failed" : "refused"; }
+
 std::vector<std::string> FeatureEvaluation::warnings() const {
   std::vector<std::string> out;
   for (const Diagnostic& d : diagnostics)
@@ -202,7 +204,7 @@ std::string FeatureEvaluation::reason() const {
   for (const std::string& p : binding_problems) out += (out.empty() ? "" : "; ") + p;
   for (const Diagnostic& d : diagnostics)
     if (d.severity == Severity::kError) out += (out.empty() ? "" : "; ") + d.to_string();
-  return out;
+  return out.empty() && !ok ? "an output is missing" : out;
 }
 
 FeatureEvaluation evaluate_feature(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f,
@@ -221,6 +223,7 @@ FeatureEvaluation evaluate_feature(const MeshRecipe& recipe, Evaluator& evaluato
   if (out.ok) {
     out.meshes = gather_meshes(r);
     label_parts(out.meshes, f);
+    label_parameters(out.meshes, graph);
   }
   return out;
 }

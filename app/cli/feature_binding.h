@@ -86,12 +86,17 @@ struct FeatureEvaluation {
   bool ok = false;                           // every mesh output present, no error diagnostics
   std::vector<std::string> binding_problems;  // why bind_feature refused the feature (then not evaluated)
   std::vector<Diagnostic> diagnostics;       // the evaluation's
-  MeshSet meshes;                            // when ok: labelled with the feature's id and index
+  MeshSet meshes;  // when ok: labelled with the feature (label_parts) and the parameters as bound (label_parameters)
   EvalStats stats;                           // what the evaluation did per node (empty when not evaluated)
 
+  // A batch report's status: "ok", "refused" (the feature could not be
+  // bound) or "failed" (the evaluation).
+  std::string status() const;
   // The warning diagnostics (Diagnostic::to_string).
   std::vector<std::string> warnings() const;
-  // The binding problems, then the error diagnostics, joined by "; " (a batch report's reason).
+  // The binding problems, then the error diagnostics, joined by "; " (a batch
+  // report's reason); for an evaluation that failed without saying why, "an
+  // output is missing".
   std::string reason() const;
 };
 // Binds f to a copy of the recipe and evaluates its mesh outputs; `parallel`

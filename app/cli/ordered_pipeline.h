@@ -1,20 +1,24 @@
-// Items made one at a time in order, worked on in parallel, and handed to a
-// consumer on another thread in that order: a batch's buildings read from
-// their spool, evaluated, and yielded in input order (procex.batch_iter).
-// Unlike windows that each wait for their slowest item, the workers keep
-// going past a slow item while the consumer waits for it in order; what they
-// may hold is bounded, so memory is too: at most `ahead` items made and not
-// yet in order (TBB's tokens), and `ahead` more in order and not yet taken.
+// Items made one at a time in order, worked on in parallel, and finished
+// one at a time in that order, with at most `ahead` of them between made and
+// finished: a batch's buildings read from their spool, evaluated, and written
+// or handed over in input order. Unlike windows that each wait for their
+// slowest item, the workers keep going past a slow item while its turn to be
+// finished waits for it, and memory stays bounded by `ahead`.
 //
-// The pipeline runs on a thread of its own (named, for top -H), inside the
-// arena given; make() and work() run on that thread and the arena's workers,
-// never on the consumer's. An exception from either stops the pipeline; the
-// consumer gets those of the items before it that were already in order, then
-// the exception.
+// run_in_order finishes the items in the calling thread's arena (procex
+// batch writes them there). OrderedPipeline hands them to a consumer on
+// another thread (procex.batch_iter: Python's thread): it runs on a thread of
+// its own (named, for top -H), inside the arena given; make() and work() run
+// on that thread and the arena's workers, never on the consumer's. It holds at
+// most `ahead` items made and not yet in order (TBB's tokens), and `ahead`
+// more in order and not yet taken. An exception from make or work stops the
+// pipeline; the consumer gets those of the items before it that were already
+// in order, then the exception.
 #pragma once
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -33,6 +37,43 @@
 #include <oneapi/tbb/task_arena.h>
 
 namespace procex {
+
+// make(i): the i-th item, called in order, one at a time, until `stopped()`;
+// work(item): in parallel; finish(item): in order, one at a time. Items
+// travel through TBB by index, each in the slot `index % ahead`: at most
+// `ahead` tokens are in flight and the last filter runs in order, so item
+// i + ahead is made only after item i has left its slot. TBB does not destroy
+// the objects its filters hold when an exception cancels the pipeline
+// (LeakSanitizer found the items in flight lost), so it holds none. An
+// exception from any of them stops the items not yet made and is rethrown.
+template <class Item>
+void run_in_order(std::size_t count, std::size_t ahead, const std::function<Item(std::size_t)>& make,
+                  const std::function<void(Item&)>& work, const std::function<void(Item&)>& finish,
+                  const std::function<bool()>& stopped) {
+  ahead = std::max<std::size_t>(ahead, 1);
+  std::size_t made = 0;
+  std::vector<std::unique_ptr<Item>> slots(ahead);
+  tbb::parallel_pipeline(
+      ahead,
+      tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                          [&](tbb::flow_control& fc) -> std::size_t {
+                                            if (made == count || stopped()) {
+                                              fc.stop();
+                                              return 0;
+                                            }
+                                            slots[made % ahead] = std::make_unique<Item>(make(made));
+                                            return made++;
+                                          }) &
+          tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel,
+                                                     [&](std::size_t i) {
+                                                       work(*slots[i % ahead]);
+                                                       return i;
+                                                     }) &
+          tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, [&](std::size_t i) {
+            const std::unique_ptr<Item> item = std::move(slots[i % ahead]);
+            finish(*item);
+          }));
+}
 
 template <class Item>
 class OrderedPipeline {
@@ -86,43 +127,21 @@ class OrderedPipeline {
  private:
   using Owned = std::unique_ptr<Item>;
 
-  // Items travel through TBB by index, each in the slot `index % ahead_`:
-  // at most `ahead_` tokens are in flight and the last filter runs in order,
-  // so item i + ahead_ is made only after item i has left its slot. TBB does
-  // not destroy the objects its filters hold when an exception cancels the
-  // pipeline (LeakSanitizer found the items in flight lost), so it holds
-  // none.
   void run() {
-    std::size_t made = 0;
-    std::vector<Owned> slots(ahead_);
     try {
       arena_.execute([&] {
-        tbb::parallel_pipeline(
-            ahead_,
-            tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
-                                                [&](tbb::flow_control& fc) -> std::size_t {
-                                                  if (stop_ || made == count_) {
-                                                    fc.stop();
-                                                    return 0;
-                                                  }
-                                                  slots[made % ahead_] = std::make_unique<Item>(make_(made));
-                                                  return made++;
-                                                }) &
-                tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel,
-                                                           [&](std::size_t i) {
-                                                             if (!stop_) work_(*slots[i % ahead_]);
-                                                             return i;
-                                                           }) &
-                // In order; waits while `ahead_` are ready and not taken, so the
-                // tokens that finish meanwhile wait in TBB's buffer, bounded too.
-                tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, [&](std::size_t i) {
-                  Owned item = std::move(slots[i % ahead_]);
-                  std::unique_lock lock(mutex_);
-                  changed_.wait(lock, [&] { return stop_ || ready_.size() < ahead_; });
-                  if (stop_) return;
-                  ready_.push_back(std::move(item));
-                  changed_.notify_all();
-                }));
+        run_in_order<Item>(
+            count_, ahead_, make_, [&](Item& item) { if (!stop_) work_(item); },
+            // Waits while `ahead_` are ready and not taken, so the tokens that
+            // finish meanwhile wait in TBB's buffer, bounded too.
+            [&](Item& item) {
+              std::unique_lock lock(mutex_);
+              changed_.wait(lock, [&] { return stop_ || ready_.size() < ahead_; });
+              if (stop_) return;
+              ready_.push_back(std::make_unique<Item>(std::move(item)));
+              changed_.notify_all();
+            },
+            [&] { return stop_.load(); });
       });
     } catch (...) {
       std::lock_guard lock(mutex_);

@@ -52,10 +52,10 @@ struct Progress {
 void evaluate(const MeshRecipe& recipe, Evaluator& evaluator, const GeoJsonFeature& f, PlaceableCache& placeables,
               Building& b) {
   FeatureEvaluation e = evaluate_feature(recipe, evaluator, f, /*parallel=*/false);  // buildings are parallel
+  b.status = e.status();
   b.warnings = e.warnings();
   b.reason = e.reason();
   if (e.ok) b.meshes = wrap_all(std::move(e.meshes), placeables);
-  else b.status = e.binding_problems.empty() ? "failed" : "refused";
 }
 
 py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int jobs, py::handle progress,
@@ -143,8 +143,8 @@ py::list batch(const std::shared_ptr<Recipe>& recipe, py::handle footprints, int
 // process) as procex batch keeps them; an OrderedPipeline reads them back in
 // order and evaluates them in parallel, going on past a slow building while
 // the caller waits for it. It holds at most 64 buildings a job ahead of the
-// one the caller waits for and 64 a job evaluated and not taken, procex
-// batch's window (about 2 MB a job of city buildings): with 4 a job, one
+// one the caller waits for and 64 a job evaluated and not taken, as procex
+// batch holds (about 2 MB a job of city buildings): with 4 a job, one
 // intricate building among houses (150 times their time) stalled the others
 // as windows did (BENCHMARKS). Its threads never touch a Python object.
 class BatchStream {

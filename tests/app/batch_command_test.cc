@@ -89,6 +89,21 @@ TEST_F(Batch, SameBytesWhateverJobs) {
     ASSERT_EQ(run_batch(two, out_, err_), 0) << err_.str();
     EXPECT_TRUE(read_text(one.output) == read_text(two.output)) << ext;
   }
+  // Per-building files, written by the workers as their buildings are made.
+  for (const char* format : {"glb", "obj", "ply"}) {
+    BatchCommandOptions one = options(std::string("one_") + format + "/"), two = options(std::string("two_") + format + "/");
+    one.format = two.format = format;
+    one.jobs = 1, two.jobs = 2;
+    ASSERT_EQ(run_batch(one, out_, err_), 0) << err_.str();
+    ASSERT_EQ(run_batch(two, out_, err_), 0) << err_.str();
+    std::size_t files = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(one.output)) {
+      ++files;
+      EXPECT_TRUE(read_text(e.path()) == read_text(two.output / e.path().filename())) << e.path();
+    }
+    EXPECT_EQ(files, static_cast<std::size_t>(std::distance(fs::directory_iterator(two.output), fs::directory_iterator())));
+    EXPECT_GE(files, 18u) << format;
+  }
 }
 
 TEST_F(Batch, ShardsMergeIntoTheUnshardedBytes) {
@@ -138,9 +153,9 @@ TEST_F(Batch, OneFilePerBuilding) {
   EXPECT_TRUE(fs::exists(dir_ / "per_building" / "r1484217.mtl"));
 }
 
-// Per-building files and a single .glb stream out as their window of
-// buildings finishes, so the batch holds no building's faces past its window:
-// the in-memory budget that refuses another single output does not apply to them.
+// Per-building files and a single .glb stream out as buildings finish in
+// order, so the batch holds no building's faces once written: the in-memory
+// budget that refuses another single output does not apply to them.
 TEST_F(Batch, StreamedOutputsAreNotHeldForTheBudget) {
   BatchCommandOptions one = options("city.obj");
   one.max_faces = 10;
@@ -163,10 +178,10 @@ TEST_F(Batch, StreamedOutputsAreNotHeldForTheBudget) {
   }
 }
 
-// The .glb a batch streams window by window has the bytes write_glb writes
-// for the scene it holds (read back and written whole), and so has procex
-// merge of the one part (streamed too), for the sample block and for 150
-// generated footprints in three windows, one of them unreadable; the Khronos
+// The .glb a batch streams building by building has the bytes write_glb
+// writes for the scene it holds (read back and written whole), and so has
+// procex merge of the one part (streamed too), for the sample block and for
+// 150 generated footprints rendered in groups of 16, one of them unreadable; the Khronos
 // validator passes it.
 TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
   std::string features;
@@ -186,7 +201,7 @@ TEST_F(Batch, StreamedGlbHasTheBytesOfTheSceneInMemory) {
   for (const fs::path& footprints : {kBlock, dir_ / "generated.geojson"}) {
     SCOPED_TRACE(footprints);
     BatchCommandOptions o = options("streamed.glb");
-    o.footprints = footprints, o.jobs = 1;  // windows of 64
+    o.footprints = footprints, o.jobs = 1;  // groups of 16
     o.report = dir_ / "streamed.json";
     ASSERT_LE(run_batch(o, out_, err_), 1) << err_.str();
     ASSERT_EQ(read_glb_scene(o.output).meshes.size(), footprints == kBlock ? 18u : 149u);

@@ -76,7 +76,7 @@ TEST_F(BatchGlbLimit, ABatchTheFileCannotHoldIsRefusedBeforeItsBuildingsAreMade)
 }
 
 // Too few buildings for a sample to save anything: the writer stops the batch
-// at the window that passes the limit.
+// at the group of buildings that passes the limit.
 TEST_F(BatchGlbLimit, ASmallBatchIsRefusedWhenItsFilePassesTheLimit) {
   const std::uintmax_t bytes = glb_bytes(1000);
   BatchCommandOptions half = options(1000, "half.glb");
