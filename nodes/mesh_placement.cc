@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include "base/file_read_cache.h"
 #include "base/file_version_memo.h"
 #include "core/geom/error.h"
 #include "core/io/io_error.h"
@@ -41,14 +42,8 @@ Params par;
 // of a batch.
 std::vector<fs::path> named_in(const fs::path& file, std::vector<fs::path> (*names)(const fs::path&),
                                FileVersionMemo* versions) {
-  using Key = std::pair<std::string, FileVersion>;
-  static std::mutex mutex;
-  static std::map<Key, std::vector<fs::path>> cache;
-  const Key key{fs::absolute(file).string(), file_version(file, versions)};
-  std::lock_guard lock(mutex);
-  if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  if (cache.size() >= 256) cache.clear();  // edited files leave old versions behind
-  return cache.emplace(key, names(file)).first->second;
+  static FileReadCache<FileVersion, std::vector<fs::path>> cache;  // a file is an OBJ or a library, never both
+  return cache.get(fs::absolute(file).string(), file_version(file, versions), [&] { return names(file); });
 }
 
 // The version of the mesh file and of every file it is read with (its
@@ -158,15 +153,8 @@ SharedMesh read_mesh(const fs::path& path, const ReferencedFileResolver& resolve
 // recipe's own.
 SharedMesh read_shared(const fs::path& path, const ReferencedFileResolver& resolve, FileVersionMemo* versions) {
   if (file_version(path, versions).content == 0) return read_mesh(path, resolve);  // read_mesh_file says what is wrong
-  using Key = std::pair<std::string, Hash128>;
-  static std::mutex mutex;
-  static std::map<Key, SharedMesh> cache;
-  const Key key{fs::absolute(path).string(), mesh_files_stamp(path, versions)};
-  std::lock_guard lock(mutex);
-  if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  SharedMesh m = read_mesh(path, resolve);
-  if (cache.size() >= 64) cache.clear();  // edited files leave old versions behind
-  return cache.emplace(key, std::move(m)).first->second;
+  static FileReadCache<Hash128, SharedMesh> cache;
+  return cache.get(fs::absolute(path).string(), mesh_files_stamp(path, versions), [&] { return read_mesh(path, resolve); });
 }
 
 glm::dvec3 vec(const Vec3& v) { return {v.x, v.y, v.z}; }

@@ -1,9 +1,6 @@
 #include "core/io/texture_image.h"
 
-#include <map>
-#include <mutex>
-#include <utility>
-
+#include "base/file_read_cache.h"
 #include "base/file_version_memo.h"
 #include "base/read_file.h"
 #include "core/io/io_error.h"
@@ -28,15 +25,8 @@ std::string read_texture_image(const std::filesystem::path& path) {
 std::shared_ptr<const std::string> shared_texture_image(const std::filesystem::path& path, FileVersionMemo* versions) {
   const FileVersion version = file_version(path, versions);
   if (version.content == 0) return std::make_shared<const std::string>(read_texture_image(path));  // it says why
-  using Key = std::pair<std::string, FileVersion>;
-  static std::mutex mutex;
-  static std::map<Key, std::shared_ptr<const std::string>> cache;
-  const Key key{path.string(), version};
-  std::lock_guard lock(mutex);
-  if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  auto bytes = std::make_shared<const std::string>(read_texture_image(path));
-  if (cache.size() >= 64) cache.clear();  // edited files leave old versions behind
-  return cache.emplace(key, std::move(bytes)).first->second;
+  static FileReadCache<FileVersion, std::shared_ptr<const std::string>> cache;
+  return cache.get(path.string(), version, [&] { return std::make_shared<const std::string>(read_texture_image(path)); });
 }
 
 }  // namespace procex
