@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/point_grid.h"
 #include "core/geom/predicates.h"
 #include "core/geom/tolerances.h"
 
@@ -87,6 +88,15 @@ class Partitioner {
 
   std::vector<std::vector<Index>> run() {
     if (head_ == kNone) return {};
+    on_ring_twice_.assign(points_.size(), false);
+    std::vector<bool> seen(points_.size(), false);
+    Index node = head_;
+    do {
+      const Index v = nodes_[node].vertex;
+      on_ring_twice_[v] = on_ring_twice_[v] || seen[v];
+      seen[v] = true;
+      node = nodes_[node].next;
+    } while (node != head_);
     clip_ears();
     merge_pieces();
     std::vector<std::vector<Index>> out;
@@ -228,16 +238,15 @@ class Partitioner {
     const double lo_x = std::min({a.x, b.x, c.x}) - margin, hi_x = std::max({a.x, b.x, c.x}) + margin;
     const double lo_y = std::min({a.y, b.y, c.y}) - margin, hi_y = std::max({a.y, b.y, c.y}) + margin;
     // Only a vertex that is not strictly convex can lie inside an ear.
-    for (const Index q : reflex_) {
-      if (nodes_[q].removed || q == p || q == v || q == n) continue;
-      const glm::dvec2 s = pos(q);
-      if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) continue;
-      if (s == a || s == b || s == c) continue;
+    const glm::dvec2 lo = glm::dvec2(lo_x, lo_y) - origin_, hi = glm::dvec2(hi_x, hi_y) - origin_;
+    return reflex_.for_each_in_box(lo, hi, [&](Index q, const glm::dvec2&) {
+      const glm::dvec2& s = pos(q);  // the box again, as the rounding of the grid's frame may take in one more
+      if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) return true;
+      if (nodes_[q].removed || q == p || q == v || q == n || s == a || s == b || s == c) return true;
       if (orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) return false;
       // The ear's one new edge, c -> a, must not pass through the ring.
-      if (between_up_to_rounding(c, s, a)) return false;
-    }
-    return true;
+      return !between_up_to_rounding(c, s, a);
+    });
   }
 
   bool ring_is_convex() const {
@@ -273,11 +282,23 @@ class Partitioner {
   // angles, so the vertices that are not strictly convex at the start are
   // the only ones an ear can ever contain.
   void clip_ears() {
+    std::vector<Index> reflex;
+    glm::dvec2 hi = pos(head_);
+    origin_ = hi;
     Index node = head_;
     do {
-      if (turn_at(node) != 1) reflex_.push_back(node);
+      if (turn_at(node) != 1) reflex.push_back(node);
+      origin_ = glm::min(origin_, pos(node)), hi = glm::max(hi, pos(node));
       node = nodes_[node].next;
     } while (node != head_);
+    // Cells of about one vertex each over the ring's box (so an ear's box,
+    // inside it, covers at most as many cells as there are vertices, wherever
+    // the ring lies): an ear looks only at the vertices near it.
+    const glm::dvec2 extent = hi - origin_;
+    const double n = static_cast<double>(std::max<std::size_t>(reflex.size(), 1)), span = std::max(extent.x, extent.y);
+    reflex_ = PointGrid(span > 0.0 ? std::max(std::sqrt(extent.x * extent.y / n), span / n) : 1.0);
+    reflex_.reserve(reflex.size());
+    for (const Index q : reflex) reflex_.add(pos(q) - origin_, q);
     Index stop = node;  // a full lap back here without progress ends the lap
     while (size_ > 3) {
       // Nodes at the same input vertex next to each other (the two ends of a
@@ -362,20 +383,22 @@ class Partitioner {
     for (std::size_t k = 0; k < ny; ++k)
       if (y[k] == b && y[(k + 1) % ny] == a) jb = k;
     if (ia == nx || jb == ny) return false;
+    // The union turns at a from x's vertex before it to y's after it, and at
+    // b from y's vertex before it to x's after it: judged before anything is
+    // copied, since a large piece (a comb's spine) meets many it cannot take.
+    if (!convex_turn(turn(points_[x[(ia + nx - 1) % nx]], points_[a], points_[y[(jb + 2) % ny]])) ||
+        !convex_turn(turn(points_[y[(jb + ny - 1) % ny]], points_[b], points_[x[(ia + 2) % nx]])))
+      return false;
     // merged = b, ..., a (around x), then y's vertices strictly between a and b.
     merged.clear();
     for (std::size_t k = 1; k <= nx; ++k) merged.push_back(x[(ia + k) % nx]);
     for (std::size_t k = 2; k < ny; ++k) merged.push_back(y[(jb + k) % ny]);
-    const std::size_t n = merged.size();
-    const std::size_t at_a = nx - 1, at_b = 0;
-    for (std::size_t k : {at_a, at_b}) {
-      const glm::dvec2& prev = points_[merged[(k + n - 1) % n]];
-      const glm::dvec2& next = points_[merged[(k + 1) % n]];
-      if (!convex_turn(turn(prev, points_[merged[k]], next))) return false;
-    }
-    std::vector<Index> sorted = merged;
-    std::sort(sorted.begin(), sorted.end());
-    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+    // Only a vertex the ring passes twice (a bridge's end) can repeat.
+    std::vector<Index> twice;
+    for (const Index v : merged)
+      if (on_ring_twice_[v]) twice.push_back(v);
+    std::sort(twice.begin(), twice.end());
+    return std::adjacent_find(twice.begin(), twice.end()) == twice.end();
   }
 
   std::vector<glm::dvec2> points_;
@@ -383,7 +406,9 @@ class Partitioner {
   Index head_ = kNone;
   Index size_ = 0;
   std::vector<std::vector<Index>> pieces_;
-  std::vector<Index> reflex_;  // nodes not strictly convex when clipping began
+  PointGrid reflex_{1.0};  // nodes not strictly convex when clipping began, placed from origin_
+  glm::dvec2 origin_{0.0};
+  std::vector<bool> on_ring_twice_;  // input vertices the ring passes more than once
 };
 
 }  // namespace
