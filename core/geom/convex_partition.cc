@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/geom/point_grid.h"
+#include "core/geom/point_tree.h"
 #include "core/geom/predicates.h"
 #include "core/geom/tolerances.h"
 
@@ -237,10 +237,28 @@ class Partitioner {
                               std::max({std::abs(a.x), std::abs(a.y), std::abs(c.x), std::abs(c.y)});
     const double lo_x = std::min({a.x, b.x, c.x}) - margin, hi_x = std::max({a.x, b.x, c.x}) + margin;
     const double lo_y = std::min({a.y, b.y, c.y}) - margin, hi_y = std::max({a.y, b.y, c.y}) + margin;
+    // Parts of the plane outside the box, or wholly beyond a side of the ear by
+    // more than the margin and what rounding can make of the test, hold no
+    // vertex that could stop the ear: skipped.
+    const double slack = 2.0 * margin + 32.0 * std::numeric_limits<double>::epsilon() *
+                                            std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y),
+                                                      std::abs(c.x), std::abs(c.y)});
+    const auto beyond = [&](const glm::dvec2& u, const glm::dvec2& w, const glm::dvec2& lo, const glm::dvec2& hi) {
+      const glm::dvec2 d = w - u;
+      const double length = glm::length(d);
+      for (const glm::dvec2 k : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
+        const double reach =
+            length * (slack + 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(k.x - u.x) + std::abs(k.y - u.y)));
+        if (d.x * (k.y - u.y) - d.y * (k.x - u.x) >= -reach) return false;
+      }
+      return true;
+    };
+    const auto skip = [&](const glm::dvec2& lo, const glm::dvec2& hi) {
+      return hi.x < lo_x || lo.x > hi_x || hi.y < lo_y || lo.y > hi_y || beyond(a, b, lo, hi) || beyond(b, c, lo, hi) ||
+             beyond(c, a, lo, hi);
+    };
     // Only a vertex that is not strictly convex can lie inside an ear.
-    const glm::dvec2 lo = glm::dvec2(lo_x, lo_y) - origin_, hi = glm::dvec2(hi_x, hi_y) - origin_;
-    return reflex_.for_each_in_box(lo, hi, [&](Index q, const glm::dvec2&) {
-      const glm::dvec2& s = pos(q);  // the box again, as the rounding of the grid's frame may take in one more
+    return reflex_.search(skip, [&](Index q, const glm::dvec2& s) {
       if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) return true;
       if (nodes_[q].removed || q == p || q == v || q == n || s == a || s == b || s == c) return true;
       if (orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) return false;
@@ -282,23 +300,13 @@ class Partitioner {
   // angles, so the vertices that are not strictly convex at the start are
   // the only ones an ear can ever contain.
   void clip_ears() {
-    std::vector<Index> reflex;
-    glm::dvec2 hi = pos(head_);
-    origin_ = hi;
+    std::vector<std::pair<glm::dvec2, Index>> reflex;
     Index node = head_;
     do {
-      if (turn_at(node) != 1) reflex.push_back(node);
-      origin_ = glm::min(origin_, pos(node)), hi = glm::max(hi, pos(node));
+      if (turn_at(node) != 1) reflex.emplace_back(pos(node), node);
       node = nodes_[node].next;
     } while (node != head_);
-    // Cells of about one vertex each over the ring's box (so an ear's box,
-    // inside it, covers at most as many cells as there are vertices, wherever
-    // the ring lies): an ear looks only at the vertices near it.
-    const glm::dvec2 extent = hi - origin_;
-    const double n = static_cast<double>(std::max<std::size_t>(reflex.size(), 1)), span = std::max(extent.x, extent.y);
-    reflex_ = PointGrid(span > 0.0 ? std::max(std::sqrt(extent.x * extent.y / n), span / n) : 1.0);
-    reflex_.reserve(reflex.size());
-    for (const Index q : reflex) reflex_.add(pos(q) - origin_, q);
+    reflex_ = PointTree(std::move(reflex));
     Index stop = node;  // a full lap back here without progress ends the lap
     while (size_ > 3) {
       // Nodes at the same input vertex next to each other (the two ends of a
@@ -406,8 +414,7 @@ class Partitioner {
   Index head_ = kNone;
   Index size_ = 0;
   std::vector<std::vector<Index>> pieces_;
-  PointGrid reflex_{1.0};  // nodes not strictly convex when clipping began, placed from origin_
-  glm::dvec2 origin_{0.0};
+  PointTree reflex_;  // nodes not strictly convex when clipping began
   std::vector<bool> on_ring_twice_;  // input vertices the ring passes more than once
 };
 

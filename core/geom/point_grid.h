@@ -1,11 +1,10 @@
-// Points of the plane looked up by distance or by box: a hash grid whose cells
-// are as wide as the distance, so a lookup visits the 3 x 3 cells around a
-// point whatever the number of points, and a box the cells it covers. The cells live in one open-addressed table
+// Points of the plane looked up by distance: a hash grid whose cells are as
+// wide as the distance, so a lookup visits the 3 x 3 cells around a point
+// whatever the number of points. The cells live in one open-addressed table
 // and the points in one array, each cell chaining its points in the order
 // they came: no allocation per point or per cell.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -44,6 +43,7 @@ class PointGrid {
   // Calls f(id, position) for every point added within the radius of p.
   template <class F>
   void for_each_near(glm::dvec2 p, F&& f) const {
+    if (cells_.empty()) return;
     const long long gx = cell(p.x), gy = cell(p.y);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
@@ -52,25 +52,6 @@ class PointGrid {
         for (std::uint32_t i = c->head; i != kEnd; i = points_[i].next)
           if (glm::length(points_[i].p - p) <= radius_) f(points_[i].id, points_[i].p);
       }
-  }
-
-  // Calls f(id, position) for every point added within the box [lo, hi] (in
-  // no particular order) until f returns false; whether none did. A box over
-  // more cells than there are points visits every point once instead.
-  template <class F>
-  bool for_each_in_box(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
-    const auto visit = [&](const Point& q) {
-      return q.p.x < lo.x || q.p.x > hi.x || q.p.y < lo.y || q.p.y > hi.y || f(q.id, q.p);
-    };
-    const long long x0 = cell(lo.x), x1 = cell(hi.x), y0 = cell(lo.y), y1 = cell(hi.y);
-    if (static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) > static_cast<double>(points_.size()))
-      return std::all_of(points_.begin(), points_.end(), visit);
-    for (long long x = x0; x <= x1; ++x)
-      for (long long y = y0; y <= y1; ++y)
-        if (const Cell* c = find(x, y))
-          for (std::uint32_t i = c->head; i != kEnd; i = points_[i].next)
-            if (!visit(points_[i])) return false;
-    return true;
   }
 
   // The first point added within the radius of p, if any.
@@ -101,7 +82,6 @@ class PointGrid {
     return h ^ (h >> 32);
   }
   const Cell* find(long long x, long long y) const {
-    if (cells_.empty()) return nullptr;
     const std::size_t mask = cells_.size() - 1;
     for (std::size_t s = hash(x, y) & mask;; s = (s + 1) & mask) {
       const Cell& c = cells_[s];
