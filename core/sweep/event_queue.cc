@@ -32,16 +32,10 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   const Corner& k = st.corners[c];
   const int n = k.next;
   if (n == kNone || n == c) return;
-  // The span between c and n runs along the edge's direction; it closes when
-  // its length along that direction reaches zero.
-  const glm::dvec2 d = st.edges[k.next_edge].dir;
   const double z = st.height;
-  const double length = glm::dot(st.position(n, z) - st.position(c, z), d);
-  const double rate = glm::dot(st.corners[n].velocity - k.velocity, d);
-  if (!(rate < 0.0)) return;
-  const double at = z - length / rate;
+  const double at = st.span_closes_at(c);
   // A meeting point below the sweep plane means the planes diverge from here.
-  if (at < z - st.tol().height()) return;
+  if (std::isnan(at) || at < z - st.tol().height()) return;
   // Two corners made at one collision meet there because of it.
   if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
   st.count_events(1);

@@ -135,6 +135,9 @@ class State {
     return k.base + (z - k.base_z) * k.velocity;
   }
   bool reflex(int c) const;
+  // The height at which the span from corner c to the next closes (the two
+  // corners meet along its edge), or NaN where they do not approach.
+  double span_closes_at(int c) const;
 
   // Output: a corner's trajectory from its origin up to vertex v, shared by the
   // faces of its two edges. The corner is not killed.
