@@ -160,21 +160,26 @@ std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collisi
   return groups;
 }
 
-// The point nearest (least squares) to all planes of a cluster: each output
-// vertex then lies on every face it bounds, however the cluster's members
-// scattered. Where the planes do not pin a point (nearly dependent, as in a
-// thin sliver, or meeting further off than the cluster's spread), the slowest
-// corner whose line runs through the meeting (`corners`) says best where it
-// is. Not a corner taken in only for lying within `near` of the point: its
-// line misses the meeting by up to that much, and placed there, the vertex
-// moves the other corners' trajectory ends across their lines; a fast
-// corner's faces are slivers whose features lie only 1/speed of their
-// distance along its line away from it (jittered star 8,000 seed 16: a corner
-// at 127 m per m of rise met a plane 3.4 micrometres from a slow corner of
-// another plane; ended where that one was, its trajectory passed 4e-7 m on
-// the wrong side of a split point 6.8e-7 m of height below, and edge 6's face
-// crossed itself).
-glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const std::vector<int>& corners,
+// The point nearest (least squares) to the planes of a cluster's collisions
+// and of the corners whose lines run through it (`planes`, `corners`): each
+// output vertex then lies on every face it bounds, however the cluster's
+// members scattered. Where the planes do not pin a point (nearly dependent,
+// as in a thin sliver, or meeting further off than the cluster's spread), the
+// slowest of those corners says best where it is. Not a corner taken in only
+// for lying within `near` of the point, nor its other plane: its line misses
+// the meeting by up to that much, and fitted to it, the vertex moves the
+// other corners' trajectory ends across their lines. A fast corner's faces
+// are slivers whose features lie only 1/speed of their distance along its
+// line away from it: in jittered star 8,000 seed 16 a corner at 127 m per m
+// of rise met a plane 3.4 micrometres from a slow corner of another plane;
+// ended where that one was, its trajectory passed 4e-7 m on the wrong side of
+// a split point 6.8e-7 m of height below, and edge 6's face crossed itself.
+// Seeds 9 and 1 the same through the least-squares point: fitted to both
+// corners' planes, it ended the fast one 1.2e-6 m off its line (seed 1: it
+// fell within delta3 of a vertex made 7.2e-7 m lower and took that one,
+// 9.6e-7 m off). A corner leaving along the plane left out starts on its
+// own line (resolve_cluster).
+glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const std::vector<int>& corners,
                          glm::dvec2 mean, double near) {
   glm::dvec3 fallback{mean, st.height};
   double slowest = 1e300;
@@ -187,7 +192,7 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const s
   }
   glm::dmat3 a(0.0);
   glm::dvec3 b(0.0);
-  for (int e : edges) {
+  for (int e : planes) {
     const Plane& pl = st.edges[e].plane;
     const glm::dvec3 n{pl.n, -pl.k};
     const double len2 = glm::dot(n, n);
@@ -199,6 +204,16 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& edges, const s
   const glm::dvec3 x = glm::inverse(a) * b;
   if (glm::length(glm::dvec2(x) - mean) > near || std::abs(x.z - st.height) > 10.0 * st.tol().height()) return fallback;
   return x;
+}
+
+// The point of the line where planes a and b cross nearest to x: x moved
+// along their normals (in plan and height) by the least that puts it on both.
+glm::dvec3 onto_line(const Plane& a, const Plane& b, glm::dvec3 x) {
+  const glm::dvec3 na{a.n, -a.k}, nb{b.n, -b.k};
+  const double ra = a.signed_distance(glm::dvec2(x), x.z), rb = b.signed_distance(glm::dvec2(x), x.z);
+  const double aa = glm::dot(na, na), ab = glm::dot(na, nb), bb = glm::dot(nb, nb);
+  const double det = aa * bb - ab * ab;
+  return x + ((rb * ab - ra * bb) / det) * na + ((ra * ab - rb * aa) / det) * nb;
 }
 
 [[noreturn]] void fail(const State& st, const std::string& what, glm::dvec2 p, const std::vector<int>& edges) {
@@ -291,9 +306,9 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   // The participating edges, each once: a corner meeting a thousand planes
   // at one point brings each of them in once per collision.
   std::vector<int> edges;
-  std::unordered_set<int> participating;
+  std::unordered_map<int, std::size_t> participating;  // edge -> its place in `edges`
   auto add_edge = [&](int e) {
-    if (participating.insert(e).second) edges.push_back(e);
+    if (participating.try_emplace(e, edges.size()).second) edges.push_back(e);
   };
   std::vector<char> at(st.corners.size(), 0);
   std::vector<int> at_p;
@@ -334,8 +349,10 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     }
   }
   if (at_p.empty()) return;
-  // The corners whose lines run through the meeting: those of the collisions
-  // and those at p by logic (below), not those only near it (meeting_point).
+  // The planes the meeting is fitted to, the collisions' and their corners',
+  // and the corners whose lines run through it: those of the collisions and
+  // those between two of these planes, not those only near it (meeting_point).
+  std::vector<int> fitted = edges;
   std::vector<int> through = at_p;
 
   // Every live corner of a participating edge that sits at p takes part too.
@@ -348,12 +365,15 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     const Corner& k = st.corners[c];
     return k.motion == Motion::Regular && participates(k.prev_edge) && participates(k.next_edge);
   };
+  auto fits = [&](int e) { return participating.at(e) < fitted.size(); };
+  // An edge cut through (or its heir) is no plane of a corner at p: as fitted.
+  auto fits_if_in = [&](int e) { return !participates(e) || fits(e); };
   for (std::size_t scanned = 0; scanned < edges.size(); ++scanned) {
     for (int s : st.spans(edges[scanned])) {
       for (int c : {s, st.corners[s].next}) {
         if (c == kNone || !st.corners[c].alive || at[c]) continue;
         if (by_logic(c)) {
-          through.push_back(c);
+          if (fits(st.corners[c].prev_edge) && fits(st.corners[c].next_edge)) through.push_back(c);
           mark(c);
         } else if (glm::length(st.position(c, z) - p) <= near) {
           mark(c);
@@ -388,7 +408,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     }
   }
 
-  const glm::dvec3 meet = meeting_point(st, edges, through, p, near);
+  std::sort(fitted.begin(), fitted.end());
+  const glm::dvec3 meet = meeting_point(st, fitted, through, p, near);
   const std::uint32_t v = st.vertex_at(glm::dvec2(meet), meet.z);
   // Trajectories end here once the corners are paired: some go on (below).
   for (int c : at_p) st.corners[c].alive = false;
@@ -469,8 +490,22 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     // vertex it may share with another cluster within delta2 and delta3: a
     // corner between nearly parallel planes (hundreds of m per m of rise)
     // started there would run a tenth of a millimetre off both its planes.
-    st.corners[n].base = glm::dvec2(meet);
-    st.corners[n].base_z = meet.z;
+    // A plane the point was not fitted to (a corner's taken in only for lying
+    // within `near`) misses it by up to that much, and a corner started there
+    // along that plane would run beside its line all the way: it starts on
+    // its line, nearest the point. In jittered star 4,000 seed 37 the corner
+    // (11,6) so started 1.8 micrometres off plane 6; a corner at 64 m per m
+    // of rise met planes 6 and 11 next to it, each outside the span the
+    // displaced corner bounded, passed between them and the roof never
+    // closed. Not where the line lies further off than `near`: planes nearly
+    // one plane cross in a line of no sure place (1.5 cm off in a city block).
+    glm::dvec3 from = meet;
+    if (st.corners[n].motion == Motion::Regular && !(fits_if_in(cin.in_edge) && fits_if_in(cout.out_edge))) {
+      const glm::dvec3 on = onto_line(st.edges[cin.in_edge].plane, st.edges[cout.out_edge].plane, meet);
+      if (glm::length(on - meet) <= near) from = on;
+    }
+    st.corners[n].base = glm::dvec2(from);
+    st.corners[n].base_z = from.z;
     st.link(cin.in_corner, n);
     st.link(n, cout.out_corner);
     made.push_back(n);
