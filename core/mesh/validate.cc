@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -14,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/convex_partition.h"
+#include "core/geom/oriented_box.h"
 #include "core/geom/polygon3.h"
 #include "core/geom/round_edge.h"
 #include "core/geom/segment_intersections.h"
@@ -334,7 +336,8 @@ bool share_edge(const Triangle& a, const Triangle& b) {
 class IntersectionSearch {
  public:
   IntersectionSearch(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems)
-      : tris_(tris), tol_(tol), r_(r), problems_(problems), boxes_(tris.size()) {
+      : tris_(tris), tol_(tol), r_(r), problems_(problems), boxes_(tris.size()), fit_(tris.size()),
+        turned_(tris.size() >= kTurnedFrom) {
     for (std::size_t i = 0; i < tris.size(); ++i) {
       glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
       for (const auto& p : tris[i].p) {
@@ -342,6 +345,13 @@ class IntersectionSearch {
         b = glm::max(b, p);
       }
       boxes_[i] = {a - tol, b + tol};
+      // The box's two largest sides against the triangle: 2 for a triangle
+      // along the axes, about length / width for a sliver running diagonally.
+      glm::dvec3 e = b - a;
+      if (e.x < e.y) std::swap(e.x, e.y);
+      if (e.y < e.z) std::swap(e.y, e.z);
+      if (e.x < e.y) std::swap(e.x, e.y);
+      fit_[i] = {e.x * e.y, 0.5 * glm::length(glm::cross(tris[i].p[1] - tris[i].p[0], tris[i].p[2] - tris[i].p[0]))};
     }
   }
 
@@ -360,6 +370,18 @@ class IntersectionSearch {
   // of more is a fan worth a subtree of its own.
   static constexpr std::size_t kFanSize = 16;
   static constexpr std::size_t kLeafSize = 4;
+  // Below this many triangles a hierarchy of boxes along the axes is
+  // searched faster than its turned boxes are made.
+  static constexpr std::size_t kTurnedFrom = 256;
+  // Turned boxes are made for nodes whose triangles' boxes hold more than
+  // this many times their area: long thin triangles running diagonally.
+  static constexpr double kLoose = 8.0;
+
+  // The area of the triangles below a node, and of their boxes.
+  struct Fit {
+    double room = 0.0, area = 0.0;
+    Fit operator+(const Fit& o) const { return {room + o.room, area + o.area}; }
+  };
 
   struct Box {
     glm::dvec3 lo, hi;
@@ -369,6 +391,7 @@ class IntersectionSearch {
     std::uint32_t first = 0, count = 0;     // a leaf's triangles in order_
     std::uint32_t left = kNone, right = kNone;
     std::uint32_t fan = kNone;  // the welded vertex every triangle below shares, if one does
+    Fit fit;
   };
 
   bool done() const { return found_ >= kMaxIntersectionPairs; }
@@ -494,13 +517,17 @@ class IntersectionSearch {
   std::uint32_t build(std::size_t first, std::size_t count, std::uint32_t fan) {
     const std::uint32_t id = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({box_of(order_, first, count), static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count),
-                      kNone, kNone, fan});
-    if (count <= kLeafSize) return id;
+                      kNone, kNone, fan, {}});
+    if (count <= kLeafSize) {
+      for (std::size_t k = first; k < first + count; ++k) nodes_[id].fit = nodes_[id].fit + fit_[order_[k]];
+      return id;
+    }
     split_at_median(order_, first, count, [&](std::uint32_t t) { return (boxes_[t].lo + boxes_[t].hi) * 0.5; });
     const std::uint32_t left = build(first, count / 2, fan);
     const std::uint32_t right = build(first + count / 2, count - count / 2, fan);
     nodes_[id].left = left;
     nodes_[id].right = right;
+    nodes_[id].fit = nodes_[left].fit + nodes_[right].fit;
     return id;
   }
 
@@ -516,6 +543,7 @@ class IntersectionSearch {
     n.box = {glm::min(nodes_[left].box.lo, nodes_[right].box.lo), glm::max(nodes_[left].box.hi, nodes_[right].box.hi)};
     n.left = left;
     n.right = right;
+    n.fit = nodes_[left].fit + nodes_[right].fit;
     nodes_.push_back(n);
     return static_cast<std::uint32_t>(nodes_.size() - 1);
   }
@@ -548,6 +576,34 @@ class IntersectionSearch {
 
   bool is_leaf(const Node& n) const { return n.left == kNone; }
 
+  bool loose(const Node& n) const { return turned_ && n.fit.room > kLoose * n.fit.area; }
+
+  // A node's turned box, made when first asked for: most pairs of nodes
+  // are parted by their boxes along the axes, and a fan is never compared
+  // with itself. A node of the hierarchy over a range of triangles boxes
+  // their corners; a node joining subtrees, its children's boxes.
+  const OrientedBox& turned(std::uint32_t id) {
+    if (turned_boxes_.empty()) turned_boxes_.resize(nodes_.size());
+    if (turned_boxes_[id]) return *turned_boxes_[id];
+    const Node& n = nodes_[id];
+    corners_.clear();
+    if (n.count > 0) {
+      for (std::size_t k = n.first; k < n.first + n.count; ++k)
+        corners_.insert(corners_.end(), tris_[order_[k]].p.begin(), tris_[order_[k]].p.end());
+      turned_boxes_[id] = oriented_box_of(corners_, tol_);
+    } else {
+      const std::uint32_t left = n.left, right = n.right;
+      const OrientedBox& l = turned(left);
+      const OrientedBox& r = turned(right);
+      corners_.clear();
+      for (const OrientedBox* b : {&l, &r})
+        for (int k = 0; k < 8; ++k)
+          corners_.push_back(b->centre + b->axes * (b->half * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1)));
+      turned_boxes_[id] = oriented_box_of(corners_, 0.0);
+    }
+    return *turned_boxes_[id];
+  }
+
   void self_pairs(std::uint32_t id) {
     const Node& n = nodes_[id];
     if (done() || n.fan != kNone) return;  // a fan's pairs were tested round its vertex
@@ -564,7 +620,9 @@ class IntersectionSearch {
 
   void cross_pairs(std::uint32_t a, std::uint32_t b) {
     const Node &na = nodes_[a], &nb = nodes_[b];
-    if (done() || !overlap(na.box, nb.box) || (na.fan != kNone && na.fan == nb.fan)) return;
+    if (done() || !overlap(na.box, nb.box) || (na.fan != kNone && na.fan == nb.fan) ||
+        (loose(na) && loose(nb) && !oriented_overlap(turned(a), turned(b))))
+      return;
     if (is_leaf(na) && is_leaf(nb)) {
       for (std::uint32_t p = na.first; p < na.first + na.count; ++p)
         for (std::uint32_t q = nb.first; q < nb.first + nb.count; ++q) test_apart(order_[p], order_[q]);
@@ -595,8 +653,15 @@ class IntersectionSearch {
   ValidationReport& r_;
   Problems& problems_;
   std::vector<Box> boxes_;
+  std::vector<Fit> fit_;  // by triangle
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
+  // With turned_, loose nodes whose boxes along the axes overlap are also
+  // compared by their boxes along the principal axes of their triangles:
+  // those part long thin triangles side by side, running every way.
+  const bool turned_;
+  std::vector<std::optional<OrientedBox>> turned_boxes_;  // by node, made by turned()
+  std::vector<glm::dvec3> corners_;  // the points a turned box is made of
   std::uint32_t root_ = kNone;
   std::size_t found_ = 0;
   std::set<std::pair<int, int>> reported_;

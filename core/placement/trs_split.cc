@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/geom/symmetric_eigen.h"
 #include "core/geom/tolerances.h"
 
 namespace procex {
@@ -17,41 +18,10 @@ bool is_trs(const glm::dmat4& transform) {
   return true;
 }
 
-namespace {
-
-// Eigenvectors of the symmetric matrix a (as the columns of the result, a
-// becoming diagonal), by cyclic Jacobi rotations: a 3x3 converges to full
-// precision in a handful of sweeps.
-glm::dmat3 jacobi_eigenvectors(glm::dmat3& a) {
-  glm::dmat3 v(1.0);
-  for (int sweep = 0; sweep < 32; ++sweep) {
-    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-    if (off <= 1e-32 * diag) break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (a[p][q] == 0.0) continue;
-        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        glm::dmat3 r(1.0);  // a <- r^T a r zeroes a[p][q]
-        r[p][p] = c;
-        r[q][q] = c;
-        r[q][p] = s;
-        r[p][q] = -s;
-        a = glm::transpose(r) * a * r;
-        v = v * r;
-      }
-  }
-  return v;
-}
-
-}  // namespace
-
 TrsSplit split_trs(const glm::dmat4& transform) {
   const glm::dmat3 m(transform);
   glm::dmat3 ata = glm::transpose(m) * m;
-  glm::dmat3 v = jacobi_eigenvectors(ata);
+  glm::dmat3 v = symmetric_eigenvectors(ata);
   if (glm::determinant(v) < 0) v[2] = -v[2];  // the inner node must be a rotation
   // U's columns: M v_i / sigma_i, made exactly orthonormal and right-handed;
   // a mirror shows as a negative third scale.
