@@ -56,12 +56,12 @@ std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
                                                   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& segments,
                                                   double near) {
   const std::size_t n = segments.size(), inputs = pts.size();
-  // Candidates: segments and points whose boxes, grown by `near`, overlap.
-  const glm::dvec2 grow(near);
-  std::vector<Box2> boxes;
-  boxes.reserve(n + inputs);
-  for (const auto& [u, v] : segments) boxes.push_back({glm::min(pts[u], pts[v]) - grow, glm::max(pts[u], pts[v]) + grow});
-  for (std::size_t i = 0; i < inputs; ++i) boxes.push_back({pts[i] - grow, pts[i] + grow});
+  // Candidates: segments and points (as segments of no length) near each
+  // other.
+  std::vector<Segment2> candidates;
+  candidates.reserve(n + inputs);
+  for (const auto& [u, v] : segments) candidates.push_back({pts[u], pts[v]});
+  for (std::size_t i = 0; i < inputs; ++i) candidates.push_back({pts[i], pts[i]});
 
   std::vector<std::vector<std::uint32_t>> cuts(n);
   auto cut = [&](std::size_t s, std::uint32_t q) {
@@ -78,7 +78,7 @@ std::vector<std::vector<std::uint32_t>> find_cuts(std::vector<glm::dvec2>& pts,
   PointGrid grid(near);
   grid.reserve(inputs + inputs / 4);
   for (std::size_t i = 0; i < inputs; ++i) grid.add(pts[i], static_cast<std::uint32_t>(i));
-  for_each_box_pair(boxes, [&](std::size_t i, std::size_t j) {
+  for_each_near_segment_pair(candidates, near, [&](std::size_t i, std::size_t j) {
     if (i >= n) return true;  // two points
     if (j >= n) {
       cut(i, static_cast<std::uint32_t>(j - n));

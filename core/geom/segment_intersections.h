@@ -1,7 +1,7 @@
 // Finding which of many 2D segments touch or cross, in about O(n log n) for
-// the inputs procex sees (footprint loops, face outlines): their bounding
-// boxes are bucketed in a uniform grid and only segments whose boxes overlap
-// are compared, with the exact predicates of predicates.h.
+// the inputs procex sees (footprint loops, face outlines): each segment is
+// listed in the cells of a uniform grid it passes through and only segments
+// sharing a cell are compared, with the exact predicates of predicates.h.
 #pragma once
 
 #include <cstddef>
@@ -18,13 +18,12 @@ struct Segment2 {
   glm::dvec2 a, b;
 };
 
-struct Box2 {
-  glm::dvec2 lo, hi;
-};
-
-// Calls visit(i, j), i < j, once for every pair of boxes that overlap
-// (touching counts), until it returns false.
-void for_each_box_pair(const std::vector<Box2>& boxes, const std::function<bool(std::size_t, std::size_t)>& visit);
+// Calls visit(i, j), i < j, once for every pair of segments that come
+// within 2 * within of each other (touching counts), and perhaps for some
+// farther apart whose boxes, grown by within, overlap; until it returns
+// false. A segment may be a point (a == b).
+void for_each_near_segment_pair(const std::vector<Segment2>& segments, double within,
+                                const std::function<bool(std::size_t, std::size_t)>& visit);
 
 // Whether segments i and j share a point or, with within > 0, come within
 // that distance of each other: what is apart by less than a tolerance is not

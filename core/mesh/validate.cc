@@ -466,16 +466,16 @@ class IntersectionSearch {
     // Projected points are at most 1 / kMinCosine from the origin; the margin
     // covers the rounding of the projection many times over.
     const double margin = 1e-9 / kMinCosine;
-    std::vector<Box2> boxes(fan.size());
+    std::vector<Segment2> corners(fan.size());
     for (std::size_t k = 0; k < fan.size(); ++k) {
       glm::dvec2 ends[2];
       for (int e = 0; e < 2; ++e) {
         const glm::dvec3& d = arcs[k][e];
         ends[e] = glm::dvec2(glm::dot(d, e1), glm::dot(d, e2)) / glm::dot(d, axis);
       }
-      boxes[k] = {glm::min(ends[0], ends[1]) - margin, glm::max(ends[0], ends[1]) + margin};
+      corners[k] = {ends[0], ends[1]};
     }
-    for_each_box_pair(boxes, [&](std::size_t p, std::size_t q) {
+    for_each_near_segment_pair(corners, margin, [&](std::size_t p, std::size_t q) {
       test(fan[p], fan[q]);
       return !done();
     });
