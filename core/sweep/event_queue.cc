@@ -33,11 +33,9 @@ void EventQueue::schedule_edge_event(State& st, int c) {
   const int n = k.next;
   if (n == kNone || n == c) return;
   const double z = st.height;
-  const double at = st.span_closes_at(c);
   // A meeting point below the sweep plane means the planes diverge from here.
-  if (std::isnan(at) || at < z - st.tol().height()) return;
-  // Two corners made at one collision meet there because of it.
-  if (k.origin == st.corners[n].origin && at <= z + st.tol().height()) return;
+  const double at = st.span_closes_at(c, z);
+  if (std::isnan(at)) return;
   st.count_events(1);
   heap_.push({std::max(at, z), at, c, n, kNone, kNone});
 }

@@ -559,6 +559,142 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   out.push_back({std::move(made), std::move(edges), z});
 }
 
+// The groups of a batch (its clusters, then its waiting candidates) by the
+// edges they name, to tell whether one not yet resolved and first met above a
+// height names one of a pair's edges, so reads the spans a collapse of the
+// pair there changes; and the clusters' members by their corners, to find
+// those that would take a corner of the pair from its collapse. Each listed
+// once per batch, on the first question: most batches make no collapse within
+// their instant, and the batch at a jittered star's centre holds a million
+// candidates, too many to look at again for every collapse. The few
+// collapses the batch adds after that are looked at in turn.
+class LaterGroups {
+ public:
+  LaterGroups(State& st, const std::vector<Collision>& cs, const std::vector<std::vector<int>>& groups,
+              const std::vector<double>& first, const std::vector<const Candidate*>& waiting)
+      : st_(st), cs_(cs), groups_(groups), first_(first), waiting_(waiting) {}
+
+  std::size_t size() const { return groups_.size() + waiting_.size(); }
+  // A group's lowest collision.
+  double first_of(std::size_t g) const { return g < groups_.size() ? first_[g] : waiting_[g - groups_.size()]->z; }
+
+  void resolving(std::size_t g) {
+    if (resolved_.size() <= g) resolved_.resize(size(), 0);
+    resolved_[g] = 1;
+  }
+
+  // `order` is the order the groups are resolved in: by first collision, but
+  // for a collapse added below the group resolved just before it.
+  bool read_above(const int (&pair)[3], double at, const std::vector<std::size_t>& order) {
+    if (listed_ == 0) list(order);
+    for (int e : pair) {
+      if (static_cast<std::size_t>(e) + 1 >= start_.size()) continue;
+      // Each edge's groups run from the last resolved back: past one met at or
+      // below `at`, or resolved, all are (a collapse added out of order came
+      // after every group before it was resolved).
+      for (std::uint32_t k = start_[e]; k < start_[e + 1]; ++k) {
+        const std::size_t g = named_[k];
+        if (resolved(g) || first_of(g) <= at) break;
+        if (still_meets(g)) return true;
+      }
+    }
+    std::vector<int> edges;
+    for (std::size_t g = listed_; g < size(); ++g) {
+      if (resolved(g) || first_of(g) <= at || !still_meets(g)) continue;
+      edges.clear();
+      edges_of(g, edges);
+      for (int e : edges)
+        if (std::count(pair, pair + 3, e) > 0) return true;
+    }
+    return false;
+  }
+
+  // The members of clusters not yet resolved but first met at or below `at`,
+  // so resolved before a collapse there, that meet corner a or b above it.
+  std::vector<std::pair<std::size_t, int>> taking(int a, int b, double at) {
+    if (waits_.empty()) list_members();
+    std::vector<std::pair<std::size_t, int>> out;
+    for (int c : {a, b}) {
+      const auto [from, to] = std::equal_range(members_.begin(), members_.end(), Member{c, 0, 0},
+                                               [](const Member& x, const Member& y) { return x.corner < y.corner; });
+      for (auto it = from; it != to; ++it)
+        if (!resolved(it->group) && !waits_[it->member] && first_[it->group] <= at && cs_[it->member].z > at)
+          out.push_back({it->group, it->member});
+    }
+    return out;
+  }
+  // A member taken out of its cluster to wait for its own height.
+  void waits(int m) { waits_[m] = 1; }
+
+ private:
+  struct Member {
+    int corner;
+    std::size_t group;
+    int member;
+  };
+
+  bool resolved(std::size_t g) const { return g < resolved_.size() && resolved_[g]; }
+  // A waiting candidate names its edges only while it still meets.
+  bool still_meets(std::size_t g) const {
+    return g < groups_.size() || meets(st_, *waiting_[g - groups_.size()]).has_value();
+  }
+
+  // A cluster names its members' edges, a waiting candidate the edges it meets
+  // at (a corner's edges never change).
+  void edges_of(std::size_t g, std::vector<int>& out) const {
+    if (g < groups_.size()) {
+      for (int m : groups_[g]) out.insert(out.end(), cs_[m].edges.begin(), cs_[m].edges.end());
+      return;
+    }
+    const Candidate& c = *waiting_[g - groups_.size()];
+    const Corner& k = st_.corners[c.corner];
+    out.insert(out.end(), {k.prev_edge, k.next_edge, c.edge == kNone ? st_.corners[c.next].next_edge : c.edge});
+  }
+
+  // Each edge's groups, last resolved first, each once (counted, then placed).
+  void list(const std::vector<std::size_t>& order) {
+    start_.assign(st_.edges.size() + 1, 0);
+    std::vector<std::size_t> last(st_.edges.size());
+    std::vector<int> edges;
+    const auto each = [&](const auto& f) {
+      std::fill(last.begin(), last.end(), size());
+      for (auto g = order.rbegin(); g != order.rend(); ++g) {
+        edges.clear();
+        edges_of(*g, edges);
+        for (int e : edges)
+          if (last[e] != *g) f(e, last[e] = *g);
+      }
+    };
+    each([&](int e, std::size_t) { ++start_[e + 1]; });
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    named_.resize(start_.back());
+    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+    each([&](int e, std::size_t g) { named_[next[e]++] = static_cast<std::uint32_t>(g); });
+    listed_ = size();
+  }
+
+  // The clusters' members by their corners.
+  void list_members() {
+    for (std::size_t g = 0; g < groups_.size(); ++g)
+      for (int m : groups_[g])
+        for (int c : cs_[m].corners) members_.push_back({c, g, m});
+    std::sort(members_.begin(), members_.end(), [](const Member& x, const Member& y) { return x.corner < y.corner; });
+    waits_.assign(cs_.size(), 0);
+  }
+
+  State& st_;
+  const std::vector<Collision>& cs_;
+  const std::vector<std::vector<int>>& groups_;
+  const std::vector<double>& first_;
+  const std::vector<const Candidate*>& waiting_;
+  std::vector<std::uint32_t> start_;  // edge e's groups are named_[start_[e]] .. named_[start_[e + 1] - 1]
+  std::vector<std::uint32_t> named_;
+  std::size_t listed_ = 0;
+  std::vector<char> resolved_;
+  std::vector<Member> members_;
+  std::vector<char> waits_;  // by member, once listed
+};
+
 }  // namespace
 
 void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candidate>& batch) {
@@ -638,12 +774,13 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     }
     groups[g] = std::move(kept);
   }
-  std::vector<double> zs;
-  for (const auto& g : groups) {
+  const auto mean_z = [&](const std::vector<int>& g) {
     double z = 0.0;
     for (int m : g) z += cs[m].z;
-    zs.push_back(z / static_cast<double>(g.size()));
-  }
+    return z / static_cast<double>(g.size());
+  };
+  std::vector<double> zs;
+  for (const auto& g : groups) zs.push_back(mean_z(g));
   // Then each waiting candidate at its own height, after the clusters there.
   // Most never meet: in a square with k x k holes every hole's corner meets
   // the planes of the k edges along each of its walls' lines at one height,
@@ -651,9 +788,10 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // candidate's collision is made only when it meets; made for all at once,
   // they were most of such a sweep's memory.
   const std::size_t clustered = groups.size();
-  const auto first_of = [&](std::size_t g) { return g < clustered ? first[g] : waiting[g - clustered]->z; };
+  LaterGroups later_groups(st, cs, groups, first, waiting);
+  const auto first_of = [&](std::size_t g) { return later_groups.first_of(g); };
   const auto height_of = [&](std::size_t g) { return g < clustered ? zs[g] : waiting[g - clustered]->z; };
-  std::vector<std::size_t> order(clustered + waiting.size());
+  std::vector<std::size_t> order(later_groups.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); });
   // Clusters at one height up to rounding are one instant, so their order is
@@ -690,22 +828,42 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   double highest = st.height;
   double instant = -HUGE_VAL;
   std::vector<int> lone;  // a waiting candidate's collision, as a cluster of one
-  // An edge whose collapse a cluster rewired one end of still collapses where
-  // its corners now meet. Within this instant and below a later cluster of the
-  // batch that names one of the pair's edges (so reads the spans the collapse
-  // changes), that is a collision of the batch, resolved in its place (paper
+  // A span a cluster made (a new corner with either neighbour) or changed (an
+  // edge whose collapse it rewired one end of) closes where its corners now
+  // meet. Within this instant, and below a later group of the batch that names
+  // one of the pair's edges (so reads the spans the collapse changes) or a
+  // collision of a cluster resolved before it that would take one of its
+  // corners, that is a collision of the batch, resolved in its place (paper
   // 4.3: in height order); otherwise settling hands it to the queue as before
   // (resolved in the batch regardless, it only moved later batches' bounds,
   // and jittered star 6,000 seed 14 then failed at every scale). In 8,000
-  // seed 6 edge 6 collapsed 2.8e-7 m above the collapse of edge 7 that rewired
-  // its end and 9e-7 m below a split of edge 1 in the batch; dropped, it left
-  // the split cutting edge 1 in a span whose end corner had gone, a triangle
-  // of edges 1, 6 and 9 turned inside out, which settling closed as a flat
-  // loop below the split's corner, and the surface did not close.
+  // seed 6 edge 6 collapsed 2.8e-7 m above the collapse of edge 7 that
+  // rewired its end and 9e-7 m below a split of edge 1 in the batch; dropped,
+  // it left the split cutting edge 1 in a span whose end corner had gone, a
+  // triangle of edges 1, 6 and 9 turned inside out, which settling closed as
+  // a flat loop below the split's corner, and the surface did not close. In
+  // 8,000 seed 20 a split of edge 16 left a span of it 2e-5 m long, from a
+  // corner of 45 m per m of rise, which closed 4.5e-7 m higher, below the
+  // collapse of edge 35 in the batch that took that corner; queued, it was
+  // resolved above that collapse, into the split's vertex, and the collapse's
+  // new corner ran back down to it through the faces of edges 16 and 32. In
+  // 8,000 seed 14 a corner of 1,271 m per m met a new slow one (edge 9
+  // collapsed) 1.2e-8 m below where a cluster, first met lower, had it meet
+  // another corner 1.6e-5 m away; the cluster took both and ended them at one
+  // point 1.4e-5 m off the slow corner's line, and faces 6 and 9 folded.
+  // A span whose corners were both made in this instant is left to the queue:
+  // it lies between two clusters of one instant, apart only by rounding, and
+  // its collapse is theirs (8,000 seed 7: a triangle of a split edge's two new
+  // corners and a corner of a cluster 4.7e-6 m away, whose planes meet at the
+  // split's point, resolved alone joined the edge's two halves in a corner of
+  // that edge with itself).
   std::deque<Candidate> collapses;
-  std::vector<int> moved;
+  std::vector<int> moved, spans;
+  std::unordered_set<std::uint64_t> looked_at;  // pairs (corner, next) whose collapse was looked at
+  int made_from = 0;                            // the first corner made in this instant
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t g = order[i];
+    later_groups.resolving(g);
     const bool later = first_of(g) > instant + st.tol().simultaneous();
     if (later) settle_rewired();
     if (g >= clustered) {
@@ -717,38 +875,47 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       cs.push_back(std::move(*col));
       lone = {static_cast<int>(cs.size()) - 1};
     }
-    if (later) instant = first_of(g);
+    if (later) {
+      instant = first_of(g);
+      made_from = static_cast<int>(st.corners.size());
+    }
     st.height = std::max(before, height_of(g));
     highest = std::max(highest, st.height);
+    const std::size_t resolved = rewired.size();
     resolve_cluster(st, cs, g < clustered ? groups[g] : lone, rewired, moved);
-    for (int c : moved) {
-      const int n = st.corners[c].next;
-      const double at = st.span_closes_at(c);
-      if (!(std::abs(at - instant) <= st.tol().simultaneous() &&
-            at >= std::max(st.corners[c].base_z, st.corners[n].base_z) - st.tol().height()))
-        continue;
-      const int pair[] = {st.corners[c].prev_edge, st.corners[c].next_edge, st.corners[n].next_edge};
-      const auto names_pair = [&](const std::vector<int>& named) {
-        return std::any_of(named.begin(), named.end(), [&](int e) { return std::count(pair, pair + 3, e) > 0; });
-      };
-      bool read_later = false;
-      for (std::size_t j = i + 1; j < order.size() && !read_later; ++j) {
-        if (first_of(order[j]) <= at) continue;
-        if (order[j] < clustered) {
-          for (int m : groups[order[j]]) read_later = read_later || names_pair(cs[m].edges);
-        } else if (auto col = meets(st, *waiting[order[j] - clustered])) {
-          read_later = names_pair(col->edges);
-        }
-      }
-      if (!read_later) continue;
-      collapses.push_back({at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
-      waiting.push_back(&collapses.back());
-      const std::size_t w = clustered + waiting.size() - 1;
-      order.insert(std::upper_bound(order.begin() + i + 1, order.end(), w,
-                                    [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); }),
-                   w);
-    }
+    spans = moved;
+    if (rewired.size() > resolved)
+      for (int n : rewired.back().made) spans.insert(spans.end(), {st.corners[n].prev, n});
     moved.clear();
+    for (int c : spans) {
+      const int n = st.corners[c].next;
+      if (n == kNone || n == c || (c >= made_from && n >= made_from) ||
+          !looked_at.insert(static_cast<std::uint64_t>(c) << 32 | static_cast<std::uint32_t>(n)).second)
+        continue;
+      const double at = st.span_closes_at(c, std::max(st.corners[c].base_z, st.corners[n].base_z));
+      if (!(std::abs(at - instant) <= st.tol().simultaneous())) continue;
+      const int pair[] = {st.corners[c].prev_edge, st.corners[c].next_edge, st.corners[n].next_edge};
+      const std::vector<std::pair<std::size_t, int>> taken = later_groups.taking(c, n, at);
+      if (taken.empty() && !later_groups.read_above(pair, at, order)) continue;
+      const auto wait = [&](const Candidate* w) {
+        waiting.push_back(w);
+        order.insert(std::upper_bound(order.begin() + i + 1, order.end(), later_groups.size() - 1,
+                                      [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); }),
+                     later_groups.size() - 1);
+      };
+      collapses.push_back({at, 0.5 * (st.position(c, at) + st.position(n, at)), c, n, kNone});
+      wait(&collapses.back());
+      // A member of a cluster resolved before the collapse that meets one of
+      // its corners above it would take the corner from it: it waits for its
+      // own height, as a late member does, when the corner is gone. Its
+      // cluster's first collision is lower, so stays.
+      for (const auto& [h, m] : taken) {
+        groups[h].erase(std::find(groups[h].begin(), groups[h].end(), m));
+        zs[h] = mean_z(groups[h]);
+        later_groups.waits(m);
+        wait(source[m]);
+      }
+    }
   }
   settle_rewired();
   st.height = highest;

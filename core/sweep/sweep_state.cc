@@ -96,7 +96,7 @@ bool State::reflex(int c) const {
   return cross(edges[k.prev_edge].dir, edges[k.next_edge].dir) <= Tolerances::parallel_sin;
 }
 
-double State::span_closes_at(int c) const {
+double State::span_closes_at(int c, double floor) const {
   const Corner& k = corners[c];
   const int n = k.next;
   // The span runs along the edge's direction; it closes when its length along
@@ -104,7 +104,10 @@ double State::span_closes_at(int c) const {
   const glm::dvec2 d = edges[k.next_edge].dir;
   const double length = glm::dot(position(n, height) - position(c, height), d);
   const double rate = glm::dot(corners[n].velocity - k.velocity, d);
-  return rate < 0.0 ? height - length / rate : NAN;
+  const double at = rate < 0.0 ? height - length / rate : NAN;
+  if (!(at >= floor - tol_.height())) return NAN;
+  if (k.origin == corners[n].origin && at <= floor + tol_.height()) return NAN;
+  return at;
 }
 
 void State::emit_trajectory(int c, std::uint32_t v) {

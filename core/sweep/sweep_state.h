@@ -136,8 +136,10 @@ class State {
   }
   bool reflex(int c) const;
   // The height at which the span from corner c to the next closes (the two
-  // corners meet along its edge), or NaN where they do not approach.
-  double span_closes_at(int c) const;
+  // corners meet along its edge), or NaN where they do not approach, meet
+  // below `floor` (beyond rounding), or were made at one collision and meet
+  // there because of it.
+  double span_closes_at(int c, double floor) const;
 
   // Output: a corner's trajectory from its origin up to vertex v, shared by the
   // faces of its two edges. The corner is not killed.
