@@ -586,15 +586,15 @@ class IntersectionSearch {
     if (turned_boxes_.empty()) turned_boxes_.resize(nodes_.size());
     if (turned_boxes_[id]) return *turned_boxes_[id];
     const Node& n = nodes_[id];
-    corners_.clear();
     if (n.count > 0) {
+      corners_.clear();
       for (std::size_t k = n.first; k < n.first + n.count; ++k)
         corners_.insert(corners_.end(), tris_[order_[k]].p.begin(), tris_[order_[k]].p.end());
       turned_boxes_[id] = oriented_box_of(corners_, tol_);
     } else {
-      const std::uint32_t left = n.left, right = n.right;
-      const OrientedBox& l = turned(left);
-      const OrientedBox& r = turned(right);
+      // The children's boxes first: making them reuses corners_.
+      const OrientedBox& l = turned(n.left);
+      const OrientedBox& r = turned(n.right);
       corners_.clear();
       for (const OrientedBox* b : {&l, &r})
         for (int k = 0; k < 8; ++k)
