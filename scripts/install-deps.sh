@@ -7,6 +7,7 @@ packages=(
   cmake ninja-build g++ clang libclang-rt-14-dev ccache pkg-config
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libopenmesh-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinygltf-dev
+  libjemalloc-dev
   libglfw3-dev libimgui-dev libstb-dev libgl1-mesa-dev libgl1-mesa-dri mesa-utils
   xvfb xauth xdotool x11-apps netpbm
   libcgal-dev
