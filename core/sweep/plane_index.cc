@@ -154,6 +154,16 @@ double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q) {
   const double r_hi = vx_hi + vy_hi - n.k_lo + slack_r;
   // Coefficients not all finite bound nothing: such a node is visited first.
   if (std::isnan(d_lo + d_hi + r_lo + r_hi)) return -HUGE_VAL;
+  // Planes of one direction and slope (the collinear edges of a grid plan)
+  // approach the corner at one rate, which the ranges above only bound: the
+  // rate itself, worked out as meeting_heights does to the bit, tells whether
+  // any of them can meet it. A comb's reflex corners run along the line of
+  // every edge between its teeth; bounded, those nodes kept the search from
+  // ever passing them.
+  if (n.nx_lo == n.nx_hi && n.ny_lo == n.ny_hi && n.k_lo == n.k_hi) {
+    const double rate = n.nx_lo * q.v.x + n.ny_lo * q.v.y - n.k_lo;
+    if (!(rate < 0.0 || (rate > 0.0 && q.outward))) return HUGE_VAL;
+  }
   // A list worked out again skips the nodes it has queued every meeting of:
   // from inside only, each at most d_hi / -r_hi above z.
   if (q.after.edge >= 0 && !q.outward && r_hi < 0.0) {

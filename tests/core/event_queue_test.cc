@@ -307,5 +307,26 @@ TEST(EventQueue, IndexedListsWorkOutFarFewerSplits) {
                                 << " testing every edge";
 }
 
+// A comb of 1 m teeth on a 1 m bar (bench/scale_inputs.py's), counter-clockwise:
+// every reflex corner runs along the line of all the edges between the teeth.
+std::vector<glm::dvec2> comb(int teeth) {
+  std::vector<glm::dvec2> points = {{0, 0}, {2.0 * teeth + 1, 0}, {2.0 * teeth + 1, 1}};
+  for (int t = teeth - 1; t >= 0; --t) {
+    const double x = 2.0 * t + 1;
+    points.insert(points.end(), {{x + 1, 1}, {x + 1, 5}, {x, 5}, {x, 1}});
+  }
+  points.push_back({0, 1});
+  return points;
+}
+
+// Planes of one line (the edges between a comb's teeth) are never met by a
+// corner that runs along it; the index's bounds alone could not tell, so it
+// opened them all, gave up and tested every edge.
+TEST(EventQueue, IndexedListsPassTheCollinearEdgesOfAComb) {
+  const auto [indexed, every] = expect_indexed_sweep_as_every_edge(comb(100));
+  EXPECT_LT(3 * indexed, every) << indexed << " splits worked out through the index, " << every
+                                << " testing every edge";
+}
+
 }  // namespace
 }  // namespace procex::engine
