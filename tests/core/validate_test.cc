@@ -285,9 +285,10 @@ Mesh spiky_roof(int n) {
   return build_mesh(sweep(make_footprint({ring}, 45.0)));
 }
 
-// Boxes turned along the slivers part them: 8 times the corners may cost 28
-// times the pairs (measured: 20), where boxes along the axes alone cost 52.
-TEST(Validate, PairsTestedAmongSliversGrowNearlyLinearly) { expect_pairs_grow_less_than(spiky_roof, 28); }
+// Boxes turned along the slivers part them, and bundles of slivers are split
+// across: 8 times the corners may cost 14 times the pairs (measured: 10.7;
+// 20 with bundles split only along the axes, 52 without turned boxes).
+TEST(Validate, PairsTestedAmongSliversGrowNearlyLinearly) { expect_pairs_grow_less_than(spiky_roof, 14); }
 
 }  // namespace
 }  // namespace procex
