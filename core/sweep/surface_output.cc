@@ -93,6 +93,67 @@ struct ChainScratch {
 // Half-edges to cut, each with the vertices inside it in order from its start.
 using Cuts = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>;
 
+double distance_to_segment(glm::dvec2 q, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(q - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(q - (a + t * ab));
+}
+
+// A half-edge of a face (from, to) and the face's index; sorted, they find
+// the face across a half-edge.
+struct FaceOfHalfEdge {
+  std::uint32_t from, to;
+  std::size_t face;
+  bool operator<(const FaceOfHalfEdge& o) const { return from != o.from ? from < o.from : to < o.to; }
+};
+
+// Whether cutting half-edge h (of g, or its reverse) at the vertices `inside`
+// would turn g's boundary across itself at one of h's ends: a vertex within
+// twice `near` of the end lies in no sure direction from it (each lies up to
+// `near` off where its planes meet, and off g's plane), so where another
+// half-edge of g at that end leaves into the sliver the cut sweeps over, or
+// passes within `near` of that vertex, the side of it the vertex falls on,
+// so whether the cut carries g across it, is rounding's and projection's. In
+// jittered star 8,000 seed 29 a corner that a cluster 1e-6 m higher ended 2.9
+// micrometres from where it started (a split's point) left its face's loop
+// turning back there within `near`, and the cut put its end into the split's
+// other corner's trajectory: in the face across, the spike's side, 1.2
+// micrometres off its plane, inside the 0.1 rad tip in its frame, outside it
+// in validation's projection, where the face crossed itself. Farther from
+// the end the vertex's direction is sure, and a half-edge there through it
+// is the seam running on (8,000 seed 14).
+bool turns_across_at_end(const State& st, const FaceGroup& g, HalfEdge h,
+                         const std::vector<std::pair<double, std::uint32_t>>& inside) {
+  const FaceFrame fr = frame_of(g);
+  const double near = st.tol().position();
+  auto pos = [&](std::uint32_t v) { return fr.to2d(st.vertices[v]); };
+  auto cut_in = [&](std::uint32_t v) {
+    return v == h.from || v == h.to ||
+           std::any_of(inside.begin(), inside.end(), [&](const auto& in) { return in.second == v; });
+  };
+  return std::any_of(inside.begin(), inside.end(), [&](const auto& in) {
+    const glm::dvec2 c = pos(in.second);
+    // Whether the half-edge from p (an end of h; u the other) to q turns g
+    // across itself.
+    auto crosses = [&](glm::dvec2 p, glm::dvec2 u, glm::dvec2 q) {
+      if (!(glm::length(c - p) <= 2.0 * near)) return false;
+      const double turn = cross(u - p, c - p);
+      const bool into = cross(u - p, q - p) * turn > 0.0 && cross(q - p, c - p) * turn > 0.0;
+      return into || distance_to_segment(c, p, q) <= near;
+    };
+    return std::any_of(g.half_edges.begin(), g.half_edges.end(), [&](const HalfEdge& e) {
+      for (const auto& [v, w] : {std::pair{e.from, e.to}, std::pair{e.to, e.from}}) {
+        if (cut_in(w)) continue;
+        if ((v == h.from && crosses(pos(h.from), pos(h.to), pos(w))) ||
+            (v == h.to && crosses(pos(h.to), pos(h.from), pos(w))))
+          return true;
+      }
+      return false;
+    });
+  });
+}
+
 // A face whose boundary runs along itself passes a vertex of its own in the
 // middle of one of its half-edges: the face of a plane made and eaten at one
 // height (an edge between straight-on neighbours that the rule for straight
@@ -103,7 +164,8 @@ using Cuts = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::
 // a point, as near-touching parts of a plan do), and so is its reverse in the
 // face across, so both sides meet vertex to vertex; the parts that run back
 // along each other in one face are then a seam, which chaining drops.
-void add_own_vertex_cuts(const State& st, const FaceGroup& f, ChainScratch& x, Cuts& cuts) {
+void add_own_vertex_cuts(const State& st, const FaceGroup& f, const std::vector<FaceOfHalfEdge>& faces_by_half_edge,
+                         ChainScratch& x, Cuts& cuts) {
   x.given.clear();
   for (const HalfEdge& h : f.half_edges)
     if (h.from != h.to) x.given.push_back(h);
@@ -146,13 +208,18 @@ void add_own_vertex_cuts(const State& st, const FaceGroup& f, ChainScratch& x, C
     if (x.inside.empty()) continue;
     // Cut, the half-edge runs through those vertices, each up to `near` off
     // its line, so it moves over the sliver between. Where the face only
-    // touches the line at a vertex inside that sliver, the cut would carry
-    // the edge across it and the face would cross itself: the sliver is then
-    // a spike of the face thinner than `near`, not a seam, and the half-edge
-    // stays whole (jittered star 4,000 seed 38: a valley corner at 64 m per m
-    // of rise passes 0.7 micrometres from where an edge collapsed, then meets
-    // a corner at 212 m/m at a sharp angle; the spike's other vertex lies 1.3
-    // micrometres off its trajectory).
+    // touches the line at a vertex inside that sliver, or within `near` of
+    // the sides the cut makes (on either side of them as rounding goes: a
+    // vertex lies up to that far off the face's plane, and each projection
+    // of the face places it differently), the cut would carry the edge
+    // across it and the face would cross itself: the sliver is then a spike
+    // of the face thinner than `near`, not a seam, and the half-edge stays
+    // whole (jittered star 4,000 seed 38: a valley corner at 64 m per m of
+    // rise passes 0.7 micrometres from where an edge collapsed, then meets a
+    // corner at 212 m/m at a sharp angle; the spike's other vertex lies 1.3
+    // micrometres off its trajectory. 8,000 seed 38: a face's tip, 1.6
+    // micrometres wide, ran 5e-7 m beside the cut's new side, outside it in
+    // the face's frame but across it in validation's projection).
     auto cut_in = [&](std::uint32_t v) {
       return v == h.from || v == h.to ||
              std::any_of(x.inside.begin(), x.inside.end(), [&](const auto& in) { return in.second == v; });
@@ -163,10 +230,18 @@ void add_own_vertex_cuts(const State& st, const FaceGroup& f, ChainScratch& x, C
         if (cut_in(corner.second)) return false;
         const glm::dvec2 q = pos(corner.second);
         const double sa = cross(b - a, q - a), sb = cross(c - b, q - b), sc = cross(a - c, q - c);
-        return (sa > 0.0 && sb > 0.0 && sc > 0.0) || (sa < 0.0 && sb < 0.0 && sc < 0.0);
+        return (sa > 0.0 && sb > 0.0 && sc > 0.0) || (sa < 0.0 && sb < 0.0 && sc < 0.0) ||
+               distance_to_segment(q, a, c) <= near || distance_to_segment(q, c, b) <= near;
       });
     };
     if (std::any_of(x.inside.begin(), x.inside.end(), [&](const auto& in) { return swept_over(pos(in.second)); }))
+      continue;
+    // So does the half-edge's reverse in the face across.
+    const auto across = std::lower_bound(faces_by_half_edge.begin(), faces_by_half_edge.end(),
+                                         FaceOfHalfEdge{h.to, h.from, 0});
+    if (turns_across_at_end(st, f, h, x.inside) ||
+        (across != faces_by_half_edge.end() && across->from == h.to && across->to == h.from &&
+         turns_across_at_end(st, st.faces[across->face], h, x.inside)))
       continue;
     std::sort(x.inside.begin(), x.inside.end());
     std::vector<std::uint32_t>& cut = cuts[{h.from, h.to}];
@@ -376,8 +451,13 @@ Surface build_surface(const State& st) {
   ChainScratch x;
   std::vector<std::size_t> runs_back;
   Surface s = assemble(st, {}, x, runs_back);
+  if (runs_back.empty()) return s;
+  std::vector<FaceOfHalfEdge> faces_by_half_edge;
+  for (std::size_t f = 0; f < st.faces.size(); ++f)
+    for (const HalfEdge& h : st.faces[f].half_edges) faces_by_half_edge.push_back({h.from, h.to, f});
+  std::sort(faces_by_half_edge.begin(), faces_by_half_edge.end());
   Cuts cuts;
-  for (std::size_t f : runs_back) add_own_vertex_cuts(st, st.faces[f], x, cuts);
+  for (std::size_t f : runs_back) add_own_vertex_cuts(st, st.faces[f], faces_by_half_edge, x, cuts);
   if (cuts.empty()) return s;
   runs_back.clear();
   return assemble(st, cuts, x, runs_back);
