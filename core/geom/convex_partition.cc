@@ -63,6 +63,14 @@ int turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
 
 bool convex_turn(int t) { return t == 0 || t == 1; }
 
+bool turns_left_throughout(const std::vector<glm::dvec2>& loop) {
+  const std::size_t n = loop.size();
+  if (n < 3) return false;
+  for (std::size_t k = 0; k < n; ++k)
+    if (turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]) != 1) return false;
+  return true;
+}
+
 class Partitioner {
  public:
   explicit Partitioner(const std::vector<std::vector<glm::dvec2>>& loops) {
@@ -421,6 +429,17 @@ class Partitioner {
 }  // namespace
 
 std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops) {
+  // Most faces (a wall's tiles, a hip roof's) turn left at every corner: one
+  // piece, listed as clipping the ear at vertex 0 first and merging lists it
+  // (a triangle as it is, a larger loop from its last vertex), so that every
+  // triangulation made from the pieces stays what it was.
+  if (loops.size() == 1 && turns_left_throughout(loops[0])) {
+    const auto n = static_cast<Index>(loops[0].size());
+    std::vector<Index> piece(n);
+    std::iota(piece.begin(), piece.end(), Index{0});
+    if (n > 3) std::rotate(piece.begin(), piece.end() - 1, piece.end());
+    return {piece};
+  }
   return Partitioner(loops).run();
 }
 

@@ -64,6 +64,24 @@ TEST(ConvexPartition, ConvexPolygonIsOnePiece) {
   expect_partition({{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}}, 1);
 }
 
+// A loop that turns left at every corner is one piece, in the order clipping
+// the ear at vertex 0 first and merging gave it before such loops were passed
+// whole (the same for 200,000 random convex loops turned, scaled and moved):
+// a triangle as given, a larger loop from its last vertex. Faces triangulated
+// from the pieces (glTF, validation) stay the same.
+TEST(ConvexPartition, LoopTurningLeftThroughoutIsOnePieceInClippingOrder) {
+  using Pieces = std::vector<std::vector<std::uint32_t>>;
+  EXPECT_EQ(convex_partition({{{0, 0}, {1, 0}, {0, 1}}}), (Pieces{{0, 1, 2}}));
+  EXPECT_EQ(convex_partition({{{0, 0}, {4, 0}, {4, 3}, {0, 3}}}), (Pieces{{3, 0, 1, 2}}));
+  std::vector<glm::dvec2> heptagon;
+  for (int k = 0; k < 7; ++k) {
+    const double a = 0.3 + 2.0 * std::numbers::pi * k / 7;
+    heptagon.push_back(glm::dvec2(512345.6, 5012345.7) + 20.0 * glm::dvec2(std::cos(a), std::sin(a)));
+  }
+  EXPECT_EQ(convex_partition({heptagon}), (Pieces{{6, 0, 1, 2, 3, 4, 5}}));
+  expect_partition({heptagon}, 1);
+}
+
 // An L: two pieces.
 //   +--+
 //   |  |
