@@ -380,9 +380,9 @@ class IntersectionSearch {
   // costs (split_loose) less than this share of the split along an axis: the
   // cost only estimates the pairs, and a star's roof, whose slivers run every
   // way, lost more pairs to close calls than it gained (measured: random
-  // spiky roofs of 16,384 and 65,536 corners 20M -> 6.5M and 180M -> 33M
-  // pairs; stars of 2,048-8,192 corners up 3-17 %, combs of 8,192 up
-  // 28 %, the same at 0.9 for the random ones and up to 80 % for stars).
+  // spiky roofs of 16,384 and 65,536 corners 20M -> 6.3M and 180M -> 33M
+  // pairs; stars of 4,096 and 8,192 corners up 10 % and 3 %, combs of 8,192
+  // up 28 %; with no margin, stars up 80 %).
   static constexpr double kTurnWorth = 0.8;
 
   // The area of the triangles below a node, and of their boxes.
@@ -525,11 +525,10 @@ class IntersectionSearch {
 
   // Splits a range of long thin triangles running diagonally (loose: their
   // boxes along the axes hold more than kLoose times their area) at the
-  // median of their centres along the plan direction whose halves, each boxed
-  // along that direction, have the least surface between them (the surface
-  // area heuristic: a box is met by others about in proportion to its
-  // surface): the longest axis, or along or across the way their long edges
-  // run. A bundle of spikes side by side is then cut across, not along: cut
+  // median of their centres along the plan direction whose halves have the
+  // least surface between them (the surface area heuristic: a box is met by
+  // others about in proportion to its surface): the longest axis, or along or
+  // across the way their long edges run. A bundle of spikes side by side is then cut across, not along: cut
   // along, each half still spans the bundle, and every pair of its triangles
   // is compared.
   void split_loose(std::size_t first, std::size_t count) {
@@ -550,24 +549,23 @@ class IntersectionSearch {
     const double angle = 0.5 * std::atan2(doubled.y, doubled.x);
     const glm::dvec2 along{std::cos(angle), std::sin(angle)}, across{-along.y, along.x};
     split_at_median(order_, first, count, [&](std::uint32_t t) { return (boxes_[t].lo + boxes_[t].hi) * 0.5; });
-    // A split's cost: each half's surface, boxed as the search will part it
-    // from others (along the axes; a loose half also by its turned box,
-    // whichever is less), times its triangles.
+    // A split's cost: each half's surface boxed along the axes or along the
+    // long edges, whichever is less (its box along the axes, or its turned
+    // one, parts it from others), times its triangles.
     auto cost = [&] {
       double total = 0.0;
       for (const auto& [from, to] : {std::pair{begin, mid}, std::pair{mid, end}}) {
-        glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-lo};
-        Fit fit;
-        corners_.clear();
+        glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-lo}, rlo{lo}, rhi{hi};
         for (auto it = from; it != to; ++it) {
           lo = glm::min(lo, boxes_[*it].lo);
           hi = glm::max(hi, boxes_[*it].hi);
-          fit = fit + fit_[*it];
-          corners_.insert(corners_.end(), tris_[*it].p.begin(), tris_[*it].p.end());
+          for (const glm::dvec3& p : tris_[*it].p) {
+            const glm::dvec3 r{along.x * p.x + along.y * p.y, along.x * p.y - along.y * p.x, p.z};
+            rlo = glm::min(rlo, r);
+            rhi = glm::max(rhi, r);
+          }
         }
-        double least = surface(hi - lo);
-        if (fit.room > kLoose * fit.area) least = std::min(least, surface(2.0 * oriented_box_of(corners_, tol_).half));
-        total += least * static_cast<double>(to - from);
+        total += std::min(surface(hi - lo), surface(rhi - rlo + 2.0 * tol_)) * static_cast<double>(to - from);
       }
       return total;
     };

@@ -286,7 +286,7 @@ Mesh spiky_roof(int n) {
 }
 
 // Boxes turned along the slivers part them, and bundles of slivers are split
-// across: 8 times the corners may cost 14 times the pairs (measured: 10.7;
+// across: 8 times the corners may cost 14 times the pairs (measured: 10.8;
 // 20 with bundles split only along the axes, 52 without turned boxes).
 TEST(Validate, PairsTestedAmongSliversGrowNearlyLinearly) { expect_pairs_grow_less_than(spiky_roof, 14); }
 
