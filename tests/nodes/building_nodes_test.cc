@@ -186,6 +186,25 @@ TEST(Switch, ChoosesByValue) {
   EXPECT_EQ(run("hut"), 4.0);     // four cases, four case inputs
 }
 
+// Items are separated by commas and trimmed of spaces; an empty item (a
+// trailing comma, a blank case) chooses nothing, not even the empty value.
+TEST(Switch, ListsAreCommaSeparatedAndTrimmed) {
+  auto run = [](const std::string& value) {
+    const auto r = run_node("Switch",
+                            {{"value", Value::make(value)},
+                             {"cases", Value::make(std::vector<std::string>{"  a b , c,", " ", ",d"})}},
+                            {{"default", Value::make(1.0)}, {"case_1", Value::make(2.0)}, {"case_2", Value::make(3.0)},
+                             {"case_3", Value::make(4.0)}});
+    return r.outputs.at(0).get<double>();
+  };
+  EXPECT_EQ(run("a b"), 2.0);
+  EXPECT_EQ(run("c"), 2.0);
+  EXPECT_EQ(run("d"), 4.0);
+  EXPECT_EQ(run(""), 1.0);
+  EXPECT_EQ(run(" "), 1.0);
+  EXPECT_EQ(run("a"), 1.0);
+}
+
 // Version 1 had six fixed Merge inputs and five fixed Switch cases: files of
 // that time load with those counts, every link in place.
 TEST(MergeAndSwitch, VersionOneFilesUpgrade) {
