@@ -63,11 +63,13 @@ int turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
 
 bool convex_turn(int t) { return t == 0 || t == 1; }
 
-bool turns_left_throughout(const std::vector<glm::dvec2>& loop) {
+// Whether a loop of three or more vertices makes an allowed turn at each.
+template <class Allowed>
+bool every_turn(const std::vector<glm::dvec2>& loop, Allowed allowed) {
   const std::size_t n = loop.size();
   if (n < 3) return false;
   for (std::size_t k = 0; k < n; ++k)
-    if (turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]) != 1) return false;
+    if (!allowed(turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]))) return false;
   return true;
 }
 
@@ -433,7 +435,7 @@ std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::
   // piece, listed as clipping the ear at vertex 0 first and merging lists it
   // (a triangle as it is, a larger loop from its last vertex), so that every
   // triangulation made from the pieces stays what it was.
-  if (loops.size() == 1 && turns_left_throughout(loops[0])) {
+  if (loops.size() == 1 && every_turn(loops[0], [](int t) { return t == 1; })) {
     const auto n = static_cast<Index>(loops[0].size());
     std::vector<Index> piece(n);
     std::iota(piece.begin(), piece.end(), Index{0});
@@ -443,12 +445,6 @@ std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::
   return Partitioner(loops).run();
 }
 
-bool is_convex(const std::vector<glm::dvec2>& loop) {
-  const std::size_t n = loop.size();
-  if (n < 3) return false;
-  for (std::size_t k = 0; k < n; ++k)
-    if (!convex_turn(turn(loop[(k + n - 1) % n], loop[k], loop[(k + 1) % n]))) return false;
-  return true;
-}
+bool is_convex(const std::vector<glm::dvec2>& loop) { return every_turn(loop, convex_turn); }
 
 }  // namespace procex
