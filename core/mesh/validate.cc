@@ -528,9 +528,9 @@ class IntersectionSearch {
   // median of their centres along the plan direction whose halves have the
   // least surface between them (the surface area heuristic: a box is met by
   // others about in proportion to its surface): the longest axis, or along or
-  // across the way their long edges run. A bundle of spikes side by side is then cut across, not along: cut
-  // along, each half still spans the bundle, and every pair of its triangles
-  // is compared.
+  // across the way their long edges run. A bundle of spikes side by side is
+  // then cut across, not along: cut along, each half still spans the bundle,
+  // and every pair of its triangles is compared.
   void split_loose(std::size_t first, std::size_t count) {
     const auto begin = order_.begin() + static_cast<std::ptrdiff_t>(first);
     const auto mid = begin + static_cast<std::ptrdiff_t>(count / 2), end = begin + static_cast<std::ptrdiff_t>(count);
