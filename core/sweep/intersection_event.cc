@@ -78,11 +78,25 @@ std::optional<Collision> meets(State& st, const Candidate& c) {
   return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
 }
 
+// cluster's lists, kept from one batch to the next (BatchScratch).
+struct ClusterLists {
+  struct Point {
+    long long x, y;  // its cell
+    int i;           // its collision
+    bool operator<(const Point& o) const { return std::tie(x, y, i) < std::tie(o.x, o.y, o.i); }
+  };
+  std::vector<int> parent;
+  std::vector<std::pair<int, int>> by_corner;  // (corner, collision), sorted
+  std::vector<Point> grid;                     // sorted: each cell's points are a run
+  std::vector<int> group_of;                   // by root collision
+};
+
 // Clusters collisions at one height closer than delta3 in the plan, in
 // first-member order. Collisions that share a corner there are one event
 // (a corner meeting many planes at once, the corners of a regular polygon
-// meeting at its centre): they are joined through their corners first, and
-// the plan grid compares one point per such group.
+// meeting at its centre): they are joined through their corners first (each
+// to the first collision of the corner), and the plan grid compares one point
+// per such group.
 //
 // The grid's cells are two thirds of delta3 wide, so any two points in one
 // cell are within delta3 and a cell joins as a whole, without a comparison;
@@ -91,73 +105,85 @@ std::optional<Collision> meets(State& st, const Candidate& c) {
 // corners of a jittered star racing through its centre within one delta2,
 // each meeting the planes at its own height, are joined in as many steps,
 // not compared pair by pair (hundreds of thousands of points in a few cells).
-std::vector<std::vector<int>> cluster(const State& st, const std::vector<Collision>& cs) {
+// The groups are the same whatever order the grid's cells are joined in.
+// `groups` keeps the lists it had (their storage, not their members).
+void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& lists,
+             std::vector<std::vector<int>>& groups) {
+  // Most batches hold a single collision: its own cluster, nothing to join.
+  if (cs.size() <= 1) {
+    groups.resize(cs.size());
+    if (!cs.empty()) groups[0].assign(1, 0);
+    return;
+  }
   const double radius = st.tol().position();
-  std::vector<int> parent(cs.size());
+  std::vector<int>& parent = lists.parent;
+  parent.resize(cs.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  std::unordered_map<int, int> by_corner;
+  std::vector<std::pair<int, int>>& by_corner = lists.by_corner;
+  by_corner.clear();
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i)
+    for (int c : cs[i].corners) by_corner.push_back({c, i});
+  std::sort(by_corner.begin(), by_corner.end());
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
     for (int c : cs[i].corners) {
-      const auto [it, fresh] = by_corner.try_emplace(c, i);
-      if (!fresh && glm::length(cs[i].p - cs[it->second].p) <= radius) parent[find(i)] = find(it->second);
+      const int f = std::lower_bound(by_corner.begin(), by_corner.end(), std::pair<int, int>{c, 0})->second;
+      if (f != i && glm::length(cs[i].p - cs[f].p) <= radius) parent[find(i)] = find(f);
     }
-  struct Cell {
-    long long x, y;
-    bool operator==(const Cell&) const = default;
-  };
-  struct CellHash {
-    // Unsigned arithmetic: cells far from the origin wrap instead of overflowing.
-    std::size_t operator()(const Cell& c) const {
-      return static_cast<std::size_t>(static_cast<std::uint64_t>(c.x) * 73856093ULL ^
-                                      static_cast<std::uint64_t>(c.y) * 19349663ULL);
-    }
-  };
   // A cell's diagonal (0.94 delta3) stays within delta3 after rounding, and
   // points three cells apart are more than delta3 apart.
   const double side = radius / 1.5;
-  std::unordered_map<Cell, std::vector<int>, CellHash> grid;
-  std::vector<Cell> cells;  // in first-member order
+  std::vector<ClusterLists::Point>& grid = lists.grid;
+  grid.clear();
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
     if (find(i) != i) continue;  // one point per group joined through its corners
-    const Cell cell{static_cast<long long>(std::floor(cs[i].p.x / side)),
-                    static_cast<long long>(std::floor(cs[i].p.y / side))};
-    std::vector<int>& members = grid[cell];
-    if (members.empty()) cells.push_back(cell);
-    members.push_back(i);
+    grid.push_back({static_cast<long long>(std::floor(cs[i].p.x / side)),
+                    static_cast<long long>(std::floor(cs[i].p.y / side)), i});
   }
-  for (const Cell& cell : cells) {
-    const std::vector<int>& members = grid.at(cell);
-    for (int m : members) parent[find(m)] = find(members.front());
+  std::sort(grid.begin(), grid.end());
+  const auto cell_end = [&](std::size_t from) {
+    std::size_t to = from + 1;
+    while (to < grid.size() && grid[to].x == grid[from].x && grid[to].y == grid[from].y) ++to;
+    return to;
+  };
+  for (std::size_t from = 0, to; from < grid.size(); from = to) {
+    to = cell_end(from);
+    for (std::size_t k = from + 1; k < to; ++k) parent[find(grid[k].i)] = find(grid[from].i);
   }
-  for (const Cell& cell : cells) {
-    const std::vector<int>& here = grid.at(cell);
+  for (std::size_t from = 0, to; from < grid.size(); from = to) {
+    to = cell_end(from);
     for (long long dx = -2; dx <= 2; ++dx)
       for (long long dy = -2; dy <= 2; ++dy) {
         if (dx < 0 || (dx == 0 && dy <= 0)) continue;  // each pair of cells once
-        const auto it = grid.find({cell.x + dx, cell.y + dy});
-        if (it == grid.end()) continue;
-        const std::vector<int>& there = it->second;
-        bool joined = find(here.front()) == find(there.front());
-        for (std::size_t a = 0; a < here.size() && !joined; ++a)
-          for (std::size_t b = 0; b < there.size() && !joined; ++b)
-            if (glm::length(cs[here[a]].p - cs[there[b]].p) <= radius) {
-              parent[find(here[a])] = find(there[b]);
+        const long long x = grid[from].x + dx, y = grid[from].y + dy;
+        const std::size_t there = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
+        if (there == grid.size() || grid[there].x != x || grid[there].y != y) continue;
+        const std::size_t there_end = cell_end(there);
+        bool joined = find(grid[from].i) == find(grid[there].i);
+        for (std::size_t a = from; a < to && !joined; ++a)
+          for (std::size_t b = there; b < there_end && !joined; ++b)
+            if (glm::length(cs[grid[a].i].p - cs[grid[b].i].p) <= radius) {
+              parent[find(grid[a].i)] = find(grid[b].i);
               joined = true;
             }
       }
   }
-  std::vector<std::vector<int>> groups;
-  std::unordered_map<int, int> group_of;
+  std::vector<int>& group_of = lists.group_of;
+  group_of.assign(cs.size(), kNone);
+  int count = 0;
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
-    auto [it, fresh] = group_of.try_emplace(find(i), static_cast<int>(groups.size()));
-    if (fresh) groups.emplace_back();
-    groups[it->second].push_back(i);
+    int& g = group_of[find(i)];
+    if (g == kNone) {
+      if (groups.size() == static_cast<std::size_t>(count)) groups.emplace_back();
+      groups[count].clear();
+      g = count++;
+    }
+    groups[g].push_back(i);
   }
-  return groups;
+  groups.resize(count);
 }
 
 // The point nearest (least squares) to the planes of a cluster's collisions
@@ -559,46 +585,153 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   out.push_back({std::move(made), std::move(edges), z});
 }
 
+// A cluster's member by one of its corners.
+struct Member {
+  int corner;
+  std::size_t group;
+  int member;
+};
+
+// The spans (corner, next) whose collapse a batch has looked at: each first
+// corner's pairs are a list in `looks_`, headed by `last_` where the corner's
+// stamp is the batch's. Most batches look at one or two, a jittered star's
+// centre at tens of thousands; nothing is cleared or hashed per batch.
+class LookedAt {
+ public:
+  void next_batch() {
+    looks_.clear();
+    if (++batch_ == 0) {  // the stamps wrapped round: none may match
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      batch_ = 1;
+    }
+  }
+  // Whether the pair is new to this batch; from now on it is not.
+  bool insert(int c, int n) {
+    const auto k = static_cast<std::size_t>(c);
+    if (stamp_.size() <= k) {
+      stamp_.resize(k + 1, 0);
+      last_.resize(k + 1);
+    }
+    if (stamp_[k] != batch_) {
+      stamp_[k] = batch_;
+      last_[k] = kNone;
+    }
+    for (int l = last_[k]; l != kNone; l = looks_[l].before)
+      if (looks_[l].next == n) return false;
+    looks_.push_back({n, last_[k]});
+    last_[k] = static_cast<int>(looks_.size()) - 1;
+    return true;
+  }
+
+ private:
+  struct Look {
+    int next;
+    int before;  // the same corner's previous look, or kNone
+  };
+  std::uint32_t batch_ = 0;
+  std::vector<std::uint32_t> stamp_;  // by corner
+  std::vector<int> last_;             // by corner
+  std::vector<Look> looks_;
+};
+
+}  // namespace
+
+// resolve_intersections' lists, kept by the State from one batch to the next,
+// cleared and never freed: a city's sweeps pop 300,000 batches, most of a
+// single collision, and each batch allocating its own lists (hash maps and
+// sets among them) took a tenth of the city's instructions (issue 12).
+struct BatchScratch {
+  void next_batch() {
+    source.clear();
+    waiting.clear();
+    first.clear();
+    zs.clear();
+    order.clear();
+    rewired.clear();
+    collapses.clear();
+    moved.clear();
+    looked_at.next_batch();
+    resolved.clear();
+  }
+
+  std::vector<const Candidate*> source, waiting;
+  ClusterLists clustering;
+  std::vector<std::vector<int>> groups;
+  std::vector<double> first, zs;
+  std::vector<std::size_t> order;
+  std::vector<Rewired> rewired;
+  std::deque<Candidate> collapses;  // addresses stay put as it grows
+  std::vector<int> moved, spans;
+  LookedAt looked_at;
+  // LaterGroups'
+  std::vector<char> resolved;          // by group
+  std::vector<std::uint32_t> start;    // edge e's groups are named[start[e]] .. named[start[e + 1] - 1]
+  std::vector<std::uint32_t> named;
+  std::vector<std::uint32_t> slot;     // list's next place by edge
+  std::vector<std::size_t> last;       // list's last group by edge
+  std::vector<int> edges;
+  std::vector<Member> members;         // sorted by corner, group, member
+  std::vector<char> waits;             // by member, once listed
+  std::vector<std::pair<std::size_t, int>> taken;
+};
+
+void BatchScratchDeleter::operator()(BatchScratch* s) const { delete s; }
+
+namespace {
+
 // The groups of a batch (its clusters, then its waiting candidates) by the
 // edges they name, to tell whether one not yet resolved and first met above a
 // height names one of a pair's edges, so reads the spans a collapse of the
-// pair there changes; and the clusters' members by their corners, to find
-// those that would take a corner of the pair from its collapse. Each listed
-// once per batch, on the first question: most batches make no collapse within
-// their instant, and the batch at a jittered star's centre holds a million
-// candidates, too many to look at again for every collapse. The few
-// collapses the batch adds after that are looked at in turn.
+// pair there changes; and the clusters' members by their corners, to find a
+// member met later than another cluster, resolved after its own, meets the
+// same corner, and those that would take a corner of the pair from its
+// collapse. Each listed once per batch, on the first question: most batches
+// make no collapse within their instant, and the batch at a jittered star's
+// centre holds a million candidates, too many to look at again for every
+// collapse. The few collapses the batch adds after that are looked at in turn.
 class LaterGroups {
  public:
-  LaterGroups(State& st, const std::vector<Collision>& cs, const std::vector<std::vector<int>>& groups,
-              const std::vector<double>& first, const std::vector<const Candidate*>& waiting)
-      : st_(st), cs_(cs), groups_(groups), first_(first), waiting_(waiting) {}
+  LaterGroups(State& st, BatchScratch& lists, const std::vector<Collision>& cs,
+              const std::vector<std::vector<int>>& groups, const std::vector<double>& first,
+              const std::vector<const Candidate*>& waiting)
+      : st_(st), lists_(lists), cs_(cs), groups_(groups), first_(first), waiting_(waiting) {}
 
   std::size_t size() const { return groups_.size() + waiting_.size(); }
   // A group's lowest collision.
   double first_of(std::size_t g) const { return g < groups_.size() ? first_[g] : waiting_[g - groups_.size()]->z; }
 
   void resolving(std::size_t g) {
-    if (resolved_.size() <= g) resolved_.resize(size(), 0);
-    resolved_[g] = 1;
+    if (lists_.resolved.size() <= g) lists_.resolved.resize(size(), 0);
+    lists_.resolved[g] = 1;
+  }
+
+  // Whether member m of cluster g meets one of its corners above where a
+  // cluster resolved after g meets it.
+  bool late(std::size_t g, int m) {
+    list_members();
+    for (int c : cs_[m].corners)
+      for (auto [it, to] = corner_range(c); it != to; ++it)
+        if (it->group != g && cs_[it->member].z < cs_[m].z && first_[it->group] >= first_[g]) return true;
+    return false;
   }
 
   // `order` is the order the groups are resolved in: by first collision, but
   // for a collapse added below the group resolved just before it.
   bool read_above(const int (&pair)[3], double at, const std::vector<std::size_t>& order) {
     if (listed_ == 0) list(order);
+    const std::vector<std::uint32_t>& start = lists_.start;
     for (int e : pair) {
-      if (static_cast<std::size_t>(e) + 1 >= start_.size()) continue;
+      if (static_cast<std::size_t>(e) + 1 >= start.size()) continue;
       // Each edge's groups run from the last resolved back: past one met at or
       // below `at`, or resolved, all are (a collapse added out of order came
       // after every group before it was resolved).
-      for (std::uint32_t k = start_[e]; k < start_[e + 1]; ++k) {
-        const std::size_t g = named_[k];
+      for (std::uint32_t k = start[e]; k < start[e + 1]; ++k) {
+        const std::size_t g = lists_.named[k];
         if (resolved(g) || first_of(g) <= at) break;
         if (still_meets(g)) return true;
       }
     }
-    std::vector<int> edges;
+    std::vector<int>& edges = lists_.edges;
     for (std::size_t g = listed_; g < size(); ++g) {
       if (resolved(g) || first_of(g) <= at || !still_meets(g)) continue;
       edges.clear();
@@ -611,29 +744,21 @@ class LaterGroups {
 
   // The members of clusters not yet resolved but first met at or below `at`,
   // so resolved before a collapse there, that meet corner a or b above it.
-  std::vector<std::pair<std::size_t, int>> taking(int a, int b, double at) {
-    if (waits_.empty()) list_members();
-    std::vector<std::pair<std::size_t, int>> out;
-    for (int c : {a, b}) {
-      const auto [from, to] = std::equal_range(members_.begin(), members_.end(), Member{c, 0, 0},
-                                               [](const Member& x, const Member& y) { return x.corner < y.corner; });
-      for (auto it = from; it != to; ++it)
-        if (!resolved(it->group) && !waits_[it->member] && first_[it->group] <= at && cs_[it->member].z > at)
+  const std::vector<std::pair<std::size_t, int>>& taking(int a, int b, double at) {
+    list_members();
+    std::vector<std::pair<std::size_t, int>>& out = lists_.taken;
+    out.clear();
+    for (int c : {a, b})
+      for (auto [it, to] = corner_range(c); it != to; ++it)
+        if (!resolved(it->group) && !lists_.waits[it->member] && first_[it->group] <= at && cs_[it->member].z > at)
           out.push_back({it->group, it->member});
-    }
     return out;
   }
   // A member taken out of its cluster to wait for its own height.
-  void waits(int m) { waits_[m] = 1; }
+  void waits(int m) { lists_.waits[m] = 1; }
 
  private:
-  struct Member {
-    int corner;
-    std::size_t group;
-    int member;
-  };
-
-  bool resolved(std::size_t g) const { return g < resolved_.size() && resolved_[g]; }
+  bool resolved(std::size_t g) const { return g < lists_.resolved.size() && lists_.resolved[g]; }
   // A waiting candidate names its edges only while it still meets.
   bool still_meets(std::size_t g) const {
     return g < groups_.size() || meets(st_, *waiting_[g - groups_.size()]).has_value();
@@ -653,9 +778,11 @@ class LaterGroups {
 
   // Each edge's groups, last resolved first, each once (counted, then placed).
   void list(const std::vector<std::size_t>& order) {
-    start_.assign(st_.edges.size() + 1, 0);
-    std::vector<std::size_t> last(st_.edges.size());
-    std::vector<int> edges;
+    std::vector<std::uint32_t>& start = lists_.start;
+    std::vector<std::size_t>& last = lists_.last;
+    std::vector<int>& edges = lists_.edges;
+    start.assign(st_.edges.size() + 1, 0);
+    last.resize(st_.edges.size());
     const auto each = [&](const auto& f) {
       std::fill(last.begin(), last.end(), size());
       for (auto g = order.rbegin(); g != order.rend(); ++g) {
@@ -665,34 +792,42 @@ class LaterGroups {
           if (last[e] != *g) f(e, last[e] = *g);
       }
     };
-    each([&](int e, std::size_t) { ++start_[e + 1]; });
-    std::partial_sum(start_.begin(), start_.end(), start_.begin());
-    named_.resize(start_.back());
-    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-    each([&](int e, std::size_t g) { named_[next[e]++] = static_cast<std::uint32_t>(g); });
+    each([&](int e, std::size_t) { ++start[e + 1]; });
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    lists_.named.resize(start.back());
+    lists_.slot.assign(start.begin(), start.end() - 1);
+    each([&](int e, std::size_t g) { lists_.named[lists_.slot[e]++] = static_cast<std::uint32_t>(g); });
     listed_ = size();
   }
 
-  // The clusters' members by their corners.
+  // The clusters' members by their corners, once, before any leaves its
+  // cluster (a member that leaves waits, and is marked so).
   void list_members() {
+    if (members_listed_) return;
+    members_listed_ = true;
+    std::vector<Member>& members = lists_.members;
+    members.clear();
     for (std::size_t g = 0; g < groups_.size(); ++g)
       for (int m : groups_[g])
-        for (int c : cs_[m].corners) members_.push_back({c, g, m});
-    std::sort(members_.begin(), members_.end(), [](const Member& x, const Member& y) { return x.corner < y.corner; });
-    waits_.assign(cs_.size(), 0);
+        for (int c : cs_[m].corners) members.push_back({c, g, m});
+    std::sort(members.begin(), members.end(), [](const Member& x, const Member& y) {
+      return std::tie(x.corner, x.group, x.member) < std::tie(y.corner, y.group, y.member);
+    });
+    lists_.waits.assign(cs_.size(), 0);
+  }
+  std::pair<std::vector<Member>::const_iterator, std::vector<Member>::const_iterator> corner_range(int c) const {
+    return std::equal_range(lists_.members.cbegin(), lists_.members.cend(), Member{c, 0, 0},
+                            [](const Member& x, const Member& y) { return x.corner < y.corner; });
   }
 
   State& st_;
+  BatchScratch& lists_;
   const std::vector<Collision>& cs_;
   const std::vector<std::vector<int>>& groups_;
   const std::vector<double>& first_;
   const std::vector<const Candidate*>& waiting_;
-  std::vector<std::uint32_t> start_;  // edge e's groups are named_[start_[e]] .. named_[start_[e + 1] - 1]
-  std::vector<std::uint32_t> named_;
   std::size_t listed_ = 0;
-  std::vector<char> resolved_;
-  std::vector<Member> members_;
-  std::vector<char> waits_;  // by member, once listed
+  bool members_listed_ = false;
 };
 
 }  // namespace
@@ -703,9 +838,12 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // of this batch that rewires the edge's span (paper 4.3: each chain
   // recovers its current corners); it waits for its own height and is
   // checked against the loops as they are then.
+  if (!st.batch_scratch) st.batch_scratch.reset(new BatchScratch);
+  BatchScratch& lists = *st.batch_scratch;
+  lists.next_batch();
   std::vector<Collision> cs;
-  std::vector<const Candidate*> source;  // the candidate of each collision
-  std::vector<const Candidate*> waiting;
+  std::vector<const Candidate*>& source = lists.source;  // the candidate of each collision
+  std::vector<const Candidate*>& waiting = lists.waiting;
   for (const Candidate& c : batch) {
     auto col = meets(st, c);
     if (!col) continue;
@@ -721,56 +859,31 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // (hundreds of m per m of rise) covers real distance within delta2, so the
   // clusters that share it lie apart, and the collision that happens first
   // decides which of them takes it.
-  auto groups = cluster(st, cs);
-  std::vector<double> first;
+  std::vector<std::vector<int>>& groups = lists.groups;
+  cluster(st, cs, lists.clustering, groups);
+  std::vector<double>& first = lists.first;
   for (const auto& g : groups) {
     double lowest = HUGE_VAL;
     for (int m : g) lowest = std::min(lowest, cs[m].z);
     first.push_back(lowest);
   }
+  LaterGroups later_groups(st, lists, cs, groups, first, waiting);
   // A member that meets a corner later than a cluster resolved after its own
   // meets that corner would take the corner from that earlier collision (a
   // neighbour's edge event joined to the cluster by position): it waits for
-  // its own height too, when its corners may be gone.
-  // Each corner's lowest collision in each cluster it is in (a few clusters:
-  // its collisions at one point are one cluster, however many planes it
-  // meets), as a flat list sorted by corner. A batch of one cluster (most of
-  // them) has no other cluster to take a corner from: nothing to list.
-  struct Meeting {
-    int corner;
-    int group;
-    double z;
-  };
-  std::vector<Meeting> meetings;
-  if (groups.size() > 1) {
-    for (int g = 0; g < static_cast<int>(groups.size()); ++g)
-      for (int m : groups[g])
-        for (int c : cs[m].corners) meetings.push_back({c, g, cs[m].z});
-    std::sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& b) {
-      return std::tie(a.corner, a.group, a.z) < std::tie(b.corner, b.group, b.z);
-    });
-    meetings.erase(std::unique(meetings.begin(), meetings.end(),
-                               [](const Meeting& a, const Meeting& b) { return a.corner == b.corner && a.group == b.group; }),
-                   meetings.end());
-  }
-  const auto by_corner = [](const Meeting& a, const Meeting& b) { return a.corner < b.corner; };
-  for (int g = 0; g < static_cast<int>(groups.size()) && !meetings.empty(); ++g) {
-    auto late = [&](int m) {
-      for (int c : cs[m].corners) {
-        const auto [from, to] = std::equal_range(meetings.begin(), meetings.end(), Meeting{c, 0, 0.0}, by_corner);
-        for (auto o = from; o != to; ++o)
-          if (o->group != g && o->z < cs[m].z && first[o->group] >= first[g]) return true;
-      }
-      return false;
-    };
-    // A cluster's first collision is never late: a cluster that meets one of
-    // its corners lower is resolved before it.
+  // its own height too, when its corners may be gone. A batch of one cluster
+  // (most of them) has no other cluster to take a corner from.
+  // A cluster's first collision is never late: a cluster that meets one of
+  // its corners lower is resolved before it.
+  for (std::size_t g = 0; g < groups.size() && groups.size() > 1; ++g) {
     std::vector<int> kept;
     for (int m : groups[g]) {
-      if (late(m))
+      if (later_groups.late(g, m)) {
+        later_groups.waits(m);
         waiting.push_back(source[m]);
-      else
+      } else {
         kept.push_back(m);
+      }
     }
     groups[g] = std::move(kept);
   }
@@ -779,7 +892,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     for (int m : g) z += cs[m].z;
     return z / static_cast<double>(g.size());
   };
-  std::vector<double> zs;
+  std::vector<double>& zs = lists.zs;
   for (const auto& g : groups) zs.push_back(mean_z(g));
   // Then each waiting candidate at its own height, after the clusters there.
   // Most never meet: in a square with k x k holes every hole's corner meets
@@ -788,10 +901,10 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // candidate's collision is made only when it meets; made for all at once,
   // they were most of such a sweep's memory.
   const std::size_t clustered = groups.size();
-  LaterGroups later_groups(st, cs, groups, first, waiting);
   const auto first_of = [&](std::size_t g) { return later_groups.first_of(g); };
   const auto height_of = [&](std::size_t g) { return g < clustered ? zs[g] : waiting[g - clustered]->z; };
-  std::vector<std::size_t> order(later_groups.size());
+  std::vector<std::size_t>& order = lists.order;
+  order.resize(later_groups.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); });
   // Clusters at one height up to rounding are one instant, so their order is
@@ -803,7 +916,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // and leave it void, so the roof would depend on which of the two rounding
   // put lower. Clusters further apart in height (at a coarser clustering
   // scale) follow each other, each settled before the next.
-  std::vector<Rewired> rewired;
+  std::vector<Rewired>& rewired = lists.rewired;
   auto settle_rewired = [&] {
     for (const Rewired& r : rewired) {
       st.height = r.z;
@@ -857,10 +970,10 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // corners and a corner of a cluster 4.7e-6 m away, whose planes meet at the
   // split's point, resolved alone joined the edge's two halves in a corner of
   // that edge with itself).
-  std::deque<Candidate> collapses;
-  std::vector<int> moved, spans;
-  std::unordered_set<std::uint64_t> looked_at;  // pairs (corner, next) whose collapse was looked at
-  int made_from = 0;                            // the first corner made in this instant
+  std::deque<Candidate>& collapses = lists.collapses;
+  std::vector<int>& moved = lists.moved;
+  std::vector<int>& spans = lists.spans;
+  int made_from = 0;  // the first corner made in this instant
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t g = order[i];
     later_groups.resolving(g);
@@ -889,13 +1002,14 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     moved.clear();
     for (int c : spans) {
       const int n = st.corners[c].next;
-      if (n == kNone || n == c || (c >= made_from && n >= made_from) ||
-          !looked_at.insert(static_cast<std::uint64_t>(c) << 32 | static_cast<std::uint32_t>(n)).second)
+      // A span that does not shrink never closes: it need not be remembered.
+      if (n == kNone || n == c || (c >= made_from && n >= made_from) || !(st.span_rate(c) < 0.0) ||
+          !lists.looked_at.insert(c, n))
         continue;
       const double at = st.span_closes_at(c, std::max(st.corners[c].base_z, st.corners[n].base_z));
       if (!(std::abs(at - instant) <= st.tol().simultaneous())) continue;
       const int pair[] = {st.corners[c].prev_edge, st.corners[c].next_edge, st.corners[n].next_edge};
-      const std::vector<std::pair<std::size_t, int>> taken = later_groups.taking(c, n, at);
+      const std::vector<std::pair<std::size_t, int>>& taken = later_groups.taking(c, n, at);
       if (taken.empty() && !later_groups.read_above(pair, at, order)) continue;
       const auto wait = [&](const Candidate* w) {
         waiting.push_back(w);

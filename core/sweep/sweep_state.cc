@@ -96,14 +96,18 @@ bool State::reflex(int c) const {
   return cross(edges[k.prev_edge].dir, edges[k.next_edge].dir) <= Tolerances::parallel_sin;
 }
 
+// The span runs along the edge's direction; it closes when its length along
+// that direction reaches zero.
+double State::span_rate(int c) const {
+  const Corner& k = corners[c];
+  return glm::dot(corners[k.next].velocity - k.velocity, edges[k.next_edge].dir);
+}
+
 double State::span_closes_at(int c, double floor) const {
   const Corner& k = corners[c];
   const int n = k.next;
-  // The span runs along the edge's direction; it closes when its length along
-  // that direction reaches zero.
-  const glm::dvec2 d = edges[k.next_edge].dir;
-  const double length = glm::dot(position(n, height) - position(c, height), d);
-  const double rate = glm::dot(corners[n].velocity - k.velocity, d);
+  const double length = glm::dot(position(n, height) - position(c, height), edges[k.next_edge].dir);
+  const double rate = span_rate(c);
   const double at = rate < 0.0 ? height - length / rate : NAN;
   if (!(at >= floor - tol_.height())) return NAN;
   if (k.origin == corners[n].origin && at <= floor + tol_.height()) return NAN;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -84,6 +85,13 @@ struct FaceGroup {
   std::vector<HalfEdge> half_edges;
 };
 
+// resolve_intersections' lists, kept from one batch to the next
+// (intersection_event.cc).
+struct BatchScratch;
+struct BatchScratchDeleter {
+  void operator()(BatchScratch* s) const;
+};
+
 class State {
  public:
   // `budget` (shared by the nested sweeps of one attempt) counts what this
@@ -135,6 +143,10 @@ class State {
     return k.base + (z - k.base_z) * k.velocity;
   }
   bool reflex(int c) const;
+  // How fast the span from corner c to the next lengthens per unit of height:
+  // it closes only where this is negative. Corners keep their velocities, so
+  // it holds for the pair as long as it lives.
+  double span_rate(int c) const;
   // The height at which the span from corner c to the next closes (the two
   // corners meet along its edge), or NaN where they do not approach, meet
   // below `floor` (beyond rounding), or were made at one collision and meet
@@ -152,6 +164,9 @@ class State {
 
   // Live spans of an edge: corners s with s.next_edge == e (stale entries dropped).
   const std::vector<int>& spans(int e);
+
+  // Made on the first batch; cleared, not freed, by each batch after it.
+  std::unique_ptr<BatchScratch, BatchScratchDeleter> batch_scratch;
 
  private:
   Tolerances tol_;
