@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/cross.h"
+#include "core/geom/segment_distance.h"
 #include "core/geom/point_grid.h"
 #include "core/geom/predicates.h"
 #include "core/geom/segment_intersections.h"
@@ -41,13 +42,6 @@ void add_cover(const Cover& to, CoverView from, int sign, Cover& sum) {
       ++j;
     }
   }
-}
-
-double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
-  const glm::dvec2 d = b - a;
-  const double len2 = glm::dot(d, d);
-  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-  return glm::length(a + t * d - p);
 }
 
 // Where the segments cut each other: for each segment the points lying on

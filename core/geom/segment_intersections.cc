@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/predicates.h"
+#include "core/geom/segment_distance.h"
 
 namespace procex {
 
@@ -23,24 +24,17 @@ bool consecutive_overlap(const Segment2& i, const Segment2& j) {
   return orient2d(i.a, i.b, j.b) == 0 && glm::dot(i.b - i.a, j.b - j.a) < 0.0;
 }
 
-double distance_to_segment(const glm::dvec2& p, const Segment2& s) {
-  const glm::dvec2 d = s.b - s.a;
-  const double len2 = glm::dot(d, d);
-  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - s.a, d) / len2, 0.0, 1.0) : 0.0;
-  return glm::distance(p, s.a + t * d);
-}
-
 // Closest approach of two segments that do not cross: at an endpoint of one.
 double segment_gap(const Segment2& i, const Segment2& j) {
-  return std::min({distance_to_segment(i.a, j), distance_to_segment(i.b, j), distance_to_segment(j.a, i),
-                   distance_to_segment(j.b, i)});
+  return std::min({distance_to_segment(i.a, j.a, j.b), distance_to_segment(i.b, j.a, j.b),
+                   distance_to_segment(j.a, i.a, i.b), distance_to_segment(j.b, i.a, i.b)});
 }
 
 // Consecutive segments i -> j fold back within `within` when j's far end lies
 // that near i, or i's start that near j.
 bool consecutive_fold(const Segment2& i, const Segment2& j, double within) {
   return consecutive_overlap(i, j) ||
-         (within > 0.0 && (distance_to_segment(j.b, i) <= within || distance_to_segment(i.a, j) <= within));
+         (within > 0.0 && (distance_to_segment(j.b, i.a, i.b) <= within || distance_to_segment(i.a, j.a, j.b) <= within));
 }
 
 }  // namespace

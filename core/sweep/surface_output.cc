@@ -12,6 +12,7 @@
 #include "core/geom/error.h"
 #include "core/geom/polygon3.h"
 #include "core/geom/round_edge.h"
+#include "core/geom/segment_distance.h"
 #include "core/geom/turn.h"
 
 namespace procex::engine {
@@ -92,13 +93,6 @@ struct ChainScratch {
 
 // Half-edges to cut, each with the vertices inside it in order from its start.
 using Cuts = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>;
-
-double distance_to_segment(glm::dvec2 q, glm::dvec2 a, glm::dvec2 b) {
-  const glm::dvec2 ab = b - a;
-  const double len2 = glm::dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(glm::dot(q - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return glm::length(q - (a + t * ab));
-}
 
 // A half-edge of a face (from, to) and the face's index; sorted, they find
 // the face across a half-edge.
