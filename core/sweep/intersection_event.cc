@@ -6,10 +6,12 @@
 #include "core/sweep/intersection_event.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <deque>
 #include <numeric>
+#include <span>
 #include <sstream>
 #include <tuple>
 #include <unordered_map>
@@ -25,11 +27,17 @@
 namespace procex::engine {
 namespace {
 
+// A potential event found real: the planes that meet at p and the corners
+// that arrive there (one for a split, a collapsing edge's two). Both are few
+// and fixed, so they are held in place: a batch makes one per candidate, and
+// two vectors each were a ninth of the city's allocations.
 struct Collision {
   glm::dvec2 p;
   double z;
-  std::vector<int> edges;
-  std::vector<int> corners;
+  std::array<int, 3> edges;
+  std::array<int, 2> ends;
+  int ends_used;
+  std::span<const int> corners() const { return {ends.data(), static_cast<std::size_t>(ends_used)}; }
 };
 
 // A run of consecutive corners at the collision point, or (for a split) an
@@ -67,7 +75,7 @@ std::optional<Collision> meets(State& st, const Candidate& c) {
   if (!k.alive) return std::nullopt;
   if (c.edge == kNone) {
     if (k.next != c.next || !st.corners[c.next].alive) return std::nullopt;
-    return Collision{c.p, c.z, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}};
+    return Collision{c.p, c.z, {k.prev_edge, k.next_edge, st.corners[c.next].next_edge}, {c.corner, c.next}, 2};
   }
   if (c.edge == k.prev_edge || c.edge == k.next_edge) return std::nullopt;
   // A meeting just below the sweep plane (within delta2, queued at the plane)
@@ -75,7 +83,7 @@ std::optional<Collision> meets(State& st, const Candidate& c) {
   // antiparallel planes) covers real distance within delta2, and one made at
   // this height has already passed a plane it met below.
   if (glm::length(st.position(c.corner, c.z) - c.p) > st.tol().position()) return std::nullopt;
-  return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner}};
+  return Collision{c.p, c.z, {k.prev_edge, k.next_edge, c.edge}, {c.corner, kNone}, 1};
 }
 
 // cluster's lists, kept from one batch to the next (BatchScratch).
@@ -126,10 +134,10 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
   std::vector<std::pair<int, int>>& by_corner = lists.by_corner;
   by_corner.clear();
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
-    for (int c : cs[i].corners) by_corner.push_back({c, i});
+    for (int c : cs[i].corners()) by_corner.push_back({c, i});
   std::sort(by_corner.begin(), by_corner.end());
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
-    for (int c : cs[i].corners) {
+    for (int c : cs[i].corners()) {
       const int f = std::lower_bound(by_corner.begin(), by_corner.end(), std::pair<int, int>{c, 0})->second;
       if (f != i && glm::length(cs[i].p - cs[f].p) <= radius) parent[find(i)] = find(f);
     }
@@ -352,7 +360,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   for (int m : members) near = std::max(near, 2.0 * glm::length(cs[m].p - p));
   for (int m : members) {
     // An earlier cluster at this height may have consumed this collision.
-    const std::vector<int>& ends = cs[m].corners;
+    const std::span<const int> ends = cs[m].corners();
     if (std::all_of(ends.begin(), ends.end(), [&](int c) { return st.corners[c].alive; })) {
       for (int c : ends) mark(c);
       for (int e : cs[m].edges) add_edge(e);
@@ -709,7 +717,7 @@ class LaterGroups {
   // cluster resolved after g meets it.
   bool late(std::size_t g, int m) {
     list_members();
-    for (int c : cs_[m].corners)
+    for (int c : cs_[m].corners())
       for (auto [it, to] = corner_range(c); it != to; ++it)
         if (it->group != g && cs_[it->member].z < cs_[m].z && first_[it->group] >= first_[g]) return true;
     return false;
@@ -809,7 +817,7 @@ class LaterGroups {
     members.clear();
     for (std::size_t g = 0; g < groups_.size(); ++g)
       for (int m : groups_[g])
-        for (int c : cs_[m].corners) members.push_back({c, g, m});
+        for (int c : cs_[m].corners()) members.push_back({c, g, m});
     std::sort(members.begin(), members.end(), [](const Member& x, const Member& y) {
       return std::tie(x.corner, x.group, x.member) < std::tie(y.corner, y.group, y.member);
     });
