@@ -70,24 +70,43 @@ std::uint32_t State::add_vertex(glm::dvec3 p) {
   return static_cast<std::uint32_t>(vertices.size() - 1);
 }
 
+State::LevelSlot& State::level_slot(std::int64_t x, std::int64_t y) {
+  // Unsigned arithmetic: far cells wrap instead of overflowing.
+  const auto hash = static_cast<std::uint64_t>(x) * 73856093ULL ^ static_cast<std::uint64_t>(y) * 19349663ULL;
+  const std::size_t mask = level_slots_.size() - 1;
+  for (std::size_t i = (hash ^ hash >> 29) & mask;; i = (i + 1) & mask) {
+    LevelSlot& s = level_slots_[i];
+    if (s.level != level_ || (s.x == x && s.y == y)) return s;
+  }
+}
+
 std::uint32_t State::vertex_at(glm::dvec2 p, double z) {
   if (std::abs(height - level_height_) > tol_.height()) {
     ++level_;
     level_height_ = height;
+    level_used_ = 0;
   }
   const double cell = tol_.position();
   const auto gx = static_cast<std::int64_t>(std::floor(p.x / cell));
   const auto gy = static_cast<std::int64_t>(std::floor(p.y / cell));
-  auto key = [&](std::int64_t x, std::int64_t y) { return LevelCell{level_, x, y}; };
   for (std::int64_t dx = -1; dx <= 1; ++dx)
     for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      const auto it = level_vertices_.find(key(gx + dx, gy + dy));
-      if (it == level_vertices_.end()) continue;
-      const glm::dvec3& q = vertices[it->second];
-      if (std::abs(q.z - z) <= tol_.height() && glm::length(glm::dvec2(q) - p) <= cell) return it->second;
+      const LevelSlot& s = level_slot(gx + dx, gy + dy);
+      if (s.level != level_) continue;
+      const glm::dvec3& q = vertices[s.v];
+      if (std::abs(q.z - z) <= tol_.height() && glm::length(glm::dvec2(q) - p) <= cell) return s.v;
     }
   const std::uint32_t v = add_vertex({p, z});
-  level_vertices_.try_emplace(key(gx, gy), v);
+  // A cell keeps the first vertex made in it.
+  if (level_slot(gx, gy).level == level_) return v;
+  if (2 * (level_used_ + 1) > level_slots_.size()) {
+    std::vector<LevelSlot> old(2 * level_slots_.size());
+    old.swap(level_slots_);
+    for (const LevelSlot& s : old)
+      if (s.level == level_) level_slot(s.x, s.y) = s;
+  }
+  level_slot(gx, gy) = {level_, gx, gy, v};
+  ++level_used_;
   return v;
 }
 

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "core/geom/profile.h"
@@ -172,21 +171,20 @@ class State {
   Tolerances tol_;
   SweepOptions options_;
   Budget* budget_;
-  // vertex_at's vertices by (height level, delta3 cell); those of earlier
-  // levels never match again, so nothing is ever cleared.
-  struct LevelCell {
-    std::uint64_t level;
-    std::int64_t x, y;
-    bool operator==(const LevelCell&) const = default;
+  // vertex_at's vertices by delta3 cell, of the current height level only:
+  // those of earlier levels never match again. The table is open-addressed
+  // and a slot of an earlier level counts as empty, so a new level clears
+  // nothing (a hash map of every level's cells was a tenth of a small roof's
+  // time, in its nodes and their cache misses).
+  struct LevelSlot {
+    std::uint64_t level = 0;
+    std::int64_t x = 0, y = 0;
+    std::uint32_t v = 0;
   };
-  struct LevelCellHash {
-    std::size_t operator()(const LevelCell& c) const {
-      // Unsigned arithmetic: far cells wrap instead of overflowing.
-      return static_cast<std::size_t>(static_cast<std::uint64_t>(c.x) * 73856093ULL ^
-                                      static_cast<std::uint64_t>(c.y) * 19349663ULL ^ c.level * 83492791ULL);
-    }
-  };
-  std::unordered_map<LevelCell, std::uint32_t, LevelCellHash> level_vertices_;
+  // The slot of cell (x, y) at this level, or the empty slot where it goes.
+  LevelSlot& level_slot(std::int64_t x, std::int64_t y);
+  std::vector<LevelSlot> level_slots_ = std::vector<LevelSlot>(16);  // a power of two
+  std::size_t level_used_ = 0;                                          // slots of level_
   std::uint64_t level_ = 0;
   double level_height_ = -HUGE_VAL;
 };
