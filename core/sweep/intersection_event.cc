@@ -14,8 +14,6 @@
 #include <span>
 #include <sstream>
 #include <tuple>
-#include <unordered_map>
-#include <unordered_set>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -330,25 +328,72 @@ bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in
   return at <= out;
 }
 
+// resolve_cluster's marks: the corners at the cluster's point, the edges
+// taking part (with their place in its list) and the edges cut through, each
+// stamped with the cluster, so a new cluster clears nothing. A hash map, a hash
+// set and an array of every corner made per cluster were a third of a small
+// roof's allocations, and O(n) per cluster in a large one.
+class ClusterMarks {
+ public:
+  void next_cluster() {
+    if (++stamp_ != 0) return;
+    // The stamps wrapped round: none may match.
+    for (auto* v : {&corner_, &edge_, &cut_}) std::fill(v->begin(), v->end(), 0);
+    stamp_ = 1;
+  }
+  bool at(int c) const { return marked(corner_, c); }
+  void mark_at(int c) { mark(corner_, c); }
+  bool participates(int e) const { return marked(edge_, e); }
+  // Marks edge e as taking part at `place`, unless it does already.
+  bool add_edge(int e, std::size_t place) {
+    if (participates(e)) return false;
+    mark(edge_, e);
+    if (place_.size() < edge_.size()) place_.resize(edge_.size());
+    place_[static_cast<std::size_t>(e)] = place;
+    return true;
+  }
+  std::size_t place(int e) const { return place_[static_cast<std::size_t>(e)]; }
+  // Whether edge e is newly cut through.
+  bool cut(int e) {
+    if (marked(cut_, e)) return false;
+    mark(cut_, e);
+    return true;
+  }
+
+ private:
+  bool marked(const std::vector<std::uint32_t>& v, int i) const {
+    const auto k = static_cast<std::size_t>(i);  // kNone: past the end
+    return k < v.size() && v[k] == stamp_;
+  }
+  void mark(std::vector<std::uint32_t>& v, int i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (v.size() <= k) v.resize(k + 1, 0);
+    v[k] = stamp_;
+  }
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> corner_, edge_, cut_;
+  std::vector<std::size_t> place_;
+};
+
 // The corners whose span (to the next corner) collapsed in this cluster's
 // collisions but, its other end rewired by an earlier cluster, collapses
 // elsewhere go to `moved`.
 void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vector<int>& members,
-                     std::vector<Rewired>& out, std::vector<int>& moved) {
+                     ClusterMarks& marks, std::vector<Rewired>& out, std::vector<int>& moved) {
   const double z = st.height;
   glm::dvec2 p{0.0};
   // The participating edges, each once: a corner meeting a thousand planes
   // at one point brings each of them in once per collision.
+  marks.next_cluster();
   std::vector<int> edges;
-  std::unordered_map<int, std::size_t> participating;  // edge -> its place in `edges`
   auto add_edge = [&](int e) {
-    if (participating.try_emplace(e, edges.size()).second) edges.push_back(e);
+    if (marks.add_edge(e, edges.size())) edges.push_back(e);
   };
-  std::vector<char> at(st.corners.size(), 0);
   std::vector<int> at_p;
+  auto at = [&](int c) { return marks.at(c); };
   auto mark = [&](int c) {
-    if (at[c]) return;
-    at[c] = 1;
+    if (at(c)) return;
+    marks.mark_at(c);
     at_p.push_back(c);
     add_edge(st.corners[c].prev_edge);
     add_edge(st.corners[c].next_edge);
@@ -394,18 +439,18 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   // its line meets the sweep plane in one point, and both planes pass through
   // p. Computing its position instead would be ill-conditioned when the
   // planes are nearly parallel.
-  auto participates = [&](int e) { return participating.count(e) > 0; };
+  auto participates = [&](int e) { return marks.participates(e); };
   auto by_logic = [&](int c) {
     const Corner& k = st.corners[c];
     return k.motion == Motion::Regular && participates(k.prev_edge) && participates(k.next_edge);
   };
-  auto fits = [&](int e) { return participating.at(e) < fitted.size(); };
+  auto fits = [&](int e) { return marks.place(e) < fitted.size(); };
   // An edge cut through (or its heir) is no plane of a corner at p: as fitted.
   auto fits_if_in = [&](int e) { return !participates(e) || fits(e); };
   for (std::size_t scanned = 0; scanned < edges.size(); ++scanned) {
     for (int s : st.spans(edges[scanned])) {
       for (int c : {s, st.corners[s].next}) {
-        if (c == kNone || !st.corners[c].alive || at[c]) continue;
+        if (c == kNone || !st.corners[c].alive || at(c)) continue;
         if (by_logic(c)) {
           if (fits(st.corners[c].prev_edge) && fits(st.corners[c].next_edge)) through.push_back(c);
           mark(c);
@@ -421,23 +466,22 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   std::vector<Chain> chains;
   std::sort(at_p.begin(), at_p.end());
   for (int c : at_p) {
-    if (at[st.corners[c].prev]) continue;
+    if (at(st.corners[c].prev)) continue;
     int last = c;
-    while (at[st.corners[last].next]) last = st.corners[last].next;
+    while (at(st.corners[last].next)) last = st.corners[last].next;
     chains.push_back({st.corners[c].prev_edge, st.corners[c].prev, st.corners[last].next_edge, st.corners[last].next});
   }
-  std::unordered_set<int> cut;
   for (int named : edges) {
     // A group resolved before this one at this height may have handed the
     // named edge's span to its heir: the collision then cuts through the heir.
     for (int e = named, hops = 0; e != kNone && hops <= static_cast<int>(st.edges.size()); e = st.edges[e].heir, ++hops) {
       if (participates(e) && e != named) break;  // the heir is cut as named itself
       bool touches = false;
-      for (int s : st.spans(e)) touches = touches || at[s] || at[st.corners[s].next];
+      for (int s : st.spans(e)) touches = touches || at(s) || at(st.corners[s].next);
       if (touches) break;
       const int s = span_through(st, e, p, z, near);
       if (s == kNone) continue;
-      if (cut.insert(e).second) chains.push_back({e, s, e, st.corners[s].next});
+      if (marks.cut(e)) chains.push_back({e, s, e, st.corners[s].next});
       break;
     }
   }
@@ -513,7 +557,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     // itself).
     if (in.chain == out.chain) {
       const int c = st.corners[cin.in_corner].next;
-      if (c != kNone && at[c] && st.corners[c].next == cout.out_corner && st.corners[c].prev_edge == cin.in_edge &&
+      if (c != kNone && at(c) && st.corners[c].next == cout.out_corner && st.corners[c].prev_edge == cin.in_edge &&
           st.corners[c].next_edge == cout.out_edge) {
         st.corners[c].alive = true;
         return;
@@ -664,6 +708,7 @@ struct BatchScratch {
 
   std::vector<const Candidate*> source, waiting;
   ClusterLists clustering;
+  ClusterMarks marks;
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
   std::vector<std::size_t> order;
@@ -862,6 +907,10 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       waiting.push_back(&c);
     }
   }
+  // Two batches in three hold no collision (candidates of corners that moved
+  // on, splits passing their edge's spans): nothing is resolved, so nothing a
+  // waiting split reads changes, and none of them meets at its own height.
+  if (cs.empty()) return;
   // Clusters are resolved in the order of their first collision, each at its
   // members' mean height: a corner that races along a nearly horizontal line
   // (hundreds of m per m of rise) covers real distance within delta2, so the
@@ -1003,7 +1052,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     st.height = std::max(before, height_of(g));
     highest = std::max(highest, st.height);
     const std::size_t resolved = rewired.size();
-    resolve_cluster(st, cs, g < clustered ? groups[g] : lone, rewired, moved);
+    resolve_cluster(st, cs, g < clustered ? groups[g] : lone, lists.marks, rewired, moved);
     spans = moved;
     if (rewired.size() > resolved)
       for (int n : rewired.back().made) spans.insert(spans.end(), {st.corners[n].prev, n});
