@@ -93,26 +93,76 @@ struct ClusterLists {
   };
   std::vector<int> parent;
   std::vector<std::pair<int, int>> by_corner;  // (corner, collision), sorted
+  std::vector<int> roots;                      // one collision per group joined through corners
   std::vector<Point> grid;                     // sorted: each cell's points are a run
   std::vector<int> group_of;                   // by root collision
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(int i, int j) { parent[find(i)] = find(j); }
 };
+
+// Up to this many roots are compared pair by pair: most batches hold a few
+// collisions, and the grid's sort and searches cost more than the pairs.
+constexpr std::size_t kPairwiseUpTo = 8;
+
+// Joins the roots within `radius` of each other through a plan grid. Its
+// cells are two thirds of `radius` wide, so any two points in one cell are
+// within it and a cell joins as a whole, without a comparison; two cells (at
+// most two apart) are compared point by point only while their groups are
+// apart, and only until one pair is close enough. Thousands of corners of a
+// jittered star racing through its centre within one delta2, each meeting
+// the planes at its own height, are joined in as many steps, not compared
+// pair by pair (hundreds of thousands of points in a few cells). It joins
+// the same pairs as comparing every pair: a cell's diagonal (0.94 radius)
+// stays within the radius after rounding, and points three cells apart are
+// more than the radius apart.
+void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double radius) {
+  const double side = radius / 1.5;
+  std::vector<ClusterLists::Point>& grid = lists.grid;
+  grid.clear();
+  for (int i : lists.roots)
+    grid.push_back({static_cast<long long>(std::floor(cs[i].p.x / side)),
+                    static_cast<long long>(std::floor(cs[i].p.y / side)), i});
+  std::sort(grid.begin(), grid.end());
+  const auto cell_end = [&](std::size_t from) {
+    std::size_t to = from + 1;
+    while (to < grid.size() && grid[to].x == grid[from].x && grid[to].y == grid[from].y) ++to;
+    return to;
+  };
+  for (std::size_t from = 0, to; from < grid.size(); from = to) {
+    to = cell_end(from);
+    for (std::size_t k = from + 1; k < to; ++k) lists.join(grid[k].i, grid[from].i);
+  }
+  for (std::size_t from = 0, to; from < grid.size(); from = to) {
+    to = cell_end(from);
+    for (long long dx = -2; dx <= 2; ++dx)
+      for (long long dy = -2; dy <= 2; ++dy) {
+        if (dx < 0 || (dx == 0 && dy <= 0)) continue;  // each pair of cells once
+        const long long x = grid[from].x + dx, y = grid[from].y + dy;
+        const std::size_t there = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
+        if (there == grid.size() || grid[there].x != x || grid[there].y != y) continue;
+        const std::size_t there_end = cell_end(there);
+        bool joined = lists.find(grid[from].i) == lists.find(grid[there].i);
+        for (std::size_t a = from; a < to && !joined; ++a)
+          for (std::size_t b = there; b < there_end && !joined; ++b)
+            if (glm::length(cs[grid[a].i].p - cs[grid[b].i].p) <= radius) {
+              lists.join(grid[a].i, grid[b].i);
+              joined = true;
+            }
+      }
+  }
+}
 
 // Clusters collisions at one height closer than delta3 in the plan, in
 // first-member order. Collisions that share a corner there are one event
 // (a corner meeting many planes at once, the corners of a regular polygon
 // meeting at its centre): they are joined through their corners first (each
-// to the first collision of the corner), and the plan grid compares one point
-// per such group.
-//
-// The grid's cells are two thirds of delta3 wide, so any two points in one
-// cell are within delta3 and a cell joins as a whole, without a comparison;
-// two cells (at most two apart) are compared point by point only while their
-// groups are apart, and only until one pair is close enough. Thousands of
-// corners of a jittered star racing through its centre within one delta2,
-// each meeting the planes at its own height, are joined in as many steps,
-// not compared pair by pair (hundreds of thousands of points in a few cells).
-// The groups are the same whatever order the grid's cells are joined in.
-// `groups` keeps the lists it had (their storage, not their members).
+// to the first collision of the corner), then one point per such group is
+// compared with the others. The groups are the same whatever order they are
+// joined in. `groups` keeps the lists it had (their storage, not their
+// members).
 void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& lists,
              std::vector<std::vector<int>>& groups) {
   // Most batches hold a single collision: its own cluster, nothing to join.
@@ -125,10 +175,6 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
   std::vector<int>& parent = lists.parent;
   parent.resize(cs.size());
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
   std::vector<std::pair<int, int>>& by_corner = lists.by_corner;
   by_corner.clear();
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
@@ -137,51 +183,24 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
     for (int c : cs[i].corners()) {
       const int f = std::lower_bound(by_corner.begin(), by_corner.end(), std::pair<int, int>{c, 0})->second;
-      if (f != i && glm::length(cs[i].p - cs[f].p) <= radius) parent[find(i)] = find(f);
+      if (f != i && glm::length(cs[i].p - cs[f].p) <= radius) lists.join(i, f);
     }
-  // A cell's diagonal (0.94 delta3) stays within delta3 after rounding, and
-  // points three cells apart are more than delta3 apart.
-  const double side = radius / 1.5;
-  std::vector<ClusterLists::Point>& grid = lists.grid;
-  grid.clear();
-  for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
-    if (find(i) != i) continue;  // one point per group joined through its corners
-    grid.push_back({static_cast<long long>(std::floor(cs[i].p.x / side)),
-                    static_cast<long long>(std::floor(cs[i].p.y / side)), i});
-  }
-  std::sort(grid.begin(), grid.end());
-  const auto cell_end = [&](std::size_t from) {
-    std::size_t to = from + 1;
-    while (to < grid.size() && grid[to].x == grid[from].x && grid[to].y == grid[from].y) ++to;
-    return to;
-  };
-  for (std::size_t from = 0, to; from < grid.size(); from = to) {
-    to = cell_end(from);
-    for (std::size_t k = from + 1; k < to; ++k) parent[find(grid[k].i)] = find(grid[from].i);
-  }
-  for (std::size_t from = 0, to; from < grid.size(); from = to) {
-    to = cell_end(from);
-    for (long long dx = -2; dx <= 2; ++dx)
-      for (long long dy = -2; dy <= 2; ++dy) {
-        if (dx < 0 || (dx == 0 && dy <= 0)) continue;  // each pair of cells once
-        const long long x = grid[from].x + dx, y = grid[from].y + dy;
-        const std::size_t there = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
-        if (there == grid.size() || grid[there].x != x || grid[there].y != y) continue;
-        const std::size_t there_end = cell_end(there);
-        bool joined = find(grid[from].i) == find(grid[there].i);
-        for (std::size_t a = from; a < to && !joined; ++a)
-          for (std::size_t b = there; b < there_end && !joined; ++b)
-            if (glm::length(cs[grid[a].i].p - cs[grid[b].i].p) <= radius) {
-              parent[find(grid[a].i)] = find(grid[b].i);
-              joined = true;
-            }
-      }
+  std::vector<int>& roots = lists.roots;
+  roots.clear();
+  for (int i = 0; i < static_cast<int>(cs.size()); ++i)
+    if (lists.find(i) == i) roots.push_back(i);
+  if (roots.size() > kPairwiseUpTo) {
+    join_by_grid(cs, lists, radius);
+  } else {
+    for (std::size_t a = 0; a < roots.size(); ++a)
+      for (std::size_t b = a + 1; b < roots.size(); ++b)
+        if (glm::length(cs[roots[a]].p - cs[roots[b]].p) <= radius) lists.join(roots[b], roots[a]);
   }
   std::vector<int>& group_of = lists.group_of;
   group_of.assign(cs.size(), kNone);
   int count = 0;
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
-    int& g = group_of[find(i)];
+    int& g = group_of[lists.find(i)];
     if (g == kNone) {
       if (groups.size() == static_cast<std::size_t>(count)) groups.emplace_back();
       groups[count].clear();
