@@ -17,7 +17,7 @@ namespace {
 // its spans become horizontal ridges. On a line, a span's ridge passes through
 // every other corner of the loop that lies on it, so faces meet vertex to vertex.
 bool close_if_degenerate(State& st, int start) {
-  std::vector<int> loop;
+  std::size_t walked = 0;
   int c = start;
   const glm::dvec2 d0 = st.edges[st.corners[start].next_edge].dir;
   double worst_turn = 0.0, extent = 0.0;
@@ -29,14 +29,23 @@ bool close_if_degenerate(State& st, int start) {
     return worst_turn <= Tolerances::parallel_sin || worst_turn * extent <= st.tol().position();
   };
   do {
-    loop.push_back(c);
+    ++walked;
     worst_turn = std::max(worst_turn, std::abs(cross(st.edges[st.corners[c].next_edge].dir, d0)));
     extent = std::max(extent, glm::length(st.position(c, st.height) - p0));
     // Both only grow: a loop of three corners off one line has area, and the
     // rest of it (thousands of corners, for every corner made) is not walked.
-    if (loop.size() > 2 && !collinear()) return false;
+    if (walked > 2 && !collinear()) return false;
     c = st.corners[c].next;
-    if (loop.size() > st.corners.size()) throw SweepError("sweep: corrupt loop at height " + std::to_string(st.height), st.height, {});
+    if (walked > st.corners.size()) throw SweepError("sweep: corrupt loop at height " + std::to_string(st.height), st.height, {});
+  } while (c != start);
+  // Listed only now: nearly every loop walked has area (settle asks for every
+  // corner made).
+  std::vector<int> loop;
+  loop.reserve(walked);
+  c = start;
+  do {
+    loop.push_back(c);
+    c = st.corners[c].next;
   } while (c != start);
   std::vector<std::uint32_t> v;
   std::vector<double> along;
