@@ -394,11 +394,29 @@ class ClusterMarks {
   std::vector<std::size_t> place_;
 };
 
+// A ray leaving a cluster's point along a chain's edge.
+struct Ray {
+  double angle;
+  bool in;
+  int chain;
+};
+
+// resolve_cluster's lists, kept from one cluster to the next (BatchScratch):
+// each cluster clears them, not frees them.
+struct ResolveLists {
+  ClusterMarks marks;
+  std::vector<int> at_p, fitted, through;
+  std::vector<Chain> chains;
+  std::vector<Ray> rays;
+  std::vector<const Ray*> open;
+};
+
 // The corners whose span (to the next corner) collapsed in this cluster's
 // collisions but, its other end rewired by an earlier cluster, collapses
 // elsewhere go to `moved`.
 void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vector<int>& members,
-                     ClusterMarks& marks, std::vector<Rewired>& out, std::vector<int>& moved) {
+                     ResolveLists& lists, std::vector<Rewired>& out, std::vector<int>& moved) {
+  ClusterMarks& marks = lists.marks;
   const double z = st.height;
   glm::dvec2 p{0.0};
   // The participating edges, each once: a corner meeting a thousand planes
@@ -408,7 +426,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   auto add_edge = [&](int e) {
     if (marks.add_edge(e, edges.size())) edges.push_back(e);
   };
-  std::vector<int> at_p;
+  std::vector<int>& at_p = lists.at_p;
+  at_p.clear();
   auto at = [&](int c) { return marks.at(c); };
   auto mark = [&](int c) {
     if (at(c)) return;
@@ -450,8 +469,10 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   // The planes the meeting is fitted to, the collisions' and their corners',
   // and the corners whose lines run through it: those of the collisions and
   // those between two of these planes, not those only near it (meeting_point).
-  std::vector<int> fitted = edges;
-  std::vector<int> through = at_p;
+  std::vector<int>& fitted = lists.fitted;
+  std::vector<int>& through = lists.through;
+  fitted = edges;
+  through = at_p;
 
   // Every live corner of a participating edge that sits at p takes part too.
   // A corner between two participating planes that cross is at p by logic:
@@ -482,7 +503,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   std::sort(edges.begin(), edges.end());
 
   // Runs of consecutive corners at p, and edges cut through the middle.
-  std::vector<Chain> chains;
+  std::vector<Chain>& chains = lists.chains;
+  chains.clear();
   std::sort(at_p.begin(), at_p.end());
   for (int c : at_p) {
     if (at(st.corners[c].prev)) continue;
@@ -521,12 +543,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
 
   // Order the rays leaving p: each outgoing edge is joined to the next incoming
   // edge counter-clockwise; the wedge between them is inside the solid.
-  struct Ray {
-    double angle;
-    bool in;
-    int chain;
-  };
-  std::vector<Ray> rays;
+  std::vector<Ray>& rays = lists.rays;
+  rays.clear();
   for (int i = 0; i < static_cast<int>(chains.size()); ++i) {
     const glm::dvec2 din = -st.edges[chains[i].in_edge].dir, dout = st.edges[chains[i].out_edge].dir;
     rays.push_back({std::atan2(din.y, din.x), true, i});
@@ -640,7 +658,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
       start = static_cast<std::size_t>(i) + 1;
     }
   }
-  std::vector<const Ray*> open;
+  std::vector<const Ray*>& open = lists.open;
+  open.clear();
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const Ray& ray = rays[(start + i) % rays.size()];
     if (!ray.in) {
@@ -713,6 +732,7 @@ class LookedAt {
 // sets among them) took a tenth of the city's instructions (issue 12).
 struct BatchScratch {
   void next_batch() {
+    cs.clear();
     source.clear();
     waiting.clear();
     first.clear();
@@ -725,9 +745,10 @@ struct BatchScratch {
     resolved.clear();
   }
 
+  std::vector<Collision> cs;
   std::vector<const Candidate*> source, waiting;
   ClusterLists clustering;
-  ClusterMarks marks;
+  ResolveLists resolving;
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
   std::vector<std::size_t> order;
@@ -913,7 +934,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   if (!st.batch_scratch) st.batch_scratch.reset(new BatchScratch);
   BatchScratch& lists = *st.batch_scratch;
   lists.next_batch();
-  std::vector<Collision> cs;
+  std::vector<Collision>& cs = lists.cs;
   std::vector<const Candidate*>& source = lists.source;  // the candidate of each collision
   std::vector<const Candidate*>& waiting = lists.waiting;
   for (const Candidate& c : batch) {
@@ -1071,7 +1092,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     st.height = std::max(before, height_of(g));
     highest = std::max(highest, st.height);
     const std::size_t resolved = rewired.size();
-    resolve_cluster(st, cs, g < clustered ? groups[g] : lone, lists.marks, rewired, moved);
+    resolve_cluster(st, cs, g < clustered ? groups[g] : lone, lists.resolving, rewired, moved);
     spans = moved;
     if (rewired.size() > resolved)
       for (int n : rewired.back().made) spans.insert(spans.end(), {st.corners[n].prev, n});
