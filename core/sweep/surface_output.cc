@@ -469,18 +469,30 @@ void close_surface(Surface& surface) {
   auto fail = [&](std::uint32_t v, const std::string& what) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };
-  // Every half-edge, with the one before it in its loop.
+  // Every half-edge, with the one before it in its loop: counted first and
+  // kept small, since a roof's arrays here are its largest at once, and
+  // reaching past glibc's trim threshold (128 KB) made each sweep of a
+  // 200-corner plan give the heap's top back and fault it in again.
   struct Half {
     std::uint32_t from, to, prev, next, face;
-    std::vector<std::uint32_t>* loop;
-    std::uint32_t at;  // `from`'s place in its loop
+    std::uint32_t loop;  // in `loops`
+    std::uint32_t at;    // `from`'s place in its loop
   };
+  std::vector<std::vector<std::uint32_t>*> loops;
+  std::size_t count = 0;
+  for (SurfaceFace& face : surface.faces)
+    for (auto& loop : face.loops) {
+      loops.push_back(&loop);
+      count += loop.size();
+    }
   std::vector<Half> halves;
-  for (std::uint32_t f = 0; f < surface.faces.size(); ++f)
-    for (auto& loop : surface.faces[f].loops) {
+  halves.reserve(count);
+  for (std::uint32_t f = 0, l = 0; f < surface.faces.size(); ++f)
+    for (const auto& loop : surface.faces[f].loops) {
       const auto first = static_cast<std::uint32_t>(halves.size()), m = static_cast<std::uint32_t>(loop.size());
       for (std::uint32_t i = 0; i < m; ++i)
-        halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, first + (i + 1) % m, f, &loop, i});
+        halves.push_back({loop[i], loop[(i + 1) % m], first + (i + m - 1) % m, first + (i + 1) % m, f, l, i});
+      ++l;
     }
   // A hole touching its face's outer loop at a vertex (angles seed 75421: a
   // triangle of the face's plane that two merging loops fill, its apex on the
@@ -595,7 +607,7 @@ void close_surface(Surface& surface) {
     std::uint32_t g = order[i];
     do {
       in_fan[g] = 1;
-      (*halves[g].loop)[halves[g].at] = id;
+      (*loops[halves[g].loop])[halves[g].at] = id;
       g = twin[halves[g].prev];
     } while (!in_fan[g]);
   }
@@ -612,7 +624,9 @@ void close_surface(Surface& surface) {
   std::vector<Insert> inserts;
   for (const std::vector<std::uint32_t>& edge : welded) {
     auto ends = [&](std::uint32_t g) {
-      return std::pair{(*halves[g].loop)[halves[g].at], (*halves[halves[g].next].loop)[halves[halves[g].next].at]};
+      const Half& h = halves[g];
+      const Half& n = halves[h.next];
+      return std::pair{(*loops[h.loop])[h.at], (*loops[n.loop])[n.at]};
     };
     for (std::size_t k = 1; k < edge.size(); ++k) {
       const auto [a, b] = ends(edge[k]);
@@ -621,8 +635,7 @@ void close_surface(Surface& surface) {
       if (!shared) continue;
       const auto mid = static_cast<std::uint32_t>(surface.vertices.size());
       surface.vertices.push_back(0.5 * (surface.vertices[a] + surface.vertices[b]));
-      inserts.push_back({halves[edge[k]].loop, halves[edge[k]].at, mid});
-      inserts.push_back({halves[twin[edge[k]]].loop, halves[twin[edge[k]]].at, mid});
+      for (const std::uint32_t g : {edge[k], twin[edge[k]]}) inserts.push_back({loops[halves[g].loop], halves[g].at, mid});
     }
   }
   // Later places first, so earlier ones stay where they are.
