@@ -284,6 +284,30 @@ struct Rewired {
   double z;
 };
 
+// A batch's rewired clusters, in the order they were resolved. Its entries'
+// lists are kept, cleared, from one batch to the next: made afresh, they
+// were a ninth of the city's allocations.
+class RewiredList {
+ public:
+  Rewired& add(double z) {
+    if (size_ == items_.size()) items_.emplace_back();
+    Rewired& r = items_[size_++];
+    r.made.clear();
+    r.edges.clear();
+    r.z = z;
+    return r;
+  }
+  void clear() { size_ = 0; }
+  std::size_t size() const { return size_; }
+  const Rewired& back() const { return items_[size_ - 1]; }
+  std::vector<Rewired>::const_iterator begin() const { return items_.begin(); }
+  std::vector<Rewired>::const_iterator end() const { return items_.begin() + static_cast<std::ptrdiff_t>(size_); }
+
+ private:
+  std::vector<Rewired> items_;
+  std::size_t size_ = 0;
+};
+
 // Whether a crossing that runs `along` per unit height along `ray`, a
 // standing wall's ray from the collision, stays ahead of the corner between
 // edges e and f, its own chain's, which bounds the wall's span on that ray if
@@ -405,7 +429,7 @@ struct Ray {
 // each cluster clears them, not frees them.
 struct ResolveLists {
   ClusterMarks marks;
-  std::vector<int> at_p, fitted, through;
+  std::vector<int> edges, made, at_p, fitted, through;
   std::vector<Chain> chains;
   std::vector<Ray> rays;
   std::vector<const Ray*> open;
@@ -415,14 +439,15 @@ struct ResolveLists {
 // collisions but, its other end rewired by an earlier cluster, collapses
 // elsewhere go to `moved`.
 void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vector<int>& members,
-                     ResolveLists& lists, std::vector<Rewired>& out, std::vector<int>& moved) {
+                     ResolveLists& lists, RewiredList& out, std::vector<int>& moved) {
   ClusterMarks& marks = lists.marks;
   const double z = st.height;
   glm::dvec2 p{0.0};
   // The participating edges, each once: a corner meeting a thousand planes
   // at one point brings each of them in once per collision.
   marks.next_cluster();
-  std::vector<int> edges;
+  std::vector<int>& edges = lists.edges;
+  edges.clear();
   auto add_edge = [&](int e) {
     if (marks.add_edge(e, edges.size())) edges.push_back(e);
   };
@@ -580,7 +605,8 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     if (best == rays.size()) break;
     std::swap(rays[best], rays[(best + 1) % rays.size()]);
   }
-  std::vector<int> made;
+  std::vector<int>& made = lists.made;
+  made.clear();
   auto join = [&](const Ray& in, const Ray& out) {
     const Chain& cin = chains[in.chain];
     const Chain& cout = chains[out.chain];
@@ -672,7 +698,9 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   }
   emit_ended();
 
-  out.push_back({std::move(made), std::move(edges), z});
+  Rewired& r = out.add(z);
+  r.made = made;
+  r.edges = edges;
 }
 
 // A cluster's member by one of its corners.
@@ -752,7 +780,7 @@ struct BatchScratch {
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
   std::vector<std::size_t> order;
-  std::vector<Rewired> rewired;
+  RewiredList rewired;
   std::deque<Candidate> collapses;  // addresses stay put as it grows
   std::vector<int> moved, spans;
   LookedAt looked_at;
@@ -1013,7 +1041,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // and leave it void, so the roof would depend on which of the two rounding
   // put lower. Clusters further apart in height (at a coarser clustering
   // scale) follow each other, each settled before the next.
-  std::vector<Rewired>& rewired = lists.rewired;
+  RewiredList& rewired = lists.rewired;
   auto settle_rewired = [&] {
     for (const Rewired& r : rewired) {
       st.height = r.z;
