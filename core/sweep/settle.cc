@@ -90,21 +90,26 @@ bool close_if_degenerate(State& st, int start) {
 
 std::vector<int> settle(State& st, const std::vector<int>& made) {
   std::vector<int> live;
-  std::vector<int> pending(made.rbegin(), made.rend());
-  while (!pending.empty()) {
-    const int n = pending.back();
-    pending.pop_back();
-    if (!st.corners[n].alive || close_if_degenerate(st, n)) continue;
-    std::vector<int> replaced;
-    if (st.corners[n].motion == Motion::Ridge) {
-      replaced = close_spike(st, n);
-    } else if (ambiguous(st, n)) {
-      replaced = resolve_ambiguity(st, n);
-    } else {
-      live.push_back(n);
-      continue;
+  // Corners made in settling one are settled before the next of `made`; the
+  // stack is needed only then (a spike folds, neighbours are ambiguous).
+  std::vector<int> pending;
+  for (const int first : made) {
+    for (int n = first;;) {
+      if (st.corners[n].alive && !close_if_degenerate(st, n)) {
+        std::vector<int> replaced;
+        if (st.corners[n].motion == Motion::Ridge) {
+          replaced = close_spike(st, n);
+        } else if (ambiguous(st, n)) {
+          replaced = resolve_ambiguity(st, n);
+        } else {
+          live.push_back(n);
+        }
+        pending.insert(pending.end(), replaced.rbegin(), replaced.rend());
+      }
+      if (pending.empty()) break;
+      n = pending.back();
+      pending.pop_back();
     }
-    pending.insert(pending.end(), replaced.rbegin(), replaced.rend());
   }
   return live;
 }
