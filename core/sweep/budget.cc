@@ -9,8 +9,11 @@
 
 namespace procex::engine {
 
-Budget::Budget(const SweepBudget& limits)
-    : limits_(limits), deadline_(limits.max_seconds > 0.0 ? thread_cpu_seconds() + limits.max_seconds : 0.0) {}
+Budget::Budget(const SweepBudget& limits, std::size_t plan_vertices)
+    : limits_(limits),
+      deadline_(limits.max_seconds > 0.0 && plan_vertices >= kClockedFromTheStart
+                    ? thread_cpu_seconds() + limits.max_seconds
+                    : 0.0) {}
 
 double Budget::thread_cpu_seconds() {
   timespec t{};

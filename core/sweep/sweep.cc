@@ -168,7 +168,9 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const LocalFrame frame = local_frame(footprint);
   const Footprint local = moved(footprint, -frame.centre);
   engine::Tolerances tol{frame.extent};
-  engine::Budget budget(options.budget);
+  std::size_t plan_vertices = 0;
+  for (const Loop& loop : footprint.loops) plan_vertices += loop.points.size();
+  engine::Budget budget(options.budget, plan_vertices);
   std::exception_ptr first;  // the first attempt's error, of its own type (an open roof stays one)
   int retries = 0;
   // A clustering distance finer than the rounding the plan took where it
