@@ -100,15 +100,50 @@ void put_members(std::string& out, const std::map<std::string, std::string>& val
   out += '}';
 }
 
+// A float in its shortest round-trip text: 7 to 9 digits where a double's
+// takes up to 17. Read as a double (as JSON is) and rounded to float, the
+// text gives v back, so a file read and written again (procex merge) has the
+// same bytes: true of every finite float but +-7.038531e-26 (each of the 2^32
+// checked once, BENCHMARKS.md), so values that small are read back here and,
+// where they do not come back, written as the double v is.
+void put_float(std::string& out, float v) {
+  if (v == 0.0f || v == 1.0f) {  // most of a placement's entries: to_chars's own text, without its cost
+    out += v == 0.0f ? '0' : '1';
+    return;
+  }
+  char buf[32];
+  char* end = std::to_chars(buf, buf + sizeof buf, v + 0.0f).ptr;
+  if (v != 0.0f && std::abs(v) < 1e-20f) {
+    double back = 0.0;
+    std::from_chars(buf, end, back);
+    if (static_cast<float>(back) != v) end = std::to_chars(buf, buf + sizeof buf, static_cast<double>(v)).ptr;
+  }
+  out.append(buf, end);
+}
+
+// A placed mesh's transform as the file holds it: in float32, the precision
+// glTF readers hold node matrices in (the Khronos validator, a GPU), which is
+// finer than a window needs, since the matrix is local to its building (whose
+// node carries its translation in double). The matrices were most of a city's
+// JSON and formatting them in double a tenth of a batch's CPU time (issue 18).
+// Whether an instance is one node or two (is_trs) is decided on these values,
+// so a file read back decides the same.
+glm::dmat4 as_written(const glm::dmat4& transform) { return glm::dmat4(glm::mat4(transform)); }
+
+// t as float32 (as_written).
 void put_matrix(std::string& out, const glm::dmat4& t) {
   out += '[';
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) {
       if (c + r > 0) out += ',';
-      put_number(out, t[c][r]);
+      put_float(out, static_cast<float>(t[c][r]));
     }
   out += ']';
 }
+
+// Whether an instance's node matrix is translation * rotation * scale as
+// written, so it needs one node, not two (core/placement/trs_split.h).
+bool one_node(const GltfInstanceData& in) { return is_trs(as_written(in.transform)); }
 
 bool has_triangles(const GltfMeshData& mesh) {
   return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
@@ -178,7 +213,8 @@ void check_instances(const std::filesystem::path& path, const GltfMeshData& buil
     if (!has_triangles(prototypes[in.prototype]))
       throw IoError(where + " places a mesh without triangles ('" + prototypes[in.prototype].building + "')",
                     path.string());
-    if (const std::string problem = transform_problem(in.transform); !problem.empty())
+    // As written: past float32's range a transform is not finite there, and a tiny one singular.
+    if (const std::string problem = transform_problem(as_written(in.transform)); !problem.empty())
       throw IoError(where + " has " + problem, path.string());
     if (!is_utf8(in.tag)) throw IoError(where + " has a tag that is not UTF-8", path.string());
   }
@@ -249,7 +285,7 @@ Totals place_items(std::vector<Item>& items, Totals t = {}) {
     item.has_node = !item.placed && (item.has_mesh || !d.instances.empty());
     if (!item.has_node) continue;
     t.nodes += 1;
-    for (const GltfInstanceData& in : d.instances) t.nodes += is_trs(in.transform) ? 1 : 2;
+    for (const GltfInstanceData& in : d.instances) t.nodes += one_node(in) ? 1 : 2;
   }
   return t;
 }
@@ -442,7 +478,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   for (const GltfInstanceData& in : d.instances) {
     if (!children.empty()) children += ',';
     put_index(children, next);
-    next += is_trs(in.transform) ? 1 : 2;
+    next += one_node(in) ? 1 : 2;
   }
   if (!children.empty()) out += ",\"children\":[" + children + "]";
   out += ",\"extras\":{\"building\":";
@@ -469,8 +505,9 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   for (const GltfInstanceData& in : d.instances) {
     const std::size_t slot = written.slot[in.prototype];  // also the placed mesh's glTF mesh
     const std::string& name = written.meshes[slot]->building;
-    const bool trs = is_trs(in.transform);
-    const TrsSplit split = trs ? TrsSplit{in.transform, glm::dmat4(1.0)} : split_trs(in.transform);
+    const glm::dmat4 transform = as_written(in.transform);
+    const bool trs = is_trs(transform);
+    const TrsSplit split = trs ? TrsSplit{transform, glm::dmat4(1.0)} : split_trs(transform);
     out += ",{\"name\":";
     put_string(out, name);
     if (trs) {
@@ -491,7 +528,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
       // outer * inner is the transform only to rounding: the exact one rides
       // along, so reading and writing again gives the same bytes.
       out += ",\"transform\":";
-      put_matrix(out, in.transform);
+      put_matrix(out, transform);
     }
     out += "}}";
     if (!trs) {

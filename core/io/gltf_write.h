@@ -16,10 +16,12 @@
 // Placed meshes (windows, pillars: core/placement) are instanced: one glTF
 // mesh per distinct placed mesh (its name in the mesh's extras as "placed"),
 // one child node of its building's node per instance, holding the instance's
-// matrix (a shear, which a glTF matrix cannot hold, as two nodes: see
-// core/placement/trs_split.h) and its tag in extras.
-// Reading back what was written (core/io/glb_read.h) gives the same data, so
-// shards merge into the same bytes an unsharded run writes.
+// matrix in float32 as glTF readers hold it (a shear, which a glTF matrix
+// cannot hold, as two nodes: see core/placement/trs_split.h) and its tag in
+// extras.
+// Reading back what was written (core/io/glb_read.h) gives the same data
+// (the matrices as float32 rounds them), so shards merge into the same bytes
+// an unsharded run writes.
 #pragma once
 
 #include <array>

@@ -2,6 +2,7 @@
 // rotation, and together they give back the map.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
 #include "core/placement/trs_split.h"
@@ -24,6 +25,18 @@ TEST(TrsSplit, RotationScaleAndMirrorNeedNoSplit) {
   EXPECT_TRUE(is_trs(glm::dmat4(1.0)));
   EXPECT_TRUE(is_trs(affine({0, 2, 0}, {-3, 0, 0}, {0, 0, -1}, {4, 5, 6})));
   EXPECT_FALSE(is_trs(affine({1, 0, 0}, {0.2, 1, 0}, {0, 0, 1}, {0, 0, 0})));
+}
+
+// A .glb holds matrices in float32 (core/io/gltf_write.cc): a rotation and
+// scale rounded so still needs no split, though its columns are no longer
+// orthogonal to double precision.
+TEST(TrsSplit, RotationsRoundedToFloatNeedNoSplit) {
+  for (int k = 1; k <= 50; ++k) {
+    const glm::dmat4 m = glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(40.0 * k, -3.0, 7.5)), 0.37 * k,
+                                                glm::dvec3(1.0, 2.0 * k, -3.0)),
+                                    glm::dvec3(1.5 * k, -0.7, 2.0 + k));
+    EXPECT_TRUE(is_trs(glm::dmat4(glm::mat4(m)))) << k;
+  }
 }
 
 TEST(TrsSplit, ShearsSplitIntoTwoLegalNodes) {
