@@ -141,7 +141,9 @@ struct BatchBudget {
   }
 };
 
-void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb, BatchBudget& budget, Building& b) {
+// `prototypes`: the batch's placed meshes in glTF form (to_glb).
+void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_glb,
+                       const std::shared_ptr<GltfPrototypeMemo>& prototypes, BatchBudget& budget, Building& b) {
   const auto start = std::chrono::steady_clock::now();
   FeatureEvaluation e = evaluate_feature(recipe, evaluator, *b.feature, /*parallel=*/false);  // buildings are parallel
   b.feature.reset();
@@ -155,7 +157,7 @@ void evaluate_building(const MeshRecipe& recipe, Evaluator& evaluator, bool to_g
     if (budget.exceeded) return;  // the batch is refused: free nothing more
     b.summary = summarize(b.meshes);
     if (to_glb) {
-      b.gltf = to_gltf(b.meshes);
+      b.gltf = to_gltf(b.meshes, prototypes);
       b.meshes = {};
     }
   }
@@ -315,6 +317,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
   ResultCache cache(std::size_t{32} << 20);
   const bool one_glb = !per_building && options.output.extension() == ".glb";
   Evaluator evaluator(cache, kEngineSalt);
+  const auto prototypes = std::make_shared<GltfPrototypeMemo>();
   Progress progress(err, sources.size(), options.progress);
   constexpr std::size_t kUnlimited = static_cast<std::size_t>(-1);
   const bool streamed = per_building || one_glb;
@@ -352,7 +355,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
         else sample[i].status = "refused";
       arena.execute([&] {
         tbb::parallel_for(std::size_t{0}, sample.size(), [&](std::size_t i) {
-          if (sample[i].feature) evaluate_building(*recipe, evaluator, true, budget, sample[i]);
+          if (sample[i].feature) evaluate_building(*recipe, evaluator, true, prototypes, budget, sample[i]);
         });
       });
       if (const GlbSizeEstimate e = estimate_glb_size(glb_bytes_each(sample, options.output), sources.size());
@@ -397,7 +400,7 @@ int run_batch(const BatchCommandOptions& options, std::ostream& out, std::ostrea
     };
     const auto work = [&](Building& b) {
       if (!b.feature || budget.exceeded) return;
-      evaluate_building(*recipe, evaluator, one_glb, budget, b);
+      evaluate_building(*recipe, evaluator, one_glb, prototypes, budget, b);
       if (per_building && b.status == "ok")
         write_mesh_set(options.output / b.file, std::exchange(b.meshes, {}), export_options);
     };

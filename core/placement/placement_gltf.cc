@@ -39,6 +39,26 @@ GltfMeshData gltf_mesh(const Mesh& mesh, const MaterialTable& materials, const s
 
 }  // namespace
 
+GltfMeshData GltfPrototypeMemo::prototype(const PlaceableMesh& mesh) {
+  const auto same = [&](const auto& held) {
+    const PlaceableMesh& m = held.first;
+    return m.mesh == mesh.mesh && m.name == mesh.name &&
+           (m.materials == mesh.materials || materials_of(m.materials) == materials_of(mesh.materials));
+  };
+  {
+    const std::lock_guard lock(mutex_);
+    if (const auto it = std::find_if(converted_.begin(), converted_.end(), same); it != converted_.end()) return it->second;
+  }
+  GltfMeshData out = gltf_mesh(*mesh.mesh, mesh.materials, mesh.name, mesh.name, -1);
+  const std::lock_guard lock(mutex_);
+  if (converted_.size() < kCapacity && std::none_of(converted_.begin(), converted_.end(), same))
+    converted_.emplace_back(mesh, out);
+  return out;
+}
+
+GltfSceneBuilder::GltfSceneBuilder(std::shared_ptr<GltfPrototypeMemo> prototypes)
+    : prototypes_(prototypes ? std::move(prototypes) : std::make_shared<GltfPrototypeMemo>()) {}
+
 void GltfSceneBuilder::add(const PlacementResult& result, const std::string& building, std::int64_t feature) {
   for (std::size_t i = 0; i < result.instances.size(); ++i) check_instance(result, i);
   GltfMeshData data;
@@ -68,7 +88,7 @@ void GltfSceneBuilder::place(const PlacementResult& placed) {
                            [&](const auto& look) { return materials_of(look.first) == materials_of(mesh.materials); });
     if (it == looks.end()) {
       it = looks.insert(looks.end(), {mesh.materials, scene_.prototypes.size()});
-      scene_.prototypes.push_back(gltf_mesh(*mesh.mesh, mesh.materials, mesh.name, mesh.name, -1));
+      scene_.prototypes.push_back(prototypes_->prototype(mesh));
     }
     // Relative to the building's origin, as its node stands there.
     const glm::dmat4 from_origin = glm::translate(glm::dmat4(1.0), -glm::dvec3(data.origin[0], data.origin[1], data.origin[2]));

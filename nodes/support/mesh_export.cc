@@ -207,8 +207,8 @@ std::vector<GisBuilding> to_gis(const MeshSet& set) {
 
 }  // namespace
 
-GltfScene to_gltf(const MeshSet& set) {
-  GltfSceneBuilder builder;
+GltfScene to_gltf(const MeshSet& set, std::shared_ptr<GltfPrototypeMemo> prototypes) {
+  GltfSceneBuilder builder(std::move(prototypes));
   for (std::size_t i = 0; i < set.parts.size(); ++i) {
     const TaggedMesh& part = set.parts[i];
     const TaggedMeshView view{part.mesh.get(), part.face_tags, part.tags, part.building, part.feature, part.materials};

@@ -14,12 +14,14 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/io/gltf_write.h"
 #include "core/io/up_axis.h"
+#include "core/placement/placement_gltf.h"
 #include "nodes/values.h"
 
 namespace procex {
@@ -33,8 +35,9 @@ struct ExportOptions {
 void write_mesh_set(const std::filesystem::path& path, const MeshSet& set, const ExportOptions& options = {});
 
 // The glTF form of the parts, in order, consecutive parts of one building
-// joined, their placed meshes as instances (each distinct placed mesh once).
-GltfScene to_gltf(const MeshSet& set);
+// joined, their placed meshes as instances (each distinct placed mesh once),
+// converted through `prototypes` when given (a batch's, shared by its buildings).
+GltfScene to_gltf(const MeshSet& set, std::shared_ptr<GltfPrototypeMemo> prototypes = nullptr);
 
 // The part with its placed meshes flattened into its mesh (core flatten():
 // instance faces tagged by the instance's tag, else their own, else the

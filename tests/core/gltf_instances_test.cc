@@ -121,6 +121,33 @@ TEST_F(GltfInstances, OnePrototypePerMeshAndLook) {
   EXPECT_EQ(colour(scene.meshes[2].instances[0].prototype), blue.colour);
 }
 
+// A batch's buildings share one memo of placed meshes in glTF form: each
+// builder still gets the prototypes it would make alone, a mesh named or
+// coloured otherwise by another building not taken for the first one's.
+TEST_F(GltfInstances, BuildersSharingPrototypesMakeWhatEachMakesAlone) {
+  Material red;
+  red.colour = {1, 0, 0};
+  const auto looks = [&](const std::string& name, const MaterialTable& materials) {
+    PlacementResult r = building(0);
+    r.meshes[0].name = name;
+    r.meshes[0].materials = materials;
+    return r;
+  };
+  const PlacementResult buildings[] = {looks("window", nullptr), looks("door", nullptr),
+                                       looks("window", material_table({{"frame", red}})), looks("window", nullptr)};
+  const auto shared = std::make_shared<GltfPrototypeMemo>();
+  for (const PlacementResult& b : buildings) {
+    GltfSceneBuilder alone, sharing(shared);
+    alone.add(b, "b");
+    sharing.add(b, "b");
+    ASSERT_EQ(sharing.scene().prototypes.size(), alone.scene().prototypes.size());
+    for (std::size_t p = 0; p < alone.scene().prototypes.size(); ++p) {
+      EXPECT_EQ(sharing.scene().prototypes[p].building, alone.scene().prototypes[p].building);
+      EXPECT_TRUE(sharing.scene().prototypes[p].primitives == alone.scene().prototypes[p].primitives) << p;
+    }
+  }
+}
+
 TEST_F(GltfInstances, RoundTripKeepsEveryInstance) {
   const GltfScene scene = street();
   const fs::path file = dir_ / "street.glb";
