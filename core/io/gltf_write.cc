@@ -204,19 +204,18 @@ void check_instances(const std::filesystem::path& path, const GltfMeshData& buil
                      const std::vector<GltfMeshData>& prototypes) {
   for (std::size_t i = 0; i < building.instances.size(); ++i) {
     const GltfInstanceData& in = building.instances[i];
-    const std::string where = "cannot write '" + path.string() + "': instance " + std::to_string(i) + " of building '" +
-                              building.building + "'";
+    const auto refuse = [&](const std::string& what) {  // the message made only then: a city has 40 instances a building
+      throw IoError("cannot write '" + path.string() + "': instance " + std::to_string(i) + " of building '" +
+                        building.building + "' " + what,
+                    path.string());
+    };
     if (in.prototype >= prototypes.size())
-      throw IoError(where + " names placed mesh " + std::to_string(in.prototype) + " but there are " +
-                        std::to_string(prototypes.size()),
-                    path.string());
+      refuse("names placed mesh " + std::to_string(in.prototype) + " but there are " + std::to_string(prototypes.size()));
     if (!has_triangles(prototypes[in.prototype]))
-      throw IoError(where + " places a mesh without triangles ('" + prototypes[in.prototype].building + "')",
-                    path.string());
+      refuse("places a mesh without triangles ('" + prototypes[in.prototype].building + "')");
     // As written: past float32's range a transform is not finite there, and a tiny one singular.
-    if (const std::string problem = transform_problem(as_written(in.transform)); !problem.empty())
-      throw IoError(where + " has " + problem, path.string());
-    if (!is_utf8(in.tag)) throw IoError(where + " has a tag that is not UTF-8", path.string());
+    if (const std::string problem = transform_problem(as_written(in.transform)); !problem.empty()) refuse("has " + problem);
+    if (!is_utf8(in.tag)) refuse("has a tag that is not UTF-8");
   }
 }
 
