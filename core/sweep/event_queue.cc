@@ -5,6 +5,7 @@
 #include <cstring>
 #include <iterator>
 #include <optional>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
@@ -171,7 +172,7 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   advance(i, c);
 }
 
-std::size_t EventQueue::hold_next(int i) {
+std::size_t EventQueue::hold_next(int i, double through) {
   SplitList& list = lists_[i];
   const SplitEarlier earlier{list.z};
   const Targets& t = *list.targets;
@@ -209,11 +210,14 @@ std::size_t EventQueue::hold_next(int i) {
       });
     }
   }
-  // The lowest few, the lowest last.
-  const auto keep = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(list.hold), end - found_.begin());
-  std::partial_sort(found_.begin(), found_.begin() + keep, end, earlier);
-  list.splits.assign(std::make_reverse_iterator(found_.begin() + keep), std::make_reverse_iterator(found_.begin()));
-  list.complete = every && keep == end - found_.begin();
+  // Those at or below `through`, then the lowest few after them, the lowest last.
+  const auto taken =
+      std::partition(found_.begin(), end, [&](const Split& s) { return queued_at(list, s) <= through; });
+  within_.assign(found_.begin(), taken);
+  const auto keep = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(list.hold), end - taken);
+  std::partial_sort(taken, taken + keep, end, earlier);
+  list.splits.assign(std::make_reverse_iterator(taken + keep), std::make_reverse_iterator(taken));
+  list.complete = every && keep == end - taken;
   held_ += list.splits.size();
   peak_held_ = std::max(peak_held_, held_);
   worked_ += *worked;
@@ -241,17 +245,66 @@ void EventQueue::advance(int i, int c) {
   const Split s = list.splits.back();
   list.splits.pop_back();
   --held_;
-  const SplitEarlier earlier{list.z};
-  list.same = list.last.edge != kNone && !earlier(list.last, s) && !earlier(s, list.last) ? list.same + 1 : 1;
-  list.last = s;
-  heap_.push({std::max(s.at, list.z), s.at, c, kNone, s.edge, i});
+  note_queued(list, s);
+  heap_.push({queued_at(list, s), s.at, c, kNone, s.edge, i});
 }
 
-const std::vector<Candidate>& EventQueue::pop_cluster(const State& st) {
+void EventQueue::note_queued(SplitList& list, const Split& s) {
+  // A list queues its splits lowest first, except those drain() takes in one
+  // pass, unordered: the last is the highest, and `same` counts its equals.
+  const SplitEarlier earlier{list.z};
+  if (list.last.edge == kNone || earlier(list.last, s)) {
+    list.last = s;
+    list.same = 1;
+  } else if (!earlier(s, list.last)) {
+    ++list.same;
+  }
+}
+
+bool EventQueue::closes_here(State& st, const Candidate& k) const {
+  const auto closes = [&](int c) {
+    return c != kNone && closing_[c].batch == batch_ && glm::distance(closing_[c].p, k.p) <= st.tol().position();
+  };
+  if (!closes(k.corner) && !closes(st.corners[k.corner].prev)) return false;
+  // The span resolve_intersections checks the split against (hits_span).
+  return closes(st.span_through(k.edge, k.p, k.z, st.tol().position()));
+}
+
+void EventQueue::drain(State& st, int i, int c, double through) {
+  SplitList& list = lists_[i];
+  const auto take = [&](const Split& s) {
+    note_queued(list, s);
+    const Candidate k{queued_at(list, s), st.position(c, s.at), c, kNone, s.edge};
+    if (!closes_here(st, k)) cluster_.push_back(k);
+  };
+  for (;;) {
+    while (!list.splits.empty() && queued_at(list, list.splits.back()) <= through) {
+      const Split s = list.splits.back();
+      list.splits.pop_back();
+      --held_;
+      take(s);
+    }
+    if (!list.splits.empty() || list.complete) break;
+    // Worked out again, every split in the batch at once: at the apex of an
+    // exact star each list has n of them, which kHeldMost at a time cost a
+    // pass over the edges per kHeldMost (n^3 / 256 tests in all).
+    list.hold = std::min(2 * list.hold, kHeldMost);
+    hold_next(i, through);
+    for (const Split& s : within_) take(s);
+  }
+  advance(i, c);
+}
+
+const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   std::vector<Candidate>& out = cluster_;
   out.clear();
-  const double top = heap_.top().z;
-  while (!heap_.empty() && heap_.top().z <= top + st.tol().height()) {
+  heads_.clear();
+  ++batch_;
+  closing_.resize(st.corners.size());
+  const double through = heap_.top().z + st.tol().height();
+  // The edge events first, and each list's first split: which spans close in
+  // the batch is known before any split is dropped for one (closes_here).
+  while (!heap_.empty() && heap_.top().z <= through) {
     const Entry e = heap_.top();
     heap_.pop();
     // A dead corner's events are void, and so is the rest of its list.
@@ -259,12 +312,36 @@ const std::vector<Candidate>& EventQueue::pop_cluster(const State& st) {
       if (e.list != kNone) free_list(e.list);
       continue;
     }
-    if (e.list != kNone) advance(e.list, e.corner);
-    // An edge event happens between the two corners, a split where the corner is.
-    const glm::dvec2 p = e.next != kNone ? 0.5 * (st.position(e.corner, e.at) + st.position(e.next, e.at))
-                                         : st.position(e.corner, e.at);
+    if (e.list != kNone) {
+      heads_.push_back({out.size(), e.list});
+      out.push_back({e.z, st.position(e.corner, e.at), e.corner, kNone, e.edge});
+      continue;
+    }
+    // An edge event happens between the two corners.
+    const glm::dvec2 p = 0.5 * (st.position(e.corner, e.at) + st.position(e.next, e.at));
     out.push_back({e.z, p, e.corner, e.next, e.edge});
+    // The span closes if its corners are still neighbours (as meets() takes it).
+    Closing& closing = closing_[e.corner];
+    if (st.corners[e.corner].next == e.next && st.corners[e.next].alive && closing.batch != batch_)
+      closing = {batch_, p};
   }
+  if (heads_.empty()) return out;
+  // Then the rest of each list in the batch, and the candidates in the
+  // queue's order again (by height, corner, edge).
+  const std::size_t popped = out.size();
+  for (const auto& [at, i] : heads_) {
+    const int c = out[at].corner;
+    if (closes_here(st, out[at])) out[at].corner = kNone;
+    drain(st, i, c, through);
+  }
+  const auto dropped = std::remove_if(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(popped),
+                                      [](const Candidate& k) { return k.corner == kNone; });
+  const auto middle = out.erase(dropped, out.begin() + static_cast<std::ptrdiff_t>(popped));
+  const auto earlier = [](const Candidate& a, const Candidate& b) {
+    return std::tie(a.z, a.corner, a.edge) < std::tie(b.z, b.corner, b.edge);
+  };
+  std::sort(middle, out.end(), earlier);
+  std::inplace_merge(out.begin(), middle, out.end(), earlier);
   return out;
 }
 

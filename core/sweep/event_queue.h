@@ -16,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <queue>
@@ -65,8 +66,9 @@ class EventQueue {
   bool empty() const { return heap_.empty(); }
   double next_height() const { return heap_.top().z; }
   // Removes every candidate within the height tolerance of the lowest and
-  // returns those of live corners, lowest first (valid until the next call).
-  const std::vector<Candidate>& pop_cluster(const State& st);
+  // returns those of live corners, lowest first (valid until the next call),
+  // but the splits that only repeat two collapses among them (closes_here).
+  const std::vector<Candidate>& pop_cluster(State& st);
 
   // Split candidates held in lists now, and the most held at once: what the
   // lists cost in memory (a few per list, however many edges are live).
@@ -141,9 +143,10 @@ class EventQueue {
                   const std::vector<int>& resolved);
   // Works out list i's splits into found_ (all of them, unordered).
   void find_splits(const SplitList& list);
-  // Holds the lowest few of list i's splits after the last it queued; returns
-  // how many it worked out.
-  std::size_t hold_next(int i);
+  // Holds the lowest few of list i's splits after the last it queued, after
+  // those queued at or below `through`, which go to within_ (unordered);
+  // returns how many it worked out.
+  std::size_t hold_next(int i, double through = -HUGE_VAL);
   // Whether `list` queues a split with `edge` at height `at` at all: not with
   // the corner's own edges, nor where the collision that made the corner put it.
   static bool queues(const SplitList& list, double at, int edge) {
@@ -151,8 +154,25 @@ class EventQueue {
     // A corner made by a collision with this edge meets it there because of it.
     return !(at <= list.near && std::find(list.resolved.begin(), list.resolved.end(), edge) != list.resolved.end());
   }
+  // The height a list's split is queued at: not below where it was listed.
+  static double queued_at(const SplitList& list, const Split& s) { return std::max(s.at, list.z); }
   // Puts the lowest split of list i (of corner c) in the queue, or frees the list.
   void advance(int i, int c);
+  // Notes that list i queued split s: its last, and how many equal to it.
+  static void note_queued(SplitList& list, const Split& s);
+  // Every split of list i (of corner c) queued at or below `through` goes to
+  // the batch being popped, in one pass over its edges (closes_here drops
+  // some); then the list's next is queued.
+  void drain(State& st, int i, int c, double through);
+  // Whether split k repeats what two collapses of the batch being popped say:
+  // its corner's span (or the one ending at it) and the span of its edge
+  // through its point both close within delta3 of that point. The collision
+  // it would add, the corner's two planes and the edge's, is then inside
+  // theirs: the corner and the edge's span are at the point, the edge is not
+  // cut through (resolve_cluster), and the three planes come in with them.
+  // At the apex of an exact star every reflex corner meets every plane (n^2/2
+  // splits at one point and height), and every span closes there.
+  bool closes_here(State& st, const Candidate& k) const;
   void free_list(int i);
 
   std::priority_queue<Entry, std::vector<Entry>, EntryLater> heap_;
@@ -170,6 +190,18 @@ class EventQueue {
   std::vector<std::uint32_t> hits_;
   std::vector<Split> found_;
   std::vector<Candidate> cluster_;  // what pop_cluster returned last
+  // pop_cluster's: where each span closing in the batch closes, by its first
+  // corner (current where `batch` is batch_), the lists whose first split in
+  // the batch was popped (its place in cluster_, the list), and the splits
+  // hold_next took at or below its `through`.
+  struct Closing {
+    std::uint64_t batch = 0;
+    glm::dvec2 p{0.0};
+  };
+  std::vector<Closing> closing_;
+  std::uint64_t batch_ = 0;
+  std::vector<std::pair<std::size_t, int>> heads_;
+  std::vector<Split> within_;
 };
 
 }  // namespace procex::engine

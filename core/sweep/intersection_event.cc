@@ -45,25 +45,11 @@ struct Chain {
   int in_edge, in_corner, out_edge, out_corner;
 };
 
-// The span of edge e (corner s to s.next) that contains p at height z.
-int span_through(State& st, int e, glm::dvec2 p, double z, double reach) {
-  const Edge& edge = st.edges[e];
-  for (int s : st.spans(e)) {
-    const int t = st.corners[s].next;
-    if (t == kNone) continue;
-    if (std::abs(edge.plane.signed_distance(p, z)) > reach) continue;
-    const double ts = glm::dot(st.position(s, z) - p, edge.dir);
-    const double tt = glm::dot(st.position(t, z) - p, edge.dir);
-    if (ts <= st.tol().span_margin() && tt >= -st.tol().span_margin()) return s;
-  }
-  return kNone;
-}
-
 // Whether a split's edge has a span through its point, at the candidate's own
 // height: a batch spans delta2, over which a plane leaning at k moves
 // k delta2, more than delta3 wherever k > 1.
 bool hits_span(State& st, const Candidate& c) {
-  return span_through(st, c.edge, c.p, c.z, st.tol().position()) != kNone;
+  return st.span_through(c.edge, c.p, c.z, st.tol().position()) != kNone;
 }
 
 // The collision a candidate stands for while its corners live, its span not
@@ -545,7 +531,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
       bool touches = false;
       for (int s : st.spans(e)) touches = touches || at(s) || at(st.corners[s].next);
       if (touches) break;
-      const int s = span_through(st, e, p, z, near);
+      const int s = st.span_through(e, p, z, near);
       if (s == kNone) continue;
       if (marks.cut(e)) chains.push_back({e, s, e, st.corners[s].next});
       break;

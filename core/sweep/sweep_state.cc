@@ -166,4 +166,17 @@ const std::vector<int>& State::spans(int e) {
   return s;
 }
 
+int State::span_through(int e, glm::dvec2 p, double z, double reach) {
+  const Edge& edge = edges[e];
+  for (int s : spans(e)) {
+    const int t = corners[s].next;
+    if (t == kNone) continue;
+    if (std::abs(edge.plane.signed_distance(p, z)) > reach) continue;
+    const double ts = glm::dot(position(s, z) - p, edge.dir);
+    const double tt = glm::dot(position(t, z) - p, edge.dir);
+    if (ts <= tol_.span_margin() && tt >= -tol_.span_margin()) return s;
+  }
+  return kNone;
+}
+
 }  // namespace procex::engine

@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include "core/sweep/driver.h"
+#include "core/sweep/intersection_event.h"
 #include "core/sweep/profile_event.h"
 
 namespace procex::engine {
@@ -68,7 +69,7 @@ std::vector<glm::dvec2> star(int n) {
 // The clustering scale sweep() tries first.
 constexpr Tolerances kStarTolerances{200.0, Tolerances::retry_relative[0]};
 
-std::vector<Candidate> drain(EventQueue& queue, const State& st) {
+std::vector<Candidate> drain(EventQueue& queue, State& st) {
   std::vector<Candidate> out;
   while (!queue.empty())
     for (const Candidate& c : queue.pop_cluster(st)) out.push_back(c);
@@ -183,6 +184,46 @@ TEST(EventQueue, HoldsSplitCandidatesInLinearMemory) {
   EXPECT_GT(small, 0u);
   EXPECT_LT(large, 6 * small) << small << " candidates held at 500 corners, " << large << " at 2,000";
   EXPECT_LT(large, 8u * 2000u) << "a few per corner";
+}
+
+// An exact star (radii 100 and 90 m, no jitter) has every edge at one
+// distance from its centre: every reflex corner meets every edge's plane at
+// the apex, at one height, so n^2 / 2 splits fall in one batch there. Every
+// span closes at the apex too, so each split only repeats two collapses of
+// the batch, and the queue hands out none of them (pop_cluster): the batch
+// holds the n edge events and a few splits. Listing a corner's splits at the
+// apex takes one pass over the edges, not one per kHeldMost of them: what the
+// queue works out stays O(n^2), not O(n^3).
+struct ApexWork {
+  std::size_t largest_batch, worked;
+};
+ApexWork sweeping_exact_star(int n) {
+  std::vector<glm::dvec2> points;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * M_PI * i / n;
+    points.push_back((i % 2 == 0 ? 100.0 : 90.0) * glm::dvec2(std::cos(a), std::sin(a)));
+  }
+  State st = loaded(points, kStarTolerances);
+  EventQueue queue;
+  schedule_all(st, queue);
+  std::size_t largest = 0;
+  while (!queue.empty()) {
+    st.height = std::max(st.height, queue.next_height());
+    const std::vector<Candidate>& batch = queue.pop_cluster(st);
+    largest = std::max(largest, batch.size());
+    resolve_intersections(st, queue, batch);
+  }
+  EXPECT_TRUE(std::none_of(st.corners.begin(), st.corners.end(), [](const Corner& c) { return c.alive; }))
+      << "the star's roof closes";
+  return {largest, queue.worked()};
+}
+
+TEST(EventQueue, HandsOutTheApexOfAnExactStarInLinearMemory) {
+  const int n = 2000;
+  const ApexWork work = sweeping_exact_star(n);
+  EXPECT_GE(work.largest_batch, static_cast<std::size_t>(n)) << "the apex is one batch of every edge event";
+  EXPECT_LT(work.largest_batch, 2u * n) << "and few splits";
+  EXPECT_LT(work.worked, static_cast<std::size_t>(n) * n) << "one pass per list at the apex";
 }
 
 
