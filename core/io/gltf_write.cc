@@ -112,8 +112,8 @@ void put_float(std::string& out, float v) {
     return;
   }
   char buf[32];
-  char* end = std::to_chars(buf, buf + sizeof buf, v + 0.0f).ptr;
-  if (v != 0.0f && std::abs(v) < 1e-20f) {
+  char* end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  if (std::abs(v) < 1e-20f) {
     double back = 0.0;
     std::from_chars(buf, end, back);
     if (static_cast<float>(back) != v) end = std::to_chars(buf, buf + sizeof buf, static_cast<double>(v)).ptr;
