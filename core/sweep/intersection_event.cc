@@ -357,50 +357,63 @@ bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in
   return at <= out;
 }
 
-// resolve_cluster's marks: the corners at the cluster's point, the edges
-// taking part (with their place in its list) and the edges cut through, each
-// stamped with the cluster, so a new cluster clears nothing. A hash map, a hash
-// set and an array of every corner made per cluster were a third of a small
-// roof's allocations, and O(n) per cluster in a large one.
-class ClusterMarks {
+// A set of corners or edges emptied in O(1): a member carries the set's
+// current stamp, and clear() moves on to the next (resetting the stamps only
+// when they wrap round).
+class StampedSet {
  public:
-  void next_cluster() {
+  void clear() {
     if (++stamp_ != 0) return;
-    // The stamps wrapped round: none may match.
-    for (auto* v : {&corner_, &edge_, &cut_}) std::fill(v->begin(), v->end(), 0);
+    std::fill(stamps_.begin(), stamps_.end(), 0);
     stamp_ = 1;
   }
-  bool at(int c) const { return marked(corner_, c); }
-  void mark_at(int c) { mark(corner_, c); }
-  bool participates(int e) const { return marked(edge_, e); }
-  // Marks edge e as taking part at `place`, unless it does already.
-  bool add_edge(int e, std::size_t place) {
-    if (participates(e)) return false;
-    mark(edge_, e);
-    if (place_.size() < edge_.size()) place_.resize(edge_.size());
-    place_[static_cast<std::size_t>(e)] = place;
-    return true;
+  bool contains(int i) const {
+    const auto k = static_cast<std::size_t>(i);  // kNone: past the end
+    return k < stamps_.size() && stamps_[k] == stamp_;
   }
-  std::size_t place(int e) const { return place_[static_cast<std::size_t>(e)]; }
-  // Whether edge e is newly cut through.
-  bool cut(int e) {
-    if (marked(cut_, e)) return false;
-    mark(cut_, e);
+  // Whether i is new to the set; from now on it is not.
+  bool insert(int i) {
+    if (contains(i)) return false;
+    const auto k = static_cast<std::size_t>(i);
+    if (stamps_.size() <= k) stamps_.resize(k + 1, 0);
+    stamps_[k] = stamp_;
     return true;
   }
 
  private:
-  bool marked(const std::vector<std::uint32_t>& v, int i) const {
-    const auto k = static_cast<std::size_t>(i);  // kNone: past the end
-    return k < v.size() && v[k] == stamp_;
+  std::uint32_t stamp_ = 1;
+  std::vector<std::uint32_t> stamps_;
+};
+
+// resolve_cluster's marks: the corners at the cluster's point, the edges
+// taking part (with their place in its list) and the edges cut through, kept
+// from one cluster to the next. A hash map, a hash set and an array of every
+// corner made per cluster were a third of a small roof's allocations, and
+// O(n) per cluster in a large one.
+class ClusterMarks {
+ public:
+  void next_cluster() {
+    corners_.clear();
+    edges_.clear();
+    cut_.clear();
   }
-  void mark(std::vector<std::uint32_t>& v, int i) {
-    const auto k = static_cast<std::size_t>(i);
-    if (v.size() <= k) v.resize(k + 1, 0);
-    v[k] = stamp_;
+  bool at(int c) const { return corners_.contains(c); }
+  void mark_at(int c) { corners_.insert(c); }
+  bool participates(int e) const { return edges_.contains(e); }
+  // Marks edge e as taking part at `place`, unless it does already.
+  bool add_edge(int e, std::size_t place) {
+    if (!edges_.insert(e)) return false;
+    const auto k = static_cast<std::size_t>(e);
+    if (place_.size() <= k) place_.resize(k + 1);
+    place_[k] = place;
+    return true;
   }
-  std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> corner_, edge_, cut_;
+  std::size_t place(int e) const { return place_[static_cast<std::size_t>(e)]; }
+  // Whether edge e is newly cut through.
+  bool cut(int e) { return cut_.insert(e); }
+
+ private:
+  StampedSet corners_, edges_, cut_;
   std::vector<std::size_t> place_;
 };
 
@@ -704,20 +717,13 @@ class LookedAt {
  public:
   void next_batch() {
     looks_.clear();
-    if (++batch_ == 0) {  // the stamps wrapped round: none may match
-      std::fill(stamp_.begin(), stamp_.end(), 0);
-      batch_ = 1;
-    }
+    seen_.clear();
   }
   // Whether the pair is new to this batch; from now on it is not.
   bool insert(int c, int n) {
     const auto k = static_cast<std::size_t>(c);
-    if (stamp_.size() <= k) {
-      stamp_.resize(k + 1, 0);
-      last_.resize(k + 1);
-    }
-    if (stamp_[k] != batch_) {
-      stamp_[k] = batch_;
+    if (seen_.insert(c)) {
+      if (last_.size() <= k) last_.resize(k + 1);
       last_[k] = kNone;
     }
     for (int l = last_[k]; l != kNone; l = looks_[l].before)
@@ -732,9 +738,8 @@ class LookedAt {
     int next;
     int before;  // the same corner's previous look, or kNone
   };
-  std::uint32_t batch_ = 0;
-  std::vector<std::uint32_t> stamp_;  // by corner
-  std::vector<int> last_;             // by corner
+  StampedSet seen_;       // corners looked at in this batch
+  std::vector<int> last_;  // by corner seen
   std::vector<Look> looks_;
 };
 
