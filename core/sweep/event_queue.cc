@@ -104,37 +104,69 @@ void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges
   add_splits(st, c, some_, some_->edge.size(), resolved);
 }
 
-void EventQueue::find_splits(const SplitList& list) {
+inline void EventQueue::offer(const SplitList& list, const Split& s, double through) {
+  if (queued_at(list, s) <= through) {
+    within_.push_back(s);
+    return;
+  }
+  ++after_through_;
+  // Most splits are above the highest held: one comparison turns them away.
+  if (lowest_.size() == list.hold && !SplitEarlier{list.z}(s, lowest_.back())) return;
+  hold_among_lowest(list, s);
+}
+
+void EventQueue::hold_among_lowest(const SplitList& list, const Split& s) {
+  // The highest held drops out when all are held.
+  if (lowest_.size() < list.hold) lowest_.emplace_back();
+  const auto last = lowest_.end() - 1;
+  const auto at = std::upper_bound(lowest_.begin(), last, s, SplitEarlier{list.z});
+  std::move_backward(at, last, lowest_.end());
+  *at = s;
+}
+
+std::size_t EventQueue::find_splits(const SplitList& list, double through) {
   const Targets& t = *list.targets;
   const std::size_t n = list.size;
-  at_.resize(n);
+  // Whole runs of kRun, the tail never meeting: the test for a run with any
+  // meeting then compiles to a few vector compares.
+  constexpr std::size_t kRun = 8;
+  const std::size_t padded = (n + kRun - 1) / kRun * kRun;
+  at_.resize(padded);
   meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, list.p, list.v, list.z, list.earliest,
                   list.cap, list.outward, at_.data());
+  std::fill(at_.begin() + static_cast<std::ptrdiff_t>(n), at_.end(), HUGE_VAL);
   const double* meet = at_.data();
   // The few that meet, gathered without a branch per edge; in a capped
   // (nested) sweep whole runs of edges are out of reach.
-  hits_.resize(n);
+  hits_.resize(padded);
   std::size_t m = 0;
-  constexpr std::size_t kRun = 8;
-  for (std::size_t j0 = 0; j0 < n; j0 += kRun) {
-    const std::size_t end = std::min(n, j0 + kRun);
+  for (std::size_t j0 = 0; j0 < padded; j0 += kRun) {
     bool any = false;
-    for (std::size_t j = j0; j < end; ++j) any |= meet[j] != HUGE_VAL;
+    for (std::size_t j = j0; j < j0 + kRun; ++j) any |= meet[j] != HUGE_VAL;
     if (!any) continue;
-    for (std::size_t j = j0; j < end; ++j) {
+    for (std::size_t j = j0; j < j0 + kRun; ++j) {
       hits_[m] = static_cast<std::uint32_t>(j);
       m += meet[j] != HUGE_VAL;
     }
   }
-  found_.clear();
+  // Those queued already: up to the last, and as many equal to it as were queued.
+  const SplitEarlier earlier{list.z};
+  std::size_t same = list.same, worked = 0;
   for (std::size_t h = 0; h < m; ++h) {
     const std::size_t j = hits_[h];
-    // Built in place: a Split put together on the stack and copied whole
-    // stalls on store forwarding, which cost the every-edge path a third.
-    const double at = meet[j];
-    const int e = t.edge[j];
-    if (queues(list, at, e)) found_.push_back({at, e});
+    const Split s{meet[j], t.edge[j]};
+    if (!queues(list, s.at, s.edge)) continue;
+    ++worked;
+    if (list.last.edge != kNone && !earlier(list.last, s)) {
+      if (earlier(s, list.last)) continue;
+      if (same > 0) {
+        --same;
+        continue;
+      }
+    }
+    offer(list, s, through);
   }
+  return worked;
 }
 
 void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Targets> targets, std::size_t size,
@@ -174,11 +206,12 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
 
 std::size_t EventQueue::hold_next(int i, double through) {
   SplitList& list = lists_[i];
-  const SplitEarlier earlier{list.z};
   const Targets& t = *list.targets;
+  within_.clear();
+  lowest_.clear();
+  after_through_ = 0;
   std::optional<std::size_t> worked;
-  bool every = true;  // found_ holds every split not yet queued
-  auto end = found_.end();
+  bool every = true;  // every split not yet queued was offered
   if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(list.p.x) &&
       std::isfinite(list.p.y) && std::isfinite(list.v.x) && std::isfinite(list.v.y) && std::isfinite(list.z)) {
     // The live edges are each listed once, so the splits not queued yet are
@@ -192,32 +225,13 @@ std::size_t EventQueue::hold_next(int i, double through) {
                             list.hold + more, found_, index_scratch_);
     if (worked) {
       every = found_.size() < list.hold + more;
-      end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) { return !queues(list, s.at, s.edge); });
+      for (const Split& s : found_)
+        if (queues(list, s.at, s.edge)) offer(list, s, through);
     }
   }
-  if (!worked) {
-    find_splits(list);
-    worked = found_.size();
-    // Those queued already: up to the last, and as many equal to it as were queued.
-    end = found_.end();
-    if (list.last.edge != kNone) {
-      std::size_t same = list.same;
-      end = std::remove_if(found_.begin(), found_.end(), [&](const Split& s) {
-        if (earlier(list.last, s)) return false;
-        if (!earlier(s, list.last) && same == 0) return false;
-        if (!earlier(s, list.last)) --same;
-        return true;
-      });
-    }
-  }
-  // Those at or below `through`, then the lowest few after them, the lowest last.
-  const auto taken =
-      std::partition(found_.begin(), end, [&](const Split& s) { return queued_at(list, s) <= through; });
-  within_.assign(found_.begin(), taken);
-  const auto keep = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(list.hold), end - taken);
-  std::partial_sort(taken, taken + keep, end, earlier);
-  list.splits.assign(std::make_reverse_iterator(taken + keep), std::make_reverse_iterator(taken));
-  list.complete = every && keep == end - taken;
+  if (!worked) worked = find_splits(list, through);
+  list.splits.assign(lowest_.rbegin(), lowest_.rend());
+  list.complete = every && after_through_ == lowest_.size();
   held_ += list.splits.size();
   peak_held_ = std::max(peak_held_, held_);
   worked_ += *worked;

@@ -141,8 +141,13 @@ class EventQueue {
   // Lists the splits of corner c against the first `size` of `targets`.
   void add_splits(const State& st, int c, std::shared_ptr<const Targets> targets, std::size_t size,
                   const std::vector<int>& resolved);
-  // Works out list i's splits into found_ (all of them, unordered).
-  void find_splits(const SplitList& list);
+  // Works out every split of `list` by testing each of its edges and offers
+  // those not queued yet; returns how many it worked out.
+  std::size_t find_splits(const SplitList& list, double through);
+  // Takes split s into within_ if it is queued at or below `through`, else
+  // among the list's lowest `hold` (lowest_), if it is one of them.
+  void offer(const SplitList& list, const Split& s, double through);
+  void hold_among_lowest(const SplitList& list, const Split& s);
   // Holds the lowest few of list i's splits after the last it queued, after
   // those queued at or below `through`, which go to within_ (unordered);
   // returns how many it worked out.
@@ -188,7 +193,11 @@ class EventQueue {
   PlaneIndex::Scratch index_scratch_;
   std::vector<double> at_;  // scratch of find_splits
   std::vector<std::uint32_t> hits_;
-  std::vector<Split> found_;
+  std::vector<Split> found_;  // of the index's search
+  // hold_next's: the lowest offered above its `through`, in order, and how
+  // many were offered there.
+  std::vector<Split> lowest_;
+  std::size_t after_through_ = 0;
   std::vector<Candidate> cluster_;  // what pop_cluster returned last
   // pop_cluster's: where each span closing in the batch closes, by its first
   // corner (current where `batch` is batch_), the lists whose first split in
