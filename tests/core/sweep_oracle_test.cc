@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@
 #include "tests/support/point_set.h"
 #include "tests/support/roof_properties.h"
 #include "tests/support/skeleton_oracle.h"
+#include "tests/support/tangential_skeleton.h"
 
 namespace procex {
 namespace {
@@ -92,6 +94,39 @@ TEST(CgalOracle, SplitsNestedLoopsIntoPolygonsWithHoles) {
   double highest = 0.0;
   for (const glm::dvec3& n : input.skeleton().nodes) highest = std::max(highest, n.z);
   EXPECT_NEAR(highest, 3.0, 1e-12);
+}
+
+// A regular polygon's and a star's skeleton in closed form (one node at the
+// centre, a bisector from every corner) is CGAL's, node, ridges and faces.
+TEST(CgalOracle, ATangentialPlansClosedFormIsCgalsSkeleton) {
+  for (const testing::NamedPlan& plan :
+       {testing::regular_polygon(12, 10.0), testing::star(40, 10.0, 6.0), testing::regular_polygon(4, 3.0)}) {
+    const Footprint fp = prepare_footprint(make_footprint(plan.loops, 45.0)).footprint;
+    const std::optional<CgalSkeleton> closed = testing::tangential_skeleton(fp);
+    ASSERT_TRUE(closed) << plan.name;
+    const CgalSkeleton cgal = CgalSkeletonInput(fp).skeleton();
+    ASSERT_EQ(closed->nodes.size(), 1u);
+    ASSERT_FALSE(cgal.nodes.empty());
+    for (const glm::dvec3& n : cgal.nodes) EXPECT_NEAR(glm::distance(n, closed->nodes[0]), 0.0, 1e-9) << plan.name;
+    EXPECT_EQ(ridges_longer_than(*closed, 1e-9), ridges_longer_than(cgal, 1e-9)) << plan.name;
+    EXPECT_EQ(closed->faces_per_edge, cgal.faces_per_edge) << plan.name;
+  }
+}
+
+// A plan whose edges are not all at one distance from its centre has none:
+// a rectangle, a random star-shaped plan, a star with its radii moved by a
+// millimetre, a square with a hole.
+TEST(CgalOracle, OnlyATangentialPlanHasAClosedForm) {
+  std::mt19937_64 rng(7);
+  const std::vector<std::vector<std::vector<glm::dvec2>>> plans{
+      {{{0, 0}, {10, 0}, {10, 4}, {0, 4}}},
+      testing::random_star_shaped(50, 10.0, rng).loops,
+      testing::jittered_star(40, 100.0, 90.0, 1e-3, rng).loops,
+      {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}}};
+  for (const auto& loops : plans) {
+    const Footprint fp = prepare_footprint(make_footprint(loops, 45.0)).footprint;
+    EXPECT_FALSE(testing::tangential_skeleton(fp)) << loops[0].size() << " vertices";
+  }
 }
 
 // Not the sweep's output but roofs with one misplaced node or one wrong

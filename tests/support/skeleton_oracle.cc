@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include "tests/support/cgal_skeleton.h"
 #include "tests/support/point_set.h"
 #include "tests/support/roof_properties.h"
+#include "tests/support/tangential_skeleton.h"
 
 namespace procex::testing {
 namespace {
@@ -86,12 +88,16 @@ std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Sur
   std::size_t vertices = 0;
   for (const Loop& loop : footprint.loops) vertices += loop.points.size();
   CgalSkeleton cgal;
-  try {
-    cgal = oracle_skeleton(CgalSkeletonInput(footprint), vertices);
-  } catch (const CgalNoSkeleton& e) {
-    // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
-    problems.push_back(e.what());
-    return problems;
+  if (std::optional<CgalSkeleton> closed = tangential_skeleton(footprint)) {
+    cgal = std::move(*closed);
+  } else {
+    try {
+      cgal = oracle_skeleton(CgalSkeletonInput(footprint), vertices);
+    } catch (const CgalNoSkeleton& e) {
+      // Only a generic neighbour that CGAL can skeletonise can judge the roof now.
+      problems.push_back(e.what());
+      return problems;
+    }
   }
   for (glm::dvec3& n : cgal.nodes) n.z *= rise;
 
