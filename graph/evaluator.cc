@@ -4,7 +4,10 @@
 #include <atomic>
 #include <cassert>
 #include <chrono>
+#include <cstdint>
+#include <mutex>
 #include <new>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -31,186 +34,97 @@ struct Source {
   enum Kind { kUnconnected, kNode, kValue, kMissing } kind = kUnconnected;
   std::size_t node = kNone;  // kNode: plan index
   std::uint32_t port = 0;    // kNode: output index
-  Value value;               // kValue
-  Hash128 hash;              // kNode, kValue
-  std::string why;           // kMissing: for the consumer's error
+  // kValue: the top graph's input of this index, whose value and hash each run
+  // binds (Run::inputs_), so that a plan serves other bindings; kNone: `value`
+  // and `hash` below (a group input's default).
+  std::size_t input = kNone;
+  Value value;
+  Hash128 hash;
+  std::string why;  // kMissing: for the consumer's error
 };
 
 // kHashed: needed by a hash-only request, nothing wrong found.
 enum class State { kPending, kHashed, kHit, kCompute, kDone, kFailed, kInputFailed, kCancelled };
 
+// One node as planning made it: the same for every run of its plan.
 struct PlanNode {
   NodePath path;
   const Node* node = nullptr;
   std::vector<Value> overridden;  // exposed parameters of enclosing groups applied; empty: none
   std::vector<Source> inputs;
-  Hash128 key;
-  std::vector<Hash128> out_hash;
+  // The key fed with the salt, the type, the parameters, the expressions and
+  // the files (hash_extra): its inputs' hashes, known in each run, finish it.
+  Hasher key_prefix;
   std::vector<std::optional<std::uint32_t>> passes;  // output i hands on input *passes[i]
   std::string static_error;                           // found while planning: never evaluated
-  // Filled by evaluation:
-  State state = State::kPending;
-  std::vector<Value> outputs;
-  std::vector<std::string> warnings;
-  std::vector<std::size_t> dependents;
-  std::atomic<int> pending{0};
-  std::uint64_t time_ns = 0;
 
   const std::vector<Value>& params() const { return overridden.empty() ? node->params : overridden; }
   const NodeDecl& decl() const { return node->decl(); }
+  // Never evaluated: consumers read straight from its inputs.
+  bool passes_all() const {
+    return !passes.empty() && std::all_of(passes.begin(), passes.end(), [](const auto& p) { return p.has_value(); });
+  }
+};
+
+// A request planned: the graph flattened, parameters and expressions
+// evaluated, keys hashed up to the bound inputs. Immutable, so that runs whose
+// planning would read the same values share it (PlanMemo).
+struct Plan {
+  std::shared_ptr<const Graph> graph;  // kept in a PlanMemo: the graph its nodes point into, a copy of the caller's
+  std::vector<PlanNode> nodes;         // upstream before downstream
+  std::vector<Source> wanted;          // what feeds each requested port
+  std::vector<Diagnostic> warnings;    // the parameters' (an expression's)
+  std::vector<std::size_t> by_path;    // node indexes in path order: the statistics' order
+  // What planning read besides the graph, the request and how each graph
+  // input is bound (PlanMemo's keys): the attributes attr() read, by name, and
+  // the graph inputs whose values expressions read, by index.
+  std::vector<std::string> attributes_read;
+  std::vector<std::size_t> inputs_read;
 };
 
 // One graph being flattened: the recipe itself, or the body of one group instance.
 struct Frame {
   const Graph* graph = nullptr;
   NodePath prefix;
-  std::vector<Source> inputs;                                     // group bodies: what feeds each body input
+  std::vector<Source> inputs;                                     // what feeds each graph input
   std::unordered_map<NodeId, std::vector<std::pair<std::uint32_t, Value>>> overrides;  // node -> (param, value)
   std::unordered_map<NodeId, std::size_t> plan_index;             // regular nodes
   std::unordered_map<NodeId, std::vector<Source>> group_outputs;  // group instances
 };
 
-class Run {
- public:
-  Run(ResultCache& cache, const Hash128& salt, const EvalOptions& options, int level, EvalResult& result)
-      : cache_(cache), salt_(salt), options_(options), level_(level), result_(result) {}
+// A bound graph input's value: a run's own.
+const Value& value_of(const Source& s, const std::vector<Source>& inputs) {
+  return s.input == kNone ? s.value : inputs[s.input].value;
+}
 
-  // Phase 1: flattens and hashes what `ports` (outputs of the top graph) need.
-  std::vector<Source> plan(const Graph& g, const Bindings& bindings, std::span<const PortRef> ports) {
+// Phase 1: flattens what the requested ports of the top graph need.
+class Planner {
+ public:
+  Planner(const Hash128& salt, const EvalOptions& options, int level, const std::vector<Source>& inputs, Plan& plan)
+      : salt_(salt), options_(options), level_(level), inputs_(inputs), plan_(plan) {}
+
+  void plan(const Graph& g, std::span<const PortRef> ports) {
     Frame top;
     top.graph = &g;
-    for (const auto& [name, v] : bindings)
-      if (!g.input_index(name)) warn_graph("no graph input named '" + name + "'; the binding is ignored");
-    for (const GraphInput& in : g.inputs()) top.inputs.push_back(bind(in, bindings));
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+      Source s;
+      s.kind = inputs_[i].kind;
+      s.why = inputs_[i].why;
+      if (s.kind == Source::kValue) s.input = i;
+      top.inputs.push_back(std::move(s));
+    }
     std::vector<NodeId> starts;
     for (const PortRef& p : ports)
       if (p.node != kGraphInputs) starts.push_back(p.node);
     flatten(top, starts, 0);
-    std::vector<Source> out;
-    for (const PortRef& p : ports) out.push_back(resolve(top, p));
-    return out;
-  }
-
-  // Hash-only runs: marks the nodes the request needs, so that those whose
-  // inputs are missing (unbound, unconnected) report it as compute() would.
-  void check(const std::vector<Source>& wanted) { walk(wanted, false); }
-
-  // Phase 2 and 3: finds what is not cached and computes it.
-  void compute(const std::vector<Source>& wanted) {
-    const std::vector<std::size_t> to_run = walk(wanted, true);
-    std::vector<std::size_t> ready;
-    for (std::size_t i : to_run) {
-      PlanNode& n = *plan_[i];
-      std::vector<std::size_t> deps;
-      for (const Source& s : n.inputs)
-        if (s.kind == Source::kNode && plan_[s.node]->state == State::kCompute) deps.push_back(s.node);
-      std::sort(deps.begin(), deps.end());
-      deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
-      n.pending.store(static_cast<int>(deps.size()), std::memory_order_relaxed);
-      for (std::size_t d : deps) plan_[d]->dependents.push_back(i);
-      if (deps.empty()) ready.push_back(i);
-    }
-    if (options_.parallel) {
-      tbb::task_group tg;
-      for (std::size_t i : ready) tg.run([this, i, &tg] { run_parallel(i, tg); });
-      tg.wait();
-    } else {
-      std::vector<std::size_t> queue = ready;
-      while (!queue.empty()) {
-        const std::size_t i = queue.back();
-        queue.pop_back();
-        evaluate_node(i);
-        for (std::size_t d : plan_[i]->dependents)
-          if (plan_[d]->pending.fetch_sub(1) == 1) queue.push_back(d);
-      }
-    }
-  }
-
-  // Values, statistics and diagnostics into the result.
-  void report(const std::vector<Source>& wanted, const std::vector<std::string>& names) {
-    for (std::size_t k = 0; k < wanted.size(); ++k) {
-      const Source& s = wanted[k];
-      OutputResult r{names[k], {}, s.hash};
-      if (s.kind == Source::kValue) r.value = s.value;
-      if (s.kind == Source::kNode) {
-        const PlanNode& n = *plan_[s.node];
-        if (n.state == State::kHit || n.state == State::kDone) r.value = n.outputs[s.port];
-      }
-      if (s.kind == Source::kMissing || s.kind == Source::kUnconnected)
-        result_.diagnostics.push_back({Severity::kError, {}, {}, "output '" + names[k] + "': " +
-                                                                   (s.why.empty() ? "nothing is connected" : s.why)});
-      result_.outputs.push_back(std::move(r));
-    }
-    std::vector<std::size_t> order(plan_.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) { return plan_[a]->path < plan_[b]->path; });
-    for (std::size_t i : order) report_node(*plan_[i]);
-    for (const auto& pt : pass_through_stats_) result_.stats.nodes.push_back(pt);
-    std::sort(result_.stats.nodes.begin(), result_.stats.nodes.end(),
-              [](const NodeStats& a, const NodeStats& b) { return a.path < b.path; });
-    result_.cancelled = options_.cancel.cancelled();
+    for (const PortRef& p : ports) plan_.wanted.push_back(resolve(top, p));
+    plan_.by_path.resize(plan_.nodes.size());
+    for (std::size_t i = 0; i < plan_.by_path.size(); ++i) plan_.by_path[i] = i;
+    std::sort(plan_.by_path.begin(), plan_.by_path.end(),
+              [this](std::size_t a, std::size_t b) { return plan_.nodes[a].path < plan_.nodes[b].path; });
   }
 
  private:
-  // From the requested outputs towards the inputs: nodes with a static error
-  // fail; with `use_cache`, cache hits stop the walk and the nodes to compute
-  // are returned; without, every needed node is only marked as hashed.
-  std::vector<std::size_t> walk(const std::vector<Source>& wanted, bool use_cache) {
-    std::vector<std::size_t> stack;
-    for (const Source& s : wanted)
-      if (s.kind == Source::kNode) stack.push_back(s.node);
-    std::vector<std::size_t> to_run;
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      PlanNode& n = *plan_[i];
-      if (n.state != State::kPending) continue;
-      if (!n.static_error.empty()) {
-        n.state = State::kFailed;
-        continue;
-      }
-      if (!use_cache) {
-        n.state = State::kHashed;
-      } else if (CachedOutputs hit = cache_.find(n.key)) {
-        n.state = State::kHit;
-        const std::size_t count = n.decl().outputs().size();
-        n.outputs.assign(hit->begin(), hit->begin() + static_cast<std::ptrdiff_t>(count));
-        if (hit->size() > count) n.warnings = hit->back().get<std::vector<std::string>>();
-        continue;
-      } else {
-        n.state = State::kCompute;
-        to_run.push_back(i);
-      }
-      for (const Source& s : n.inputs)
-        if (s.kind == Source::kNode) stack.push_back(s.node);
-    }
-    return to_run;
-  }
-
-  Source bind(const GraphInput& in, const Bindings& bindings) {
-    Source s;
-    auto it = bindings.find(in.name);
-    const Value* v = it != bindings.end() ? &it->second : (in.default_value.empty() ? nullptr : &in.default_value);
-    if ((!v || v->empty()) && options_.assume_inputs_bound) {
-      s.kind = Source::kValue;  // no value: only hash_outputs may use this option
-      s.hash = Hasher().str("unbound graph input").str(in.name).result();
-    } else if (!v || v->empty()) {
-      s.kind = Source::kMissing;
-      s.why = "graph input '" + in.name + "' is not bound and has no default";
-    } else if (!in.type->is_any() && v->type() != in.type) {
-      s.kind = Source::kMissing;
-      s.why = "graph input '" + in.name + "' takes " + in.type->name() + " but was bound to " + v->type()->name();
-      warn_graph(s.why);
-    } else {
-      s.kind = Source::kValue;
-      s.value = *v;
-      s.hash = v->content_hash();
-    }
-    return s;
-  }
-
-  void warn_graph(std::string message) { result_.diagnostics.push_back({Severity::kWarning, {}, {}, std::move(message)}); }
-
   // What feeds the output port `p` of frame `f` (after flatten()).
   Source resolve(const Frame& f, PortRef p) const {
     if (p.node == kGraphInputs) return p.port < f.inputs.size() ? f.inputs[p.port] : Source{};
@@ -222,14 +136,13 @@ class Run {
       s.why = "no node " + std::to_string(p.node);
       return s;
     }
-    const PlanNode& n = *plan_[it->second];
-    if (p.port >= n.out_hash.size()) return Source{};
+    const PlanNode& n = plan_.nodes[it->second];
+    if (p.port >= n.passes.size()) return Source{};
     if (n.passes[p.port]) return n.inputs[*n.passes[p.port]];
     Source s;
     s.kind = Source::kNode;
     s.node = it->second;
     s.port = p.port;
-    s.hash = n.out_hash[p.port];
     return s;
   }
 
@@ -240,7 +153,7 @@ class Run {
   }
 
   // Visits the nodes `starts` need in dependency order (iteratively: chains
-  // may be long), creating plan nodes and hashing them.
+  // may be long), creating plan nodes.
   void flatten(Frame& f, const std::vector<NodeId>& starts, std::size_t depth) {
     const auto& links = f.graph->links();
     std::vector<std::pair<NodeId, bool>> stack;
@@ -276,7 +189,7 @@ class Run {
   // expression, a result out of range) sets `error`. Warnings go to `warnings`
   // when given.
   const std::vector<Value>& params_in(const Frame& f, const Node& node, std::vector<Value>& storage, std::string& error,
-                                      std::vector<std::string>* warnings = nullptr) const {
+                                      std::vector<std::string>* warnings = nullptr) {
     auto o = f.overrides.find(node.id);
     if (o == f.overrides.end() && node.expressions.empty()) return node.params;
     storage = node.params;
@@ -293,7 +206,7 @@ class Run {
 
   // Parameter p of `node` in frame f (throws, naming what is wrong).
   Value param_value(const Frame& f, const Node& node, std::uint32_t p, std::size_t depth,
-                    std::vector<std::string>* warnings) const {
+                    std::vector<std::string>* warnings) {
     if (auto o = f.overrides.find(node.id); o != f.overrides.end())
       for (auto it = o->second.rbegin(); it != o->second.rend(); ++it)
         if (it->first == p) return it->second;
@@ -305,6 +218,8 @@ class Run {
     Expression::Env env;
     env.name = [&](std::string_view name) { return name_value(f, name, depth, warnings); };
     env.attribute = [this](std::string_view key) -> const std::string* {
+      if (std::find(plan_.attributes_read.begin(), plan_.attributes_read.end(), key) == plan_.attributes_read.end())
+        plan_.attributes_read.emplace_back(key);
       auto a = options_.attributes.find(key);
       return a == options_.attributes.end() ? nullptr : &a->second;
     };
@@ -317,16 +232,20 @@ class Run {
 
   // What an expression name reads in frame f: a graph input known before
   // evaluation, or an exposed parameter.
-  ExprValue name_value(const Frame& f, std::string_view name, std::size_t depth, std::vector<std::string>* warnings) const {
+  ExprValue name_value(const Frame& f, std::string_view name, std::size_t depth, std::vector<std::string>* warnings) {
     std::string q = "'";  // appended, not added: GCC 12's -Wrestrict misreads '"x" + std::string(...)' here
     q.append(name).append("'");
     if (auto i = f.graph->input_index(name)) {
       const Source& s = *i < f.inputs.size() ? f.inputs[*i] : Source{};
-      if (s.kind == Source::kValue && s.value.empty()) {  // assume_inputs_bound: any value of the type will do
+      if (s.input != kNone &&
+          std::find(plan_.inputs_read.begin(), plan_.inputs_read.end(), s.input) == plan_.inputs_read.end())
+        plan_.inputs_read.push_back(s.input);
+      const Value& value = value_of(s, inputs_);
+      if (s.kind == Source::kValue && value.empty()) {  // assume_inputs_bound: any value of the type will do
         const ExprType t = expression_type(*f.graph->inputs()[*i].type).value_or(ExprType::kNumber);
         return t == ExprType::kNumber ? ExprValue(0.0) : t == ExprType::kBool ? ExprValue(false) : ExprValue(std::string());
       }
-      if (s.kind == Source::kValue && expression_type(*s.value.type())) return to_expr_value(s.value);
+      if (s.kind == Source::kValue && expression_type(*value.type())) return to_expr_value(value);
       if (s.kind == Source::kNode)
         throw ExprError("input " + q + " is fed by a node's output, known only once the graph runs; expressions read "
                         "values known before: the recipe's inputs, exposed parameters and attr()");
@@ -361,7 +280,7 @@ class Run {
   // The input that every output of node `id` hands on, when its parameters
   // say so and that input is linked (a Switch): nothing upstream of its other
   // inputs is needed, so none of it is planned or hashed.
-  std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) const {
+  std::optional<std::uint32_t> passed_input(const Frame& f, NodeId id) {
     const Node* node = f.graph->node(id);
     if (!node || node->type->is_group() || !hands_on(node->decl())) return std::nullopt;
     std::vector<Value> storage;
@@ -390,18 +309,17 @@ class Run {
     std::string param_error;
     std::vector<std::string> param_warnings;
     params_in(f, *node, overridden, param_error, &param_warnings);
-    for (std::string& w : param_warnings) result_.diagnostics.push_back({Severity::kWarning, path, node->type->name(), std::move(w)});
+    for (std::string& w : param_warnings) plan_.warnings.push_back({Severity::kWarning, path, node->type->name(), std::move(w)});
     if (node->type->is_group()) {
       emit_group(f, *node, std::move(path), overridden.empty() ? node->params : overridden, param_error, depth);
       return;
     }
-    auto pn = std::make_unique<PlanNode>();
-    PlanNode& n = *pn;
+    PlanNode n;
     n.path = std::move(path);
     n.node = node;
     n.overridden = std::move(overridden);
     n.static_error = std::move(param_error);
-    Hasher h;
+    Hasher& h = n.key_prefix;
     h.hash(salt_).hash(node->type->key);
     for (const Value& v : n.params()) v.hash(h);
     for (const auto& [p, e] : node->expressions) h.u64(p).str(e->text());
@@ -411,7 +329,6 @@ class Run {
     for (std::uint32_t i = 0; i < decl.inputs().size(); ++i) {
       if (only && i != *only) {  // not planned (flatten): never read, since every output passes *only on
         n.inputs.emplace_back();
-        h.u64(0x9e3779b97f4a7c15ull + Source::kUnconnected);
         continue;
       }
       Source s = resolve_input(f, PortRef{id, i});
@@ -422,32 +339,20 @@ class Run {
         if (n.static_error.empty()) n.static_error = s.why;
       }
       if (s.kind == Source::kMissing && n.static_error.empty()) n.static_error = "input '" + name + "': " + s.why;
-      if (s.kind == Source::kNode || s.kind == Source::kValue) h.hash(s.hash);
-      else h.u64(0x9e3779b97f4a7c15ull + s.kind);
       n.inputs.push_back(std::move(s));
     }
     if (only && n.static_error.empty() && n.inputs[*only].kind != Source::kNode && n.inputs[*only].kind != Source::kValue)
       n.static_error = "input '" + decl.inputs()[*only].name + "' has no value";  // and the others were not planned
-    n.key = h.result();
     const std::size_t outs = decl.outputs().size();
-    n.out_hash.resize(outs);
     n.passes.resize(outs);
     for (std::uint32_t o = 0; o < outs; ++o) {
       const std::optional<std::size_t> pass = forwarded(decl, n.params(), o);
       if (pass && *pass < n.inputs.size() &&
-          (n.inputs[*pass].kind == Source::kNode || n.inputs[*pass].kind == Source::kValue)) {
+          (n.inputs[*pass].kind == Source::kNode || n.inputs[*pass].kind == Source::kValue))
         n.passes[o] = static_cast<std::uint32_t>(*pass);
-        n.out_hash[o] = n.inputs[*pass].hash;
-      } else {
-        n.out_hash[o] = Hasher().hash(n.key).u64(o).result();
-      }
     }
-    if (outs > 0 && std::all_of(n.passes.begin(), n.passes.end(), [](const auto& p) { return p.has_value(); })) {
-      // Never evaluated: consumers read straight from its inputs.
-      pass_through_stats_.push_back(NodeStats{n.path, node->type->name(), NodeOutcome::kPassThrough, n.key, 0, 0, n.overridden});
-    }
-    f.plan_index.emplace(id, plan_.size());
-    plan_.push_back(std::move(pn));
+    f.plan_index.emplace(id, plan_.nodes.size());
+    plan_.nodes.push_back(std::move(n));
   }
 
   void emit_group(Frame& f, const Node& node, NodePath path, const std::vector<Value>& params,
@@ -455,7 +360,7 @@ class Run {
     const Graph& body = *node.type->body;
     std::vector<Source>& outs = f.group_outputs[node.id];
     const bool too_deep = depth + 1 > kMaxGroupDepth;
-    if (!param_error.empty() || too_deep || ++expanded_ + plan_.size() > options_.max_expanded_nodes) {
+    if (!param_error.empty() || too_deep || ++expanded_ + plan_.nodes.size() > options_.max_expanded_nodes) {
       Source s;
       s.kind = Source::kMissing;
       s.why = !param_error.empty() ? "group node " + to_string(path) + ": " + param_error
@@ -506,37 +411,175 @@ class Run {
     }
   }
 
+  Hash128 salt_;
+  const EvalOptions& options_;
+  const int level_;  // of detail
+  const std::vector<Source>& inputs_;
+  Plan& plan_;
+  std::size_t expanded_ = 0;  // group instances flattened so far
+};
+
+// One node in one run of a plan.
+struct NodeRun {
+  Hash128 key;
+  std::vector<Hash128> out_hash;
+  State state = State::kPending;
+  std::vector<Value> outputs;
+  std::vector<std::string> warnings;
+  std::string error;  // why it failed while running; empty: its plan node's static error, if any
+  std::vector<std::size_t> dependents;
+  std::atomic<int> pending{0};
+  std::uint64_t time_ns = 0;
+};
+
+// A plan run with one set of bound inputs: keys finished (phase 1's end),
+// then phases 2 and 3.
+class Run {
+ public:
+  Run(ResultCache& cache, const EvalOptions& options, EvalResult& result, const Plan& plan, std::vector<Source> inputs)
+      : cache_(cache), options_(options), result_(result), plan_(plan), inputs_(std::move(inputs)), runs_(plan.nodes.size()) {
+    for (std::size_t i = 0; i < plan_.nodes.size(); ++i) {
+      const PlanNode& p = plan_.nodes[i];
+      NodeRun& r = runs_[i];
+      Hasher h = p.key_prefix;
+      for (const Source& s : p.inputs)
+        if (s.kind == Source::kNode || s.kind == Source::kValue) h.hash(hash_of(s));
+        else h.u64(0x9e3779b97f4a7c15ull + s.kind);
+      r.key = h.result();
+      r.out_hash.resize(p.passes.size());
+      for (std::uint32_t o = 0; o < p.passes.size(); ++o)
+        r.out_hash[o] = p.passes[o] ? hash_of(p.inputs[*p.passes[o]]) : Hasher().hash(r.key).u64(o).result();
+    }
+  }
+
+  // Hash-only runs: marks the nodes the request needs, so that those whose
+  // inputs are missing (unbound, unconnected) report it as compute() would.
+  void check() { walk(false); }
+
+  // Phase 2 and 3: finds what is not cached and computes it.
+  void compute() {
+    const std::vector<std::size_t> to_run = walk(true);
+    std::vector<std::size_t> ready;
+    for (std::size_t i : to_run) {
+      std::vector<std::size_t> deps;
+      for (const Source& s : plan_.nodes[i].inputs)
+        if (s.kind == Source::kNode && runs_[s.node].state == State::kCompute) deps.push_back(s.node);
+      std::sort(deps.begin(), deps.end());
+      deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
+      runs_[i].pending.store(static_cast<int>(deps.size()), std::memory_order_relaxed);
+      for (std::size_t d : deps) runs_[d].dependents.push_back(i);
+      if (deps.empty()) ready.push_back(i);
+    }
+    if (options_.parallel) {
+      tbb::task_group tg;
+      for (std::size_t i : ready) tg.run([this, i, &tg] { run_parallel(i, tg); });
+      tg.wait();
+    } else {
+      std::vector<std::size_t> queue = ready;
+      while (!queue.empty()) {
+        const std::size_t i = queue.back();
+        queue.pop_back();
+        evaluate_node(i);
+        for (std::size_t d : runs_[i].dependents)
+          if (runs_[d].pending.fetch_sub(1) == 1) queue.push_back(d);
+      }
+    }
+  }
+
+  // Values, statistics and diagnostics into the result.
+  void report(const std::vector<std::string>& names) {
+    for (std::size_t k = 0; k < plan_.wanted.size(); ++k) {
+      const Source& s = plan_.wanted[k];
+      OutputResult r{names[k], {}, s.kind == Source::kNode || s.kind == Source::kValue ? hash_of(s) : s.hash};
+      if (s.kind == Source::kValue) r.value = value_of(s, inputs_);
+      if (s.kind == Source::kNode) {
+        const NodeRun& n = runs_[s.node];
+        if (n.state == State::kHit || n.state == State::kDone) r.value = n.outputs[s.port];
+      }
+      if (s.kind == Source::kMissing || s.kind == Source::kUnconnected)
+        result_.diagnostics.push_back({Severity::kError, {}, {}, "output '" + names[k] + "': " +
+                                                                   (s.why.empty() ? "nothing is connected" : s.why)});
+      result_.outputs.push_back(std::move(r));
+    }
+    for (std::size_t i : plan_.by_path) report_node(i);  // in path order, as NodeStats are kept
+    result_.cancelled = options_.cancel.cancelled();
+  }
+
+ private:
+  Hash128 hash_of(const Source& s) const {
+    if (s.kind == Source::kNode) return runs_[s.node].out_hash[s.port];
+    return s.input == kNone ? s.hash : inputs_[s.input].hash;
+  }
+
+  // From the requested outputs towards the inputs: nodes with a static error
+  // fail; with `use_cache`, cache hits stop the walk and the nodes to compute
+  // are returned; without, every needed node is only marked as hashed.
+  std::vector<std::size_t> walk(bool use_cache) {
+    std::vector<std::size_t> stack;
+    for (const Source& s : plan_.wanted)
+      if (s.kind == Source::kNode) stack.push_back(s.node);
+    std::vector<std::size_t> to_run;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      const PlanNode& p = plan_.nodes[i];
+      NodeRun& n = runs_[i];
+      if (n.state != State::kPending) continue;
+      if (!p.static_error.empty()) {
+        n.state = State::kFailed;
+        continue;
+      }
+      if (!use_cache) {
+        n.state = State::kHashed;
+      } else if (CachedOutputs hit = cache_.find(n.key)) {
+        n.state = State::kHit;
+        const std::size_t count = p.decl().outputs().size();
+        n.outputs.assign(hit->begin(), hit->begin() + static_cast<std::ptrdiff_t>(count));
+        if (hit->size() > count) n.warnings = hit->back().get<std::vector<std::string>>();
+        continue;
+      } else {
+        n.state = State::kCompute;
+        to_run.push_back(i);
+      }
+      for (const Source& s : p.inputs)
+        if (s.kind == Source::kNode) stack.push_back(s.node);
+    }
+    return to_run;
+  }
+
   void run_parallel(std::size_t i, tbb::task_group& tg) {
     evaluate_node(i);
-    for (std::size_t d : plan_[i]->dependents)
-      if (plan_[d]->pending.fetch_sub(1, std::memory_order_acq_rel) == 1) tg.run([this, d, &tg] { run_parallel(d, tg); });
+    for (std::size_t d : runs_[i].dependents)
+      if (runs_[d].pending.fetch_sub(1, std::memory_order_acq_rel) == 1) tg.run([this, d, &tg] { run_parallel(d, tg); });
   }
 
   void evaluate_node(std::size_t i) {
-    PlanNode& n = *plan_[i];
-    const NodeDecl& decl = n.decl();
-    std::vector<Value> inputs(n.inputs.size());
-    for (std::size_t k = 0; k < n.inputs.size(); ++k) {
-      const Source& s = n.inputs[k];
-      if (s.kind == Source::kValue) inputs[k] = s.value;
+    const PlanNode& p = plan_.nodes[i];
+    NodeRun& n = runs_[i];
+    const NodeDecl& decl = p.decl();
+    std::vector<Value> inputs(p.inputs.size());
+    for (std::size_t k = 0; k < p.inputs.size(); ++k) {
+      const Source& s = p.inputs[k];
+      if (s.kind == Source::kValue) inputs[k] = value_of(s, inputs_);
       if (s.kind != Source::kNode) continue;
-      const PlanNode& up = *plan_[s.node];
+      const NodeRun& up = runs_[s.node];
       if (up.state == State::kCancelled) {
         n.state = State::kCancelled;
         return;
       }
       if (up.state != State::kHit && up.state != State::kDone) {
+        const PlanNode& from = plan_.nodes[s.node];
         n.state = State::kInputFailed;
-        n.static_error = "input failed: '" + decl.inputs()[k].name + "' comes from node " + to_string(up.path) +
-                         " (" + up.node->type->name() + "), which has no result";
+        n.error = "input failed: '" + decl.inputs()[k].name + "' comes from node " + to_string(from.path) + " (" +
+                  from.node->type->name() + "), which has no result";
         return;
       }
       inputs[k] = up.outputs[s.port];
       const ValueType* want = decl.inputs()[k].type;
       if (!want->is_any() && inputs[k].type() != want) {
         n.state = State::kFailed;
-        n.static_error = "input '" + decl.inputs()[k].name + "' takes " + want->name() + " but received " +
-                         inputs[k].type()->name();
+        n.error = "input '" + decl.inputs()[k].name + "' takes " + want->name() + " but received " +
+                  inputs[k].type()->name();
         return;
       }
     }
@@ -544,11 +587,11 @@ class Run {
       n.state = State::kCancelled;
       return;
     }
-    EvalContext ctx(decl, n.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders,
+    EvalContext ctx(decl, p.params(), inputs, options_.cancel, options_.folder, options_.allowed_folders,
                     options_.resolved_paths.get(), options_.file_versions.get());
     const auto t0 = Clock::now();
     try {
-      n.node->type->evaluate(ctx);
+      p.node->type->evaluate(ctx);
     } catch (const Cancelled&) {
       n.state = State::kCancelled;
     } catch (const std::bad_alloc&) {  // its what() says nothing a user can act on
@@ -580,7 +623,7 @@ class Run {
     n.warnings = warnings;
     if (ctx.failed()) {
       n.state = State::kFailed;
-      n.static_error = error;
+      n.error = error;
       return;
     }
     n.outputs = std::move(ctx.outputs());
@@ -590,7 +633,14 @@ class Run {
     cache_.insert(n.key, std::move(entry));
   }
 
-  void report_node(const PlanNode& n) {
+  void report_node(std::size_t i) {
+    const PlanNode& p = plan_.nodes[i];
+    const NodeRun& n = runs_[i];
+    const std::string& type = p.node->type->name();
+    if (p.passes_all()) {
+      result_.stats.nodes.push_back(NodeStats{p.path, type, NodeOutcome::kPassThrough, n.key, 0, 0, p.overridden});
+      return;
+    }
     NodeOutcome outcome = NodeOutcome::kCancelled;
     switch (n.state) {
       case State::kPending: return;  // not needed: upstream of a cache hit, or only passed through
@@ -604,24 +654,158 @@ class Run {
     }
     std::size_t memory = 0;
     for (const Value& v : n.outputs) memory += v.memory_size();
-    const std::string& type = n.node->type->name();
-    result_.stats.nodes.push_back(NodeStats{n.path, type, outcome, n.key, n.time_ns, memory, n.overridden});
-    for (const std::string& w : n.warnings) result_.diagnostics.push_back({Severity::kWarning, n.path, type, w});
+    result_.stats.nodes.push_back(NodeStats{p.path, type, outcome, n.key, n.time_ns, memory, p.overridden});
+    for (const std::string& w : n.warnings) result_.diagnostics.push_back({Severity::kWarning, p.path, type, w});
     if (outcome == NodeOutcome::kFailed || outcome == NodeOutcome::kInputFailed)
-      result_.diagnostics.push_back({Severity::kError, n.path, type, n.static_error});
+      result_.diagnostics.push_back({Severity::kError, p.path, type, n.error.empty() ? p.static_error : n.error});
   }
 
   ResultCache& cache_;
-  Hash128 salt_;
   const EvalOptions& options_;
-  const int level_;  // of detail
   EvalResult& result_;
-  std::vector<std::unique_ptr<PlanNode>> plan_;
-  std::vector<NodeStats> pass_through_stats_;
-  std::size_t expanded_ = 0;  // group instances flattened so far
+  const Plan& plan_;
+  const std::vector<Source> inputs_;  // the top graph's, bound (bind_inputs)
+  std::vector<NodeRun> runs_;         // by plan index
 };
 
+// The top graph's inputs as `bindings` bind them, warning of bindings that
+// name no input and of values of the wrong type.
+std::vector<Source> bind_inputs(const Graph& g, const Bindings& bindings, const EvalOptions& options,
+                                std::vector<Diagnostic>& diagnostics) {
+  auto warn = [&](std::string message) { diagnostics.push_back({Severity::kWarning, {}, {}, std::move(message)}); };
+  for (const auto& [name, v] : bindings)
+    if (!g.input_index(name)) warn("no graph input named '" + name + "'; the binding is ignored");
+  std::vector<Source> out;
+  out.reserve(g.inputs().size());
+  for (const GraphInput& in : g.inputs()) {
+    Source& s = out.emplace_back();
+    auto it = bindings.find(in.name);
+    const Value* v = it != bindings.end() ? &it->second : (in.default_value.empty() ? nullptr : &in.default_value);
+    if ((!v || v->empty()) && options.assume_inputs_bound) {
+      s.kind = Source::kValue;  // no value: only hash_outputs may use this option
+      s.hash = Hasher().str("unbound graph input").str(in.name).result();
+    } else if (!v || v->empty()) {
+      s.kind = Source::kMissing;
+      s.why = "graph input '" + in.name + "' is not bound and has no default";
+    } else if (!in.type->is_any() && v->type() != in.type) {
+      s.kind = Source::kMissing;
+      s.why = "graph input '" + in.name + "' takes " + in.type->name() + " but was bound to " + v->type()->name();
+      warn(s.why);
+    } else {
+      s.kind = Source::kValue;
+      s.value = *v;
+      s.hash = v->content_hash();
+    }
+  }
+  return out;
+}
+
+// What every plan for a request reads besides the graph: the ports, the
+// options planning reads, the level of detail and how each graph input is
+// bound (its value aside).
+Hash128 request_key(const Hash128& salt, std::span<const PortRef> ports, const EvalOptions& options, int level,
+                    const std::vector<Source>& inputs) {
+  Hasher h;
+  h.hash(salt).u64(static_cast<std::uint64_t>(level)).boolean(options.assume_inputs_bound).u64(options.max_expanded_nodes);
+  h.str(options.folder.native()).u64(reinterpret_cast<std::uintptr_t>(options.file_versions.get()));
+  h.u64(ports.size());
+  for (const PortRef& p : ports) h.u64(p.node).u64(p.port);
+  for (const Source& s : inputs) h.u64(s.kind).str(s.why);
+  return h.result();
+}
+
+// That and the values a plan's planning read (Plan::attributes_read,
+// inputs_read) as this run binds them: runs with equal keys plan alike.
+Hash128 trace_key(const Hash128& request, const std::vector<std::string>& attributes,
+                  const std::vector<std::size_t>& inputs_read, const EvalOptions& options,
+                  const std::vector<Source>& inputs) {
+  Hasher h;
+  h.hash(request);
+  for (const std::string& name : attributes) {
+    const auto a = options.attributes.find(name);
+    if (a == options.attributes.end()) h.u64(0);
+    else h.u64(1).str(a->second);
+  }
+  for (std::size_t i : inputs_read) h.hash(inputs[i].hash);
+  return h.result();
+}
+
+// The values of g's exposed parameters: where copies of one recipe set for
+// different features differ (a PlanMemo's first look).
+Hash128 exposed_key(const Graph& g) {
+  Hasher h;
+  for (const ExposedParam& e : g.exposed_params()) {
+    const Node& node = *g.node(e.node);
+    if (auto x = node.expressions.find(e.param); x != node.expressions.end()) h.u64(1).str(x->second->text());
+    else h.u64(0).hash(node.params[e.param].content_hash());
+  }
+  return h.result();
+}
+
 }  // namespace
+
+struct PlanMemo::Impl {
+  // Plans whose planning read the same attributes and inputs (by name and
+  // index), by the values read (trace_key).
+  struct Traced {
+    std::vector<std::string> attributes;
+    std::vector<std::size_t> inputs;
+    std::unordered_map<Hash128, std::shared_ptr<const Plan>, Hash128Hasher> plans;
+  };
+  // The plans of one graph (as Graph::evaluates_like) and request.
+  struct ForGraph {
+    std::shared_ptr<const Graph> graph;  // the first plan's
+    std::vector<Traced> traces;
+  };
+
+  // The group of graphs like g in `bucket` (request_key and exposed_key), if any.
+  ForGraph* like(const Hash128& bucket, const Graph& g) {
+    auto [it, end] = graphs.equal_range(bucket);
+    for (; it != end; ++it)
+      if (it->second.graph->evaluates_like(g)) return &it->second;
+    return nullptr;
+  }
+
+  // A plan that serves this evaluation, or null and, when one of a graph like
+  // g is kept, that graph to plan with (its nodes outlive the caller's).
+  std::pair<std::shared_ptr<const Plan>, std::shared_ptr<const Graph>> find(
+      const Hash128& bucket, const Hash128& request, const Graph& g, const EvalOptions& options,
+      const std::vector<Source>& inputs) {
+    std::lock_guard lock(mutex);
+    ForGraph* group = like(bucket, g);
+    if (!group) return {};
+    for (const Traced& t : group->traces)
+      if (auto p = t.plans.find(trace_key(request, t.attributes, t.inputs, options, inputs)); p != t.plans.end())
+        return {p->second, group->graph};
+    return {nullptr, group->graph};
+  }
+
+  void keep(const Hash128& bucket, const Hash128& request, std::shared_ptr<const Plan> plan, const EvalOptions& options,
+            const std::vector<Source>& inputs) {
+    std::lock_guard lock(mutex);
+    if (count >= kMaxPlans) return;
+    ForGraph* group = like(bucket, *plan->graph);
+    if (!group) group = &graphs.emplace(bucket, ForGraph{plan->graph, {}})->second;
+    auto t = std::find_if(group->traces.begin(), group->traces.end(), [&](const Traced& x) {
+      return x.attributes == plan->attributes_read && x.inputs == plan->inputs_read;
+    });
+    if (t == group->traces.end()) t = group->traces.insert(t, Traced{plan->attributes_read, plan->inputs_read, {}});
+    const Hash128 key = trace_key(request, t->attributes, t->inputs, options, inputs);
+    if (t->plans.emplace(key, std::move(plan)).second) ++count;  // another thread may have kept the same
+  }
+
+  mutable std::mutex mutex;
+  std::unordered_multimap<Hash128, ForGraph, Hash128Hasher> graphs;  // by bucket
+  std::size_t count = 0;
+};
+
+PlanMemo::PlanMemo() : impl_(std::make_unique<Impl>()) {}
+PlanMemo::~PlanMemo() = default;
+
+std::size_t PlanMemo::size() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->count;
+}
 
 const Value* EvalResult::output(std::string_view name) const {
   for (const OutputResult& o : outputs)
@@ -677,12 +861,30 @@ EvalResult Evaluator::run(const Graph& g, const Bindings& bindings, std::span<co
   EvalResult result;
   Bindings bound;
   result.lod = level_of_detail(g, bindings, options, bound, result.diagnostics);
-  Run run(cache_, salt_hash_, options, result.lod, result);
-  std::vector<Source> wanted = run.plan(g, bound.empty() ? bindings : bound, ports);
+  std::vector<Source> inputs = bind_inputs(g, bound.empty() ? bindings : bound, options, result.diagnostics);
+  PlanMemo::Impl* memo = options.plans && options.file_versions ? options.plans->impl_.get() : nullptr;
+  Hash128 request, bucket;
+  std::shared_ptr<const Plan> plan;
+  std::shared_ptr<const Graph> owned;  // a memo's plan must not point into the caller's graph
+  if (memo) {
+    request = request_key(salt_hash_, ports, options, result.lod, inputs);
+    bucket = Hasher().hash(request).hash(exposed_key(g)).result();
+    std::tie(plan, owned) = memo->find(bucket, request, g, options, inputs);
+    if (!plan && !owned) owned = std::make_shared<const Graph>(g);
+  }
+  if (!plan) {
+    auto made = std::make_shared<Plan>();
+    made->graph = owned;
+    Planner(salt_hash_, options, result.lod, inputs, *made).plan(owned ? *owned : g, ports);
+    plan = made;
+    if (memo) memo->keep(bucket, request, plan, options, inputs);
+  }
+  result.diagnostics.insert(result.diagnostics.end(), plan->warnings.begin(), plan->warnings.end());
+  Run run(cache_, options, result, *plan, std::move(inputs));
   result.stats.hash_ns = ns_since(t0);
-  if (compute) run.compute(wanted);
-  else run.check(wanted);
-  run.report(wanted, names);
+  if (compute) run.compute();
+  else run.check();
+  run.report(names);
   result.stats.total_ns = ns_since(t0);
   return result;
 }

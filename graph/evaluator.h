@@ -10,7 +10,8 @@
 // How: (1) flatten groups and hash every node needed by the request, in
 // dependency order: key = H(salt, type+version, params in declaration order,
 // input hashes); output i's hash = H(key, i), or the input's hash for a
-// pass-through; (2) walk from the requested outputs towards the inputs,
+// pass-through (a batch plans once for many buildings and finishes only the
+// keys: PlanMemo); (2) walk from the requested outputs towards the inputs,
 // stopping at cache hits; (3) run the remaining nodes, independent branches
 // in parallel (oneTBB), storing each success in the cache. A failed node
 // poisons only its downstream; cancellation stops scheduling new nodes.
@@ -43,6 +44,32 @@ inline constexpr const char* kOutOfMemory =
 // Values for graph inputs, by name. Unbound inputs use their default.
 using Bindings = std::map<std::string, Value, std::less<>>;
 
+// Plans made for one batch, reused by its buildings (EvalOptions::plans).
+// Planning a recipe (flattening its groups, evaluating its expressions,
+// hashing its parameters and files) reads the graph, the request, how each
+// graph input is bound and, through expressions, some attributes and input
+// values; the bound values themselves only finish the keys. A plan is kept
+// with what its planning read and serves every later evaluation that would
+// read the same: a graph that evaluates alike (Graph::evaluates_like: a copy
+// of the recipe with the same exposed values set), the same request, and the
+// same values of the attributes and inputs read. Thread-safe.
+class PlanMemo {
+ public:
+  PlanMemo();
+  ~PlanMemo();
+  PlanMemo(const PlanMemo&) = delete;
+  PlanMemo& operator=(const PlanMemo&) = delete;
+  // Plans kept. At most kMaxPlans: a batch whose features read ever new values
+  // (every building's own height) plans the rest as if there were no memo.
+  std::size_t size() const;
+  static constexpr std::size_t kMaxPlans = 1024;
+
+ private:
+  friend class Evaluator;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 struct EvalOptions {
   CancelToken cancel;
   bool parallel = true;
@@ -65,10 +92,14 @@ struct EvalOptions {
   // building is keyed and made from that version (base/file_version_memo.h).
   // Null: looked at whenever the graph is hashed, so an edited file is seen.
   std::shared_ptr<FileVersionMemo> file_versions;
-  // Both of the above, fresh: what a batch sets before its first building.
+  // Set by a batch too: plans reused across its buildings (PlanMemo). Used
+  // only with file_versions, as a plan's keys hold the files' versions.
+  std::shared_ptr<PlanMemo> plans;
+  // The three above, fresh: what a batch sets before its first building.
   void pin_files_for_a_batch() {
     resolved_paths = std::make_shared<ConfinedPathMemo>();
     file_versions = std::make_shared<FileVersionMemo>();
+    plans = std::make_shared<PlanMemo>();
   }
   // hash_outputs only: graph inputs without binding or default count as bound
   // (to a value known only by name), so checking a recipe before its inputs

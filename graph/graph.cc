@@ -396,6 +396,36 @@ Status Graph::set_exposed(std::string_view name, Value v) {
   return Status::error("no exposed parameter " + q(name));
 }
 
+namespace {
+bool same_value(const Value& a, const Value& b) { return a.raw() == b.raw() ? a.type() == b.type() : a.same_content(b); }
+
+bool same_node(const Node& a, const Node& b) {
+  if (a.id != b.id || a.type != b.type || a.params.size() != b.params.size() ||
+      !std::equal(a.params.begin(), a.params.end(), b.params.begin(), same_value))
+    return false;
+  return std::equal(a.expressions.begin(), a.expressions.end(), b.expressions.begin(), b.expressions.end(),
+                    [](const auto& x, const auto& y) {
+                      return x.first == y.first && (x.second == y.second || x.second->text() == y.second->text());
+                    });
+}
+}  // namespace
+
+bool Graph::evaluates_like(const Graph& other) const {
+  const auto same_input = [](const GraphInput& a, const GraphInput& b) {
+    return a.name == b.name && a.type == b.type && same_value(a.default_value, b.default_value);
+  };
+  const auto same_output = [](const GraphOutput& a, const GraphOutput& b) { return a.name == b.name && a.type == b.type; };
+  const auto same_exposed = [](const ExposedParam& a, const ExposedParam& b) {
+    return a.name == b.name && a.node == b.node && a.param == b.param;
+  };
+  return links_ == other.links_ &&
+         std::equal(nodes_.begin(), nodes_.end(), other.nodes_.begin(), other.nodes_.end(),
+                    [](const auto& a, const auto& b) { return same_node(a.second, b.second); }) &&
+         std::equal(inputs_.begin(), inputs_.end(), other.inputs_.begin(), other.inputs_.end(), same_input) &&
+         std::equal(outputs_.begin(), outputs_.end(), other.outputs_.begin(), other.outputs_.end(), same_output) &&
+         std::equal(exposed_.begin(), exposed_.end(), other.exposed_.begin(), other.exposed_.end(), same_exposed);
+}
+
 Status Graph::set_preset(Preset p) {
   if (p.name.empty()) return Status::error("a preset needs a name");
   for (const auto& [name, v] : p.values) {

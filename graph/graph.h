@@ -212,6 +212,13 @@ class Graph {
   // types they may carry must fit wherever its output goes.
   std::vector<Diagnostic> validate() const;
 
+  // Whether `other` has the same nodes (types, parameters, expressions), links,
+  // inputs, outputs and exposed parameters: everything evaluation reads, so
+  // that one evaluates as the other for any bindings (editor state, metadata,
+  // presets and group definitions aside: instances hold their group's type).
+  // Quick for two copies of one graph, which share their values.
+  bool evaluates_like(const Graph& other) const;
+
  private:
   bool reaches(NodeId from, NodeId to) const;  // is `to` downstream of (or equal to) `from`?
   // The concrete types the output `from` may carry, each with the output it
