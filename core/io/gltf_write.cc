@@ -1,6 +1,8 @@
 #include "core/io/gltf_write.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <concepts>
@@ -105,21 +107,62 @@ void put_members(std::string& out, const std::map<std::string, std::string>& val
 // text gives v back, so a file read and written again (procex merge) has the
 // same bytes: true of every finite float but +-7.038531e-26 (each of the 2^32
 // checked once, BENCHMARKS.md), so values that small are read back here and,
-// where they do not come back, written as the double v is.
-void put_float(std::string& out, float v) {
-  if (v == 0.0f || v == 1.0f) {  // most of a placement's entries: to_chars's own text, without its cost
-    out += v == 0.0f ? '0' : '1';
-    return;
-  }
-  char buf[32];
-  char* end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+// where they do not come back, written as the double v is. Into buf (32
+// chars); returns the text's end.
+char* float_text(char* buf, float v) {
+  char* end = std::to_chars(buf, buf + 32, v).ptr;
   if (std::abs(v) < 1e-20f) {
     double back = 0.0;
     std::from_chars(buf, end, back);
-    if (static_cast<float>(back) != v) end = std::to_chars(buf, buf + sizeof buf, static_cast<double>(v)).ptr;
+    if (static_cast<float>(back) != v) end = std::to_chars(buf, buf + 32, static_cast<double>(v)).ptr;
   }
-  out.append(buf, end);
+  return end;
 }
+
+// The texts of the floats one building's placed matrices hold (float_text),
+// each formatted once: a wall's windows share their rotation and scale, so
+// five in six of the entries other than 0 and 1 repeat one the building wrote
+// already, and formatting them was 8 % of a city batch's instructions (issue
+// 18). A slot keeps the last float whose bits hash to it.
+class FloatTexts {
+ public:
+  void put(std::string& out, float v) {
+    if (v == 0.0f || v == 1.0f) {  // most of a placement's entries: to_chars's own text, without a look-up
+      out += v == 0.0f ? '0' : '1';
+      return;
+    }
+    const auto bits = std::bit_cast<std::uint32_t>(v);
+    Slot& slot = slots_[(bits * 0x9E3779B1u) >> (32 - kSlotBits)];
+    if (slot.size == 0 || slot.bits != bits) {
+      char buf[32];
+      const char* end = float_text(buf, v);
+      slot.bits = bits;
+      slot.size = static_cast<std::uint8_t>(end - buf);
+      std::memcpy(slot.text, buf, slot.size);
+    }
+    out.append(slot.text, slot.size);
+  }
+
+  // t as float32 (as_written).
+  void put_matrix(std::string& out, const glm::dmat4& t) {
+    out += '[';
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) {
+        if (c + r > 0) out += ',';
+        put(out, static_cast<float>(t[c][r]));
+      }
+    out += ']';
+  }
+
+ private:
+  static constexpr int kSlotBits = 7;  // 128 slots: a house's walls hold about 60 distinct entries
+  struct Slot {
+    std::uint32_t bits = 0;
+    std::uint8_t size = 0;  // 0: empty
+    char text[32];
+  };
+  std::array<Slot, std::size_t{1} << kSlotBits> slots_{};
+};
 
 // A placed mesh's transform as the file holds it: in float32, the precision
 // glTF readers hold node matrices in (the Khronos validator, a GPU), which is
@@ -129,17 +172,6 @@ void put_float(std::string& out, float v) {
 // Whether an instance is one node or two (is_trs) is decided on these values,
 // so a file read back decides the same.
 glm::dmat4 as_written(const glm::dmat4& transform) { return glm::dmat4(glm::mat4(transform)); }
-
-// t as float32 (as_written).
-void put_matrix(std::string& out, const glm::dmat4& t) {
-  out += '[';
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) {
-      if (c + r > 0) out += ',';
-      put_float(out, static_cast<float>(t[c][r]));
-    }
-  out += ']';
-}
 
 // Whether an instance's node matrix is translation * rotation * scale as
 // written, so it needs one node, not two (core/placement/trs_split.h).
@@ -501,6 +533,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
   out += "}}";
 
   next = item.node + 1;
+  FloatTexts texts;
   for (const GltfInstanceData& in : d.instances) {
     const std::size_t slot = written.slot[in.prototype];  // also the placed mesh's glTF mesh
     const std::string& name = written.meshes[slot]->building;
@@ -519,7 +552,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
     }
     if (split.outer != glm::dmat4(1.0)) {  // the identity is glTF's default: left out
       out += ",\"matrix\":";
-      put_matrix(out, split.outer);
+      texts.put_matrix(out, split.outer);
     }
     out += ",\"extras\":{\"tag\":";
     put_string(out, in.tag);
@@ -527,7 +560,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
       // outer * inner is the transform only to rounding: the exact one rides
       // along, so reading and writing again gives the same bytes.
       out += ",\"transform\":";
-      put_matrix(out, transform);
+      texts.put_matrix(out, transform);
     }
     out += "}}";
     if (!trs) {
@@ -537,7 +570,7 @@ void render_nodes(Item& item, const WrittenPrototypes& written) {
       put_index(out, slot);
       if (split.inner != glm::dmat4(1.0)) {
         out += ",\"matrix\":";
-        put_matrix(out, split.inner);
+        texts.put_matrix(out, split.inner);
       }
       out += '}';
     }

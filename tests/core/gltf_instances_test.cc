@@ -258,6 +258,37 @@ TEST_F(GltfInstances, ReadAndWrittenAgainKeepsTheBytes) {
   EXPECT_EQ(static_cast<float>(read_glb_scene(dir_ / "second.glb").meshes[0].instances[0].transform[3][0]), 7.0385307e-26f);
 }
 
+// A building's matrices share most entries (a wall's windows, one rotation
+// and scale), which the writer formats once a building: entries that repeat,
+// and far more distinct ones than it keeps texts for, all read back.
+TEST_F(GltfInstances, ABuildingsManyMatricesReadBackAsWritten) {
+  PlacementResult r = building(0);
+  const std::size_t w = r.add_mesh({"window", window_});
+  Frame wall;
+  for (int i = 0; i < 300; ++i) {
+    const double turn = 0.3 * (i % 3);  // three walls
+    wall.along = {std::cos(turn), std::sin(turn), 0};
+    wall.normal = {std::sin(turn), -std::cos(turn), 0};
+    wall.origin = {0.37 * i, 0.01 * i, 1 + 1e-5 * i};  // heights a few float steps apart
+    FramePlacement fit;
+    fit.scale = {1 + 0.001 * (i % 7), 1, 1};
+    r.add_instance({w, place_at(wall, fit), "", 0});
+  }
+  GltfSceneBuilder builder;
+  builder.add(r, "b0", 0);
+  const GltfScene scene = builder.scene();
+  write_glb(dir_ / "many.glb", scene);
+  const GltfScene back = read_glb_scene(dir_ / "many.glb");
+  const std::vector<GltfInstanceData>& want = scene.meshes.at(0).instances;
+  const std::vector<GltfInstanceData>& got = back.meshes.at(0).instances;
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i)
+    for (int c = 0; c < 4; ++c)
+      for (int row = 0; row < 4; ++row)
+        ASSERT_EQ(static_cast<float>(got[i].transform[c][row]), static_cast<float>(want[i].transform[c][row]))
+            << i << " " << c << " " << row;
+}
+
 TEST_F(GltfInstances, UnusedPlacedMeshesAreNotWritten) {
   GltfScene scene = street();
   scene.prototypes.push_back(scene.prototypes[0]);
