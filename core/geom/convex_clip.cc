@@ -4,9 +4,9 @@
 
 namespace procex {
 
-std::vector<glm::dvec2> clip_to_half_plane(const std::vector<glm::dvec2>& polygon, glm::dvec2 normal, double offset,
-                                           double margin) {
-  std::vector<glm::dvec2> out;
+void clip_to_half_plane(const std::vector<glm::dvec2>& polygon, glm::dvec2 normal, double offset, double margin,
+                        std::vector<glm::dvec2>& out) {
+  out.clear();
   const double slack = margin * glm::length(normal);
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const glm::dvec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
@@ -14,6 +14,12 @@ std::vector<glm::dvec2> clip_to_half_plane(const std::vector<glm::dvec2>& polygo
     if (da >= -slack) out.push_back(a);
     if ((da > slack && db < -slack) || (da < -slack && db > slack)) out.push_back(a + da / (da - db) * (b - a));
   }
+}
+
+std::vector<glm::dvec2> clip_to_half_plane(const std::vector<glm::dvec2>& polygon, glm::dvec2 normal, double offset,
+                                           double margin) {
+  std::vector<glm::dvec2> out;
+  clip_to_half_plane(polygon, normal, offset, margin, out);
   return out;
 }
 

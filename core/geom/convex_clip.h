@@ -17,6 +17,11 @@ namespace procex {
 // along it).
 std::vector<glm::dvec2> clip_to_half_plane(const std::vector<glm::dvec2>& polygon, glm::dvec2 normal, double offset,
                                            double margin = 0);
+// The same into `out` (cleared first, its capacity kept), for callers that
+// clip in turn between buffers they allocate once: growing a fresh vector
+// point by point was most of what clipping a wall's tiles cost.
+void clip_to_half_plane(const std::vector<glm::dvec2>& polygon, glm::dvec2 normal, double offset, double margin,
+                        std::vector<glm::dvec2>& out);
 
 // The part of `polygon` inside the counter-clockwise convex polygon `window`.
 std::vector<glm::dvec2> clip_to_convex(std::vector<glm::dvec2> polygon, const std::vector<glm::dvec2>& window,

@@ -63,11 +63,16 @@ bool covered(const std::vector<std::vector<glm::dvec2>>& faces, glm::dvec2 lo, g
 }
 
 double area_inside(const std::vector<glm::dvec2>& polygon, glm::dvec2 lo, glm::dvec2 hi) {
-  std::vector<glm::dvec2> p = clip_to_half_plane(polygon, {1, 0}, -lo.x);
-  p = clip_to_half_plane(p, {-1, 0}, hi.x);
-  p = clip_to_half_plane(p, {0, 1}, -lo.y);
-  p = clip_to_half_plane(p, {0, -1}, hi.y);
-  return std::abs(twice_signed_area(p)) / 2;
+  // Two buffers for the four clips, each allocated once: a convex polygon
+  // gains at most a point a clip.
+  std::vector<glm::dvec2> a, b;
+  a.reserve(polygon.size() + 4);
+  b.reserve(polygon.size() + 4);
+  clip_to_half_plane(polygon, {1, 0}, -lo.x, 0, a);
+  clip_to_half_plane(a, {-1, 0}, hi.x, 0, b);
+  clip_to_half_plane(b, {0, 1}, -lo.y, 0, a);
+  clip_to_half_plane(a, {0, -1}, hi.y, 0, b);
+  return std::abs(twice_signed_area(b)) / 2;
 }
 
 }  // namespace procex
