@@ -202,6 +202,10 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
 // they pin, and it still decides those they leave free (along an old corner's
 // line). 1e-2 and 1e-5 give the same stars (8,000 and 6,000 seeds 1-40).
 constexpr double kYoungPlaneWeight = 1e-3;
+// A corner is young while it has risen less than this many delta2. In
+// jittered star 12,000 seed 6 a corner at 318 m per m made 13.6 delta2 below
+// (8 mm in plan) must count young; at 3 delta2 8,000 seed 35 fails.
+constexpr double kYoungRise = 30.0;
 
 // The point nearest (least squares) to the planes of a cluster's collisions
 // and of the corners whose lines run through it (`planes`, `corners`): each
@@ -222,20 +226,25 @@ constexpr double kYoungPlaneWeight = 1e-3;
 // fell within delta3 of a vertex made 7.2e-7 m lower and took that one,
 // 9.6e-7 m off). A corner leaving along the plane left out starts on its
 // own line (resolve_cluster).
-// Where some of the corners were made less than `reach` below (the height
-// the fit itself may move the point by), the misfit goes onto them: the
-// point is refitted with each plane that only such corners run along
-// weighted down (`young`, by kYoungPlaneWeight), so the corners that came
-// from further below end on their lines. A young corner's faces hold only
-// what was made within that reach, while an old fast corner's faces are
-// slivers with features its whole way up. In jittered star 8,000 seed 35 a
-// corner at 127 m per m rose 0.71 m and met plane 3 just below where a
-// triangle of edges 3, 6 and 10 (corners made 8.2e-6 and 4.7e-6 m lower)
-// collapsed, 4.8e-7 m off in plan; the four planes' least-squares point
-// ended the old corner 3.4e-7 m off its line, and edge 6's face, 3e-7 m wide
-// 3.5 mm from its tip, crossed itself. Planes sorted; `young` is scratch.
+// Where some of the corners were made just below (young: kYoungRise), the
+// misfit goes onto them: the point is refitted with each plane that only
+// young corners run along and no old corner meets weighted down (`young`, by
+// kYoungPlaneWeight), so the corners that came from further below end on
+// their lines, where they meet the planes they collide with. A young
+// corner's faces hold only what was made in its short rise, while an old
+// fast corner's faces are slivers with features its whole way up. In
+// jittered star 8,000 seed 35 a corner at 127 m per m rose 0.71 m and met
+// plane 3 just below where a triangle of edges 3, 6 and 10 (corners made
+// 8.2e-6 and 4.7e-6 m lower) collapsed, 4.8e-7 m off in plan; the four
+// planes' least-squares point ended the old corner 3.4e-7 m off its line,
+// and edge 6's face, 3e-7 m wide 3.5 mm from its tip, crossed itself. The
+// refit is taken even where the least-squares point lies out of reach: in
+// 12,000 seed 6 the same meeting's point fell 4e-6 m from the cluster's
+// mean, and the slowest corner (a young one at 58 m per m) ended the old one
+// 1.3e-6 m off its line. Planes sorted; `young` is scratch.
 glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const std::vector<int>& corners,
-                         glm::dvec2 mean, double near, std::vector<unsigned char>& young) {
+                         const std::vector<Collision>& cs, const std::vector<int>& members, glm::dvec2 mean,
+                         double near, std::vector<unsigned char>& young) {
   glm::dvec3 fallback{mean, st.height};
   double slowest = 1e300;
   for (int c : corners) {
@@ -259,28 +268,31 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
   const glm::dvec3 x = glm::inverse(a) * b;
   const double reach = 10.0 * st.tol().height();
   auto within = [&](glm::dvec3 q) { return glm::length(glm::dvec2(q) - mean) <= near && std::abs(q.z - st.height) <= reach; };
-  if (!within(x)) return fallback;
+  const glm::dvec3 fit = within(x) ? x : fallback;
   // Three planes meet in one point whatever their weights.
-  if (planes.size() <= 3) return x;
-  auto is_young = [&](const Corner& k) { return st.height - k.base_z < reach; };
-  if (std::none_of(corners.begin(), corners.end(), [&](int c) {
-        return st.corners[c].motion == Motion::Regular && is_young(st.corners[c]);
-      }))
-    return x;
-  // 1 where only young corners run along the plane, 2 where an old one does.
+  if (planes.size() <= 3) return fit;
+  auto is_young = [&](int c) { return st.height - st.corners[c].base_z < kYoungRise * st.tol().height(); };
+  auto regular = [&](int c) { return st.corners[c].motion == Motion::Regular; };
+  if (std::none_of(corners.begin(), corners.end(), [&](int c) { return regular(c) && is_young(c); })) return fit;
+  // 1 where only young corners run along the plane, 2 where an old one runs
+  // along it or meets it.
   young.assign(planes.size(), 0);
-  for (int c : corners) {
-    const Corner& k = st.corners[c];
-    if (k.motion != Motion::Regular) continue;
-    for (int e : {k.prev_edge, k.next_edge}) {
-      const auto at = std::lower_bound(planes.begin(), planes.end(), e);
-      if (at != planes.end() && *at == e) {
-        unsigned char& y = young[static_cast<std::size_t>(at - planes.begin())];
-        y = std::max<unsigned char>(y, is_young(k) ? 1 : 2);
-      }
+  auto mark = [&](int e, unsigned char y) {
+    const auto at = std::lower_bound(planes.begin(), planes.end(), e);
+    if (at != planes.end() && *at == e) {
+      unsigned char& was = young[static_cast<std::size_t>(at - planes.begin())];
+      was = std::max(was, y);
     }
+  };
+  for (int c : corners)
+    if (regular(c))
+      for (int e : {st.corners[c].prev_edge, st.corners[c].next_edge}) mark(e, is_young(c) ? 1 : 2);
+  for (int m : members) {
+    const std::span<const int> ends = cs[m].corners();
+    if (std::any_of(ends.begin(), ends.end(), [&](int c) { return regular(c) && !is_young(c); }))
+      for (int e : cs[m].edges) mark(e, 2);
   }
-  if (std::find(young.begin(), young.end(), 1) == young.end()) return x;
+  if (std::find(young.begin(), young.end(), 1) == young.end()) return fit;
   // Solved for the move from x: the residuals are small, so the down-weighted
   // system's condition (1 / kYoungPlaneWeight^2) costs nothing that matters.
   glm::dmat3 aw(0.0);
@@ -294,7 +306,7 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
     bw -= n * ((glm::dot(n, x) - pl.c) / len2);
   }
   const glm::dvec3 refitted = x + glm::inverse(aw) * bw;
-  return within(refitted) ? refitted : x;
+  return within(refitted) ? refitted : fit;
 }
 
 // The point of the line where planes a and b cross nearest to x: x moved
@@ -607,7 +619,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   }
 
   std::sort(fitted.begin(), fitted.end());
-  const glm::dvec3 meet = meeting_point(st, fitted, through, p, near, lists.young);
+  const glm::dvec3 meet = meeting_point(st, fitted, through, cs, members, p, near, lists.young);
   const std::uint32_t v = st.vertex_at(glm::dvec2(meet), meet.z);
   // Trajectories end here once the corners are paired: some go on (below).
   for (int c : at_p) st.corners[c].alive = false;
