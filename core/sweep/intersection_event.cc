@@ -254,15 +254,22 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
       fallback = {st.position(c, st.height), st.height};
     }
   }
-  glm::dmat3 a(0.0);
-  glm::dvec3 b(0.0);
-  for (int e : planes) {
-    const Plane& pl = st.edges[e].plane;
-    const glm::dvec3 n{pl.n, -pl.k};
-    const double len2 = glm::dot(n, n);
-    a += glm::outerProduct(n, n) / len2;
-    b += n * (pl.c / len2);
-  }
+  // The least-squares system of the planes' distances (normals scaled to
+  // unit length), each weighted by weight(i): its matrix and right-hand side.
+  auto normal_equations = [&](auto weight, auto rhs) {
+    std::pair<glm::dmat3, glm::dvec3> out{glm::dmat3(0.0), glm::dvec3(0.0)};
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      const Plane& pl = st.edges[planes[i]].plane;
+      const glm::dvec3 n{pl.n, -pl.k};
+      const double w = weight(i);
+      const double len2 = glm::dot(n, n) / (w * w);
+      out.first += glm::outerProduct(n, n) / len2;
+      rhs(out.second, n, pl.c, len2);
+    }
+    return out;
+  };
+  const auto [a, b] = normal_equations([](std::size_t) { return 1.0; },
+                                       [](glm::dvec3& r, glm::dvec3 n, double c, double len2) { r += n * (c / len2); });
   const double det = glm::determinant(a);
   if (!(std::abs(det) > 1e-9)) return fallback;
   const glm::dvec3 x = glm::inverse(a) * b;
@@ -295,16 +302,9 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
   if (std::find(young.begin(), young.end(), 1) == young.end()) return fit;
   // Solved for the move from x: the residuals are small, so the down-weighted
   // system's condition (1 / kYoungPlaneWeight^2) costs nothing that matters.
-  glm::dmat3 aw(0.0);
-  glm::dvec3 bw(0.0);
-  for (std::size_t i = 0; i < planes.size(); ++i) {
-    const Plane& pl = st.edges[planes[i]].plane;
-    const glm::dvec3 n{pl.n, -pl.k};
-    const double w = young[i] == 1 ? kYoungPlaneWeight : 1.0;
-    const double len2 = glm::dot(n, n) / (w * w);
-    aw += glm::outerProduct(n, n) / len2;
-    bw -= n * ((glm::dot(n, x) - pl.c) / len2);
-  }
+  const auto [aw, bw] = normal_equations(
+      [&](std::size_t i) { return young[i] == 1 ? kYoungPlaneWeight : 1.0; },
+      [&](glm::dvec3& r, glm::dvec3 n, double c, double len2) { r -= n * ((glm::dot(n, x) - c) / len2); });
   const glm::dvec3 refitted = x + glm::inverse(aw) * bw;
   return within(refitted) ? refitted : fit;
 }
