@@ -192,6 +192,8 @@ double distance_to_loops(const std::vector<std::vector<glm::dvec2>>& loops, glm:
 
 }  // namespace
 
+double plan_diagonal(const Footprint& footprint) { return bounds(footprint).diagonal(); }
+
 double roof_tolerance(const Footprint& footprint) {
   const Bounds b = bounds(footprint);
   return 1e-6 * b.diagonal() + 64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;

@@ -18,6 +18,9 @@
 
 namespace procex::testing {
 
+// The length of the footprint's bounding-box diagonal.
+double plan_diagonal(const Footprint& footprint);
+
 // Positions agree within this: 1e-6 of the footprint's bounding-box diagonal
 // (the mesh validator's tolerance) plus the rounding of its largest coordinate.
 double roof_tolerance(const Footprint& footprint);

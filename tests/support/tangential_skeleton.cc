@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "tests/support/roof_properties.h"
+
 namespace procex::testing {
 
 std::optional<CgalSkeleton> tangential_skeleton(const Footprint& footprint) {
@@ -15,9 +17,7 @@ std::optional<CgalSkeleton> tangential_skeleton(const Footprint& footprint) {
   const std::size_t n = loop.points.size();
   if (n < 3) return std::nullopt;
   const glm::dvec2 centre = std::accumulate(loop.points.begin(), loop.points.end(), glm::dvec2(0.0)) / double(n);
-  glm::dvec2 lo = loop.points[0], hi = loop.points[0];
-  for (const glm::dvec2& p : loop.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const double within = 1e-9 * glm::distance(lo, hi);
+  const double within = 1e-9 * plan_diagonal(footprint);
   // The centre's distance from each edge's line, positive on its inner
   // (left, the loop running counter-clockwise) side.
   double r = 0.0;

@@ -75,13 +75,6 @@ std::optional<double> closed_form_volume(const Footprint& fp, const SweepOptions
                                 std::min(cap, inradius / s));
 }
 
-double plan_diagonal(const Footprint& fp) {
-  glm::dvec2 lo(INFINITY), hi(-INFINITY);
-  for (const Loop& loop : fp.loops)
-    for (const glm::dvec2& p : loop.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  return glm::length(hi - lo);
-}
-
 // The area of a surface's top cap, seen from above.
 double cap_area(const Surface& s) {
   double twice = 0.0;
