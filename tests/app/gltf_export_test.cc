@@ -49,18 +49,13 @@ ProcessRun run(const std::string& command) {
   return r;
 }
 
-class GltfExport : public ::testing::Test {
+class GltfExport : public test::ScratchDirTest {
  protected:
   void SetUp() override {
     ASSERT_EQ(run("node --version").code, 0) << "node (Node.js) is not installed: the glTF validator and three.js "
                                                     "tests need it (scripts/install-deps.sh)";
     ASSERT_TRUE(fs::exists(kTools / "node_modules" / "gltf-validator") && fs::exists(kTools / "node_modules" / "three"))
         << "run scripts/install-deps.sh (or: cd tools && npm ci) to install the glTF validator and three.js";
-    dir_ = fs::temp_directory_path() / ("procex_gltf_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
   }
   // lod 2: the buildings without their placed windows and doors (each placed mesh is a mesh of its own).
   fs::path city(std::optional<int> lod = std::nullopt) {
@@ -102,7 +97,6 @@ class GltfExport : public ::testing::Test {
       return {};
     }
   }
-  fs::path dir_;
 };
 
 // Every recipe in samples/ (city.pxg, whose footprint is a graph input, as

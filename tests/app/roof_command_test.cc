@@ -1,9 +1,9 @@
 // `procex roof` end to end: GeoJSON in, one OBJ and one JSON report out, one
 // bad feature never stopping the others, the process exit codes.
 #include "app/cli/roof_command.h"
+#include "tests/support/scratch_dir.h"
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -37,17 +37,8 @@ std::vector<std::string> obj_groups(const fs::path& p) {
   return groups;
 }
 
-class RoofCommand : public ::testing::Test {
+class RoofCommand : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("procex_roof_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
     return dir_ / name;
@@ -65,7 +56,6 @@ class RoofCommand : public ::testing::Test {
   }
   nlohmann::json report() { return nlohmann::json::parse(read_file(dir_ / "report.json")); }
 
-  fs::path dir_;
   std::ostringstream out_, err_;
 };
 

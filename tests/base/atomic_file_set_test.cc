@@ -6,33 +6,21 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "base/atomic_file_set.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AtomicFiles : public ::testing::Test {
+class AtomicFiles : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_atomic_file_set_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   std::size_t files() { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator())); }
-  fs::path dir_;
 };
 
 TEST_F(AtomicFiles, AllOrNothing) {
@@ -44,15 +32,15 @@ TEST_F(AtomicFiles, AllOrNothing) {
     EXPECT_FALSE(fs::exists(dir_ / "mesh.obj"));
     set.commit();
   }
-  EXPECT_EQ(read(dir_ / "mesh.obj"), "mesh");
-  EXPECT_EQ(read(dir_ / "report.json"), "final");
+  EXPECT_EQ(test::read_text(dir_ / "mesh.obj"), "mesh");
+  EXPECT_EQ(test::read_text(dir_ / "report.json"), "final");
   EXPECT_EQ(files(), 2u);
   {
     AtomicFileSet set;
     set.add(dir_ / "mesh.obj", "new mesh");
     EXPECT_THROW(set.add(dir_ / "missing" / "report.json", "x"), IoError);
   }  // never committed: the old files stay, no temporary is left
-  EXPECT_EQ(read(dir_ / "mesh.obj"), "mesh");
+  EXPECT_EQ(test::read_text(dir_ / "mesh.obj"), "mesh");
   EXPECT_EQ(files(), 2u);
   // A folder in the way is found before anything is renamed (an .obj whose .mtl went first).
   fs::create_directories(dir_ / "isdir.obj");

@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -12,37 +11,26 @@
 #include <gtest/gtest.h>
 
 #include "base/atomic_write.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AtomicWrite : public ::testing::Test {
+class AtomicWrite : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_atomic_write_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   std::size_t files() { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
-  fs::path dir_;
 };
 
 TEST_F(AtomicWrite, WritesAndReplacesWholeFiles) {
   const fs::path file = dir_ / "a.txt";
   write_file_atomically(file, "first");
-  EXPECT_EQ(read(file), "first");
+  EXPECT_EQ(test::read_text(file), "first");
   write_file_atomically(file, std::string("second\0with a zero byte", 23));
-  EXPECT_EQ(read(file), std::string("second\0with a zero byte", 23));
+  EXPECT_EQ(test::read_text(file), std::string("second\0with a zero byte", 23));
   write_file_atomically(file, "");
-  EXPECT_EQ(read(file), "");
+  EXPECT_EQ(test::read_text(file), "");
   EXPECT_EQ(files(), 1u);  // no temporary file left
 }
 
@@ -54,7 +42,7 @@ TEST_F(AtomicWrite, PiecesAreWrittenInOrder) {
   std::string joined;
   for (const std::string& t : texts) joined += t;
   write_file_atomically(dir_ / "pieces.txt", pieces);
-  EXPECT_EQ(read(dir_ / "pieces.txt"), joined);
+  EXPECT_EQ(test::read_text(dir_ / "pieces.txt"), joined);
   EXPECT_EQ(files(), 1u);
 }
 
@@ -80,7 +68,7 @@ TEST_F(AtomicWrite, ConcurrentWritersNeverMix) {
       for (int i = 0; i < 20; ++i) write_file_atomically(file, std::string(100000, c));
     });
   for (std::thread& t : writers) t.join();
-  const std::string text = read(file);
+  const std::string text = test::read_text(file);
   ASSERT_EQ(text.size(), 100000u);
   EXPECT_EQ(text, std::string(100000, text[0]));
   EXPECT_EQ(files(), 1u);

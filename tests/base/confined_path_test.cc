@@ -1,6 +1,5 @@
 // confined_path: a file a recipe names stays inside the recipe's folder (or a
 // folder the user allowed), however it is spelled: "..", absolute, symlinks.
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,22 +10,22 @@
 
 #include "base/confined_path.h"
 #include "base/confined_path_memo.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ConfinedPath : public ::testing::Test {
+class ConfinedPath : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    base_ = fs::weakly_canonical(fs::temp_directory_path() / ("procex_confined_" + std::to_string(::getpid())));
+    base_ = fs::weakly_canonical(dir_);
     recipe_ = base_ / "recipe";
     fs::create_directories(recipe_ / "lib");
     fs::create_directories(base_ / "elsewhere");
     std::ofstream(base_ / "secret.obj") << "v 0 0 0\n";
   }
-  void TearDown() override { fs::remove_all(base_); }
   std::string refusal(const std::string& name, const std::vector<fs::path>& allowed = {}) {
     try {
       return "accepted as " + confined_path(recipe_, name, allowed).string();

@@ -2,7 +2,6 @@
 // size and modification time (written again within one tick of the file
 // system's clock); an unchanged file keeps its version; a missing one has its own.
 // A FileVersionMemo answers each file as it first saw it.
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,20 +11,15 @@
 
 #include "base/file_version.h"
 #include "base/file_version_memo.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class FileVersionTest : public ::testing::Test {
+class FileVersionTest : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_file_version_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
 };
 
 TEST_F(FileVersionTest, AnEditWithinOneTickAtTheSameSizeIsANewVersion) {

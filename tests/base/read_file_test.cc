@@ -1,7 +1,6 @@
 // read_file: whatever a path names (a folder, a FIFO, a huge file), a clear
 // IoError or the bytes; never a hang or an allocation the size of a folder.
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,19 +9,15 @@
 #include <gtest/gtest.h>
 
 #include "base/read_file.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ReadFile : public ::testing::Test {
+class ReadFile : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_read_file_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string error_of(const fs::path& p, std::size_t limit = 1 << 20) {
     try {
       read_file(p, limit);
@@ -32,7 +27,6 @@ class ReadFile : public ::testing::Test {
     }
     return "read without error";
   }
-  fs::path dir_;
 };
 
 TEST_F(ReadFile, ReadsTheBytes) {

@@ -4,7 +4,6 @@
 // ones in several parts), their own materials and images, buildings with
 // and without texture coordinates or triangles; and it passes the Khronos
 // validator.
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +19,7 @@
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "tests/support/gltf_scripts.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -48,14 +48,8 @@ GltfMeshData building(int i, std::vector<GltfPrimitiveData> primitives) {
   return b;
 }
 
-class GlbStream : public ::testing::Test {
+class GlbStream : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_glb_stream_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // The placed meshes every part carries: a textured sign (its own material
   // and image, under the tag the buildings' walls have), a plain post
   // without texture coordinates, and one no building places.
@@ -121,7 +115,6 @@ class GlbStream : public ::testing::Test {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
 
-  fs::path dir_;
 };
 
 TEST_F(GlbStream, HasTheBytesOfTheSceneWrittenInMemory) {

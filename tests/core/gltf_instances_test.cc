@@ -1,7 +1,6 @@
 // Placed meshes in .glb files: one glTF mesh per distinct placed mesh, one
 // node per instance with its matrix; the file passes the Khronos validator
 // and reads back to the same instances.
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -25,6 +24,7 @@
 #include "core/placement/stretch.h"
 #include "tests/core/mesh_fixtures.h"
 #include "tests/support/gltf_scripts.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -35,14 +35,8 @@ std::shared_ptr<const Mesh> read(const std::string& name) {
   return std::make_shared<const Mesh>(read_mesh_file(fs::path(PROCEX_TEST_DATA) / name));
 }
 
-class GltfInstances : public ::testing::Test {
+class GltfInstances : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_gltf_instances_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Building b of a street: windows on the front wall (rotation and
   // translation), one pillar mirrored, one leaning (a shear).
   PlacementResult building(int b) {
@@ -78,7 +72,6 @@ class GltfInstances : public ::testing::Test {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
 
-  fs::path dir_;
   std::shared_ptr<const Mesh> window_, pillar_;
 };
 

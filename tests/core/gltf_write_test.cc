@@ -1,7 +1,6 @@
 // write_glb's own JSON: names that need escaping come back unchanged, an
 // empty scene is still a valid file, and data procex could not read back
 // (or JSON cannot hold) is refused, naming the building, before anything is written.
-#include <unistd.h>
 
 #include <filesystem>
 #include <limits>
@@ -14,6 +13,7 @@
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
 #include "tests/support/gltf_scripts.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -29,13 +29,8 @@ GltfMeshData triangle(const std::string& name, const std::string& tag, float x =
   return m;
 }
 
-class GltfWrite : public ::testing::Test {
+class GltfWrite : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_gltf_write_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   void expect_refused(const GltfMeshData& mesh, const std::string& words) {
     const fs::path file = dir_ / "bad.glb";
     try {
@@ -46,7 +41,6 @@ class GltfWrite : public ::testing::Test {
     }
     EXPECT_FALSE(fs::exists(file));
   }
-  fs::path dir_;
 };
 
 TEST_F(GltfWrite, NamesThatNeedEscapingRoundTrip) {

@@ -2,7 +2,6 @@
 // overflow the bounds check, and buffers that point at files outside the
 // shard. Each is refused with an IoError naming the file; nothing outside
 // the file's own bytes is ever read (the ASan build checks the copies).
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstring>
@@ -15,6 +14,7 @@
 #include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "core/io/io_error.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -92,15 +92,13 @@ TEST(HostileGlb, DeepExtrasAreRefused) {
 }
 
 TEST(HostileGlb, ExternalBuffersAreRefused) {
-  const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_glb_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("hostile_glb");
   std::ofstream(dir / "secret.bin", std::ios::binary) << triangle_bin();
   const std::string json = triangle_json("3", "0", R"({"byteLength": 84, "uri": ")" + (dir / "secret.bin").string() + "\"}");
   const std::string why = error_of(glb(json, ""));
   EXPECT_NE(why.find("external file"), std::string::npos) << why;
   const std::string relative = triangle_json("3", "0", R"({"byteLength": 84, "uri": "../../../../../../etc/passwd"})");
   EXPECT_NE(error_of(glb(relative, "")).find("crafted.glb"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

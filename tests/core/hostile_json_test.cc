@@ -2,7 +2,6 @@
 // files made to break them: numbers beyond double range, nesting deep enough
 // to overflow a stack, a folder where a file should be. Each is an IoError
 // naming the file, never an uncaught exception or a crash.
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -15,6 +14,7 @@
 #include "core/io/io_error.h"
 #include "core/io/json_read.h"
 #include "core/io/polyjson.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -63,8 +63,7 @@ TEST(HostileJson, DeepNestingIsRefusedBeforeParsing) {
 // A footprint file is read a chunk at a time (read_geojson_file): the same
 // refusals, naming the file, line and column, as for its text.
 TEST(HostileJson, FilesReadAsTheyGoAreRefusedAlike) {
-  const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_stream_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("hostile_stream");
   const std::string deep = std::string(80000, '[') + std::string(80000, ']');
   const std::string head = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties":
   )";
@@ -81,16 +80,14 @@ TEST(HostileJson, FilesReadAsTheyGoAreRefusedAlike) {
     EXPECT_EQ(got, error_of([&] { parse_geojson(text, {}, file.string()); }));
     EXPECT_NE(got.find(why), std::string::npos) << got;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(HostileJson, AFolderIsNotAFile) {
-  const auto dir = std::filesystem::temp_directory_path() / ("procex_hostile_json_" + std::to_string(::getpid()));
+  const test::ScratchDir dir("hostile_json");
   std::filesystem::create_directories(dir / "dir.geojson");
   EXPECT_NE(error_of([&] { read_geojson_file(dir / "dir.geojson"); }).find("it is a folder, not a file"), std::string::npos);
   EXPECT_NE(error_of([&] { read_polyjson_file(dir / "dir.geojson"); }).find("it is a folder"), std::string::npos);
   EXPECT_NE(error_of([&] { read_json_file(dir / "dir.geojson"); }).find("it is a folder"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

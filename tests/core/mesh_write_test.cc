@@ -9,23 +9,15 @@
 
 #include "core/io/io_error.h"
 #include "tests/core/mesh_fixtures.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class MeshWrite : public ::testing::Test {
+class MeshWrite : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("procex_mesh_write_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Only the written file is left: the temporary one was renamed.
   void expect_only(const fs::path& file) {
     std::vector<fs::path> files;
@@ -33,7 +25,6 @@ class MeshWrite : public ::testing::Test {
     EXPECT_EQ(files, std::vector<fs::path>{file});
   }
 
-  fs::path dir_;
 };
 
 // Coordinates that need all 17 significant digits to survive.

@@ -2,7 +2,6 @@
 // vn) and its .mtl materials (Kd, map_Kd) are read, confined like every file
 // a recipe names, and kept through flattening (OBJ output) and into glTF
 // primitives. The fixture is the sample door, samples/meshes/door_textured.obj.
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include "core/io/io_error.h"
 #include "core/io/mesh_read.h"
 #include "core/mesh/material.h"
+#include "tests/support/scratch_dir.h"
 #include "core/mesh/uv_frames.h"
 #include "core/placement/placement.h"
 
@@ -31,15 +31,13 @@ namespace fs = std::filesystem;
 
 const fs::path kMeshes = fs::path(PROCEX_SAMPLES) / "meshes";
 
-class PlacedMaterials : public ::testing::Test {
+class PlacedMaterials : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("procex_placed_materials_" + std::to_string(::getpid()));
     fs::create_directories(dir_ / "meshes");
     for (const char* name : {"door_textured.obj", "door_textured.mtl", "door_planks.png"})
       fs::copy_file(kMeshes / name, dir_ / "meshes" / name);
   }
-  void TearDown() override { fs::remove_all(dir_); }
   void write(const fs::path& file, const std::string& text) { std::ofstream(dir_ / file, std::ios::binary) << text; }
   // The door read as Mesh Placement reads it: confined to dir_, its materials into `materials`.
   Mesh read_door(const std::string& name = "meshes/door_textured.obj", Materials* materials = nullptr) {
@@ -54,7 +52,6 @@ class PlacedMaterials : public ::testing::Test {
     }
     return {};
   }
-  fs::path dir_;
 };
 
 TEST_F(PlacedMaterials, ReadsTheLibraryAndEachCornersOwnAttributes) {

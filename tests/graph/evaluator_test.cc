@@ -3,12 +3,12 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 #include <thread>
 
 #include "graph/evaluator.h"
 #include "tests/graph/test_graphs.h"
 #include "tests/graph/test_nodes.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -361,20 +361,17 @@ class FileSizeGraphTest : public EvaluatorTest {
  protected:
   void SetUp() override {
     EvaluatorTest::SetUp();
-    std::filesystem::create_directories(dir_);
     std::ofstream(dir_ / "data.txt") << "12345";
     const NodeId n = add(g_, "test.FileSize");
     ASSERT_TRUE(g_.set_param(n, "path", Value::make(std::string("data.txt"))));
     ASSERT_TRUE(g_.add_output(GraphOutput{"bytes", &value_type<std::int64_t>(), ""}));
     ASSERT_TRUE(g_.connect(PortRef{n, 0}, PortRef{kGraphOutputs, 0}));
-    options_.folder = dir_;
+    options_.folder = dir_.path();
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::int64_t bytes() { return ev.evaluate(g_, {}, {}, options_).output("bytes")->get<std::int64_t>(); }
   void rewrite(const std::string& text) { std::ofstream(dir_ / "data.txt") << text; }
 
-  const std::filesystem::path dir_ =
-      std::filesystem::temp_directory_path() / ("procex_eval_file_" + std::to_string(::getpid()));
+  const test::ScratchDir dir_{"eval_file"};
   Graph g_;
   EvalOptions options_;
 };

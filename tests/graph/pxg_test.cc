@@ -8,6 +8,7 @@
 #include "graph/evaluator.h"
 #include "graph/pxg.h"
 #include "tests/graph/test_graphs.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -15,18 +16,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kData = fs::path(PROCEX_TEST_DATA).parent_path() / "graph" / "data";
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-fs::path scratch_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("procex_pxg_test_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A graph with everything the format holds: metadata, interface, every parameter type,
 // an embedded group with an exposed parameter, editor state.
@@ -99,18 +88,17 @@ TEST(Pxg, StableLayoutForReadableDiffs) {
 }
 
 TEST(Pxg, SaveIsAtomicAndLeavesNoTemporaryFiles) {
-  const fs::path dir = scratch_dir("save");
+  const test::ScratchDir dir("pxg_save");
   const fs::path file = dir / "g.pxg";
   test::Diamond d = test::diamond();
   save_pxg(d.g, file);
   (void)d.g.set_param(d.c1, "value", Value::make(9.0));
   save_pxg(d.g, file);
-  EXPECT_EQ(read(file), to_pxg(d.g));
+  EXPECT_EQ(test::read_text(file), to_pxg(d.g));
   std::size_t files = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 1u);
   EXPECT_THROW(save_pxg(d.g, dir / "no_such_dir" / "g.pxg"), std::runtime_error);
-  fs::remove_all(dir);
 }
 
 TEST(Pxg, Version1FilesMigrate) {
@@ -145,8 +133,8 @@ TEST(Pxg, LibraryGroupsAreSharedByReference) {
   EXPECT_EQ(r.output("a")->get<double>(), 10.0);
   EXPECT_EQ(r.output("b")->get<double>(), 50.0);
   // The recipe keeps the reference; the library file is the canonical form of its own graph.
-  EXPECT_EQ(to_pxg(g), read(kData / "uses_library.pxg"));
-  EXPECT_EQ(to_pxg(load_pxg(kData / "lib" / "scaler.pxg")), read(kData / "lib" / "scaler.pxg"));
+  EXPECT_EQ(to_pxg(g), test::read_text(kData / "uses_library.pxg"));
+  EXPECT_EQ(to_pxg(load_pxg(kData / "lib" / "scaler.pxg")), test::read_text(kData / "lib" / "scaler.pxg"));
 }
 
 TEST(Pxg, GroupFilesMustStayInsideTheRecipeFolder) {
@@ -173,7 +161,7 @@ TEST(Pxg, GroupFilesMustStayInsideTheRecipeFolder) {
 
 TEST(Pxg, LibraryFilesReferencedManyTimesAreReadOnce) {
   // level_k references level_{k-1} ten times: read naively, 10^12 file loads.
-  const fs::path dir = scratch_dir("fanout");
+  const test::ScratchDir dir("pxg_fanout");
   std::ofstream(dir / "level_0.pxg") << R"({"format": "procex-graph", "version": 2})";
   for (int k = 1; k <= 12; ++k) {
     std::string groups;
@@ -186,7 +174,6 @@ TEST(Pxg, LibraryFilesReferencedManyTimesAreReadOnce) {
   Graph g = load_pxg(dir / "level_12.pxg");
   EXPECT_EQ(g.groups().size(), 10u);
   EXPECT_EQ(g.groups().at("g0").type->body, g.groups().at("g9").type->body);  // one shared body
-  fs::remove_all(dir);
 }
 
 struct BadCase {

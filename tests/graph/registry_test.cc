@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "graph/conformance.h"
 #include "graph/registry.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -30,11 +30,9 @@ TEST(Registry, EveryFileThatRegistersANodeIsRegistered) {
   const std::filesystem::path here = std::filesystem::path(PROCEX_TEST_DATA).parent_path() / "graph";
   EXPECT_EQ(unregistered_node_files(here), std::vector<std::filesystem::path>{});
   // And the check can fail: a file with a registration the registry never saw.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("procex_unregistered_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("unregistered");
   std::ofstream(dir / "dropped.cc") << "PROCEX_REGISTER_NODE(\"Dropped\", 1, declare, evaluate);\n";
-  EXPECT_EQ(unregistered_node_files(dir), std::vector<std::filesystem::path>{dir / "dropped.cc"});
-  std::filesystem::remove_all(dir);
+  EXPECT_EQ(unregistered_node_files(dir.path()), std::vector<std::filesystem::path>{dir / "dropped.cc"});
 }
 
 TEST(Registry, SuggestsTheClosestName) {

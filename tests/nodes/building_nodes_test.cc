@@ -18,6 +18,7 @@
 #include "nodes/support/profile_presets.h"
 #include "nodes/values.h"
 #include "tests/nodes/node_runner.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -276,8 +277,7 @@ Graph footprint_file_graph(const std::string& file, const std::string& id) {
 
 // An edited GeoJSON file is read again: its size and time are in the node's cache key.
 TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
-  const auto dir = std::filesystem::temp_directory_path() / "procex_geojson_node_test";
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("geojson_node");
   auto write = [&](double x) {
     std::ofstream(dir / "plan.geojson") << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
       "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[)" << x << R"(,0],[10,8],[0,8],[0,0]]]}}]})";
@@ -286,7 +286,7 @@ TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
   ResultCache cache(1 << 20);
   Evaluator ev(cache, "nodes test");
   EvalOptions options;
-  options.folder = dir;
+  options.folder = dir.path();
   write(10);
   const EvalResult first = ev.evaluate(g, {}, {}, options);
   ASSERT_TRUE(first.ok());
@@ -296,7 +296,6 @@ TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
   EXPECT_NE(first.outputs[0].hash, second.outputs[0].hash);
   EXPECT_EQ(second.stats.computed(), 1u);
   EXPECT_EQ(second.output("footprint")->get<Footprint>().loops[0].points[1].x, 12.5);
-  std::filesystem::remove_all(dir);
 }
 
 // A Shapefile is read again when its .dbf or .prj is edited, not only its .shp:
@@ -304,8 +303,7 @@ TEST(FootprintGeoJson, AnEditedFileChangesTheHash) {
 // feet makes a footprint a third the size (GDAL's ogr2ogr writes the files).
 TEST(FootprintGeoJson, AnEditedShapefileSidecarChangesTheHash) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "procex_shapefile_node_test";
-  fs::remove_all(dir);
+  const test::ScratchDir dir("shapefile_node");
   fs::create_directories(dir / "a");
   fs::create_directories(dir / "b");
   for (const char* id : {"a", "b"}) {
@@ -319,7 +317,7 @@ TEST(FootprintGeoJson, AnEditedShapefileSidecarChangesTheHash) {
   ResultCache cache(1 << 20);
   Evaluator ev(cache, "nodes test");
   EvalOptions options;
-  options.folder = dir;
+  options.folder = dir.path();
   EXPECT_FALSE(ev.evaluate(g, {}, {}, options).ok());  // a/plan.dbf names the feature "a"
   // Only the .dbf changes (the same size: one letter for another), a minute later.
   fs::copy_file(dir / "b" / "plan.dbf", dir / "a" / "plan.dbf", fs::copy_options::overwrite_existing);
@@ -341,22 +339,19 @@ TEST(FootprintGeoJson, AnEditedShapefileSidecarChangesTheHash) {
   EXPECT_EQ(feet.stats.computed(), 1u);
   // 12 US feet, give or take the Lambert projection's scale this far (300 km) from the zone's centre.
   EXPECT_NEAR(width(feet), 12 * 0.3048006, 0.15);
-  fs::remove_all(dir);
 }
 
 TEST(Export, WritesTheMeshBesideTheRecipe) {
-  const auto dir = std::filesystem::temp_directory_path() / "procex_export_node_test";
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("export_node");
   const auto mesh = run_node("Extrude", {}, {{"footprint", rectangle(10, 6)}});
-  const auto r = run_node("Export", {{"file", Value::make(std::string("roof.glb"))}}, {{"mesh", mesh.outputs[0]}}, dir);
+  const auto r = run_node("Export", {{"file", Value::make(std::string("roof.glb"))}}, {{"mesh", mesh.outputs[0]}}, dir.path());
   ASSERT_TRUE(r.ok()) << r.messages();
   EXPECT_EQ(r.outputs[0].get<std::string>(), (dir / "roof.glb").string());
   const auto meshes = read_glb(dir / "roof.glb");
   ASSERT_EQ(meshes.size(), 1u);
   EXPECT_EQ(meshes[0].primitives.size(), 2u);  // base and roof
-  const auto bad = run_node("Export", {{"file", Value::make(std::string("roof.stl"))}}, {{"mesh", mesh.outputs[0]}}, dir);
+  const auto bad = run_node("Export", {{"file", Value::make(std::string("roof.stl"))}}, {{"mesh", mesh.outputs[0]}}, dir.path());
   EXPECT_NE(bad.messages().find("does not end in .obj, .ply or .glb"), std::string::npos) << bad.messages();
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

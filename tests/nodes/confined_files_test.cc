@@ -2,7 +2,6 @@
 // unless the user allowed another folder: a shared recipe cannot read
 // ../secret.obj into its output, echo /etc/passwd in an error, or write a
 // mesh over a file elsewhere.
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +13,7 @@
 #include "graph/pxg.h"
 #include "nodes/values.h"
 #include "tests/nodes/node_runner.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -21,17 +21,16 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_node;
 
-class ConfinedFiles : public ::testing::Test {
+class ConfinedFiles : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    base_ = fs::weakly_canonical(fs::temp_directory_path() / ("procex_confined_files_" + std::to_string(::getpid())));
+    base_ = fs::weakly_canonical(dir_);
     recipe_ = base_ / "recipe";
     fs::create_directories(recipe_);
     fs::copy_file(fs::path(PROCEX_TEST_DATA) / "mesh_window_frame.obj", base_ / "secret.obj");
     std::ofstream(base_ / "secret.geojson") << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
       "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[9,0],[9,9],[0,9]]]}}]})";
   }
-  void TearDown() override { fs::remove_all(base_); }
 
   // The node with its `file` parameter, evaluated as a recipe in recipe_.
   EvalResult evaluate(const std::string& type, const std::string& file, const std::vector<fs::path>& allowed = {}) {
