@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -354,69 +355,109 @@ class Partitioner {
   }
 
   // Hertel-Mehlhorn: drop every diagonal whose removal keeps both of its
-  // pieces' union convex, longest diagonals first.
+  // pieces' union convex, longest diagonals first. The pieces are rings of
+  // slots (a vertex's place in a piece) spliced together at each merge, so a
+  // merge costs its two turns and its pieces' shared bridge ends, not their
+  // lengths: a comb's spine takes in thousands of teeth, and copying it for
+  // each (and searching it for the diagonal) made merging quadratic.
   void merge_pieces() {
-    std::map<std::pair<Index, Index>, std::size_t> edge_piece;
-    for (std::size_t i = 0; i < pieces_.size(); ++i) {
-      const auto& piece = pieces_[i];
-      for (std::size_t k = 0; k < piece.size(); ++k) edge_piece[{piece[k], piece[(k + 1) % piece.size()]}] = i;
-    }
+    Rings rings(pieces_);
+    for (std::size_t i = 0; i < pieces_.size(); ++i)
+      for (const Index v : pieces_[i])
+        if (on_ring_twice_[v]) rings.twice[i].insert(v);
     struct Diagonal {
       Index a, b;
       double length2;
     };
     std::vector<Diagonal> diagonals;
-    for (const auto& [edge, piece] : edge_piece) {
-      if (edge.first < edge.second && edge_piece.count({edge.second, edge.first})) {
+    for (const auto& [edge, slot] : rings.edge_slot) {
+      if (edge.first < edge.second && rings.edge_slot.count({edge.second, edge.first})) {
         const glm::dvec2 d = points_[edge.second] - points_[edge.first];
         diagonals.push_back({edge.first, edge.second, glm::dot(d, d)});
       }
     }
     std::stable_sort(diagonals.begin(), diagonals.end(),
                      [](const Diagonal& x, const Diagonal& y) { return x.length2 > y.length2; });
-    std::vector<std::size_t> owner(pieces_.size());
-    std::iota(owner.begin(), owner.end(), std::size_t{0});
-    auto find = [&owner](std::size_t i) {
-      while (owner[i] != i) i = owner[i] = owner[owner[i]];
-      return i;
-    };
-    for (const Diagonal& d : diagonals) {
-      const std::size_t pa = find(edge_piece[{d.a, d.b}]), pb = find(edge_piece[{d.b, d.a}]);
-      if (pa == pb) continue;
-      std::vector<Index> merged;
-      if (!try_merge(pieces_[pa], pieces_[pb], d.a, d.b, merged)) continue;
-      pieces_[pa] = std::move(merged);
-      pieces_[pb].clear();
-      owner[pb] = pa;
-    }
+    for (const Diagonal& d : diagonals) try_merge(rings, rings.edge_slot[{d.a, d.b}], rings.edge_slot[{d.b, d.a}]);
+    for (std::size_t i = 0; i < pieces_.size(); ++i) pieces_[i] = rings.piece(i);
   }
 
-  // x holds a -> b and y holds b -> a; their union without that edge, if convex.
-  bool try_merge(const std::vector<Index>& x, const std::vector<Index>& y, Index a, Index b,
-                 std::vector<Index>& merged) const {
-    const std::size_t nx = x.size(), ny = y.size();
-    std::size_t ia = nx, jb = ny;
-    for (std::size_t k = 0; k < nx; ++k)
-      if (x[k] == a && x[(k + 1) % nx] == b) ia = k;
-    for (std::size_t k = 0; k < ny; ++k)
-      if (y[k] == b && y[(k + 1) % ny] == a) jb = k;
-    if (ia == nx || jb == ny) return false;
-    // The union turns at a from x's vertex before it to y's after it, and at
-    // b from y's vertex before it to x's after it: judged before anything is
-    // copied, since a large piece (a comb's spine) meets many it cannot take.
-    if (!convex_turn(turn(points_[x[(ia + nx - 1) % nx]], points_[a], points_[y[(jb + 2) % ny]])) ||
-        !convex_turn(turn(points_[y[(jb + ny - 1) % ny]], points_[b], points_[x[(ia + 2) % nx]])))
-      return false;
-    // merged = b, ..., a (around x), then y's vertices strictly between a and b.
-    merged.clear();
-    for (std::size_t k = 1; k <= nx; ++k) merged.push_back(x[(ia + k) % nx]);
-    for (std::size_t k = 2; k < ny; ++k) merged.push_back(y[(jb + k) % ny]);
+  // The pieces as rings of slots, merged into one another.
+  struct Rings {
+    struct Slot {
+      Index vertex, prev, next;
+      Index piece;  // the piece it was made in (find() gives the one holding it now)
+    };
+    explicit Rings(const std::vector<std::vector<Index>>& pieces)
+        : head(pieces.size()), owner(pieces.size()), twice(pieces.size()) {
+      std::iota(owner.begin(), owner.end(), Index{0});
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const auto first = static_cast<Index>(slots.size()), n = static_cast<Index>(pieces[i].size());
+        head[i] = first;
+        for (Index k = 0; k < n; ++k) {
+          slots.push_back({pieces[i][k], first + (k + n - 1) % n, first + (k + 1) % n, static_cast<Index>(i)});
+          edge_slot[{pieces[i][k], pieces[i][(k + 1) % n]}] = first + k;
+        }
+      }
+    }
+    Index find(Index p) {
+      while (owner[p] != p) p = owner[p] = owner[owner[p]];
+      return p;
+    }
+    // A piece's vertices from its head round (none once merged into another).
+    std::vector<Index> piece(std::size_t i) const {
+      std::vector<Index> out;
+      if (head[i] == kNone) return out;
+      Index s = head[i];
+      do {
+        out.push_back(slots[s].vertex);
+        s = slots[s].next;
+      } while (s != head[i]);
+      return out;
+    }
+
+    std::vector<Slot> slots;
+    std::vector<Index> head;   // per piece: its first slot, kNone once merged into another
+    std::vector<Index> owner;  // union-find over pieces
+    std::vector<std::set<Index>> twice;  // per piece: its vertices the ring passes twice (bridge ends)
+    std::map<std::pair<Index, Index>, Index> edge_slot;  // directed edge -> the slot it starts from
+  };
+
+  // The piece holding a -> b (from slot sa) and the one holding b -> a (from
+  // tb) become one, if the union is convex and passes no vertex twice: it
+  // then runs from b round the first piece to a, then through the second's
+  // vertices between a and b.
+  void try_merge(Rings& r, Index sa, Index tb) const {
+    const Index pa = r.find(r.slots[sa].piece), pb = r.find(r.slots[tb].piece);
+    if (pa == pb) return;
+    auto& s = r.slots;
+    const Index sb = s[sa].next, ta = s[tb].next;
+    const Index a = s[sa].vertex, b = s[tb].vertex;
+    if (s[sb].vertex != b || s[ta].vertex != a) return;
+    // The union turns at a from the first piece's vertex before it to the
+    // second's after it, and at b from the second's before it to the first's after.
+    if (!convex_turn(turn(points_[s[s[sa].prev].vertex], points_[a], points_[s[s[ta].next].vertex])) ||
+        !convex_turn(turn(points_[s[s[tb].prev].vertex], points_[b], points_[s[s[sb].next].vertex])))
+      return;
     // Only a vertex the ring passes twice (a bridge's end) can repeat.
-    std::vector<Index> twice;
-    for (const Index v : merged)
-      if (on_ring_twice_[v]) twice.push_back(v);
-    std::sort(twice.begin(), twice.end());
-    return std::adjacent_find(twice.begin(), twice.end()) == twice.end();
+    std::set<Index>& big = r.twice[pa].size() >= r.twice[pb].size() ? r.twice[pa] : r.twice[pb];
+    std::set<Index>& small = &big == &r.twice[pa] ? r.twice[pb] : r.twice[pa];
+    for (const Index v : small)
+      if (v != a && v != b && big.count(v)) return;
+    big.insert(small.begin(), small.end());
+    if (&big != &r.twice[pa]) std::swap(r.twice[pa], r.twice[pb]);
+    r.twice[pb].clear();
+    // The second piece's slots of a and b go; the edge leaving a there now
+    // leaves from the first piece's.
+    const Index after_a = s[ta].next, before_b = s[tb].prev;
+    s[sa].next = after_a;
+    s[after_a].prev = sa;
+    s[before_b].next = sb;
+    s[sb].prev = before_b;
+    if (auto it = r.edge_slot.find({a, s[after_a].vertex}); it != r.edge_slot.end() && it->second == ta) it->second = sa;
+    r.head[pa] = sb;
+    r.head[pb] = kNone;
+    r.owner[pb] = pa;
   }
 
   std::vector<glm::dvec2> points_;
