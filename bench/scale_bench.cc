@@ -26,6 +26,7 @@
 #include <map>
 #include <new>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "core/geom/prepare.h"
@@ -190,11 +191,20 @@ int run(int argc, char** argv) {
     if (a == "--budget" && i + 1 < argc) budget_s = std::atof(argv[++i]);
     else if (a == "--memory-gb" && i + 1 < argc) memory_gb = std::atof(argv[++i]);
     else if (a == "--no-cgal") with_cgal = false;
-    else dir = a;
+    else if (!a.empty() && a[0] != '-' && dir.empty()) dir = a;
+    else {  // --help, an option it does not know, or a second folder
+      dir.clear();
+      break;
+    }
   }
   if (dir.empty()) {
     std::fprintf(stderr, "usage: procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] DIR\n"
                          "  DIR: the files bench/scale_inputs.py wrote\n");
+    return 2;
+  }
+  if (std::error_code ec; !fs::is_directory(dir, ec)) {
+    std::fprintf(stderr, "procex_scale_bench: %s is not a folder; give the one bench/scale_inputs.py wrote\n",
+                 dir.c_str());
     return 2;
   }
   std::vector<Engine> engines{Engine::Sweep, Engine::Roof};
