@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
@@ -41,27 +42,34 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
   c.origin = origin;
   c.base = glm::dvec2(vertices[origin]);
   c.base_z = vertices[origin].z;
-  const Plane& a = edges[prev_edge].plane;
-  const Plane& b = edges[next_edge].plane;
-  const bool same_direction = glm::dot(edges[prev_edge].dir, edges[next_edge].dir) > 0.0;
-  const double det = cross(a.n, b.n);
-  if (std::abs(det) > Tolerances::parallel_sin) {
-    c.velocity = crossing_velocity(a, b);
-    if (glm::length(c.velocity) > Tolerances::max_speed * (1.0 + std::abs(a.k) + std::abs(b.k)))
-      c.motion = same_direction ? Motion::Ambiguous : Motion::Ridge;
-  } else if (!same_direction) {
-    c.motion = Motion::Ridge;
-  } else if (std::abs(a.k - b.k) <= Tolerances::same_slope * (1.0 + std::abs(a.k))) {
-    c.motion = Motion::Parallel;
-    c.velocity = a.k * a.n;
-  } else {
-    c.motion = Motion::Ambiguous;
-  }
-  if (c.motion == Motion::Ambiguous || c.motion == Motion::Ridge) c.velocity = glm::dvec2(0.0);
+  std::tie(c.motion, c.velocity) = motion_of(prev_edge, next_edge);
   const int id = static_cast<int>(corners.size());
   corners.push_back(c);
   edges[next_edge].spans.push_back(id);
   return id;
+}
+
+std::pair<Motion, glm::dvec2> State::motion_of(int prev_edge, int next_edge) const {
+  const Plane& a = edges[prev_edge].plane;
+  const Plane& b = edges[next_edge].plane;
+  const bool same_direction = glm::dot(edges[prev_edge].dir, edges[next_edge].dir) > 0.0;
+  const double det = cross(a.n, b.n);
+  Motion motion = Motion::Regular;
+  glm::dvec2 velocity{0.0};
+  if (std::abs(det) > Tolerances::parallel_sin) {
+    velocity = crossing_velocity(a, b);
+    if (glm::length(velocity) > Tolerances::max_speed * (1.0 + std::abs(a.k) + std::abs(b.k)))
+      motion = same_direction ? Motion::Ambiguous : Motion::Ridge;
+  } else if (!same_direction) {
+    motion = Motion::Ridge;
+  } else if (std::abs(a.k - b.k) <= Tolerances::same_slope * (1.0 + std::abs(a.k))) {
+    motion = Motion::Parallel;
+    velocity = a.k * a.n;
+  } else {
+    motion = Motion::Ambiguous;
+  }
+  if (motion == Motion::Ambiguous || motion == Motion::Ridge) velocity = glm::dvec2(0.0);
+  return {motion, velocity};
 }
 
 std::uint32_t State::add_vertex(glm::dvec3 p) {

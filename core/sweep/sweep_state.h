@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/geom/profile.h"
@@ -124,6 +125,8 @@ class State {
   int add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, int source, const std::string& tag,
                int face = -1);
   int add_corner(int prev_edge, int next_edge, std::uint32_t origin);
+  // How a corner between the two edges moves, and by how much per unit of height.
+  std::pair<Motion, glm::dvec2> motion_of(int prev_edge, int next_edge) const;
   std::uint32_t add_vertex(glm::dvec3 p);
   // The output vertex at plan point p on the sweep plane (now at `height`):
   // one made at this height within delta3 of p if there is one, else a new
