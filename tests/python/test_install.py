@@ -24,6 +24,9 @@ def test_installed_module_imports_from_the_prefix_site_folder(tmp_path):
 import site, sys
 assert {str(folder)!r} in site.getsitepackages([{str(prefix)!r}]), site.getsitepackages([{str(prefix)!r}])
 site.addsitedir({str(folder)!r})
+# ahead of a procex installed for the whole system (scripts/setup.sh sample puts one in /usr/local)
+sys.path.remove({str(folder)!r})
+sys.path.insert(0, {str(folder)!r})
 import procex
 assert procex.__file__.startswith({str(folder)!r}), procex.__file__
 (mesh,) = procex.Recipe.load({str(SAMPLES / "house.pxg")!r}).evaluate()
