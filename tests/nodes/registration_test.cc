@@ -7,6 +7,7 @@
 
 #include "graph/conformance.h"
 #include "nodes/values.h"
+#include "tests/support/scratch_dir.h"
 
 namespace procex {
 namespace {
@@ -52,8 +53,7 @@ TEST(NodeRegistration, EveryTypeIsDocumented) {
 }
 
 TEST(NodeRegistration, EveryTypeConforms) {
-  const auto tmp = std::filesystem::temp_directory_path() / "procex_nodes_conformance";
-  std::filesystem::create_directories(tmp);
+  const test::ScratchDir tmp("nodes_conformance");
   const Profile wall = Profile::straight(0, 3, "wall");
   MeshSet mesh;
   SampleInputs samples = {
@@ -68,7 +68,7 @@ TEST(NodeRegistration, EveryTypeConforms) {
   for (const auto& t : NodeRegistry::global().all()) {
     if (!from_nodes_dir(*t)) continue;
     SCOPED_TRACE(t->name());
-    EXPECT_EQ(check_node_type(*t, samples, tmp), std::vector<std::string>{});  // Export writes its default file there
+    EXPECT_EQ(check_node_type(*t, samples, tmp.path()), std::vector<std::string>{});  // Export writes its default file there
   }
 }
 
