@@ -763,13 +763,15 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     if (lone(in, out) != kNone) return false;
     const Chain& cin = chains[in.chain];
     const Chain& cout = chains[out.chain];
+    // Looked at first: most clusters have no neighbour made in the instant.
+    auto made_now = [&](int m) { return m >= instant.made_from && !at(m) && st.corners[m].alive; };
+    if (!made_now(cin.in_corner) || !made_now(cout.out_corner)) return false;
     // A corner with no line to run along (between nearly opposite planes) folds when settled.
     const auto [motion, velocity] = st.motion_of(cin.in_edge, cout.out_edge);
     if (motion != Motion::Regular) return false;
     // Whether the span between corner m and the new corner along edge e (m
     // before it, or after) closes within the instant.
     auto closes = [&](int m, int e, bool before) {
-      if (m < instant.made_from || at(m) || !st.corners[m].alive) return false;
       const glm::dvec2 dir = st.edges[e].dir;
       const double sign = before ? 1.0 : -1.0;
       const double length = sign * glm::dot(p - st.position(m, z), dir);
