@@ -767,7 +767,10 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     auto made_now = [&](int m) { return m >= instant.made_from && !at(m) && st.corners[m].alive; };
     if (!made_now(cin.in_corner) || !made_now(cout.out_corner)) return false;
     // A corner with no line to run along (between nearly opposite planes) folds when settled.
-    const auto [motion, velocity] = st.motion_of(cin.in_edge, cout.out_edge);
+    // Named rather than a structured binding: clang 14 cannot capture one in `closes`.
+    Motion motion;
+    glm::dvec2 velocity;
+    std::tie(motion, velocity) = st.motion_of(cin.in_edge, cout.out_edge);
     if (motion != Motion::Regular) return false;
     // Whether the span between corner m and the new corner along edge e (m
     // before it, or after) closes within the instant.
