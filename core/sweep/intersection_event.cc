@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <tuple>
@@ -20,6 +22,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/geom/error.h"
+#include "core/sweep/edge_corners.h"
 #include "core/sweep/settle.h"
 
 namespace procex::engine {
@@ -439,14 +442,18 @@ class StampedSet {
   }
   // Whether i is new to the set; from now on it is not.
   bool insert(int i) {
-    if (contains(i)) return false;
     const auto k = static_cast<std::size_t>(i);
-    if (stamps_.size() <= k) stamps_.resize(k + 1, 0);
+    if (stamps_.size() <= k) grow(k);
+    if (stamps_[k] == stamp_) return false;
     stamps_[k] = stamp_;
     return true;
   }
 
  private:
+  // Out of line: the rest of insert is a few instructions, inlined where a
+  // cluster marks its corners and edges.
+  [[gnu::noinline]] void grow(std::size_t k) { stamps_.resize(k + 1, 0); }
+
   std::uint32_t stamp_ = 1;
   std::vector<std::uint32_t> stamps_;
 };
@@ -462,9 +469,16 @@ class ClusterMarks {
     corners_.clear();
     edges_.clear();
     cut_.clear();
+    touched_.clear();
   }
   bool at(int c) const { return corners_.contains(c); }
-  void mark_at(int c) { corners_.insert(c); }
+  // Corner c (between edges e and f) is at the point: e and f have a span there.
+  void mark_at(int c, int e, int f) {
+    corners_.insert(c);
+    touched_.insert(e);
+    touched_.insert(f);
+  }
+  bool touched(int e) const { return touched_.contains(e); }
   bool participates(int e) const { return edges_.contains(e); }
   // Marks edge e as taking part at `place`, unless it does already.
   bool add_edge(int e, std::size_t place) {
@@ -481,7 +495,7 @@ class ClusterMarks {
   void uncut() { cut_.clear(); }
 
  private:
-  StampedSet corners_, edges_, cut_;
+  StampedSet corners_, edges_, cut_, touched_;
   std::vector<std::size_t> place_;
 };
 
@@ -502,6 +516,9 @@ struct ResolveLists {
   std::vector<Ray> rays;
   std::vector<Ray> open;
   std::vector<std::pair<Ray, Ray>> pairs;  // (incoming, outgoing), in the order they are joined
+  EdgeCorners along;
+  std::vector<int> found;
+  std::vector<std::tuple<int, bool, int>> visits;
 };
 
 // The instant a cluster is resolved in (resolve_intersections): the corners
@@ -532,7 +549,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   auto at = [&](int c) { return marks.at(c); };
   auto mark = [&](int c) {
     if (at(c)) return;
-    marks.mark_at(c);
+    marks.mark_at(c, st.corners[c].prev_edge, st.corners[c].next_edge);
     at_p.push_back(c);
     add_edge(st.corners[c].prev_edge);
     add_edge(st.corners[c].next_edge);
@@ -588,20 +605,56 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   auto fits = [&](int e) { return marks.place(e) < fitted.size(); };
   // An edge cut through (or its heir) is no plane of a corner at p: as fitted.
   auto fits_if_in = [&](int e) { return !participates(e) || fits(e); };
+  auto visit = [&](int c) {
+    if (c == kNone || !st.corners[c].alive || at(c)) return;
+    if (by_logic(c)) {
+      if (fits(st.corners[c].prev_edge) && fits(st.corners[c].next_edge)) through.push_back(c);
+      mark(c);
+    } else if (glm::length(st.position(c, z) - p) <= near) {
+      mark(c);
+    }
+  };
+  // Edge e's corners that may be at p, from its index, visited in the order
+  // the loop over its spans would (by span, its start before its end): a
+  // corner marked there brings in edges, and the corners between e and those
+  // further on are at p by logic.
+  using Visit = std::tuple<int, bool, int>;  // span start, whether the span's end, the corner
+  std::vector<Visit>& visits = lists.visits;
+  auto visit_indexed = [&](int e) {
+    visits.clear();
+    auto push_found = [&](std::optional<Visit> after) {
+      for (int c : lists.found) {
+        const bool end = st.corners[c].next_edge != e;
+        const Visit v{end ? st.corners[c].prev : c, end, c};
+        if (after && !(*after < v)) continue;
+        visits.push_back(v);
+        std::push_heap(visits.begin(), visits.end(), std::greater<>());
+      }
+      lists.found.clear();
+    };
+    lists.along.near(st, e, p, z, near, lists.found);
+    for (int f : edges) lists.along.between(st, e, f, lists.found);
+    push_found(std::nullopt);
+    while (!visits.empty()) {
+      std::pop_heap(visits.begin(), visits.end(), std::greater<>());
+      const Visit v = visits.back();
+      visits.pop_back();
+      const std::size_t had = edges.size();
+      visit(std::get<2>(v));
+      for (std::size_t i = had; i < edges.size(); ++i) lists.along.between(st, e, edges[i], lists.found);
+      push_found(v);
+    }
+  };
   std::size_t scanned = 0;
   auto scan = [&] {
     for (; scanned < edges.size(); ++scanned) {
-      for (int s : st.spans(edges[scanned])) {
-        for (int c : {s, st.corners[s].next}) {
-          if (c == kNone || !st.corners[c].alive || at(c)) continue;
-          if (by_logic(c)) {
-            if (fits(st.corners[c].prev_edge) && fits(st.corners[c].next_edge)) through.push_back(c);
-            mark(c);
-          } else if (glm::length(st.position(c, z) - p) <= near) {
-            mark(c);
-          }
-        }
+      const int e = edges[scanned];
+      if (EdgeCorners::worth(st, e, edges.size())) {
+        visit_indexed(e);
+        continue;
       }
+      for (int s : st.spans(e))
+        for (int c : {s, st.corners[s].next}) visit(c);
     }
   };
 
@@ -624,9 +677,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
       // named edge's span to its heir: the collision then cuts through the heir.
       for (int e = named, hops = 0; e != kNone && hops <= static_cast<int>(st.edges.size()); e = st.edges[e].heir, ++hops) {
         if (participates(e) && e != named) break;  // the heir is cut as named itself
-        bool touches = false;
-        for (int s : st.spans(e)) touches = touches || at(s) || at(st.corners[s].next);
-        if (touches) break;
+        if (marks.touched(e)) break;
         const int s = st.span_through(e, p, z, near);
         if (s == kNone) continue;
         if (marks.cut(e)) chains.push_back({e, s, e, st.corners[s].next});

@@ -119,6 +119,11 @@ class State {
   int base_face = kNone;
   double height = 0.0;  // the sweep plane's current height
   bool any_outward = false;  // some plane leans outward: convex corners can split too
+  // An edge with this many spans (and more than four per edge taking part)
+  // has the corners at their ends looked up, not visited one by one, where a
+  // cluster gathers the corners at its point (edge_corners.h). Tests compare
+  // 0 (every edge looked up) with SIZE_MAX (none).
+  std::size_t corners_indexed_from = 64;
 
   // A new plane for source `source` through `point` at height z0, in a new
   // face tagged `tag`, or continuing face `face` if given.

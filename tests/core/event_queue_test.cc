@@ -30,44 +30,16 @@
 #include "core/sweep/driver.h"
 #include "core/sweep/intersection_event.h"
 #include "core/sweep/profile_event.h"
+#include "tests/core/sweep_states.h"
 
 namespace procex::engine {
 namespace {
 
 constexpr int kReflex = 3;  // the corner at (2, 2): between edges 2 and 3
 
-State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol, const SweepOptions& options = {},
-             std::vector<double> slopes = {}) {
-  if (slopes.empty()) slopes.assign(points.size(), 1.0);
-  State st(tol, options);
-  FaceGroup base;
-  base.kind = FaceKind::Base;
-  st.base_face = 0;
-  st.faces.push_back(base);
-  for (std::size_t j = 0; j < points.size(); ++j) st.sources.push_back(Source{static_cast<std::int32_t>(j)});
-  load_loop(st, points, std::move(slopes), std::vector<std::string>(points.size()), 0, 0);
-  return st;
-}
-
 State l_shape(const SweepOptions& options = {}) {
   return loaded({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}, Tolerances{4.0}, options);
 }
-
-// A star of n corners with radii 100 and 90 m alternating, jittered by up to
-// a millimetre so that its events do not all fall at one height: every
-// second corner is reflex and can run into almost every edge.
-std::vector<glm::dvec2> star(int n) {
-  std::vector<glm::dvec2> points;
-  for (int i = 0; i < n; ++i) {
-    const double r = (i % 2 == 0 ? 100.0 : 90.0) + 1e-3 * std::sin(12.9898 * i);
-    const double a = 2.0 * M_PI * i / n;
-    points.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return points;
-}
-
-// The clustering scale sweep() tries first.
-constexpr Tolerances kStarTolerances{200.0, Tolerances::retry_relative[0]};
 
 std::vector<Candidate> drain(EventQueue& queue, State& st) {
   std::vector<Candidate> out;
@@ -227,23 +199,6 @@ TEST(EventQueue, HandsOutTheApexOfAnExactStarInLinearMemory) {
 }
 
 
-// A random star-shaped polygon as bench/scale_inputs.py makes them (sorted
-// random angles, radii 50-100 m): about half its corners reflex, their lines
-// running every way.
-std::vector<glm::dvec2> random_star_shaped(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), radius(50.0, 100.0);
-  std::vector<double> angles(static_cast<std::size_t>(n));
-  for (double& a : angles) a = angle(rng);
-  std::sort(angles.begin(), angles.end());
-  std::vector<glm::dvec2> points;
-  for (double a : angles) {
-    const double r = radius(rng);
-    points.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return points;
-}
-
 bool same_bits(const Candidate& a, const Candidate& b) {
   return std::memcmp(&a.z, &b.z, sizeof a.z) == 0 && std::memcmp(&a.p, &b.p, sizeof a.p) == 0 &&
          a.corner == b.corner && a.next == b.next && a.edge == b.edge;
@@ -315,21 +270,7 @@ std::pair<std::size_t, std::size_t> expect_indexed_sweep_as_every_edge(const std
   run_events(every_state, every, every_profiles);
   schedule_all(indexed_state, indexed);
   run_events(indexed_state, indexed, indexed_profiles);
-  EXPECT_EQ(indexed_state.vertices.size(), every_state.vertices.size());
-  EXPECT_EQ(indexed_state.faces.size(), every_state.faces.size());
-  if (indexed_state.vertices.size() != every_state.vertices.size() ||
-      indexed_state.faces.size() != every_state.faces.size())
-    return {indexed.worked(), every.worked()};
-  EXPECT_EQ(std::memcmp(indexed_state.vertices.data(), every_state.vertices.data(),
-                        every_state.vertices.size() * sizeof every_state.vertices[0]),
-            0);
-  for (std::size_t f = 0; f < every_state.faces.size(); ++f) {
-    const std::vector<HalfEdge>& a = indexed_state.faces[f].half_edges;
-    const std::vector<HalfEdge>& b = every_state.faces[f].half_edges;
-    EXPECT_EQ(a.size(), b.size()) << "face " << f;
-    for (std::size_t h = 0; h < std::min(a.size(), b.size()); ++h)
-      EXPECT_TRUE(a[h].from == b[h].from && a[h].to == b[h].to) << "face " << f << ", half-edge " << h;
-  }
+  expect_same_roof(indexed_state, every_state);
   return {indexed.worked(), every.worked()};
 }
 
@@ -346,18 +287,6 @@ TEST(EventQueue, IndexedListsWorkOutFarFewerSplits) {
       expect_indexed_sweep_as_every_edge(random_star_shaped(16000, 5), EventQueue::kIndexedFrom);
   EXPECT_LT(3 * indexed, every) << indexed << " splits worked out through the index, " << every
                                 << " testing every edge";
-}
-
-// A comb of 1 m teeth on a 1 m bar (bench/scale_inputs.py's), counter-clockwise:
-// every reflex corner runs along the line of all the edges between the teeth.
-std::vector<glm::dvec2> comb(int teeth) {
-  std::vector<glm::dvec2> points = {{0, 0}, {2.0 * teeth + 1, 0}, {2.0 * teeth + 1, 1}};
-  for (int t = teeth - 1; t >= 0; --t) {
-    const double x = 2.0 * t + 1;
-    points.insert(points.end(), {{x + 1, 1}, {x + 1, 5}, {x, 5}, {x, 1}});
-  }
-  points.push_back({0, 1});
-  return points;
 }
 
 // Planes of one line (the edges between a comb's teeth) are never met by a

@@ -1,0 +1,87 @@
+// A cluster gathers the corners at its point from an index of each edge with
+// many spans (core/sweep/edge_corners.h) rather than by visiting every span
+// of every edge taking part. The index must gather what the visits do, in
+// their order (where the planes do not fix the meeting point, the first of
+// the slowest corners does): a sweep with every edge indexed and one with
+// none make the same roof to the bit.
+#include "core/sweep/edge_corners.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/sweep/driver.h"
+#include "core/sweep/event_queue.h"
+#include "core/sweep/profile_event.h"
+#include "tests/core/sweep_states.h"
+
+namespace procex::engine {
+namespace {
+
+State swept(const std::vector<glm::dvec2>& points, std::size_t indexed_from, const std::vector<double>& slopes = {},
+            const SweepOptions& options = {}) {
+  State st = loaded(points, kStarTolerances, options, slopes);
+  st.corners_indexed_from = indexed_from;
+  EventQueue queue;
+  ProfileEvents profiles;
+  schedule_all(st, queue);
+  run_events(st, queue, profiles);
+  return st;
+}
+
+void expect_indexed_as_visited(const std::vector<glm::dvec2>& points, const std::vector<double>& slopes = {},
+                               const SweepOptions& options = {}) {
+  const State indexed = swept(points, 0, slopes, options);
+  const State visited = swept(points, SIZE_MAX, slopes, options);
+  expect_same_roof(indexed, visited);
+}
+
+// The bar is cut at every tooth in one instant: each cluster there takes in
+// the bar's edge, by then of hundreds of spans.
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersOnAComb) { expect_indexed_as_visited(comb(300)); }
+
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersOnARandomPolygon) {
+  expect_indexed_as_visited(random_star_shaped(1500, 5));
+}
+
+// Clusters a millimetre apart in height: an index's places, taken at one
+// height, drift by the time of the next query.
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersOnAJitteredStar) { expect_indexed_as_visited(star(1200)); }
+
+// Every corner meets every plane at the apex, most at it by logic: a corner
+// found there brings in edges, and with them corners between the edge being
+// gathered and those.
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersAtTheApexOfAnExactStar) {
+  std::vector<glm::dvec2> points;
+  const int n = 600;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * M_PI * i / n;
+    points.push_back((i % 2 == 0 ? 100.0 : 90.0) * glm::dvec2(std::cos(a), std::sin(a)));
+  }
+  expect_indexed_as_visited(points);
+}
+
+// Rounding a thousand times coarser than near the origin.
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersFarFromTheOrigin) {
+  std::vector<glm::dvec2> points = comb(120);
+  for (glm::dvec2& p : points) p += glm::dvec2(512345.6, 5012345.7);
+  expect_indexed_as_visited(points);
+}
+
+// Vertical walls, planes leaning out and a cap: corners that do not move, and
+// corners faster than the planes.
+TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersWithMixedSlopesAndACap) {
+  const std::vector<glm::dvec2> points = comb(150);
+  std::vector<double> slopes;
+  const double kinds[] = {1.0, 0.0, 2.5, -0.4, 0.7};
+  for (std::size_t j = 0; j < points.size(); ++j) slopes.push_back(kinds[(j * 7) % 5]);
+  expect_indexed_as_visited(points, slopes);
+  SweepOptions capped;
+  capped.max_height = 1.5;
+  expect_indexed_as_visited(points, slopes, capped);
+}
+
+}  // namespace
+}  // namespace procex::engine

@@ -1,0 +1,94 @@
+// Sweep states made straight from a plan's points, the plans the engine's
+// tests share, and a comparison of two sweeps' output to the bit.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <gtest/gtest.h>
+
+#include "core/sweep/driver.h"
+#include "core/sweep/sweep_state.h"
+
+namespace procex::engine {
+
+// The clustering scale sweep() tries first.
+constexpr Tolerances kStarTolerances{200.0, Tolerances::retry_relative[0]};
+
+inline State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol, const SweepOptions& options = {},
+             std::vector<double> slopes = {}) {
+  if (slopes.empty()) slopes.assign(points.size(), 1.0);
+  State st(tol, options);
+  FaceGroup base;
+  base.kind = FaceKind::Base;
+  st.base_face = 0;
+  st.faces.push_back(base);
+  for (std::size_t j = 0; j < points.size(); ++j) st.sources.push_back(Source{static_cast<std::int32_t>(j)});
+  load_loop(st, points, std::move(slopes), std::vector<std::string>(points.size()), 0, 0);
+  return st;
+}
+
+// A star of n corners with radii 100 and 90 m alternating, jittered by up to
+// a millimetre so that its events do not all fall at one height: every
+// second corner is reflex and can run into almost every edge.
+inline std::vector<glm::dvec2> star(int n) {
+  std::vector<glm::dvec2> points;
+  for (int i = 0; i < n; ++i) {
+    const double r = (i % 2 == 0 ? 100.0 : 90.0) + 1e-3 * std::sin(12.9898 * i);
+    const double a = 2.0 * M_PI * i / n;
+    points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return points;
+}
+
+// A random star-shaped polygon as bench/scale_inputs.py makes them (sorted
+// random angles, radii 50-100 m): about half its corners reflex, their lines
+// running every way.
+inline std::vector<glm::dvec2> random_star_shaped(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), radius(50.0, 100.0);
+  std::vector<double> angles(static_cast<std::size_t>(n));
+  for (double& a : angles) a = angle(rng);
+  std::sort(angles.begin(), angles.end());
+  std::vector<glm::dvec2> points;
+  for (double a : angles) {
+    const double r = radius(rng);
+    points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return points;
+}
+
+// A comb of 1 m teeth on a 1 m bar (bench/scale_inputs.py's), counter-clockwise:
+// every reflex corner runs along the line of all the edges between the teeth.
+inline std::vector<glm::dvec2> comb(int teeth) {
+  std::vector<glm::dvec2> points = {{0, 0}, {2.0 * teeth + 1, 0}, {2.0 * teeth + 1, 1}};
+  for (int t = teeth - 1; t >= 0; --t) {
+    const double x = 2.0 * t + 1;
+    points.insert(points.end(), {{x + 1, 1}, {x + 1, 5}, {x, 5}, {x, 1}});
+  }
+  points.push_back({0, 1});
+  return points;
+}
+
+// Two sweeps' output, to the bit: the same vertices and the same faces.
+inline void expect_same_roof(const State& got, const State& expected) {
+  EXPECT_EQ(got.vertices.size(), expected.vertices.size());
+  EXPECT_EQ(got.faces.size(), expected.faces.size());
+  if (got.vertices.size() != expected.vertices.size() || got.faces.size() != expected.faces.size()) return;
+  EXPECT_EQ(std::memcmp(got.vertices.data(), expected.vertices.data(), expected.vertices.size() * sizeof expected.vertices[0]), 0);
+  for (std::size_t f = 0; f < expected.faces.size(); ++f) {
+    const std::vector<HalfEdge>& a = got.faces[f].half_edges;
+    const std::vector<HalfEdge>& b = expected.faces[f].half_edges;
+    EXPECT_EQ(a.size(), b.size()) << "face " << f;
+    for (std::size_t h = 0; h < std::min(a.size(), b.size()); ++h)
+      EXPECT_TRUE(a[h].from == b[h].from && a[h].to == b[h].to) << "face " << f << ", half-edge " << h;
+  }
+}
+
+}  // namespace procex::engine
