@@ -506,6 +506,10 @@ struct Ray {
   int chain;
 };
 
+// A corner of an indexed edge to visit, in the order the loop over the edge's
+// spans would: the span's start, whether the corner is the span's end, the corner.
+using SpanVisit = std::tuple<int, bool, int>;
+
 // resolve_cluster's lists, kept from one cluster to the next (BatchScratch):
 // each cluster clears them, not frees them.
 struct ResolveLists {
@@ -518,7 +522,7 @@ struct ResolveLists {
   std::vector<std::pair<Ray, Ray>> pairs;  // (incoming, outgoing), in the order they are joined
   EdgeCorners along;
   std::vector<int> found;
-  std::vector<std::tuple<int, bool, int>> visits;
+  std::vector<SpanVisit> visits;
 };
 
 // The instant a cluster is resolved in (resolve_intersections): the corners
@@ -615,17 +619,15 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     }
   };
   // Edge e's corners that may be at p, from its index, visited in the order
-  // the loop over its spans would (by span, its start before its end): a
-  // corner marked there brings in edges, and the corners between e and those
-  // further on are at p by logic.
-  using Visit = std::tuple<int, bool, int>;  // span start, whether the span's end, the corner
-  std::vector<Visit>& visits = lists.visits;
+  // the loop over its spans would: a corner marked there brings in edges,
+  // and the corners between e and those further on are at p by logic.
+  std::vector<SpanVisit>& visits = lists.visits;
   auto visit_indexed = [&](int e) {
     visits.clear();
-    auto push_found = [&](std::optional<Visit> after) {
+    auto push_found = [&](std::optional<SpanVisit> after) {
       for (int c : lists.found) {
         const bool end = st.corners[c].next_edge != e;
-        const Visit v{end ? st.corners[c].prev : c, end, c};
+        const SpanVisit v{end ? st.corners[c].prev : c, end, c};
         if (after && !(*after < v)) continue;
         visits.push_back(v);
         std::push_heap(visits.begin(), visits.end(), std::greater<>());
@@ -637,7 +639,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     push_found(std::nullopt);
     while (!visits.empty()) {
       std::pop_heap(visits.begin(), visits.end(), std::greater<>());
-      const Visit v = visits.back();
+      const SpanVisit v = visits.back();
       visits.pop_back();
       const std::size_t had = edges.size();
       visit(std::get<2>(v));
