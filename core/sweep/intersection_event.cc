@@ -910,38 +910,53 @@ struct Member {
   int member;
 };
 
-// The spans (corner, next) whose collapse a batch has looked at: each first
-// corner's pairs are a list in `looks_`, headed by `last_` where the corner's
-// stamp is the batch's. Most batches look at one or two, a jittered star's
-// centre at tens of thousands; nothing is cleared or hashed per batch.
+// The spans (corner, next) whose collapse a batch has looked at, in an
+// open-addressed table whose slots of earlier batches count as empty: a
+// batch clears nothing. Most batches look at one or two, a jittered star's
+// centre and a comb's one instant at tens of thousands; a list of pairs per
+// first corner, walked at every look, was a tenth of the 65,536-comb's roof,
+// whose bar's corners start thousands of spans in that instant.
 class LookedAt {
  public:
   void next_batch() {
-    looks_.clear();
-    seen_.clear();
+    ++batch_;
+    used_ = 0;
   }
   // Whether the pair is new to this batch; from now on it is not.
   bool insert(int c, int n) {
-    const auto k = static_cast<std::size_t>(c);
-    if (seen_.insert(c)) {
-      if (last_.size() <= k) last_.resize(k + 1);
-      last_[k] = kNone;
-    }
-    for (int l = last_[k]; l != kNone; l = looks_[l].before)
-      if (looks_[l].next == n) return false;
-    looks_.push_back({n, last_[k]});
-    last_[k] = static_cast<int>(looks_.size()) - 1;
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    Slot& s = slot(c, n);
+    if (s.batch == batch_) return false;
+    s = {batch_, c, n};
+    ++used_;
     return true;
   }
 
  private:
-  struct Look {
-    int next;
-    int before;  // the same corner's previous look, or kNone
+  struct Slot {
+    std::uint64_t batch = 0;  // batches count from 1: 0 is empty
+    int c = 0, n = 0;
   };
-  StampedSet seen_;       // corners looked at in this batch
-  std::vector<int> last_;  // by corner seen
-  std::vector<Look> looks_;
+  // The pair's slot in this batch, or the empty slot where it goes.
+  Slot& slot(int c, int n) {
+    const std::uint64_t hash = static_cast<std::uint64_t>(static_cast<std::uint32_t>(c)) * 0x9E3779B97F4A7C15ULL ^
+                               static_cast<std::uint64_t>(static_cast<std::uint32_t>(n)) * 0xC2B2AE3D27D4EB4FULL;
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = (hash ^ hash >> 31) & mask;; i = (i + 1) & mask) {
+      Slot& s = slots_[i];
+      if (s.batch != batch_ || (s.c == c && s.n == n)) return s;
+    }
+  }
+  [[gnu::noinline]] void grow() {
+    std::vector<Slot> old(2 * slots_.size());
+    old.swap(slots_);
+    for (const Slot& s : old)
+      if (s.batch == batch_) slot(s.c, s.n) = s;
+  }
+
+  std::vector<Slot> slots_ = std::vector<Slot>(16);  // a power of two
+  std::size_t used_ = 0;                              // slots of this batch
+  std::uint64_t batch_ = 1;
 };
 
 }  // namespace
