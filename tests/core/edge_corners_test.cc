@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -74,13 +75,11 @@ TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersFarFromTheOrigin) {
 // corners faster than the planes.
 TEST(EdgeCorners, GatherWhatVisitingEverySpanGathersWithMixedSlopesAndACap) {
   const std::vector<glm::dvec2> points = comb(150);
-  std::vector<double> slopes;
-  const double kinds[] = {1.0, 0.0, 2.5, -0.4, 0.7};
-  for (std::size_t j = 0; j < points.size(); ++j) slopes.push_back(kinds[(j * 7) % 5]);
-  expect_indexed_as_visited(points, slopes);
-  SweepOptions capped;
-  capped.max_height = 1.5;
-  expect_indexed_as_visited(points, slopes, capped);
+  for (const std::optional<double> cap : {std::optional<double>(), std::optional<double>(1.5)}) {
+    SweepOptions options;
+    options.max_height = cap;
+    expect_indexed_as_visited(points, mixed_slopes(points.size()), options);
+  }
 }
 
 }  // namespace

@@ -249,9 +249,7 @@ TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesFarFromTheOrigin) {
 // and meets planes from outside), and a cap that cuts lists short.
 TEST(EventQueue, IndexedListsHandOutWhatEveryEdgeGivesWithMixedSlopesAndACap) {
   const std::vector<glm::dvec2> points = random_star_shaped(900, 11);
-  std::vector<double> slopes;
-  const double kinds[] = {1.0, 0.0, 2.5, -0.4, 0.7};
-  for (std::size_t j = 0; j < points.size(); ++j) slopes.push_back(kinds[(j * 7) % 5]);
+  const std::vector<double> slopes = mixed_slopes(points.size());
   expect_indexed_lists_as_every_edge(points, slopes);
   SweepOptions capped;
   capped.max_height = 6.0;

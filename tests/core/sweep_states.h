@@ -76,6 +76,16 @@ inline std::vector<glm::dvec2> comb(int teeth) {
   return points;
 }
 
+// Slopes from vertical walls to planes leaning out, in a fixed mix: corners
+// that do not move, corners faster than the planes, and every corner able to
+// split (meeting planes from outside).
+inline std::vector<double> mixed_slopes(std::size_t n) {
+  const double kinds[] = {1.0, 0.0, 2.5, -0.4, 0.7};
+  std::vector<double> slopes;
+  for (std::size_t j = 0; j < n; ++j) slopes.push_back(kinds[(j * 7) % 5]);
+  return slopes;
+}
+
 // Two sweeps' output, to the bit: the same vertices and the same faces.
 inline void expect_same_roof(const State& got, const State& expected) {
   EXPECT_EQ(got.vertices.size(), expected.vertices.size());
