@@ -174,12 +174,15 @@ const std::vector<int>& State::spans(int e) {
   return s;
 }
 
-int State::span_through(int e, glm::dvec2 p, double z, double reach) {
+int State::span_through(int e, glm::dvec2 p, double z, double reach) const {
   const Edge& edge = edges[e];
-  for (int s : spans(e)) {
+  if (std::abs(edge.plane.signed_distance(p, z)) > reach) return kNone;
+  // The list as it stands, its stale entries passed over rather than dropped
+  // first: spans() reads the whole list, and the span through p is mostly
+  // found early in it; a comb's bar, cut at every tooth, has thousands.
+  for (int s : edge.spans) {
     const int t = corners[s].next;
-    if (t == kNone) continue;
-    if (std::abs(edge.plane.signed_distance(p, z)) > reach) continue;
+    if (!corners[s].alive || corners[s].next_edge != e || t == kNone) continue;
     const double ts = glm::dot(position(s, z) - p, edge.dir);
     const double tt = glm::dot(position(t, z) - p, edge.dir);
     if (ts <= tol_.span_margin() && tt >= -tol_.span_margin()) return s;

@@ -173,7 +173,7 @@ class State {
   const std::vector<int>& spans(int e);
   // The span of edge e (corner s to s.next) that contains p at height z, its
   // plane within `reach` of p: s, or kNone.
-  int span_through(int e, glm::dvec2 p, double z, double reach);
+  int span_through(int e, glm::dvec2 p, double z, double reach) const;
 
   // Made on the first batch; cleared, not freed, by each batch after it.
   std::unique_ptr<BatchScratch, BatchScratchDeleter> batch_scratch;
