@@ -244,10 +244,14 @@ constexpr double kYoungRise = 30.0;
 // refit is taken even where the least-squares point lies out of reach: in
 // 12,000 seed 6 the same meeting's point fell 4e-6 m from the cluster's
 // mean, and the slowest corner (a young one at 58 m per m) ended the old one
-// 1.3e-6 m off its line. Planes sorted; `young` is scratch.
+// 1.3e-6 m off its line. Planes sorted. `young` is left 1 for each plane
+// the point was refitted with weighted down, which it misses, and empty
+// where it was not refitted: a corner made along such a plane starts on its
+// own line (resolve_cluster).
 glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const std::vector<int>& corners,
                          const std::vector<Collision>& cs, const std::vector<int>& members, glm::dvec2 mean,
                          double near, std::vector<unsigned char>& young) {
+  young.clear();
   glm::dvec3 fallback{mean, st.height};
   double slowest = 1e300;
   for (int c : corners) {
@@ -302,14 +306,19 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
     if (std::any_of(ends.begin(), ends.end(), [&](int c) { return regular(c) && !is_young(c); }))
       for (int e : cs[m].edges) mark(e, 2);
   }
-  if (std::find(young.begin(), young.end(), 1) == young.end()) return fit;
+  if (std::find(young.begin(), young.end(), 1) == young.end()) {
+    young.clear();
+    return fit;
+  }
   // Solved for the move from x: the residuals are small, so the down-weighted
   // system's condition (1 / kYoungPlaneWeight^2) costs nothing that matters.
   const auto [aw, bw] = normal_equations(
       [&](std::size_t i) { return young[i] == 1 ? kYoungPlaneWeight : 1.0; },
       [&](glm::dvec3& r, glm::dvec3 n, double c, double len2) { r -= n * ((glm::dot(n, x) - c) / len2); });
   const glm::dvec3 refitted = x + glm::inverse(aw) * bw;
-  return within(refitted) ? refitted : fit;
+  if (within(refitted)) return refitted;
+  young.clear();
+  return fit;
 }
 
 // The point of the line where planes a and b cross nearest to x: x moved
@@ -607,8 +616,6 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     return k.motion == Motion::Regular && participates(k.prev_edge) && participates(k.next_edge);
   };
   auto fits = [&](int e) { return marks.place(e) < fitted.size(); };
-  // An edge cut through (or its heir) is no plane of a corner at p: as fitted.
-  auto fits_if_in = [&](int e) { return !participates(e) || fits(e); };
   auto visit = [&](int c) {
     if (c == kNone || !st.corners[c].alive || at(c)) return;
     if (by_logic(c)) {
@@ -850,6 +857,14 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
 
   std::sort(fitted.begin(), fitted.end());
   const glm::dvec3 meet = meeting_point(st, fitted, through, cs, members, p, near, lists.young);
+  // Whether the point lies on plane e: fitted to it, and not weighted down.
+  // An edge cut through (or its heir) is no plane of a corner at p: as fitted.
+  auto on_plane = [&](int e) {
+    if (!participates(e)) return true;
+    if (!fits(e)) return false;
+    const std::vector<unsigned char>& young = lists.young;
+    return young.empty() || young[std::lower_bound(fitted.begin(), fitted.end(), e) - fitted.begin()] != 1;
+  };
   const std::uint32_t v = st.vertex_at(glm::dvec2(meet), meet.z);
   // Trajectories end here once the corners are paired: some go on (below).
   for (int c : at_p) st.corners[c].alive = false;
@@ -877,16 +892,24 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
     // corner between nearly parallel planes (hundreds of m per m of rise)
     // started there would run a tenth of a millimetre off both its planes.
     // A plane the point was not fitted to (a corner's taken in only for lying
-    // within `near`) misses it by up to that much, and a corner started there
-    // along that plane would run beside its line all the way: it starts on
-    // its line, nearest the point. In jittered star 4,000 seed 37 the corner
-    // (11,6) so started 1.8 micrometres off plane 6; a corner at 64 m per m
-    // of rise met planes 6 and 11 next to it, each outside the span the
-    // displaced corner bounded, passed between them and the roof never
-    // closed. Not where the line lies further off than `near`: planes nearly
-    // one plane cross in a line of no sure place (1.5 cm off in a city block).
+    // within `near`), or was refitted with weighted down (meeting_point: the
+    // misfit of old corners' planes goes onto young ones), misses it by up to
+    // that much, and a corner started there along that plane would run beside
+    // its line all the way: it starts on its line, nearest the point. In
+    // jittered star 4,000 seed 37 the corner (11,6) so started 1.8
+    // micrometres off plane 6; a corner at 64 m per m of rise met planes 6
+    // and 11 next to it, each outside the span the displaced corner bounded,
+    // passed between them and the roof never closed. In 12,000 seed 18 a
+    // corner at 191 m per m met plane 1250 1.9 micrometres from where edge
+    // 11719 collapsed, 3.7e-7 m higher; the point, on the old corner's line,
+    // missed plane 113 of the collapse's young corners, and the new corner
+    // (326, 113) at 19.7 m per m started off its line: its span along 326
+    // closed 8.6e-7 m below where planes 254, 326 and 113 meet, and the
+    // surface folded there. Not where the line lies further off than `near`:
+    // planes nearly one plane cross in a line of no sure place (1.5 cm off in
+    // a city block).
     glm::dvec3 from = meet;
-    if (st.corners[n].motion == Motion::Regular && !(fits_if_in(cin.in_edge) && fits_if_in(cout.out_edge))) {
+    if (st.corners[n].motion == Motion::Regular && !(on_plane(cin.in_edge) && on_plane(cout.out_edge))) {
       const glm::dvec3 on = onto_line(st.edges[cin.in_edge].plane, st.edges[cout.out_edge].plane, meet);
       if (glm::length(on - meet) <= near) from = on;
     }
@@ -1261,15 +1284,21 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     rewired.clear();
   };
   // Each cluster is resolved at its own height, even below one resolved before
-  // it in this batch (the order is by first collision, the height a mean), but
-  // not below where earlier batches left the sweep plane; the plane stands at
-  // the highest once the batch is done. Resolved higher, a fast corner would
-  // have run on past the collision: in jittered star 6,000 seed 16 a corner of
-  // 25 m per m of rise, 1.8 micrometres short of where a valley corner met its
+  // it in this batch (the order is by first collision, the height a mean), and
+  // below where the batch before left the sweep plane; the plane stands at the
+  // highest once the batch is done. Resolved higher, a fast corner would have
+  // run on past the collision: in jittered star 6,000 seed 16 a corner of 25 m
+  // per m of rise, 1.8 micrometres short of where a valley corner met its
   // edge, was 5.5 micrometres past it at the earlier cluster's height, 2.9e-7 m
   // higher, so the valley corner found no span of that edge there and went on
-  // through its face, and the roof never closed.
-  const double before = st.height;
+  // through its face, and the roof never closed. A corner made in one batch
+  // queues its collisions after it, and those within the batch's delta2 lie
+  // below where it left the plane: in 12,000 seed 18 a corner (184, 225) at
+  // 64 m per m, made 1.4e-6 m below the top of its batch, met edge 326 7.8e-7
+  // m below it; resolved there, in the next batch, the split found no span of
+  // edge 326 (its corner (326, 113), at 19.7 m per m, 1.5e-5 m on), the
+  // corner went on through its face, the loop of edges 184, 225, 254 and 113
+  // turned inside out and the roof never closed.
   double highest = st.height;
   double instant = -HUGE_VAL;
   std::vector<int> lone;  // a waiting candidate's collision, as a cluster of one
@@ -1324,7 +1353,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       instant = first_of(g);
       made_from = static_cast<int>(st.corners.size());
     }
-    st.height = std::max(before, height_of(g));
+    st.height = height_of(g);
     highest = std::max(highest, st.height);
     const std::size_t resolved = rewired.size();
     resolve_cluster(st, cs, g < clustered ? groups[g] : lone, {made_from, instant + st.tol().simultaneous()},
