@@ -1026,10 +1026,11 @@ struct BatchScratch {
   std::vector<char> waits;             // by member, once listed
   std::vector<std::pair<std::size_t, int>> taken;
   // splits_below's: the first corners of the spans the batch's groups
-  // collapse, the group of each, their edges' planes and where a corner meets them.
-  std::vector<int> plane_edges;
+  // collapse, the group of each, their edges' planes (by field, as
+  // meeting_heights reads them) and where a corner meets them.
+  std::vector<int> collapsing;
   std::vector<std::size_t> collapse_at;
-  std::vector<double> nx, ny, kk, cc, meet;
+  std::vector<double> plane_nx, plane_ny, plane_k, plane_c, meet;
 };
 
 void BatchScratchDeleter::operator()(BatchScratch* s) const { delete s; }
@@ -1120,18 +1121,18 @@ class LaterGroups {
   void splits_below(int n, double until, std::vector<std::pair<int, double>>& out) {
     if (!collapses_listed_) {
       collapses_listed_ = true;
-      lists_.plane_edges.clear();
-      for (auto* v : {&lists_.nx, &lists_.ny, &lists_.kk, &lists_.cc}) v->clear();
+      lists_.collapsing.clear();
+      for (auto* v : {&lists_.plane_nx, &lists_.plane_ny, &lists_.plane_k, &lists_.plane_c}) v->clear();
       lists_.collapse_at.clear();
       const auto add = [&](int c, std::size_t g) {
         const int e = st_.corners[c].next_edge;
         const Plane& pl = st_.edges[e].plane;
-        lists_.plane_edges.push_back(c);
+        lists_.collapsing.push_back(c);
         lists_.collapse_at.push_back(g);
-        lists_.nx.push_back(pl.n.x);
-        lists_.ny.push_back(pl.n.y);
-        lists_.kk.push_back(pl.k);
-        lists_.cc.push_back(pl.c);
+        lists_.plane_nx.push_back(pl.n.x);
+        lists_.plane_ny.push_back(pl.n.y);
+        lists_.plane_k.push_back(pl.k);
+        lists_.plane_c.push_back(pl.c);
       };
       for (std::size_t g = 0; g < groups_.size(); ++g)
         for (int m : groups_[g])
@@ -1142,11 +1143,11 @@ class LaterGroups {
     out.clear();
     const Corner& k = st_.corners[n];
     std::vector<double>& meet = lists_.meet;
-    meet.resize(lists_.plane_edges.size());
-    meeting_heights(lists_.nx.data(), lists_.ny.data(), lists_.kk.data(), lists_.cc.data(), meet.size(), k.base,
+    meet.resize(lists_.collapsing.size());
+    meeting_heights(lists_.plane_nx.data(), lists_.plane_ny.data(), lists_.plane_k.data(), lists_.plane_c.data(), meet.size(), k.base,
                     k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {
-      const int c = lists_.plane_edges[j];
+      const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];
       const Corner& s = st_.corners[c];
       if (meet[j] == HUGE_VAL || resolved(g) || !(meet[j] < first_of(g)) || !s.alive || s.next_edge == k.prev_edge ||
