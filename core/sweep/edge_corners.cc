@@ -95,7 +95,8 @@ void EdgeCorners::near(const State& st, int e, glm::dvec2 p, double z, double re
   // Places were taken at z0: a corner drifts by at most `fastest` per unit of
   // height from there; the rest is room for rounding, relative to the
   // coordinates.
-  const double range = reach + 2.0 * index.fastest * std::abs(z - index.z0) + 1e-7 * (1.0 + std::abs(p.x) + std::abs(p.y));
+  const double range =
+      reach + 2.0 * index.fastest * std::abs(z - index.z0) + 1e-7 * (1.0 + std::abs(p.x) + std::abs(p.y));
   auto it = std::lower_bound(index.sorted.begin(), index.sorted.end(), std::pair{along - range, INT_MIN});
   const auto first = it;
   for (; it != index.sorted.end() && it->first <= along + range; ++it)

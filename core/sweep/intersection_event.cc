@@ -1144,8 +1144,8 @@ class LaterGroups {
     const Corner& k = st_.corners[n];
     std::vector<double>& meet = lists_.meet;
     meet.resize(lists_.collapsing.size());
-    meeting_heights(lists_.plane_nx.data(), lists_.plane_ny.data(), lists_.plane_k.data(), lists_.plane_c.data(), meet.size(), k.base,
-                    k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
+    meeting_heights(lists_.plane_nx.data(), lists_.plane_ny.data(), lists_.plane_k.data(), lists_.plane_c.data(),
+                    meet.size(), k.base, k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {
       const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];
