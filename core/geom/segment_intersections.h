@@ -1,7 +1,7 @@
 // Finding which of many 2D segments touch or cross, in about O(n log n) for
-// the inputs procex sees (footprint loops, face outlines): each segment is
-// listed in the cells of a uniform grid it passes through and only segments
-// sharing a cell are compared, with the exact predicates of predicates.h.
+// the inputs procex sees (footprint loops, face outlines): the segments are
+// grouped in a hierarchy of strips turned along them and only segments whose
+// strips overlap are compared, with the exact predicates of predicates.h.
 #pragma once
 
 #include <cstddef>
