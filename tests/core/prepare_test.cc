@@ -167,6 +167,37 @@ TEST(PrepareFootprint, FixesOrientationByNestingDepth) {
   EXPECT_NE(two.notes[0].find("loop 1 ran clockwise"), std::string::npos);
 }
 
+// Squares inside squares, 0-3 deep, in each cell of a 24 x 24 grid, all in
+// one outer square: the loops are found through a hierarchy of their boxes,
+// and each must still find every loop around it (the depth) and the nearest
+// (the parent), whatever node the outer square's box falls in.
+TEST(LoopNesting, FindsEveryLoopAroundEachOfMany) {
+  const auto square = [](double x, double y, double side) {
+    return std::vector<glm::dvec2>{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+  };
+  std::vector<std::vector<glm::dvec2>> loops;
+  std::vector<int> depth, parent;
+  const int k = 24;
+  for (int cell = 0; cell < k * k; ++cell) {
+    if (cell == k * k / 2) {  // the outer square among the cells' loops, not first
+      loops.push_back(square(-1.0, -1.0, 10.0 * k + 2.0));
+      depth.push_back(0);
+      parent.push_back(-1);
+    }
+    const double x = 10.0 * (cell % k), y = 10.0 * (cell / k);
+    for (int d = 0; d <= cell % 4; ++d) {
+      loops.push_back(square(x + d, y + d, 8.0 - 2.0 * d));
+      depth.push_back(d + 1);
+      parent.push_back(d == 0 ? -2 : static_cast<int>(loops.size()) - 2);  // -2: the outer square, below
+    }
+  }
+  const int outer = static_cast<int>(std::find(depth.begin(), depth.end(), 0) - depth.begin());
+  std::replace(parent.begin(), parent.end(), -2, outer);
+  const LoopNesting nesting = loop_nesting(loops);
+  EXPECT_EQ(nesting.depth, depth);
+  EXPECT_EQ(nesting.parent, parent);
+}
+
 // The two invalid OSM rings of the Baltimore corpus are refused, naming the loop.
 TEST(PrepareFootprint, RefusesTheInvalidOsmRings) {
   const GeoJsonCollection c = read_geojson_file(kData + "/geojson_osm_self_intersecting_baltimore.geojson");
