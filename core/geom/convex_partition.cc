@@ -5,12 +5,14 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/horizontal_rays.h"
 #include "core/geom/point_tree.h"
 #include "core/geom/predicates.h"
 #include "core/geom/tolerances.h"
@@ -94,6 +96,7 @@ class Partitioner {
     if (loops.empty() || loops[0].size() < 3) return;
     head_ = 0;
     size_ = static_cast<Index>(loops[0].size());
+    if (!hole_starts.empty()) index_ring(static_cast<Index>(loops[0].size()));
     bridge_holes(hole_starts, hole_sizes);
   }
 
@@ -127,23 +130,131 @@ class Partitioner {
   // the triangle (M, hit, endpoint) blocks it, in which case to the blocking
   // vertex with the smallest angle to the ray.
   void bridge_holes(const std::vector<Index>& starts, const std::vector<Index>& sizes) {
-    std::vector<std::pair<Index, glm::dvec2>> holes;  // rightmost node, its position
+    struct Hole {
+      Index rightmost;
+      glm::dvec2 at;  // its position
+      std::size_t loop;
+    };
+    std::vector<Hole> holes;
     for (std::size_t h = 0; h < starts.size(); ++h) {
       Index best = starts[h];
       for (Index k = starts[h]; k < starts[h] + sizes[h]; ++k) {
         const glm::dvec2 p = pos(k), q = pos(best);
         if (p.x > q.x || (p.x == q.x && p.y < q.y)) best = k;
       }
-      holes.push_back({best, pos(best)});
+      holes.push_back({best, pos(best), h});
     }
-    std::sort(holes.begin(), holes.end(), [](const auto& a, const auto& b) {
-      return a.second.x != b.second.x ? a.second.x > b.second.x : a.second.y < b.second.y;
+    std::sort(holes.begin(), holes.end(), [](const Hole& a, const Hole& b) {
+      return a.at.x != b.at.x ? a.at.x > b.at.x : a.at.y < b.at.y;
     });
-    for (std::size_t h = 0; h < holes.size(); ++h) {
-      const Index m = holes[h].first;
-      const Index p = find_bridge(m);
-      splice(p, m, sizes[h]);
+    for (const Hole& hole : holes) {
+      const Index m = hole.rightmost;
+      const std::optional<Index> found = indexed_bridge(m);
+      const Index p = found ? *found : find_bridge(m);
+      splice(p, m, sizes[hole.loop]);
+      if (!in_ring_.empty()) {
+        for (Index k = starts[hole.loop]; k < starts[hole.loop] + sizes[hole.loop]; ++k) in_ring_[k] = true;
+        ++copies_[nodes_[p].vertex];
+        ++copies_[nodes_[m].vertex];
+        rays_.add(points_[nodes_[p].vertex], points_[nodes_[m].vertex], kBridge | static_cast<Index>(bridges_.size()));
+        bridges_.push_back({nodes_[p].vertex, nodes_[m].vertex});
+      }
     }
+  }
+
+  // The ring's edges and vertices indexed for indexed_bridge: every loop's
+  // edges (those of holes not yet joined count once their hole joins), the
+  // bridges as they are made, and every vertex.
+  void index_ring(Index outer_size) {
+    in_ring_.assign(points_.size(), false);
+    std::fill(in_ring_.begin(), in_ring_.begin() + outer_size, true);
+    copies_.assign(points_.size(), 1);
+    loop_next_.resize(points_.size());
+    std::vector<std::pair<glm::dvec2, std::uint32_t>> vertices(points_.size());
+    for (Index k = 0; k < points_.size(); ++k) {
+      loop_next_[k] = nodes_[k].next;
+      rays_.add(points_[k], points_[loop_next_[k]], k);
+      vertices[k] = {points_[k], k};
+    }
+    vertices_ = PointTree(std::move(vertices));
+  }
+
+  // find_bridge's answer found through the index, where it does not depend
+  // on the order of the ring (which the index does not keep): the nearest
+  // hit and the vertex that hides it are each one vertex, of one node (not
+  // doubled by an earlier bridge). Otherwise nothing, and find_bridge walks
+  // the ring. Each step is find_bridge's own, on the same numbers.
+  std::optional<Index> indexed_bridge(Index m) const {
+    if (in_ring_.empty()) return std::nullopt;
+    const glm::dvec2 mp = pos(m);
+    double best_x = std::numeric_limits<double>::infinity();
+    Index best = kNone;
+    bool tied = false;
+    glm::dvec2 hit{};
+    rays_.along(mp, best_x, [&](Index id) {
+      Index from, to;
+      if (id & kBridge) {
+        // A bridge runs both ways along the ring; only its upward way can be hit.
+        const auto [p, q] = bridges_[id & ~kBridge];
+        from = points_[p].y < points_[q].y ? p : q;
+        to = from == p ? q : p;
+      } else {
+        if (!in_ring_[id]) return;
+        from = id;
+        to = loop_next_[id];
+      }
+      const glm::dvec2 a = points_[from], b = points_[to];
+      if (!(a.y <= mp.y && mp.y <= b.y && a.y != b.y)) return;
+      const double x = a.x + (mp.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x < mp.x) return;
+      const Index at = x == a.x && a.y == mp.y ? from : x == b.x && b.y == mp.y ? to : a.x > b.x ? from : to;
+      if (x < best_x) {
+        best_x = x;
+        hit = {x, mp.y};
+        best = at;
+        tied = false;
+      } else if (x == best_x && at != best) {
+        tied = true;
+      }
+    });
+    if (best == kNone || tied || copies_[best] != 1) return std::nullopt;
+    const glm::dvec2 pp = points_[best];
+    if (pp == hit) return best;
+
+    const glm::dvec2 tri[3] = {mp, hit, pp};
+    const bool ccw = orient2d(tri[0], tri[1], tri[2]) > 0;
+    const glm::dvec2 lo = glm::min(glm::min(mp, hit), pp), hi = glm::max(glm::max(mp, hit), pp);
+    double best_tan = std::numeric_limits<double>::infinity();
+    double best_dist = std::numeric_limits<double>::infinity();
+    Index chosen = best;
+    bool doubled = false;
+    tied = false;
+    vertices_.search(
+        [&](const glm::dvec2& box_lo, const glm::dvec2& box_hi) {
+          return box_hi.x < std::max(lo.x, mp.x) || box_lo.x > hi.x || box_hi.y < lo.y || box_lo.y > hi.y;
+        },
+        [&](Index v, const glm::dvec2& q) {
+          if (!in_ring_[v] || q == pp || q.x < mp.x) return true;
+          const int o1 = orient2d(tri[0], tri[1], q), o2 = orient2d(tri[1], tri[2], q);
+          const int o3 = orient2d(tri[2], tri[0], q);
+          if (!(ccw ? (o1 >= 0 && o2 >= 0 && o3 >= 0) : (o1 <= 0 && o2 <= 0 && o3 <= 0))) return true;
+          if (copies_[v] != 1) return !(doubled = true);
+          if (turn_at(v) == 1) return true;
+          const double dx = q.x - mp.x;
+          const double t = dx > 0.0 ? std::abs(q.y - mp.y) / dx : std::numeric_limits<double>::infinity();
+          const double dist = glm::dot(q - mp, q - mp);
+          if (t < best_tan || (t == best_tan && dist < best_dist)) {
+            best_tan = t;
+            best_dist = dist;
+            chosen = v;
+            tied = false;
+          } else if (t == best_tan && dist == best_dist) {
+            tied = true;
+          }
+          return true;
+        });
+    if (doubled || tied) return std::nullopt;
+    return chosen;
   }
 
   Index find_bridge(Index m) const {
@@ -464,6 +575,14 @@ class Partitioner {
   std::vector<Node> nodes_;
   Index head_ = kNone;
   Index size_ = 0;
+  // indexed_bridge's, by vertex (a vertex's first node has its number): on
+  // the ring yet, how many nodes it has, the next vertex of its loop.
+  static constexpr Index kBridge = Index{1} << 31;  // a bridge's id in rays_
+  std::vector<bool> in_ring_;
+  std::vector<Index> copies_, loop_next_;
+  std::vector<std::pair<Index, Index>> bridges_;
+  HorizontalRays rays_;
+  PointTree vertices_;
   std::vector<std::vector<Index>> pieces_;
   PointTree reflex_;  // nodes not strictly convex when clipping began
   std::vector<bool> on_ring_twice_;  // input vertices the ring passes more than once

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <random>
 #include <set>
 
 #include "core/geom/nesting.h"
@@ -110,6 +111,30 @@ TEST(ConvexPartition, ManyHolesInAGrid) {
       loops.push_back({{x, y}, {x, y + 6}, {x + 6, y + 6}, {x + 6, y}});
     }
   expect_partition(loops, 4 * 26);
+}
+
+// Holes of 3 to 7 corners, turned and sized at random, one in each cell of a
+// 24 x 16 grid: the rays that join them to the ring hit hole edges, corners
+// and earlier bridges, through the index of the ring's edges or, where the
+// ring's order decides, by walking the ring.
+TEST(ConvexPartition, ManyHolesOfEveryShape) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::vector<glm::dvec2>> loops{{{0, 0}, {240, 0}, {240, 160}, {0, 160}}};
+  std::size_t corners = 4;
+  for (int i = 0; i < 24; ++i)
+    for (int j = 0; j < 16; ++j) {
+      const int n = 3 + static_cast<int>(unit(rng) * 5);
+      const double r = 2.0 + 2.5 * unit(rng), turn = 2 * std::numbers::pi * unit(rng);
+      const glm::dvec2 centre{10.0 * i + 5.0 + unit(rng) - 0.5, 10.0 * j + 5.0 + unit(rng) - 0.5};
+      std::vector<glm::dvec2>& hole = loops.emplace_back();
+      for (int k = 0; k < n; ++k) {  // clockwise
+        const double t = turn - 2 * std::numbers::pi * k / n;
+        hole.push_back(centre + r * glm::dvec2(std::cos(t), std::sin(t)));
+      }
+      corners += n;
+    }
+  expect_partition(loops, corners);
 }
 
 TEST(ConvexPartition, RegularPolygonWithRegularHole) {
