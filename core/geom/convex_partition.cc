@@ -76,6 +76,41 @@ bool every_turn(const std::vector<glm::dvec2>& loop, Allowed allowed) {
   return true;
 }
 
+// Where the ray from m to +x leaves through edge a -> b of the ring, if it
+// does at or right of m: the outer ring is counter-clockwise, so from inside
+// the ray leaves through an edge going upwards.
+std::optional<double> ray_exit(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& m) {
+  if (!(a.y <= m.y && m.y <= b.y && a.y != b.y)) return std::nullopt;
+  const double x = a.x + (m.y - a.y) * (b.x - a.x) / (b.y - a.y);
+  if (x < m.x) return std::nullopt;
+  return x;
+}
+
+// The end of the edge a hole's bridge goes to: the end the ray hits, or else
+// the one further right.
+template <class End>
+End bridge_end(const glm::dvec2& a, const glm::dvec2& b, double x, const glm::dvec2& m, End from, End to) {
+  if (x == a.x && a.y == m.y) return from;
+  if (x == b.x && b.y == m.y) return to;
+  return a.x > b.x ? from : to;
+}
+
+// How a vertex q inside the triangle (m, hit, end) hides the end from m: the
+// bridge goes to the one nearest the ray's direction, then nearest m. None
+// where q lies outside the triangle.
+struct Hiding {
+  double tan, dist;
+  bool operator<(const Hiding& o) const { return tan < o.tan || (tan == o.tan && dist < o.dist); }
+  bool operator==(const Hiding& o) const { return tan == o.tan && dist == o.dist; }
+};
+std::optional<Hiding> hiding(const glm::dvec2 (&tri)[3], bool ccw, const glm::dvec2& q) {
+  const int o1 = orient2d(tri[0], tri[1], q), o2 = orient2d(tri[1], tri[2], q), o3 = orient2d(tri[2], tri[0], q);
+  if (!(ccw ? (o1 >= 0 && o2 >= 0 && o3 >= 0) : (o1 <= 0 && o2 <= 0 && o3 <= 0))) return std::nullopt;
+  const glm::dvec2& m = tri[0];
+  const double dx = q.x - m.x;
+  return Hiding{dx > 0.0 ? std::abs(q.y - m.y) / dx : std::numeric_limits<double>::infinity(), glm::dot(q - m, q - m)};
+}
+
 class Partitioner {
  public:
   explicit Partitioner(const std::vector<std::vector<glm::dvec2>>& loops) {
@@ -204,10 +239,10 @@ class Partitioner {
         to = loop_next_[id];
       }
       const glm::dvec2 a = points_[from], b = points_[to];
-      if (!(a.y <= mp.y && mp.y <= b.y && a.y != b.y)) return;
-      const double x = a.x + (mp.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x < mp.x) return;
-      const Index at = x == a.x && a.y == mp.y ? from : x == b.x && b.y == mp.y ? to : a.x > b.x ? from : to;
+      const std::optional<double> exit = ray_exit(a, b, mp);
+      if (!exit) return;
+      const double x = *exit;
+      const Index at = bridge_end(a, b, x, mp, from, to);
       if (x < best_x) {
         best_x = x;
         hit = {x, mp.y};
@@ -224,8 +259,7 @@ class Partitioner {
     const glm::dvec2 tri[3] = {mp, hit, pp};
     const bool ccw = orient2d(tri[0], tri[1], tri[2]) > 0;
     const glm::dvec2 lo = glm::min(glm::min(mp, hit), pp), hi = glm::max(glm::max(mp, hit), pp);
-    double best_tan = std::numeric_limits<double>::infinity();
-    double best_dist = std::numeric_limits<double>::infinity();
+    Hiding nearest{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     Index chosen = best;
     bool doubled = false;
     tied = false;
@@ -235,20 +269,15 @@ class Partitioner {
         },
         [&](Index v, const glm::dvec2& q) {
           if (!in_ring_[v] || q == pp || q.x < mp.x) return true;
-          const int o1 = orient2d(tri[0], tri[1], q), o2 = orient2d(tri[1], tri[2], q);
-          const int o3 = orient2d(tri[2], tri[0], q);
-          if (!(ccw ? (o1 >= 0 && o2 >= 0 && o3 >= 0) : (o1 <= 0 && o2 <= 0 && o3 <= 0))) return true;
+          const std::optional<Hiding> h = hiding(tri, ccw, q);
+          if (!h) return true;
           if (copies_[v] != 1) return !(doubled = true);
           if (turn_at(v) == 1) return true;
-          const double dx = q.x - mp.x;
-          const double t = dx > 0.0 ? std::abs(q.y - mp.y) / dx : std::numeric_limits<double>::infinity();
-          const double dist = glm::dot(q - mp, q - mp);
-          if (t < best_tan || (t == best_tan && dist < best_dist)) {
-            best_tan = t;
-            best_dist = dist;
+          if (*h < nearest) {
+            nearest = *h;
             chosen = v;
             tied = false;
-          } else if (t == best_tan && dist == best_dist) {
+          } else if (*h == nearest) {
             tied = true;
           }
           return true;
@@ -266,21 +295,10 @@ class Partitioner {
     do {
       const Index nx = nodes_[node].next;
       const glm::dvec2 a = pos(node), b = pos(nx);
-      // The outer ring is counter-clockwise, so from inside the ray to +x
-      // leaves through an edge going upwards.
-      if (a.y <= mp.y && mp.y <= b.y && a.y != b.y) {
-        const double x = a.x + (mp.y - a.y) * (b.x - a.x) / (b.y - a.y);
-        if (x >= mp.x && x < best_x) {
-          best_x = x;
-          hit = {x, mp.y};
-          if (x == a.x && a.y == mp.y) {
-            best = node;
-          } else if (x == b.x && b.y == mp.y) {
-            best = nx;
-          } else {
-            best = a.x > b.x ? node : nx;
-          }
-        }
+      if (const std::optional<double> x = ray_exit(a, b, mp); x && *x < best_x) {
+        best_x = *x;
+        hit = {*x, mp.y};
+        best = bridge_end(a, b, *x, mp, node, nx);
       }
       node = nx;
     } while (node != head_);
@@ -291,24 +309,15 @@ class Partitioner {
     const glm::dvec2 pp = pos(best);
     const glm::dvec2 tri[3] = {mp, hit, pp};
     const bool ccw = orient2d(tri[0], tri[1], tri[2]) > 0;
-    double best_tan = std::numeric_limits<double>::infinity();
-    double best_dist = std::numeric_limits<double>::infinity();
+    Hiding nearest{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     Index chosen = best;
     node = head_;
     do {
       const glm::dvec2 q = pos(node);
       if (node != best && q != pp && turn_at(node) != 1 && q.x >= mp.x) {
-        const int o1 = orient2d(tri[0], tri[1], q), o2 = orient2d(tri[1], tri[2], q), o3 = orient2d(tri[2], tri[0], q);
-        const bool inside = ccw ? (o1 >= 0 && o2 >= 0 && o3 >= 0) : (o1 <= 0 && o2 <= 0 && o3 <= 0);
-        if (inside) {
-          const double dx = q.x - mp.x;
-          const double t = dx > 0.0 ? std::abs(q.y - mp.y) / dx : std::numeric_limits<double>::infinity();
-          const double dist = glm::dot(q - mp, q - mp);
-          if (t < best_tan || (t == best_tan && dist < best_dist)) {
-            best_tan = t;
-            best_dist = dist;
-            chosen = node;
-          }
+        if (const std::optional<Hiding> h = hiding(tri, ccw, q); h && *h < nearest) {
+          nearest = *h;
+          chosen = node;
         }
       }
       node = nodes_[node].next;
