@@ -54,7 +54,49 @@ bool EventQueue::Targets::same_as(const Targets& o) const {
     // An empty vector's data() may be null, which memcmp must not be given even for no bytes.
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
   };
-  return bits(edge, o.edge) && bits(nx, o.nx) && bits(ny, o.ny) && bits(k, o.k) && bits(c, o.c);
+  return bits(edge, o.edge) && bits(nx, o.nx) && bits(ny, o.ny) && bits(k, o.k) && bits(c, o.c) && shared == o.shared;
+}
+
+void EventQueue::list_planes(const State& st, const std::vector<int>& edges, Targets& t) {
+  // The edges by plane, to the bit (then in the order given): each run is a plane.
+  keyed_.clear();
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Plane& pl = st.edges[edges[i]].plane;
+    const double fields[4] = {pl.n.x, pl.n.y, pl.k, pl.c};
+    PlaneKey key;
+    std::memcpy(key.bits.data(), fields, sizeof fields);
+    keyed_.push_back({key, i});
+  }
+  std::sort(keyed_.begin(), keyed_.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.bits, a.second) < std::tie(b.first.bits, b.second);
+  });
+  // Each edge's first with its plane (its place in the order given), and how many share it.
+  first_.resize(edges.size());
+  sharing_.assign(edges.size(), 0);
+  for (std::size_t r = 0; r < keyed_.size();) {
+    std::size_t end = r + 1;
+    while (end < keyed_.size() && keyed_[end].first.bits == keyed_[r].first.bits) ++end;
+    for (std::size_t j = r; j < end; ++j) first_[keyed_[j].second] = keyed_[r].second;
+    sharing_[keyed_[r].second] = end - r;
+    r = end;
+  }
+  // A plane takes the place of its first edge; the others join its list.
+  place_.resize(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const int e = edges[i];
+    const std::size_t first = first_[i];
+    if (first != i) {
+      t.shared[static_cast<std::size_t>(t.edge[place_[first]] - kShared)].push_back(e);
+      continue;
+    }
+    place_[i] = t.edge.size();
+    t.add(e, st.edges[e].plane);
+    if (sharing_[i] > 1) {
+      t.edge.back() = kShared + static_cast<int>(t.shared.size());
+      t.shared.push_back({e});
+      t.spans.emplace_back();
+    }
+  }
 }
 
 void EventQueue::refresh_live(State& st) {
@@ -67,8 +109,13 @@ void EventQueue::refresh_live(State& st) {
     live_ = std::make_shared<Targets>();
     live_->live = true;
     listed_.assign(st.edges.size(), 0);
+    live_edges_.clear();
     for (int e = 0; e < static_cast<int>(st.edges.size()); ++e)
-      if (!st.spans(e).empty()) list_live(st, e);
+      if (!st.spans(e).empty()) {
+        live_edges_.push_back(e);
+        listed_[e] = 1;
+      }
+    list_planes(st, live_edges_, *live_);
     rebuilt_at_ = live_corners_ = corners;
     return;
   }
@@ -99,7 +146,7 @@ void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges
   if (!may_split(st, c)) return;
   // Callers give every corner the same new planes in turn: one copy serves them all.
   auto some = std::make_shared<Targets>();
-  for (int e : edges) some->add(e, st.edges[e].plane);
+  list_planes(st, edges, *some);
   if (!some_ || !some_->same_as(*some)) some_ = std::move(some);
   add_splits(st, c, some_, some_->edge.size(), resolved);
 }
@@ -284,12 +331,86 @@ bool EventQueue::closes_here(State& st, const Candidate& k) const {
   return closes(st.span_through(k.edge, k.p, k.z, st.tol().position()));
 }
 
+void EventQueue::named(const State& st, const SplitList& list, const Split& s, glm::dvec2 p, double z,
+                       std::vector<int>& out) {
+  out.clear();
+  const Targets& t = *list.targets;
+  const std::size_t g = static_cast<std::size_t>(s.edge - kShared);
+  const std::vector<int>& edges = t.shared[g];
+  SharedSpans& spans = t.spans[g];
+  const glm::dvec2 dir = st.edges[edges.front()].dir;
+  if (spans.batch != batch_) {
+    // Sorted once a batch: nothing changes the spans while it is popped.
+    spans.batch = batch_;
+    spans.z = z;
+    spans.drift = 0.0;
+    std::vector<std::tuple<double, double, int>> sorted;
+    for (int e : edges)
+      for (int a : st.edges[e].spans) {
+        const int b = st.corners[a].next;
+        if (!st.corners[a].alive || st.corners[a].next_edge != e || b == kNone) continue;
+        const double u = glm::dot(st.position(a, z), dir), w = glm::dot(st.position(b, z), dir);
+        sorted.emplace_back(std::min(u, w), std::max(u, w), e);
+        spans.drift = std::max({spans.drift, std::abs(glm::dot(st.corners[a].velocity, dir)),
+                                std::abs(glm::dot(st.corners[b].velocity, dir))});
+      }
+    std::sort(sorted.begin(), sorted.end());
+    spans.lo.clear();
+    spans.hi.clear();
+    spans.hi_max.clear();
+    spans.edge.clear();
+    for (const auto& [lo, hi, e] : sorted) {
+      spans.lo.push_back(lo);
+      spans.hi.push_back(hi);
+      spans.hi_max.push_back(spans.hi_max.empty() ? hi : std::max(hi, spans.hi_max.back()));
+      spans.edge.push_back(e);
+    }
+  }
+  // As span_through takes a span to hold the point, with the drift of the
+  // spans' ends since the height they were sorted at and the rounding of
+  // taking places along the line here and there.
+  const double u = glm::dot(p, dir);
+  const double reach = st.tol().span_margin() + spans.drift * std::abs(z - spans.z) * (1.0 + 1e-9) +
+                       1e-12 * (std::abs(u) + std::abs(p.x) + std::abs(p.y));
+  // The spans holding the point start at or before it (before `to`) and end at
+  // or after it (from `from` on, where the highest end so far first reaches it).
+  const std::size_t to = static_cast<std::size_t>(
+      std::upper_bound(spans.lo.begin(), spans.lo.end(), u + reach) - spans.lo.begin());
+  const std::size_t from = static_cast<std::size_t>(
+      std::lower_bound(spans.hi_max.begin(), spans.hi_max.end(), u - reach) - spans.hi_max.begin());
+  for (std::size_t j = from; j < to; ++j)
+    if (spans.hi[j] >= u - reach) out.push_back(spans.edge[j]);
+  if (out.empty()) {
+    if (to > 0) {
+      std::size_t j = to - 1;
+      while (j > 0 && spans.hi[j] != spans.hi_max[to - 1]) --j;
+      out.push_back(spans.edge[j]);
+    }
+    if (to < spans.lo.size()) out.push_back(spans.edge[to]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+void EventQueue::hand_out(State& st, const SplitList& list, int c, const Split& s) {
+  const Candidate k{queued_at(list, s), st.position(c, s.at), c, kNone, s.edge};
+  if (s.edge < kShared) {
+    if (!closes_here(st, k)) cluster_.push_back(k);
+    return;
+  }
+  named(st, list, s, k.p, k.z, named_);
+  for (int e : named_) {
+    if (!queues(list, s.at, e)) continue;
+    const Candidate split{k.z, k.p, c, kNone, e};
+    if (!closes_here(st, split)) cluster_.push_back(split);
+  }
+}
+
 void EventQueue::drain(State& st, int i, int c, double through) {
   SplitList& list = lists_[i];
   const auto take = [&](const Split& s) {
     note_queued(list, s);
-    const Candidate k{queued_at(list, s), st.position(c, s.at), c, kNone, s.edge};
-    if (!closes_here(st, k)) cluster_.push_back(k);
+    hand_out(st, list, c, s);
   };
   for (;;) {
     while (!list.splits.empty() && queued_at(list, list.splits.back()) <= through) {
@@ -313,6 +434,7 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   std::vector<Candidate>& out = cluster_;
   out.clear();
   heads_.clear();
+  shared_heads_.clear();
   ++batch_;
   closing_.resize(st.corners.size());
   const double through = heap_.top().z + st.tol().height();
@@ -327,6 +449,13 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
       continue;
     }
     if (e.list != kNone) {
+      // A shared plane's edges are named once the batch's collapses are known:
+      // its candidates join the splits drained after these.
+      if (e.edge >= kShared) {
+        heads_.push_back({SIZE_MAX, e.list});
+        shared_heads_.push_back({e.corner, {e.at, e.edge}});
+        continue;
+      }
       heads_.push_back({out.size(), e.list});
       out.push_back({e.z, st.position(e.corner, e.at), e.corner, kNone, e.edge});
       continue;
@@ -343,9 +472,17 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   // Then the rest of each list in the batch, and the candidates in the
   // queue's order again (by height, corner, edge).
   const std::size_t popped = out.size();
+  std::size_t shared = 0;
   for (const auto& [at, i] : heads_) {
-    const int c = out[at].corner;
-    if (closes_here(st, out[at])) out[at].corner = kNone;
+    int c;
+    if (at == SIZE_MAX) {
+      const auto& [corner, s] = shared_heads_[shared++];
+      c = corner;
+      hand_out(st, lists_[i], c, s);
+    } else {
+      c = out[at].corner;
+      if (closes_here(st, out[at])) out[at].corner = kNone;
+    }
     drain(st, i, c, through);
   }
   const auto dropped = std::remove_if(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(popped),

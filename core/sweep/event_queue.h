@@ -16,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -81,22 +82,51 @@ class EventQueue {
  private:
   // A split candidate: where the corner meets the edge's plane.
   using Split = Meeting;
-  // Edges a corner may run into, their planes' coefficients side by side
-  // (the test of every corner against every edge is the sweep's inner loop).
-  // Only appended to: a list reads the first `size` edges, as they were when
-  // it was listed, however many came since.
-  struct Targets {
+  // A split's "edge" at or past this names a plane shared by several edges:
+  // Targets::shared[edge - kShared].
+  static constexpr int kShared = 1 << 30;
+  // The live spans of a shared plane's edges at one height, sorted along its
+  // line, for one batch: where a corner meets the plane, which of them are
+  // there (named).
+  struct SharedSpans {
+    std::uint64_t batch = 0;  // the batch it was sorted for, or 0
+    double z = 0.0;           // the height it was sorted at
+    double drift = 0.0;       // the fastest any span's end moves along the line
+    // Each span's ends along the line, by its low end, and the highest end so far.
+    std::vector<double> lo, hi, hi_max;
     std::vector<int> edge;
+  };
+  // The planes a corner may run into, their coefficients side by side (the
+  // test of every corner against every plane is the sweep's inner loop).
+  // Only appended to: a list reads the first `size` planes, as they were when
+  // it was listed, however many came since.
+  //
+  // Edges whose planes are the same to the bit (collinear, of one slope: a
+  // grid's lines of walls) are one plane here. A corner meets all of them at
+  // one point and height; as a split per edge, a square with k x k holes put
+  // O(k) of every hole's corner's in one batch (O(n^1.5), nearly all missing
+  // their edge's spans, each tested and then waiting in resolve_intersections).
+  // The plane's split names, when popped, only the edges with a span there,
+  // looked up along the line (named).
+  struct Targets {
+    std::vector<int> edge;  // a plane's one edge, or kShared + its place in `shared`
     std::vector<double> nx, ny, k, c;
+    std::vector<std::vector<int>> shared;      // the edges of each shared plane
+    mutable std::vector<SharedSpans> spans;    // by shared plane, sorted as batches ask
     // Of the live edges (each listed once), built as lists of many need it:
     // it changes how their splits are found, not what they are.
     bool live = false;
     mutable PlaneIndex index;
     PlaneIndex::Planes planes() const { return {edge.data(), nx.data(), ny.data(), k.data(), c.data()}; }
+    // Appends edge e's plane, of e alone.
     void add(int e, const Plane& pl);
     // The same edges with the same coefficients, to the bit.
     bool same_as(const Targets& o) const;
   };
+  // Appends the planes of `edges` to t, each shared plane once. A plane once
+  // read stays as it was (lists and the index hold its edge), so edges added
+  // to a set later (Targets::add) are planes of their own.
+  void list_planes(const State& st, const std::vector<int>& edges, Targets& t);
   // One scheduling's split candidates: what corner c was at when listed, and
   // the edges it was listed against, so that its splits can be worked out
   // again to the same bits. Only the lowest few are held, lowest last.
@@ -165,6 +195,16 @@ class EventQueue {
   void advance(int i, int c);
   // Notes that list i queued split s: its last, and how many equal to it.
   static void note_queued(SplitList& list, const Split& s);
+  // The edges of split s's shared plane that it names, its corner at p at
+  // height z: those with a span there, in order, each once. The plane's
+  // other edges are passed: their spans are elsewhere along its line, and
+  // could reach the point within the batch only past the nearest span on
+  // either side, so where no span holds the point those two are named (a
+  // lower cluster of the batch may rewire their ends to it).
+  void named(const State& st, const SplitList& list, const Split& s, glm::dvec2 p, double z, std::vector<int>& out);
+  // Adds the candidates of split s of list (of corner c) to the batch being
+  // popped, but those closes_here drops.
+  void hand_out(State& st, const SplitList& list, int c, const Split& s);
   // Every split of list i (of corner c) queued at or below `through` goes to
   // the batch being popped, in one pass over its edges (closes_here drops
   // some); then the list's next is queued.
@@ -211,6 +251,18 @@ class EventQueue {
   std::uint64_t batch_ = 0;
   std::vector<std::pair<std::size_t, int>> heads_;
   std::vector<Split> within_;
+  std::vector<int> named_;  // hand_out's
+  // list_planes': each edge's plane by its bits, its first edge of that plane,
+  // how many edges share it (by first), and its place in the Targets.
+  struct PlaneKey {
+    std::array<std::uint64_t, 4> bits;
+  };
+  std::vector<std::pair<PlaneKey, std::size_t>> keyed_;
+  std::vector<std::size_t> first_, sharing_, place_;
+  std::vector<int> live_edges_;  // refresh_live's
+  // pop_cluster's: the heads that are splits with a shared plane (SIZE_MAX in
+  // heads_), by corner.
+  std::vector<std::pair<int, Split>> shared_heads_;
 };
 
 }  // namespace procex::engine
