@@ -49,7 +49,7 @@ std::optional<EdgePoint> locate(State& st, int source, const PlanAnchor& plan, d
                                 double shift) {
   const Source& src = st.sources[source];
   const Edge& edge = st.edges[src.edge];
-  const auto& spans = st.spans(src.edge);
+  const SpanList spans = st.spans(src.edge);
   if (spans.empty()) {
     r.absence = Absence::EdgeGone;
     r.reason = "edge " + std::to_string(src.id) + " no longer exists at height " + std::to_string(z);

@@ -70,8 +70,8 @@ EdgeCorners::Index& EdgeCorners::index_of(const State& st, int e, double z) {
     slot_[k] = static_cast<int>(indexes_.size());
     Index& index = indexes_.emplace_back();
     index.z0 = z;
-    for (int s : st.edges[e].spans) {
-      if (!st.corners[s].alive || st.corners[s].next_edge != e) continue;  // a stale entry
+    for (int s : st.listed_spans(e)) {
+      if (!st.corners[s].alive) continue;  // a stale entry
       add(st, index, e, s);
       if (const int t = st.corners[s].next; t != kNone) add(st, index, e, t);
     }

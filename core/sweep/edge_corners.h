@@ -22,7 +22,7 @@ class EdgeCorners {
   // all, with `partners` edges to look up the corners between
   // (State::corners_indexed_from).
   static bool worth(const State& st, int e, std::size_t partners) {
-    const std::size_t spans = st.edges[e].spans.size();
+    const std::size_t spans = st.edges[e].listed_spans;
     // Each partner edge costs a lookup, each span a visit.
     return st.corners_indexed_from == 0 || (spans >= st.corners_indexed_from && 4 * partners < spans);
   }

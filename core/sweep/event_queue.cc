@@ -346,7 +346,7 @@ void EventQueue::named(const State& st, const SplitList& list, const Split& s, g
     spans.drift = 0.0;
     std::vector<std::tuple<double, double, int>> sorted;
     for (int e : edges)
-      for (int a : st.edges[e].spans) {
+      for (int a : st.listed_spans(e)) {
         const int b = st.corners[a].next;
         if (!st.corners[a].alive || st.corners[a].next_edge != e || b == kNone) continue;
         const double u = glm::dot(st.position(a, z), dir), w = glm::dot(st.position(b, z), dir);

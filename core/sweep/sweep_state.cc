@@ -45,7 +45,10 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
   std::tie(c.motion, c.velocity) = motion_of(prev_edge, next_edge);
   const int id = static_cast<int>(corners.size());
   corners.push_back(c);
-  edges[next_edge].spans.push_back(id);
+  Edge& e = edges[next_edge];
+  (e.last_span == kNone ? e.first_span : corners[e.last_span].next_span) = id;
+  e.last_span = id;
+  ++e.listed_spans;
   return id;
 }
 
@@ -166,12 +169,21 @@ std::uint32_t State::vertex_now(int c) {
   return v;
 }
 
-const std::vector<int>& State::spans(int e) {
-  auto& s = edges[e].spans;
-  s.erase(std::remove_if(s.begin(), s.end(),
-                         [&](int c) { return !corners[c].alive || corners[c].next_edge != e; }),
-          s.end());
-  return s;
+SpanList State::spans(int e) {
+  Edge& edge = edges[e];
+  int* link = &edge.first_span;
+  edge.last_span = kNone;
+  for (int c = edge.first_span; c != kNone; c = corners[c].next_span) {
+    if (!corners[c].alive) {
+      --edge.listed_spans;
+      continue;
+    }
+    *link = c;
+    link = &corners[c].next_span;
+    edge.last_span = c;
+  }
+  *link = kNone;
+  return listed_spans(e);
 }
 
 int State::span_through(int e, glm::dvec2 p, double z, double reach) const {
@@ -180,9 +192,9 @@ int State::span_through(int e, glm::dvec2 p, double z, double reach) const {
   // The list as it stands, its stale entries passed over rather than dropped
   // first: spans() reads the whole list, and the span through p is mostly
   // found early in it; a comb's bar, cut at every tooth, has thousands.
-  for (int s : edge.spans) {
+  for (int s : listed_spans(e)) {
     const int t = corners[s].next;
-    if (!corners[s].alive || corners[s].next_edge != e || t == kNone) continue;
+    if (!corners[s].alive || t == kNone) continue;
     const double ts = glm::dot(position(s, z) - p, edge.dir);
     const double tt = glm::dot(position(t, z) - p, edge.dir);
     if (ts <= tol_.span_margin() && tt >= -tol_.span_margin()) return s;

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,7 +44,11 @@ struct Edge {
   int source = -1;           // index into State::sources
   std::int32_t source_id = -1;
   int face = kNone;          // output face group this plane's region belongs to
-  std::vector<int> spans;    // corners s with s.next_edge == this (maybe stale; filter)
+  // The corners s with s.next_edge == this, in the order made, linked through
+  // Corner::next_span (maybe stale: State::spans drops the dead), and how many
+  // the list holds. A vector per edge was a tenth of the city's allocations.
+  int first_span = kNone, last_span = kNone;
+  std::size_t listed_spans = 0;
   // The edge whose plane ran on over this edge's span where an ambiguous
   // corner between them was resolved (ambiguity.h): a collision found before
   // that, at the same height, meets the heir there.
@@ -64,11 +70,50 @@ struct Corner {
   int prev_edge = kNone, next_edge = kNone;
   int prev = kNone, next = kNone;  // neighbouring corners in the loop
   std::uint32_t origin = 0;        // output vertex where this corner started
+  int next_span = kNone;           // the next corner listed on next_edge's spans (Edge::first_span)
   glm::dvec2 base{0.0};            // plan position at height base_z
   double base_z = 0.0;
   glm::dvec2 velocity{0.0};        // plan displacement per unit of height
   Motion motion = Motion::Regular;
   bool alive = true;
+};
+
+// The first corners of an edge's listed spans, in the order made.
+class SpanList {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = int;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const int*;
+    using reference = int;
+    iterator() = default;
+    iterator(const std::vector<Corner>* corners, int c) : corners_(corners), c_(c) {}
+    int operator*() const { return c_; }
+    iterator& operator++() {
+      c_ = (*corners_)[static_cast<std::size_t>(c_)].next_span;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator was = *this;
+      ++*this;
+      return was;
+    }
+    bool operator==(const iterator& o) const { return c_ == o.c_; }
+
+   private:
+    const std::vector<Corner>* corners_ = nullptr;
+    int c_ = kNone;
+  };
+  SpanList(const std::vector<Corner>& corners, int first) : corners_(&corners), first_(first) {}
+  iterator begin() const { return {corners_, first_}; }
+  iterator end() const { return {corners_, kNone}; }
+  bool empty() const { return first_ == kNone; }
+
+ private:
+  const std::vector<Corner>* corners_;
+  int first_;
 };
 
 // A directed boundary edge of an output face, seen from outside the solid.
@@ -170,7 +215,9 @@ class State {
   std::uint32_t vertex_now(int c);
 
   // Live spans of an edge: corners s with s.next_edge == e (stale entries dropped).
-  const std::vector<int>& spans(int e);
+  SpanList spans(int e);
+  // The spans listed on edge e, stale entries (dead corners) too.
+  SpanList listed_spans(int e) const { return {corners, edges[e].first_span}; }
   // The span of edge e (corner s to s.next) that contains p at height z, its
   // plane within `reach` of p: s, or kNone.
   int span_through(int e, glm::dvec2 p, double z, double reach) const;
