@@ -120,6 +120,7 @@ class EventQueue {
     PlaneIndex::Planes planes() const { return {edge.data(), nx.data(), ny.data(), k.data(), c.data()}; }
     // Appends edge e's plane, of e alone.
     void add(int e, const Plane& pl);
+    void reserve(std::size_t n);
     // The same edges with the same coefficients, to the bit.
     bool same_as(const Targets& o) const;
   };

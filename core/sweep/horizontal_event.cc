@@ -519,7 +519,8 @@ void apply_horizontal_run(State& st, EventQueue& queue, ProfileEvents& profile_e
     if (corners.size() < 2) throw SweepError("sweep: a loop of the cross-section after a horizontal step has no corners", z, {});
     for (std::size_t i = 0; i < corners.size(); ++i) st.link(corners[i], corners[(i + 1) % corners.size()]);
   }
-  const std::vector<int> live = settle(st, made);
+  std::vector<int> live;
+  settle(st, made, live);
   std::vector<char> fresh(st.corners.size(), 0);
   for (int c : live) {
     queue.schedule(st, c);

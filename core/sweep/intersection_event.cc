@@ -86,6 +86,7 @@ struct ClusterLists {
   std::vector<int> roots;                      // one collision per group joined through corners
   std::vector<Point> grid;                     // sorted: each cell's points are a run
   std::vector<int> group_of;                   // by root collision
+  std::vector<std::vector<int>> spare;         // lists of groups a batch had and the next did not
   int find(int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
@@ -145,6 +146,21 @@ void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double 
   }
 }
 
+// Sets the number of groups, moving lists between them and the spares
+// rather than freeing and making them: made afresh for a batch's groups,
+// they were 100,000 of the city's allocations.
+void resize_groups(std::vector<std::vector<int>>& groups, std::size_t n, ClusterLists& lists) {
+  for (; groups.size() > n; groups.pop_back()) lists.spare.push_back(std::move(groups.back()));
+  for (; groups.size() < n; groups.back().clear()) {
+    if (lists.spare.empty()) {
+      groups.emplace_back();
+    } else {
+      groups.push_back(std::move(lists.spare.back()));
+      lists.spare.pop_back();
+    }
+  }
+}
+
 // Clusters collisions at one height closer than delta3 in the plan, in
 // first-member order. Collisions that share a corner there are one event
 // (a corner meeting many planes at once, the corners of a regular polygon
@@ -157,7 +173,7 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
              std::vector<std::vector<int>>& groups) {
   // Most batches hold a single collision: its own cluster, nothing to join.
   if (cs.size() <= 1) {
-    groups.resize(cs.size());
+    resize_groups(groups, cs.size(), lists);
     if (!cs.empty()) groups[0].assign(1, 0);
     return;
   }
@@ -192,13 +208,13 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
   for (int i = 0; i < static_cast<int>(cs.size()); ++i) {
     int& g = group_of[lists.find(i)];
     if (g == kNone) {
-      if (groups.size() == static_cast<std::size_t>(count)) groups.emplace_back();
+      if (groups.size() == static_cast<std::size_t>(count)) resize_groups(groups, count + 1, lists);
       groups[count].clear();
       g = count++;
     }
     groups[g].push_back(i);
   }
-  groups.resize(count);
+  resize_groups(groups, static_cast<std::size_t>(count), lists);
 }
 
 // The weight of a plane only young corners run along (meeting_point): its
@@ -1013,7 +1029,7 @@ struct BatchScratch {
   std::vector<std::size_t> order;
   RewiredList rewired;
   std::deque<Candidate> collapses;  // addresses stay put as it grows
-  std::vector<int> moved, spans;
+  std::vector<int> moved, spans, settled;
   LookedAt looked_at;
   // LaterGroups'
   std::vector<char> resolved;          // by group
@@ -1281,16 +1297,17 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // A cluster's first collision is never late: a cluster that meets one of
   // its corners lower is resolved before it.
   for (std::size_t g = 0; g < groups.size() && groups.size() > 1; ++g) {
-    std::vector<int> kept;
-    for (int m : groups[g]) {
+    std::vector<int>& members = groups[g];
+    std::size_t kept = 0;
+    for (int m : members) {
       if (later_groups.late(g, m)) {
         later_groups.waits(m);
         waiting.push_back(source[m]);
       } else {
-        kept.push_back(m);
+        members[kept++] = m;
       }
     }
-    groups[g] = std::move(kept);
+    members.resize(kept);
   }
   const auto mean_z = [&](const std::vector<int>& g) {
     double z = 0.0;
@@ -1311,7 +1328,12 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   std::vector<std::size_t>& order = lists.order;
   order.resize(later_groups.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); });
+  // Groups first met at one height keep the order they are listed in (by
+  // index, not by a stable sort: std::stable_sort takes a buffer from the
+  // heap at every batch).
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return first_of(a) != first_of(b) ? first_of(a) < first_of(b) : a < b;
+  });
   // Clusters at one height up to rounding are one instant, so their order is
   // rounding's: rewire them all before any settles. Settling folds spikes,
   // hands runs to parallel neighbours and closes flat loops, reaching along
@@ -1325,7 +1347,8 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   auto settle_rewired = [&] {
     for (const Rewired& r : rewired) {
       st.height = r.z;
-      for (int n : settle(st, r.made)) {
+      settle(st, r.made, lists.settled);
+      for (int n : lists.settled) {
         if (!st.corners[n].alive) continue;
         queue.schedule(st, n, r.edges);
         queue.schedule_edge_event(st, st.corners[n].prev);

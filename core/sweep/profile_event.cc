@@ -115,7 +115,8 @@ void apply_profile_events(State& st, EventQueue& queue, ProfileEvents& events, c
     st.corners[c].alive = false;
     made.push_back(fresh[c]);
   }
-  const std::vector<int> live = settle(st, made);
+  std::vector<int> live;
+  settle(st, made, live);
   std::vector<char> scheduled(st.corners.size(), 0);
   for (int c : live) {
     queue.schedule(st, c);

@@ -88,8 +88,8 @@ bool close_if_degenerate(State& st, int start) {
 
 }  // namespace
 
-std::vector<int> settle(State& st, const std::vector<int>& made) {
-  std::vector<int> live;
+void settle(State& st, const std::vector<int>& made, std::vector<int>& live) {
+  live.clear();
   // Corners made in settling one are settled before the next of `made`; the
   // stack is needed only then (a spike folds, neighbours are ambiguous).
   std::vector<int> pending;
@@ -111,7 +111,6 @@ std::vector<int> settle(State& st, const std::vector<int>& made) {
       pending.pop_back();
     }
   }
-  return live;
 }
 
 }  // namespace procex::engine

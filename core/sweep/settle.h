@@ -9,8 +9,8 @@
 
 namespace procex::engine {
 
-// Settles the corners just made (and those their settling makes); returns the
-// ones still alive, in order, ready for scheduling.
-std::vector<int> settle(State& st, const std::vector<int>& made);
+// Settles the corners just made (and those their settling makes); `live`
+// becomes the ones still alive, in order, ready for scheduling.
+void settle(State& st, const std::vector<int>& made, std::vector<int>& live);
 
 }  // namespace procex::engine
