@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -25,6 +26,7 @@
 #include "core/sweep/edge_corners.h"
 #include "core/sweep/meeting_heights.h"
 #include "core/sweep/settle.h"
+#include "core/sweep/spares.h"
 
 namespace procex::engine {
 namespace {
@@ -1005,7 +1007,11 @@ class LookedAt {
 // cleared and never freed: a city's sweeps pop 300,000 batches, most of a
 // single collision, and each batch allocating its own lists (hash maps and
 // sets among them) took a tenth of the city's instructions (issue 12).
+// A finished sweep's go to the thread's next sweep (spares.h).
 struct BatchScratch {
+  // What the lists hold of the sweep they served (its corners' edge index)
+  // is dropped, their storage kept.
+  void next_sweep() { resolving.along = EdgeCorners(); }
   void next_batch() {
     cs.clear();
     source.clear();
@@ -1047,9 +1053,13 @@ struct BatchScratch {
   std::vector<int> collapsing;
   std::vector<std::size_t> collapse_at;
   std::vector<double> plane_nx, plane_ny, plane_k, plane_c, meet;
+  // The most corners a sweep it served made: its lists grow with them.
+  std::size_t corners = 0;
 };
 
-void BatchScratchDeleter::operator()(BatchScratch* s) const { delete s; }
+void BatchScratchDeleter::operator()(BatchScratch* s) const {
+  Spares<BatchScratch>::give(std::unique_ptr<BatchScratch>(s), s->corners);
+}
 
 namespace {
 
@@ -1255,9 +1265,13 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // of this batch that rewires the edge's span (paper 4.3: each chain
   // recovers its current corners); it waits for its own height and is
   // checked against the loops as they are then.
-  if (!st.batch_scratch) st.batch_scratch.reset(new BatchScratch);
+  if (!st.batch_scratch) {
+    st.batch_scratch.reset(Spares<BatchScratch>::take().release());
+    st.batch_scratch->next_sweep();
+  }
   BatchScratch& lists = *st.batch_scratch;
   lists.next_batch();
+  lists.corners = std::max(lists.corners, st.corners.size());
   std::vector<Collision>& cs = lists.cs;
   std::vector<const Candidate*>& source = lists.source;  // the candidate of each collision
   std::vector<const Candidate*>& waiting = lists.waiting;

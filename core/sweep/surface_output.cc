@@ -16,6 +16,7 @@
 #include "core/geom/round_edge.h"
 #include "core/geom/segment_distance.h"
 #include "core/geom/turn.h"
+#include "core/sweep/spares.h"
 
 namespace procex::engine {
 namespace {
@@ -76,8 +77,15 @@ void split_at_repeats(std::vector<std::uint32_t> loop, std::vector<std::vector<s
 bool half_edge_less(const HalfEdge& a, const HalfEdge& b) { return a.from != b.from ? a.from < b.from : a.to < b.to; }
 bool half_edge_equal(const HalfEdge& a, const HalfEdge& b) { return a.from == b.from && a.to == b.to; }
 
-// Buffers reused from face to face (most faces have a handful of half-edges).
+// Buffers reused from face to face (most faces have a handful of half-edges),
+// and from one surface of the thread to the next (spares.h).
 struct ChainScratch {
+  // The last surface's loops are not this one's.
+  void next_surface(std::size_t vertices) {
+    seen.assign(vertices, 0);
+    loop_id = 0;
+  }
+
   std::vector<HalfEdge> given, hs;
   std::vector<std::pair<double, std::uint32_t>> corners, inside;  // (position, vertex)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> links;     // (vertex, a neighbour in the face)
@@ -90,6 +98,7 @@ struct ChainScratch {
   std::vector<std::size_t> outer_from;            // outer loop i: its points from here in pts
   std::vector<double> outer_area;
   std::vector<std::size_t> holes;                 // into loops
+  std::vector<std::uint32_t> index;               // vertex -> its place among those the faces use
   bool runs_back = false;                         // a loop of the last face chained turned straight back
 };
 
@@ -302,7 +311,6 @@ void chain_loops(const State& st, const FaceGroup& f, const Cuts& cuts, ChainScr
   auto pos = [&](std::uint32_t v) { return fr.to2d(st.vertices[v]); };
   const double near = st.tol().position();
   x.used.assign(hs.size(), 0);
-  if (x.seen.size() < st.vertices.size()) x.seen.resize(st.vertices.size(), 0);
   std::vector<std::uint32_t>& loop = x.loop;
   for (int start = 0; start < static_cast<int>(hs.size()); ++start) {
     if (x.used[start]) continue;
@@ -422,7 +430,8 @@ Surface assemble(const State& st, const Cuts& cuts, ChainScratch& x, std::vector
   // Vertices no face uses (a plan edit's sliver absorbed by the face it grew
   // into, loops of no area) are left out, the rest keep their order.
   constexpr std::uint32_t kUnused = UINT32_MAX;
-  std::vector<std::uint32_t> index(st.vertices.size(), kUnused);
+  std::vector<std::uint32_t>& index = x.index;
+  index.assign(st.vertices.size(), kUnused);
   for (const SurfaceFace& f : s.faces)
     for (const auto& loop : f.loops)
       for (std::uint32_t v : loop) index[v] = 0;
@@ -439,12 +448,9 @@ Surface assemble(const State& st, const Cuts& cuts, ChainScratch& x, std::vector
   return s;
 }
 
-}  // namespace
-
 // Faces rarely run along themselves; only where one does are the cuts
 // looked for, and the surface assembled again with them.
-Surface build_surface(const State& st) {
-  ChainScratch x;
+Surface build_surface_with(const State& st, ChainScratch& x) {
   std::vector<std::size_t> runs_back;
   Surface s = assemble(st, {}, x, runs_back);
   if (runs_back.empty()) return s;
@@ -459,7 +465,40 @@ Surface build_surface(const State& st) {
   return assemble(st, cuts, x, runs_back);
 }
 
+}  // namespace
+
+Surface build_surface(const State& st) {
+  std::unique_ptr<ChainScratch> x = Spares<ChainScratch>::take();
+  x->next_surface(st.vertices.size());
+  Surface s = build_surface_with(st, *x);
+  Spares<ChainScratch>::give(std::move(x), st.corners.size());
+  return s;
+}
+
+namespace {
+
+// close_surface's arrays, kept for the thread's next surface (spares.h).
+struct CloseScratch {
+  // A half-edge, with the one before it in its loop: kept small, since a
+  // roof's arrays here are its largest at once.
+  struct Half {
+    std::uint32_t from, to, prev, next, face;
+    std::uint32_t loop;  // in `loops`
+    std::uint32_t at;    // `from`'s place in its loop
+  };
+  std::vector<std::vector<std::uint32_t>*> loops;
+  std::vector<Half> halves;
+  std::vector<std::uint32_t> start, order, next, tos, twin;
+  std::vector<glm::dvec3> normals;
+  std::vector<FaceAtEdge> round;
+  std::vector<char> in_fan;
+};
+
+}  // namespace
+
 void close_surface(Surface& surface) {
+  std::unique_ptr<CloseScratch> scratch = Spares<CloseScratch>::take();
+  CloseScratch& arrays = *scratch;
   auto at = [&](std::uint32_t v) {
     const glm::dvec3 p = surface.vertices[v];
     std::ostringstream out;
@@ -469,23 +508,20 @@ void close_surface(Surface& surface) {
   auto fail = [&](std::uint32_t v, const std::string& what) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };
-  // Every half-edge, with the one before it in its loop: counted first and
-  // kept small, since a roof's arrays here are its largest at once, and
+  // Every half-edge, with the one before it in its loop: counted first, as
   // reaching past glibc's trim threshold (128 KB) made each sweep of a
   // 200-corner plan give the heap's top back and fault it in again.
-  struct Half {
-    std::uint32_t from, to, prev, next, face;
-    std::uint32_t loop;  // in `loops`
-    std::uint32_t at;    // `from`'s place in its loop
-  };
-  std::vector<std::vector<std::uint32_t>*> loops;
+  using Half = CloseScratch::Half;
+  std::vector<std::vector<std::uint32_t>*>& loops = arrays.loops;
+  loops.clear();
   std::size_t count = 0;
   for (SurfaceFace& face : surface.faces)
     for (auto& loop : face.loops) {
       loops.push_back(&loop);
       count += loop.size();
     }
-  std::vector<Half> halves;
+  std::vector<Half>& halves = arrays.halves;
+  halves.clear();
   halves.reserve(count);
   for (std::uint32_t f = 0, l = 0; f < surface.faces.size(); ++f)
     for (const auto& loop : surface.faces[f].loops) {
@@ -533,26 +569,28 @@ void close_surface(Surface& surface) {
   // counted into one bucket per vertex, then each (small) bucket sorted, and
   // their `to`s beside them. A search over all half-edges at once cost most of
   // a small roof's time in mispredicted branches.
-  std::vector<std::uint32_t> start(surface.vertices.size() + 1, 0);
+  std::vector<std::uint32_t>& start = arrays.start;
+  start.assign(surface.vertices.size() + 1, 0);
   for (const Half& h : halves) ++start[h.from + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> order(halves.size());
-  {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::uint32_t g = 0; g < halves.size(); ++g) order[next[halves[g].from]++] = g;
-  }
+  std::vector<std::uint32_t>& order = arrays.order;
+  order.resize(halves.size());
+  arrays.next.assign(start.begin(), start.end() - 1);
+  for (std::uint32_t g = 0; g < halves.size(); ++g) order[arrays.next[halves[g].from]++] = g;
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     std::sort(order.begin() + start[v], order.begin() + start[v + 1], [&](std::uint32_t a, std::uint32_t b) {
       return std::pair{halves[a].to, a} < std::pair{halves[b].to, b};
     });
-  std::vector<std::uint32_t> tos(order.size());
+  std::vector<std::uint32_t>& tos = arrays.tos;
+  tos.resize(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) tos[i] = halves[order[i]].to;
   auto run = [&](std::uint32_t v, std::uint32_t a) {
     const auto [lo, hi] = std::equal_range(tos.begin() + start[v], tos.begin() + start[v + 1], a);
     return std::span<const std::uint32_t>(order).subspan(static_cast<std::size_t>(lo - tos.begin()),
                                                           static_cast<std::size_t>(hi - lo));
   };
-  std::vector<glm::dvec3> normals;  // per face, made when a pinch needs them
+  std::vector<glm::dvec3>& normals = arrays.normals;  // per face, made when a pinch needs them
+  normals.clear();
   auto normal = [&](std::uint32_t f) {
     if (normals.empty()) {
       normals.reserve(surface.faces.size());
@@ -567,9 +605,10 @@ void close_surface(Surface& surface) {
   };
   // Each half-edge meets its twin, a reverse; where parts of the solid touch
   // along an edge it has several each way, paired round it (round_edge.h).
-  std::vector<std::uint32_t> twin(halves.size());
+  std::vector<std::uint32_t>& twin = arrays.twin;
+  twin.resize(halves.size());
   std::vector<std::vector<std::uint32_t>> welded;  // per edge with several faces each way: its halves running from -> to
-  std::vector<FaceAtEdge> round;
+  std::vector<FaceAtEdge>& round = arrays.round;
   for (std::size_t i = 0; i < order.size();) {
     const Half& h = halves[order[i]];
     const auto ahead = run(h.from, h.to), back = run(h.to, h.from);
@@ -597,7 +636,8 @@ void close_surface(Surface& surface) {
   // for each. The surface stays a closed 2-manifold (and the solid the same
   // point set) when every fan after the first (the one holding v's lowest
   // `to`) has a copy of v of its own.
-  std::vector<char> in_fan(halves.size(), 0);
+  std::vector<char>& in_fan = arrays.in_fan;
+  in_fan.assign(halves.size(), 0);
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (in_fan[order[i]]) continue;
     const std::uint32_t v = halves[order[i]].from;
@@ -643,6 +683,7 @@ void close_surface(Surface& surface) {
     return x.loop != y.loop ? x.loop < y.loop : x.after > y.after;
   });
   for (const Insert& i : inserts) i.loop->insert(i.loop->begin() + i.after + 1, i.v);
+  Spares<CloseScratch>::give(std::move(scratch), surface.vertices.size());
 }
 
 }  // namespace procex::engine

@@ -6,7 +6,42 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/sweep/spares.h"
+
 namespace procex::engine {
+
+// A finished State's arrays, emptied, their storage kept.
+struct StateArrays {
+  std::vector<Source> sources;
+  std::vector<Edge> edges;
+  std::vector<Corner> corners;
+  std::vector<glm::dvec3> vertices;
+};
+
+State::State(const Tolerances& tol, const SweepOptions& options, Budget* budget)
+    : tol_(tol), options_(options), budget_(budget), arrays_(Spares<StateArrays>::take()) {
+  sources.swap(arrays_->sources);
+  edges.swap(arrays_->edges);
+  corners.swap(arrays_->corners);
+  vertices.swap(arrays_->vertices);
+}
+
+State::State(State&&) noexcept = default;
+State& State::operator=(State&&) noexcept = default;
+
+State::~State() {
+  if (!arrays_) return;  // moved from: its arrays went with the move
+  const std::size_t made = corners.size();
+  sources.clear();
+  edges.clear();
+  corners.clear();
+  vertices.clear();
+  arrays_->sources.swap(sources);
+  arrays_->edges.swap(edges);
+  arrays_->corners.swap(corners);
+  arrays_->vertices.swap(vertices);
+  Spares<StateArrays>::give(std::move(arrays_), made);
+}
 
 int State::add_edge(glm::dvec2 point, double z0, glm::dvec2 dir, double k, int source, const std::string& tag,
                     int face) {

@@ -130,8 +130,10 @@ struct FaceGroup {
   std::vector<HalfEdge> half_edges;
 };
 
-// resolve_intersections' lists, kept from one batch to the next
-// (intersection_event.cc).
+struct StateArrays;
+
+// resolve_intersections' lists, kept from one batch to the next and, after
+// a small sweep, for the thread's next sweep (intersection_event.cc).
 struct BatchScratch;
 struct BatchScratchDeleter {
   void operator()(BatchScratch* s) const;
@@ -140,9 +142,13 @@ struct BatchScratchDeleter {
 class State {
  public:
   // `budget` (shared by the nested sweeps of one attempt) counts what this
-  // state makes; null: no limits.
-  State(const Tolerances& tol, const SweepOptions& options, Budget* budget = nullptr)
-      : tol_(tol), options_(options), budget_(budget) {}
+  // state makes; null: no limits. The arrays of corners, edges, sources and
+  // vertices start with the storage of the thread's last finished sweep
+  // (spares.h): grown afresh, filling them missed the cache at every line.
+  State(const Tolerances& tol, const SweepOptions& options, Budget* budget = nullptr);
+  ~State();
+  State(State&&) noexcept;
+  State& operator=(State&&) noexcept;
 
   const Tolerances& tol() const { return tol_; }
   const SweepOptions& options() const { return options_; }
@@ -222,13 +228,15 @@ class State {
   // plane within `reach` of p: s, or kNone.
   int span_through(int e, glm::dvec2 p, double z, double reach) const;
 
-  // Made on the first batch; cleared, not freed, by each batch after it.
+  // Taken on the first batch (a finished sweep's, or new); cleared, not
+  // freed, by each batch after it.
   std::unique_ptr<BatchScratch, BatchScratchDeleter> batch_scratch;
 
  private:
   Tolerances tol_;
   SweepOptions options_;
   Budget* budget_;
+  std::unique_ptr<StateArrays> arrays_;  // the spare taken: the arrays go back in it when done
   // vertex_at's vertices by delta3 cell, of the current height level only:
   // those of earlier levels never match again. The table is open-addressed
   // and a slot of an earlier level counts as empty, so a new level clears
