@@ -46,6 +46,8 @@ class EventQueue {
   // Lists of at least `indexed_from` live edges are worked out through their
   // PlaneIndex, smaller ones by testing every edge (tests choose either).
   explicit EventQueue(std::size_t indexed_from = kIndexedFrom) : indexed_from_(indexed_from) {}
+  // Empties the queue for another sweep, keeping its storage (spares.h).
+  void clear();
 
   // Queues every potential event of corner c: meeting its next corner (the
   // span between them shrinks to nothing) and, where c can cut into the loop,
@@ -221,7 +223,10 @@ class EventQueue {
   bool closes_here(State& st, const Candidate& k) const;
   void free_list(int i);
 
-  std::priority_queue<Entry, std::vector<Entry>, EntryLater> heap_;
+  struct Heap : std::priority_queue<Entry, std::vector<Entry>, EntryLater> {
+    void clear() { c.clear(); }
+  };
+  Heap heap_;
   std::vector<SplitList> lists_;
   std::vector<int> free_lists_;
   std::shared_ptr<Targets> live_ = std::make_shared<Targets>();

@@ -1,8 +1,10 @@
-// Scratch a thread's finished sweep leaves to its next. A batch sweeps its
+// Storage a thread's finished sweep leaves to its next. A batch sweeps its
 // footprints one after another on one thread (the city's 6,000, of 4-200
-// corners each), and every sweep growing its lists afresh cost the city
-// about a million allocations, and glibc the cache misses of consolidating
-// what the sweep before had freed, more than the lists' own work (issue 12).
+// corners each); every sweep growing its arrays and lists from empty made
+// some 900,000 of the city's 2.6 million allocations, each growth copying
+// what it had into memory not yet in the cache, and glibc consolidated the
+// small chunks the sweep before had freed whenever one grew past 1 KB
+// (issue 12).
 #pragma once
 
 #include <array>

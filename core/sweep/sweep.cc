@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <cmath>
 #include <sstream>
 
@@ -17,6 +18,7 @@
 #include "core/sweep/cap_event.h"
 #include "core/sweep/driver.h"
 #include "core/sweep/plan_edit_event.h"
+#include "core/sweep/spares.h"
 #include "core/sweep/surface_output.h"
 
 namespace procex {
@@ -127,13 +129,16 @@ Surface sweep_with(const Footprint& footprint, const SweepOptions& options, cons
   budget.start_attempt();
   engine::State st(tol, options, &budget);
   load(st, footprint);
-  engine::EventQueue queue;
-  engine::schedule_all(st, queue);
+  // The queue's storage as the thread's last sweep left it (spares.h).
+  std::unique_ptr<engine::EventQueue> queue = engine::Spares<engine::EventQueue>::take();
+  engine::schedule_all(st, *queue);
   engine::ProfileEvents profile_events;
   for (int s = 0; s < static_cast<int>(st.sources.size()); ++s) profile_events.schedule(st, s);
   engine::AnchorEvents anchors(st, options.anchors);
   engine::PlanEditEvents plan_edits(st, footprint.profiles);
-  engine::run_events(st, queue, profile_events, &anchors, &plan_edits);
+  engine::run_events(st, *queue, profile_events, &anchors, &plan_edits);
+  queue->clear();
+  engine::Spares<engine::EventQueue>::give(std::move(queue), st.corners.size());
   const bool open = std::any_of(st.corners.begin(), st.corners.end(), [](const engine::Corner& c) { return c.alive; });
   if (open) {
     if (!options.max_height && can_rise_forever(footprint))
