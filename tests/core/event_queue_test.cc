@@ -158,6 +158,21 @@ TEST(EventQueue, HoldsSplitCandidatesInLinearMemory) {
   EXPECT_LT(large, 8u * 2000u) << "a few per corner";
 }
 
+// Pops and resolves every batch until the queue is empty, and checks the
+// roof closed (no corner left alive); the largest batch.
+std::size_t sweep_to_the_top(State& st, EventQueue& queue) {
+  std::size_t largest = 0;
+  while (!queue.empty()) {
+    st.height = std::max(st.height, queue.next_height());
+    const std::vector<Candidate>& batch = queue.pop_cluster(st);
+    largest = std::max(largest, batch.size());
+    resolve_intersections(st, queue, batch);
+  }
+  EXPECT_TRUE(std::none_of(st.corners.begin(), st.corners.end(), [](const Corner& c) { return c.alive; }))
+      << "the roof closes";
+  return largest;
+}
+
 // An exact star (radii 100 and 90 m, no jitter) has every edge at one
 // distance from its centre: every reflex corner meets every edge's plane at
 // the apex, at one height, so n^2 / 2 splits fall in one batch there. Every
@@ -178,15 +193,7 @@ ApexWork sweeping_exact_star(int n) {
   State st = loaded(points, kStarTolerances);
   EventQueue queue;
   schedule_all(st, queue);
-  std::size_t largest = 0;
-  while (!queue.empty()) {
-    st.height = std::max(st.height, queue.next_height());
-    const std::vector<Candidate>& batch = queue.pop_cluster(st);
-    largest = std::max(largest, batch.size());
-    resolve_intersections(st, queue, batch);
-  }
-  EXPECT_TRUE(std::none_of(st.corners.begin(), st.corners.end(), [](const Corner& c) { return c.alive; }))
-      << "the star's roof closes";
+  const std::size_t largest = sweep_to_the_top(st, queue);
   return {largest, queue.worked()};
 }
 
@@ -210,14 +217,8 @@ struct HolesWork {
   std::size_t corners, largest_batch, peak_held;
 };
 HolesWork sweeping_square_with_holes(int k) {
-  const double side = 3.0 * k + 1.0;
-  std::vector<std::vector<glm::dvec2>> loops{{{0, 0}, {side, 0}, {side, side}, {0, side}}};
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j) {
-      const double x = 1.0 + 3.0 * i, y = 1.0 + 3.0 * j;
-      loops.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});
-    }
-  State st(Tolerances{side, Tolerances::retry_relative[0]}, {});
+  const std::vector<std::vector<glm::dvec2>> loops = holes_plan(k);
+  State st(Tolerances{3.0 * k + 1.0, Tolerances::retry_relative[0]}, {});
   FaceGroup base;
   base.kind = FaceKind::Base;
   st.base_face = 0;
@@ -233,15 +234,7 @@ HolesWork sweeping_square_with_holes(int k) {
   EventQueue queue(0);
   schedule_all(st, queue);
   const std::size_t corners = st.corners.size();
-  std::size_t largest = 0;
-  while (!queue.empty()) {
-    st.height = std::max(st.height, queue.next_height());
-    const std::vector<Candidate>& batch = queue.pop_cluster(st);
-    largest = std::max(largest, batch.size());
-    resolve_intersections(st, queue, batch);
-  }
-  EXPECT_TRUE(std::none_of(st.corners.begin(), st.corners.end(), [](const Corner& c) { return c.alive; }))
-      << "the roof closes";
+  const std::size_t largest = sweep_to_the_top(st, queue);
   return {corners, largest, queue.peak_held()};
 }
 

@@ -13,23 +13,15 @@
 #include "core/geom/footprint.h"
 #include "core/geom/prepare.h"
 #include "core/sweep/sweep.h"
+#include "tests/core/sweep_states.h"
 #include "tests/support/child_peak_memory.h"
 #include "tests/support/sanitizers.h"
 
 namespace procex {
 namespace {
 
-// As bench/scale_inputs.py's "holes": 2 m holes 1 m apart, every edge at 45 degrees.
-Footprint square_with_holes(int k) {
-  const double side = 3.0 * k + 1.0;
-  std::vector<std::vector<glm::dvec2>> loops{{{0, 0}, {side, 0}, {side, side}, {0, side}}};
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j) {
-      const double x = 1.0 + 3.0 * i, y = 1.0 + 3.0 * j;
-      loops.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});
-    }
-  return prepare_footprint(make_footprint(loops, 45.0)).footprint;
-}
+// Every edge at 45 degrees.
+Footprint square_with_holes(int k) { return prepare_footprint(make_footprint(engine::holes_plan(k), 45.0)).footprint; }
 
 // Peak resident set, in KiB, of a child that sweeps `fp`: it starts from this
 // process's pages, so only differences between two children mean anything.

@@ -76,6 +76,20 @@ inline std::vector<glm::dvec2> comb(int teeth) {
   return points;
 }
 
+// A square with k x k square holes, clockwise (bench/scale_inputs.py's
+// "holes": 2 m holes 1 m apart): the walls along one line of holes are
+// collinear.
+inline std::vector<std::vector<glm::dvec2>> holes_plan(int k) {
+  const double side = 3.0 * k + 1.0;
+  std::vector<std::vector<glm::dvec2>> loops{{{0, 0}, {side, 0}, {side, side}, {0, side}}};
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const double x = 1.0 + 3.0 * i, y = 1.0 + 3.0 * j;
+      loops.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});
+    }
+  return loops;
+}
+
 // Slopes from vertical walls to planes leaning out, in a fixed mix: corners
 // that do not move, corners faster than the planes, and every corner able to
 // split (meeting planes from outside).
