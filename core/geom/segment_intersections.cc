@@ -76,7 +76,8 @@ bool strips_overlap(const Strip& a, const Strip& b) {
 // direction of its segments and split across it or along it, whichever
 // leaves the smaller strips; pairs are visited where two leaves' strips
 // overlap. Spikes side by side fall into strips of their neighbours, so a
-// plan's segments are visited in about O(n log n) pairs.
+// plan's segments come in a few pairs each (about 4 for a random star-shaped
+// plan's edges), after an O(n log n) build.
 class SegmentTree {
  public:
   SegmentTree(const std::vector<Segment2>& segments, double within) : segments_(segments), boxes_(segments.size()) {
