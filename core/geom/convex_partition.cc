@@ -1,6 +1,7 @@
 #include "core/geom/convex_partition.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -111,6 +112,54 @@ std::optional<Hiding> hiding(const glm::dvec2 (&tri)[3], bool ccw, const glm::dv
   return Hiding{dx > 0.0 ? std::abs(q.y - m.y) / dx : std::numeric_limits<double>::infinity(), glm::dot(q - m, q - m)};
 }
 
+// Members of {0, ..., n - 1}, the first at or after a place found in a few
+// word scans: a bit a member, and above them a bit a word that holds any.
+class Places {
+ public:
+  explicit Places(std::size_t n = 0) {
+    do {
+      n = (n + 63) / 64;
+      levels_.emplace_back(n, 0);
+    } while (n > 1);
+  }
+
+  void insert(std::size_t i) {
+    for (auto& level : levels_) {
+      std::uint64_t& word = level[i / 64];
+      const bool had = word != 0;
+      word |= std::uint64_t{1} << (i % 64);
+      if (had) return;
+      i /= 64;
+    }
+  }
+
+  void erase(std::size_t i) {
+    for (auto& level : levels_) {
+      std::uint64_t& word = level[i / 64];
+      word &= ~(std::uint64_t{1} << (i % 64));
+      if (word != 0) return;
+      i /= 64;
+    }
+  }
+
+  std::optional<std::size_t> next(std::size_t i) const {
+    std::size_t level = 0;
+    for (;; ++level) {
+      if (level == levels_.size() || i / 64 >= levels_[level].size()) return std::nullopt;
+      if (const std::uint64_t rest = levels_[level][i / 64] & (~std::uint64_t{0} << (i % 64))) {
+        i = i / 64 * 64 + static_cast<std::size_t>(std::countr_zero(rest));
+        break;
+      }
+      i = i / 64 + 1;
+    }
+    for (; level > 0; --level) i = i * 64 + static_cast<std::size_t>(std::countr_zero(levels_[level - 1][i]));
+    return i;
+  }
+
+ private:
+  std::vector<std::vector<std::uint64_t>> levels_;
+};
+
 class Partitioner {
  public:
   explicit Partitioner(const std::vector<std::vector<glm::dvec2>>& loops) {
@@ -135,7 +184,7 @@ class Partitioner {
     bridge_holes(hole_starts, hole_sizes);
   }
 
-  std::vector<std::vector<Index>> run() {
+  std::vector<std::vector<Index>> run(PartitionWork* work) {
     if (head_ == kNone) return {};
     on_ring_twice_.assign(points_.size(), false);
     std::vector<bool> seen(points_.size(), false);
@@ -147,6 +196,7 @@ class Partitioner {
       node = nodes_[node].next;
     } while (node != head_);
     clip_ears();
+    if (work) *work = work_;
     merge_pieces();
     std::vector<std::vector<Index>> out;
     for (auto& piece : pieces_)
@@ -358,10 +408,13 @@ class Partitioner {
     size_ += hole_size + 2;
   }
 
-  bool is_ear(Index v) const {
+  // What keeps v from being an ear: v itself where the ring does not turn
+  // left there, else a vertex in the ear or on its new edge; kNone for an ear.
+  Index ear_blocker(Index v) {
+    ++work_.ears_asked;
     const Index p = nodes_[v].prev, n = nodes_[v].next;
     const glm::dvec2 a = pos(p), b = pos(v), c = pos(n);
-    if (orient2d(a, b, c) <= 0 || turn(a, b, c) == 0) return false;
+    if (orient2d(a, b, c) <= 0 || turn(a, b, c) == 0) return v;
     // The box reaches as far as rounding puts a vertex off the new edge c -> a.
     const double margin = kStraightTurnSine * glm::distance(a, c) +
                           8.0 * std::numeric_limits<double>::epsilon() *
@@ -389,13 +442,17 @@ class Partitioner {
              beyond(c, a, lo, hi);
     };
     // Only a vertex that is not strictly convex can lie inside an ear.
-    return reflex_.search(skip, [&](Index q, const glm::dvec2& s) {
+    Index blocker = kNone;
+    reflex_.search(skip, [&](Index q, const glm::dvec2& s) {
+      ++work_.vertices_examined;
       if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) return true;
       if (nodes_[q].removed || q == p || q == v || q == n || s == a || s == b || s == c) return true;
-      if (orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) return false;
-      // The ear's one new edge, c -> a, must not pass through the ring.
-      return !between_up_to_rounding(c, s, a);
+      // The ear's one new edge, c -> a, must not pass through the ring either.
+      if ((orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) || between_up_to_rounding(c, s, a))
+        blocker = q;
+      return blocker == kNone;
     });
+    return blocker;
   }
 
   bool ring_is_convex() const {
@@ -414,6 +471,37 @@ class Partitioner {
     nodes_[v].removed = true;
     if (head_ == v) head_ = n;
     --size_;
+    unsettled_.erase(place_[v]);
+    unsettled_.insert(place_[p]);
+    unsettled_.insert(place_[n]);
+    for (Index e = stopped_first_[v]; e != kNone; e = stopped_[e].second) {
+      const Index u = stopped_[e].first;
+      if (blocker_[u] == v && !nodes_[u].removed) unsettled_.insert(place_[u]);
+    }
+  }
+
+  // v is no ear for as long as its neighbours and blocker stay.
+  void settle(Index v, Index blocker) {
+    unsettled_.erase(place_[v]);
+    blocker_[v] = blocker;
+    if (blocker == v) return;
+    stopped_.emplace_back(v, stopped_first_[blocker]);
+    stopped_first_[blocker] = static_cast<Index>(stopped_.size() - 1);
+  }
+
+  // The first node after v round the ring that may have become an ear since
+  // it was last asked, and how many steps round that is (kNone, none).
+  std::pair<Index, Index> next_unsettled(Index v) const {
+    std::optional<std::size_t> at = unsettled_.next(place_[v] + 1);
+    if (!at) at = unsettled_.next(0);
+    if (!at) return {kNone, kNone};
+    return {at_place_[*at], steps(v, at_place_[*at])};
+  }
+
+  // Steps round the ring from u on to w, a whole lap if w is u.
+  Index steps(Index u, Index w) const {
+    const auto n = static_cast<Index>(at_place_.size());
+    return (place_[w] + n - place_[u] - 1) % n + 1;
   }
 
   void emit_ring() {
@@ -430,14 +518,27 @@ class Partitioner {
   // what remains is convex. Clipping an ear only shrinks its neighbours'
   // angles, so the vertices that are not strictly convex at the start are
   // the only ones an ear can ever contain.
+  //
+  // The walk round the ring passes over the nodes whose answer cannot have
+  // changed since they were last asked: neither neighbour nor what blocked
+  // the ear has gone. They would answer no again, and asking every node on
+  // every lap made the laps O(n^1.5) on a square with k x k holes (a row of
+  // holes is clipped a few ears a lap).
   void clip_ears() {
     std::vector<std::pair<glm::dvec2, Index>> reflex;
+    place_.assign(nodes_.size(), kNone);
     Index node = head_;
     do {
+      place_[node] = static_cast<Index>(at_place_.size());
+      at_place_.push_back(node);
       if (turn_at(node) != 1) reflex.emplace_back(pos(node), node);
       node = nodes_[node].next;
     } while (node != head_);
     reflex_ = PointTree(std::move(reflex));
+    unsettled_ = Places(at_place_.size());
+    for (std::size_t k = 0; k < at_place_.size(); ++k) unsettled_.insert(k);
+    blocker_.assign(nodes_.size(), kNone);
+    stopped_first_.assign(nodes_.size(), kNone);
     Index stop = node;  // a full lap back here without progress ends the lap
     while (size_ > 3) {
       // Nodes at the same input vertex next to each other (the two ends of a
@@ -448,15 +549,20 @@ class Partitioner {
         remove(n);
         continue;
       }
-      if (is_ear(node)) {
+      const Index blocker = ear_blocker(node);
+      if (blocker == kNone) {
         pieces_.push_back({nodes_[nodes_[node].prev].vertex, nodes_[node].vertex, nodes_[nodes_[node].next].vertex});
         const Index next = nodes_[node].next;
         remove(node);
         node = stop = next;
         continue;
       }
-      node = nodes_[node].next;
-      if (node != stop) continue;
+      settle(node, blocker);
+      if (const auto [ahead, distance] = next_unsettled(node); ahead != kNone && distance < steps(node, stop)) {
+        node = ahead;
+        continue;
+      }
+      node = stop;
       if (ring_is_convex()) break;
       // No ear on a whole lap: the input is not a simple polygon (or is one
       // only up to rounding). Clip any strictly convex vertex to make progress.
@@ -594,12 +700,23 @@ class Partitioner {
   PointTree vertices_;
   std::vector<std::vector<Index>> pieces_;
   PointTree reflex_;  // nodes not strictly convex when clipping began
+  // clip_ears' walk. A node's place round the ring when clipping began (the
+  // ring only loses nodes after that, so the places keep its order), and the
+  // node at each place; the places whose nodes may have become ears since
+  // last asked; what stopped each node asked being an ear, and under each
+  // blocker the nodes it stopped (a list through stopped_: node, next entry).
+  std::vector<Index> place_, at_place_;
+  Places unsettled_;
+  std::vector<Index> blocker_, stopped_first_;
+  std::vector<std::pair<Index, Index>> stopped_;
+  PartitionWork work_;
   std::vector<bool> on_ring_twice_;  // input vertices the ring passes more than once
 };
 
 }  // namespace
 
-std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops) {
+std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::vector<glm::dvec2>>& loops,
+                                                         PartitionWork* work) {
   // Most faces (a wall's tiles, a hip roof's) turn left at every corner: one
   // piece, listed as clipping the ear at vertex 0 first and merging lists it
   // (a triangle as it is, a larger loop from its last vertex), so that every
@@ -611,7 +728,7 @@ std::vector<std::vector<std::uint32_t>> convex_partition(const std::vector<std::
     if (n > 3) std::rotate(piece.begin(), piece.end() - 1, piece.end());
     return {piece};
   }
-  return Partitioner(loops).run();
+  return Partitioner(loops).run(work);
 }
 
 bool is_convex(const std::vector<glm::dvec2>& loop) { return every_turn(loop, convex_turn); }

@@ -40,17 +40,51 @@ class PointTree {
 
   void build(std::size_t first, std::size_t count) {
     const std::size_t id = nodes_.size();
-    glm::dvec2 lo = points_[first].first, hi = lo;
-    for (std::size_t k = first; k < first + count; ++k) lo = glm::min(lo, points_[k].first), hi = glm::max(hi, points_[k].first);
+    const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(first);
+    const auto end = begin + static_cast<std::ptrdiff_t>(count);
+    const auto [lo, hi] = bounds(begin, end);
     nodes_.push_back({lo, hi, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count)});
     if (count <= kLeafSize) return;
-    const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
-    const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(first);
-    std::nth_element(begin, begin + static_cast<std::ptrdiff_t>(count / 2), begin + static_cast<std::ptrdiff_t>(count),
-                     [axis](const auto& a, const auto& b) { return a.first[axis] < b.first[axis]; });
-    build(first, count / 2);
+    // Split across x or y, whichever leaves the smaller boxes. Points on a
+    // line across the split stay on one side, so rows of points (the
+    // corners of a grid of holes) end in boxes of their own that a thin
+    // triangle between two rows passes by: a split through a row would leave
+    // boxes reaching over the gap between it and the next.
+    std::size_t mid[2];
+    double area[2];
+    for (int axis = 0; axis < 2; ++axis) {
+      mid[axis] = split(begin, end, axis);
+      const auto [lo0, hi0] = bounds(begin, begin + static_cast<std::ptrdiff_t>(mid[axis]));
+      const auto [lo1, hi1] = bounds(begin + static_cast<std::ptrdiff_t>(mid[axis]), end);
+      area[axis] = (hi0.x - lo0.x) * (hi0.y - lo0.y) + (hi1.x - lo1.x) * (hi1.y - lo1.y);
+    }
+    const std::size_t half = area[0] < area[1] ? split(begin, end, 0) : mid[1];
+    build(first, half);
     nodes_[id].right = static_cast<std::uint32_t>(nodes_.size());
-    build(first + count / 2, count - count / 2);
+    build(first + half, count - half);
+  }
+
+  using Iterator = std::vector<std::pair<glm::dvec2, std::uint32_t>>::iterator;
+  static std::pair<glm::dvec2, glm::dvec2> bounds(Iterator begin, Iterator end) {
+    glm::dvec2 lo = begin->first, hi = lo;
+    for (auto it = begin; it != end; ++it) lo = glm::min(lo, it->first), hi = glm::max(hi, it->first);
+    return {lo, hi};
+  }
+
+  // Orders [begin, end) about the median along axis and returns how many
+  // lie before the split: the median's value goes wholly to the side that
+  // leaves the halves nearer even, unless every point has it.
+  static std::size_t split(Iterator begin, Iterator end, int axis) {
+    const auto count = end - begin, half = count / 2;
+    std::nth_element(begin, begin + half, end, [axis](const auto& a, const auto& b) { return a.first[axis] < b.first[axis]; });
+    const double median = begin[half].first[axis];
+    const auto below = std::partition(begin, begin + half, [&](const auto& p) { return p.first[axis] < median; });
+    const auto above = std::partition(begin + half, end, [&](const auto& p) { return p.first[axis] == median; });
+    const auto at_below = below - begin, at_above = above - begin;
+    if (at_below == 0 && at_above == count) return static_cast<std::size_t>(half);
+    if (at_below == 0) return static_cast<std::size_t>(at_above);
+    if (at_above == count) return static_cast<std::size_t>(at_below);
+    return static_cast<std::size_t>(half - at_below <= at_above - half ? at_below : at_above);
   }
 
   template <class Skip, class F>
