@@ -49,12 +49,6 @@ LocalFrame local_frame(const Footprint& fp) {
   return {0.5 * (lo + hi), extent, 2.0 * std::numeric_limits<double>::epsilon() * magnitude};
 }
 
-Footprint moved(Footprint fp, glm::dvec2 by) {
-  for (Loop& l : fp.loops)
-    for (glm::dvec2& p : l.points) p += by;
-  return fp;
-}
-
 void move(Surface& s, glm::dvec2 by) {
   const glm::dvec3 d{by, 0.0};
   for (glm::dvec3& v : s.vertices) v += d;
@@ -88,12 +82,24 @@ engine::FirstPlane first_plane(engine::State& st, const Footprint& fp, const Edg
   }
 }
 
-void load(engine::State& st, const Footprint& fp) {
+// Loads the footprint's loops moved by `by` (into its local frame), a loop at
+// a time: a moved copy of the whole footprint, kept through every attempt,
+// was 46 MB of the sweep of a square with 512 x 512 holes.
+void load(engine::State& st, const Footprint& fp, glm::dvec2 by) {
   engine::FaceGroup base;
   base.kind = FaceKind::Base;
   base.outward = {0.0, 0.0, -1.0};
   st.base_face = static_cast<int>(st.faces.size());
   st.faces.push_back(base);
+  // A sweep makes about as many corners again as the plan has (2.00-2.03
+  // times the plan's in all, the scale families but the regular polygon's
+  // 1.0). Grown by doubling, the array held its old copy and the new one at
+  // once, and past 2^21 corners, near the end of the sweep of the square with
+  // 512 x 512 holes, that was the sweep's peak (144 MiB over). Room for three
+  // times the plan's corners is address space until it is used.
+  std::size_t plan_corners = 0;
+  for (const Loop& loop : fp.loops) plan_corners += loop.points.size();
+  st.corners.reserve(3 * plan_corners);
   for (std::size_t li = 0; li < fp.loops.size(); ++li) {
     const Loop& loop = fp.loops[li];
     const std::size_t n = loop.points.size();
@@ -107,7 +113,9 @@ void load(engine::State& st, const Footprint& fp) {
       slopes[j] = first.slope;
       tags[j] = std::move(first.tag);
     }
-    engine::load_loop(st, loop.points, std::move(slopes), tags, s0, static_cast<int>(li));
+    std::vector<glm::dvec2> points = loop.points;
+    for (glm::dvec2& p : points) p += by;
+    engine::load_loop(st, points, std::move(slopes), tags, s0, static_cast<int>(li));
   }
 }
 
@@ -124,11 +132,13 @@ bool can_rise_forever(const Footprint& fp) {
   return false;
 }
 
-Surface sweep_with(const Footprint& footprint, const SweepOptions& options, const engine::Tolerances& tol,
-                   engine::Budget& budget) {
+// The footprint's roof in the frame centred on `centre` (plan points moved by
+// -centre).
+Surface sweep_with(const Footprint& footprint, glm::dvec2 centre, const SweepOptions& options,
+                   const engine::Tolerances& tol, engine::Budget& budget) {
   budget.start_attempt();
   engine::State st(tol, options, &budget);
-  load(st, footprint);
+  load(st, footprint, -centre);
   // The queue's storage as the thread's last sweep left it (spares.h).
   std::unique_ptr<engine::EventQueue> queue = engine::Spares<engine::EventQueue>::take();
   engine::schedule_all(st, *queue);
@@ -171,7 +181,6 @@ std::uint64_t sweeps_retried() { return retried.load(std::memory_order_relaxed);
 
 Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const LocalFrame frame = local_frame(footprint);
-  const Footprint local = moved(footprint, -frame.centre);
   engine::Tolerances tol{frame.extent};
   std::size_t plan_vertices = 0;
   for (const Loop& loop : footprint.loops) plan_vertices += loop.points.size();
@@ -187,7 +196,7 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
       continue;
     tol.relative = relative;
     try {
-      Surface s = sweep_with(local, options, tol, budget);
+      Surface s = sweep_with(footprint, frame.centre, options, tol, budget);
       move(s, frame.centre);
       s.tolerance_relative = relative;
       s.retries = retries;
