@@ -12,6 +12,8 @@ namespace {
 // Queries may look at this many entries beyond the index's size before its
 // places are taken again: a small index is not redone at every query.
 constexpr std::size_t kSlack = 64;
+// Entries made since the last merge that queries look through one by one.
+constexpr std::size_t kFew = 32;
 
 }  // namespace
 
@@ -28,38 +30,54 @@ void EdgeCorners::take_new_corners(const State& st) {
 void EdgeCorners::add(const State& st, Index& index, int e, int c) {
   const Corner& k = st.corners[c];
   const glm::dvec2 dir = st.edges[e].dir;
-  index.recent.emplace_back(glm::dot(st.position(c, index.z0), dir), c);
-  index.recent_partners.emplace_back(k.next_edge == e ? k.prev_edge : k.next_edge, c);
+  index.places.recent.emplace_back(glm::dot(st.position(c, index.z0), dir), c);
+  index.partners.recent.emplace_back(k.next_edge == e ? k.prev_edge : k.next_edge, c);
   index.fastest = std::max(index.fastest, std::abs(glm::dot(k.velocity, dir)));
 }
 
-void EdgeCorners::merge(const State& st, Index& index, int e, double z) {
-  auto dead = [&](const auto& entry) { return !st.corners[entry.second].alive; };
-  auto merge_in = [&](auto& sorted, auto& recent) {
-    const auto middle = static_cast<std::ptrdiff_t>(sorted.size());
-    std::sort(recent.begin(), recent.end());
-    sorted.insert(sorted.end(), recent.begin(), recent.end());
-    std::inplace_merge(sorted.begin(), sorted.begin() + middle, sorted.end());
-    sorted.erase(std::remove_if(sorted.begin(), sorted.end(), dead), sorted.end());
-    recent.clear();
-  };
-  merge_in(index.partners, index.recent_partners);
-  index.looked_at = 0;
-  if (z == index.z0) {
-    merge_in(index.sorted, index.recent);
-    return;
+template <class Entry>
+std::size_t EdgeCorners::Runs<Entry>::size() const {
+  std::size_t n = recent.size();
+  for (const auto& run : sorted) n += run.size();
+  return n;
+}
+
+template <class Entry>
+void EdgeCorners::merge_recent(const State& st, Runs<Entry>& runs) {
+  const auto dead = [&](const Entry& entry) { return !st.corners[entry.second].alive; };
+  runs.recent.erase(std::remove_if(runs.recent.begin(), runs.recent.end(), dead), runs.recent.end());
+  if (runs.recent.empty()) return;
+  std::sort(runs.recent.begin(), runs.recent.end());
+  moved_ += runs.recent.size();
+  runs.sorted.emplace_back(runs.recent.begin(), runs.recent.end());
+  runs.recent.clear();
+  while (runs.sorted.size() >= 2 && runs.sorted[runs.sorted.size() - 2].size() <= 2 * runs.sorted.back().size()) {
+    std::vector<Entry>& into = runs.sorted[runs.sorted.size() - 2];
+    const std::vector<Entry>& last = runs.sorted.back();
+    const auto middle = static_cast<std::ptrdiff_t>(into.size());
+    into.insert(into.end(), last.begin(), last.end());
+    std::inplace_merge(into.begin(), into.begin() + middle, into.end());
+    into.erase(std::remove_if(into.begin(), into.end(), dead), into.end());
+    moved_ += into.size();
+    runs.sorted.pop_back();
   }
-  index.sorted.insert(index.sorted.end(), index.recent.begin(), index.recent.end());
-  index.recent.clear();
-  index.sorted.erase(std::remove_if(index.sorted.begin(), index.sorted.end(), dead), index.sorted.end());
+}
+
+void EdgeCorners::retake(const State& st, Index& index, int e, double z) {
+  auto& [sorted, recent] = index.places;
+  for (auto& run : sorted) recent.insert(recent.end(), run.begin(), run.end());
+  sorted.clear();
+  recent.erase(std::remove_if(recent.begin(), recent.end(), [&](const auto& entry) { return !st.corners[entry.second].alive; }),
+               recent.end());
   const glm::dvec2 dir = st.edges[e].dir;
   index.z0 = z;
   index.fastest = 0.0;
-  for (auto& [key, c] : index.sorted) {
+  for (auto& [key, c] : recent) {
     key = glm::dot(st.position(c, z), dir);
     index.fastest = std::max(index.fastest, std::abs(glm::dot(st.corners[c].velocity, dir)));
   }
-  std::sort(index.sorted.begin(), index.sorted.end());
+  merge_recent(st, index.places);
+  index.looked_at = 0;
 }
 
 EdgeCorners::Index& EdgeCorners::index_of(const State& st, int e, double z) {
@@ -75,17 +93,15 @@ EdgeCorners::Index& EdgeCorners::index_of(const State& st, int e, double z) {
       add(st, index, e, s);
       if (const int t = st.corners[s].next; t != kNone) add(st, index, e, t);
     }
-    merge(st, index, e, z);
-    return index;
   }
   Index& index = indexes_[static_cast<std::size_t>(slot_[k])];
-  // Merged once the unsorted part costs as much to look through per query as
-  // the merge costs per corner made since; taken again at this height once
-  // the queries, widened by how far places drift from z0, looked at as many
-  // entries as it holds.
-  const std::size_t held = index.sorted.size() + index.recent.size();
-  const auto few = static_cast<std::size_t>(32.0 + std::sqrt(static_cast<double>(index.sorted.size())));
-  if (index.recent.size() > few || index.looked_at > held + kSlack) merge(st, index, e, z);
+  // Taken again at this height once the queries, widened by how far places
+  // drift from z0 (and by dead entries, which only merges drop), looked at as
+  // many entries as it holds.
+  if (index.looked_at > index.places.size() + kSlack) retake(st, index, e, z);
+  // The unsorted entries are looked through at every query.
+  if (index.places.recent.size() > kFew) merge_recent(st, index.places);
+  if (index.partners.recent.size() > kFew) merge_recent(st, index.partners);
   return index;
 }
 
@@ -97,22 +113,26 @@ void EdgeCorners::near(const State& st, int e, glm::dvec2 p, double z, double re
   // coordinates.
   const double range =
       reach + 2.0 * index.fastest * std::abs(z - index.z0) + 1e-7 * (1.0 + std::abs(p.x) + std::abs(p.y));
-  auto it = std::lower_bound(index.sorted.begin(), index.sorted.end(), std::pair{along - range, INT_MIN});
-  const auto first = it;
-  for (; it != index.sorted.end() && it->first <= along + range; ++it)
-    if (st.corners[it->second].alive) out.push_back(it->second);
-  for (const auto& [key, c] : index.recent)
+  for (const auto& run : index.places.sorted) {
+    auto it = std::lower_bound(run.begin(), run.end(), std::pair{along - range, INT_MIN});
+    const auto first = it;
+    for (; it != run.end() && it->first <= along + range; ++it)
+      if (st.corners[it->second].alive) out.push_back(it->second);
+    index.looked_at += static_cast<std::size_t>(it - first);
+  }
+  for (const auto& [key, c] : index.places.recent)
     if (std::abs(key - along) <= range && st.corners[c].alive) out.push_back(c);
-  index.looked_at += static_cast<std::size_t>(it - first);
 }
 
 void EdgeCorners::between(const State& st, int e, int f, std::vector<int>& out) {
   Index& index = index_of(st, e, st.height);
-  const auto [lo, hi] = std::equal_range(index.partners.begin(), index.partners.end(), std::pair{f, 0},
-                                         [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto it = lo; it != hi; ++it)
-    if (st.corners[it->second].alive) out.push_back(it->second);
-  for (const auto& [other, c] : index.recent_partners)
+  for (const auto& run : index.partners.sorted) {
+    const auto [lo, hi] = std::equal_range(run.begin(), run.end(), std::pair{f, 0},
+                                           [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto it = lo; it != hi; ++it)
+      if (st.corners[it->second].alive) out.push_back(it->second);
+  }
+  for (const auto& [other, c] : index.partners.recent)
     if (other == f && st.corners[c].alive) out.push_back(c);
 }
 
