@@ -269,7 +269,7 @@ class Partitioner {
   // hit and the vertex that hides it are each one vertex, of one node (not
   // doubled by an earlier bridge). Otherwise nothing, and find_bridge walks
   // the ring. Each step is find_bridge's own, on the same numbers.
-  std::optional<Index> indexed_bridge(Index m) const {
+  std::optional<Index> indexed_bridge(Index m) {
     if (in_ring_.empty()) return std::nullopt;
     const glm::dvec2 mp = pos(m);
     double best_x = std::numeric_limits<double>::infinity();

@@ -22,9 +22,10 @@ class HorizontalRays {
 
   // Calls f(id) for every segment whose box the ray from p to +x passes at
   // or left of `limit`, nearest boxes first; `limit` is read again as the
-  // search goes, so f may lower it to the nearest hit found.
+  // search goes, so f may lower it to the nearest hit found. Not const: the
+  // search keeps its stack here.
   template <class F>
-  void along(glm::dvec2 p, const double& limit, F&& f) const {
+  void along(glm::dvec2 p, const double& limit, F&& f) {
     for (const Tree& t : trees_) {
       if (t.nodes.empty()) continue;
       stack_.assign(1, 0u);
@@ -68,7 +69,7 @@ class HorizontalRays {
   std::vector<Box> boxes_;  // every segment's, in the order added
   std::vector<Tree> trees_;
   std::size_t indexed_ = 0;
-  mutable std::vector<std::uint32_t> stack_;
+  std::vector<std::uint32_t> stack_;  // along's
 };
 
 }  // namespace procex

@@ -370,7 +370,8 @@ void EventQueue::named(const State& st, const SplitList& list, const Split& s, g
     spans.batch = batch_;
     spans.z = z;
     spans.drift = 0.0;
-    std::vector<std::tuple<double, double, int>> sorted;
+    auto& sorted = shared_sorted_;
+    sorted.clear();
     for (int e : edges)
       for (int a : st.listed_spans(e)) {
         const int b = st.corners[a].next;

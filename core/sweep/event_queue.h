@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <memory>
 #include <queue>
+#include <tuple>
 #include <vector>
 
 #include "core/sweep/plane_index.h"
@@ -258,6 +259,7 @@ class EventQueue {
   std::vector<std::pair<std::size_t, int>> heads_;
   std::vector<Split> within_;
   std::vector<int> named_;  // hand_out's
+  std::vector<std::tuple<double, double, int>> shared_sorted_;  // named()'s
   // list_planes': each edge's plane by its bits, its first edge of that plane,
   // how many edges share it (by first), and its place in the Targets.
   struct PlaneKey {
