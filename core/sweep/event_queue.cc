@@ -59,14 +59,11 @@ void EventQueue::schedule_edge_event(State& st, int c) {
 
 void EventQueue::Targets::add(int e, const Plane& pl) {
   edge.push_back(e);
-  nx.push_back(pl.n.x);
-  ny.push_back(pl.n.y);
-  k.push_back(pl.k);
-  c.push_back(pl.c);
+  push_back(pl);
 }
 
 void EventQueue::Targets::reserve(std::size_t n) {
-  for (auto* v : {&nx, &ny, &k, &c}) v->reserve(n);
+  PlaneColumns::reserve(n);
   edge.reserve(n);
 }
 

@@ -111,9 +111,8 @@ class EventQueue {
   // their edge's spans, each tested and then waiting in resolve_intersections).
   // The plane's split names, when popped, only the edges with a span there,
   // looked up along the line (named).
-  struct Targets {
+  struct Targets : PlaneColumns {
     std::vector<int> edge;  // a plane's one edge, or kShared + its place in `shared`
-    std::vector<double> nx, ny, k, c;
     std::vector<std::vector<int>> shared;      // the edges of each shared plane
     mutable std::vector<SharedSpans> spans;    // by shared plane, sorted as batches ask
     // Of the live edges (each listed once), built as lists of many need it:

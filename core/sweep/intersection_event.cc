@@ -1048,11 +1048,12 @@ struct BatchScratch {
   std::vector<char> waits;             // by member, once listed
   std::vector<std::pair<std::size_t, int>> taken;
   // splits_below's: the first corners of the spans the batch's groups
-  // collapse, the group of each, their edges' planes (by field, as
-  // meeting_heights reads them) and where a corner meets them.
+  // collapse, the group of each, their edges' planes and where a corner
+  // meets them.
   std::vector<int> collapsing;
   std::vector<std::size_t> collapse_at;
-  std::vector<double> plane_nx, plane_ny, plane_k, plane_c, meet;
+  PlaneColumns planes;
+  std::vector<double> meet;
   // The most corners a sweep it served made: its lists grow with them.
   std::size_t corners = 0;
 };
@@ -1148,17 +1149,13 @@ class LaterGroups {
     if (!collapses_listed_) {
       collapses_listed_ = true;
       lists_.collapsing.clear();
-      for (auto* v : {&lists_.plane_nx, &lists_.plane_ny, &lists_.plane_k, &lists_.plane_c}) v->clear();
+      lists_.planes.clear();
       lists_.collapse_at.clear();
       const auto add = [&](int c, std::size_t g) {
         const int e = st_.corners[c].next_edge;
-        const Plane& pl = st_.edges[e].plane;
         lists_.collapsing.push_back(c);
         lists_.collapse_at.push_back(g);
-        lists_.plane_nx.push_back(pl.n.x);
-        lists_.plane_ny.push_back(pl.n.y);
-        lists_.plane_k.push_back(pl.k);
-        lists_.plane_c.push_back(pl.c);
+        lists_.planes.push_back(st_.edges[e].plane);
       };
       for (std::size_t g = 0; g < groups_.size(); ++g)
         for (int m : groups_[g])
@@ -1170,8 +1167,9 @@ class LaterGroups {
     const Corner& k = st_.corners[n];
     std::vector<double>& meet = lists_.meet;
     meet.resize(lists_.collapsing.size());
-    meeting_heights(lists_.plane_nx.data(), lists_.plane_ny.data(), lists_.plane_k.data(), lists_.plane_c.data(),
-                    meet.size(), k.base, k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
+    const PlaneColumns& planes = lists_.planes;
+    meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), k.base,
+                    k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {
       const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];

@@ -3,6 +3,9 @@
 // at height z the edge's line has moved k z inward.
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 #include <glm/vec2.hpp>
 
 #include "core/geom/cross.h"
@@ -21,6 +24,25 @@ struct Plane {
   }
   double offset_at(double z) const { return c + k * z; }
   double signed_distance(glm::dvec2 p, double z) const { return n.x * p.x + n.y * p.y - offset_at(z); }
+};
+
+// Planes by field, side by side, as meeting_heights reads them: one corner
+// tested against many planes is the sweep's inner loop.
+struct PlaneColumns {
+  std::vector<double> nx, ny, k, c;
+
+  void push_back(const Plane& pl) {
+    nx.push_back(pl.n.x);
+    ny.push_back(pl.n.y);
+    k.push_back(pl.k);
+    c.push_back(pl.c);
+  }
+  void reserve(std::size_t n) {
+    for (auto* v : {&nx, &ny, &k, &c}) v->reserve(n);
+  }
+  void clear() {
+    for (auto* v : {&nx, &ny, &k, &c}) v->clear();
+  }
 };
 
 // How the line where planes a and b cross moves over the sweep plane per unit
