@@ -4,7 +4,6 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -597,14 +596,15 @@ class Partitioner {
     };
     std::vector<Diagonal> diagonals;
     for (const auto& [edge, slot] : rings.edge_slot) {
-      if (edge.first < edge.second && rings.edge_slot.count({edge.second, edge.first})) {
-        const glm::dvec2 d = points_[edge.second] - points_[edge.first];
-        diagonals.push_back({edge.first, edge.second, glm::dot(d, d)});
+      const auto a = static_cast<Index>(edge >> 32), b = static_cast<Index>(edge);
+      if (a < b && rings.slot_of(b, a)) {
+        const glm::dvec2 d = points_[b] - points_[a];
+        diagonals.push_back({a, b, glm::dot(d, d)});
       }
     }
     std::stable_sort(diagonals.begin(), diagonals.end(),
                      [](const Diagonal& x, const Diagonal& y) { return x.length2 > y.length2; });
-    for (const Diagonal& d : diagonals) try_merge(rings, rings.edge_slot[{d.a, d.b}], rings.edge_slot[{d.b, d.a}]);
+    for (const Diagonal& d : diagonals) try_merge(rings, *rings.slot_of(d.a, d.b), *rings.slot_of(d.b, d.a));
     for (std::size_t i = 0; i < pieces_.size(); ++i) pieces_[i] = rings.piece(i);
   }
 
@@ -622,9 +622,22 @@ class Partitioner {
         head[i] = first;
         for (Index k = 0; k < n; ++k) {
           slots.push_back({pieces[i][k], first + (k + n - 1) % n, first + (k + 1) % n, static_cast<Index>(i)});
-          edge_slot[{pieces[i][k], pieces[i][(k + 1) % n]}] = first + k;
+          edge_slot.emplace_back(edge(pieces[i][k], pieces[i][(k + 1) % n]), first + k);
         }
       }
+      // An edge listed twice (a ring that runs along itself) keeps its last
+      // slot, the highest.
+      std::sort(edge_slot.begin(), edge_slot.end());
+      std::size_t kept = 0;
+      for (const auto& e : edge_slot) (kept > 0 && edge_slot[kept - 1].first == e.first ? edge_slot[kept - 1] : edge_slot[kept++]) = e;
+      edge_slot.resize(kept);
+    }
+    static std::uint64_t edge(Index a, Index b) { return std::uint64_t{a} << 32 | b; }
+    // The slot edge a -> b starts from, or null.
+    Index* slot_of(Index a, Index b) {
+      const auto it = std::lower_bound(edge_slot.begin(), edge_slot.end(), edge(a, b),
+                                       [](const auto& e, std::uint64_t key) { return e.first < key; });
+      return it != edge_slot.end() && it->first == edge(a, b) ? &it->second : nullptr;
     }
     Index find(Index p) {
       while (owner[p] != p) p = owner[p] = owner[owner[p]];
@@ -646,7 +659,9 @@ class Partitioner {
     std::vector<Index> head;   // per piece: its first slot, kNone once merged into another
     std::vector<Index> owner;  // union-find over pieces
     std::vector<std::set<Index>> twice;  // per piece: its vertices the ring passes twice (bridge ends)
-    std::map<std::pair<Index, Index>, Index> edge_slot;  // directed edge -> the slot it starts from
+    // Each directed edge (a << 32 | b) and the slot it starts from, by edge: a
+    // tree map of them was a third of partitioning the 1M square with holes.
+    std::vector<std::pair<std::uint64_t, Index>> edge_slot;
   };
 
   // The piece holding a -> b (from slot sa) and the one holding b -> a (from
@@ -680,7 +695,7 @@ class Partitioner {
     s[after_a].prev = sa;
     s[before_b].next = sb;
     s[sb].prev = before_b;
-    if (auto it = r.edge_slot.find({a, s[after_a].vertex}); it != r.edge_slot.end() && it->second == ta) it->second = sa;
+    if (Index* slot = r.slot_of(a, s[after_a].vertex); slot && *slot == ta) *slot = sa;
     r.head[pa] = sb;
     r.head[pb] = kNone;
     r.owner[pb] = pa;
