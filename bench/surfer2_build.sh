@@ -20,6 +20,10 @@ if [ $# -ne 2 ] || [ ! -f "$1/surf/src/surf.cpp" ]; then
 fi
 src=$1
 out=$2
+repo=$(cd "$(dirname "$0")/.." && pwd)
+case "$(realpath -m "$out")/" in
+  "$repo"/*) echo "$0: $out is inside this repository; Surfer2 (GPL-3) must stay outside it" >&2; exit 2 ;;
+esac
 rm -rf "$out/src"
 mkdir -p "$out/src" "$out/build"
 tar -C "$src" --exclude=.git -cf - . | tar -C "$out/src" -xf -
