@@ -4,6 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
 
 #include "core/geom/footprint.h"
 
@@ -50,6 +53,19 @@ struct SweepTolerances {
   double position() const { return relative * scale; }
   // Paper delta1: how far a collision may lie outside an edge's span and still hit it.
   double span_margin() const { return relative * scale; }
+  // How far rounding may have put a meeting of planes of this conditioning
+  // (engine::meeting_condition) from where the plan as drawn has it: each of
+  // its lines carries about an ulp of the extent. Events that close to each
+  // other may be one, whatever order rounding put them in: a batch and a
+  // cluster take them in where this passes delta2 and delta3. Never past the
+  // coarsest clustering distance, at which rounding is taken to be beaten.
+  // None where the planes do not meet in one point (three walls of the
+  // nested sweep of a step): the corners' own rules place such an event.
+  double meeting_slack(double condition) const {
+    if (!(condition < HUGE_VAL)) return 0.0;
+    return std::min(std::numeric_limits<double>::epsilon() * scale * condition,
+                    std::end(retry_relative)[-1] * scale);
+  }
   // Beyond this height the sweep is considered to run away (no closing event).
   double runaway_height() const { return 1e7 * scale; }
 

@@ -454,6 +454,19 @@ void EventQueue::drain(State& st, int i, int c, double through) {
   advance(i, c);
 }
 
+double EventQueue::slack(const State& st, const Entry& e) const {
+  const Corner& k = st.corners[e.corner];
+  if (!k.alive) return 0.0;
+  if (e.list != kNone) {
+    const Targets& t = *lists_[e.list].targets;
+    const int edge = e.edge < kShared ? e.edge : t.shared[e.edge - kShared].front();
+    return st.meeting_slack(k.prev_edge, k.next_edge, edge, std::span(&e.corner, 1));
+  }
+  if (k.next != e.next || !st.corners[e.next].alive) return 0.0;
+  const int ends[] = {e.corner, e.next};
+  return st.meeting_slack(k.prev_edge, k.next_edge, st.corners[e.next].next_edge, ends);
+}
+
 const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   std::vector<Candidate>& out = cluster_;
   out.clear();
@@ -461,7 +474,10 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   shared_heads_.clear();
   ++batch_;
   closing_.resize(st.corners.size());
-  const double through = heap_.top().z + st.tol().height();
+  // The lowest event and those within its own uncertainty above it, where
+  // that passes delta2: the edge events of a finely drawn circle lie apart by
+  // what rounding makes of their planes' conditioning, not by the geometry.
+  const double through = heap_.top().z + std::max(st.tol().height(), slack(st, heap_.top()));
   // The edge events first, and each list's first split: which spans close in
   // the batch is known before any split is dropped for one (closes_here).
   while (!heap_.empty() && heap_.top().z <= through) {

@@ -222,6 +222,8 @@ class EventQueue {
   // splits at one point and height), and every span closes there.
   bool closes_here(State& st, const Candidate& k) const;
   void free_list(int i);
+  // State::meeting_slack of entry e's planes, while its corners still meet there.
+  double slack(const State& st, const Entry& e) const;
 
   struct Heap : std::priority_queue<Entry, std::vector<Entry>, EntryLater> {
     void clear() { c.clear(); }

@@ -88,6 +88,7 @@ struct ClusterLists {
   std::vector<int> roots;                      // one collision per group joined through corners
   std::vector<Point> grid;                     // sorted: each cell's points are a run
   std::vector<int> group_of;                   // by root collision
+  std::vector<double> radius;                  // by collision: delta3, or its meeting's slack past that
   std::vector<std::vector<int>> spare;         // lists of groups a batch had and the next did not
   int find(int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -99,6 +100,18 @@ struct ClusterLists {
 // Up to this many roots are compared pair by pair: most batches hold a few
 // collisions, and the grid's sort and searches cost more than the pairs.
 constexpr std::size_t kPairwiseUpTo = 8;
+
+// lists.grid: the roots by the cell of side `side` they lie in.
+const std::vector<ClusterLists::Point>& roots_in_cells(const std::vector<Collision>& cs, ClusterLists& lists,
+                                                      double side) {
+  std::vector<ClusterLists::Point>& grid = lists.grid;
+  grid.clear();
+  for (int i : lists.roots)
+    grid.push_back({static_cast<long long>(std::floor(cs[i].p.x / side)),
+                    static_cast<long long>(std::floor(cs[i].p.y / side)), i});
+  std::sort(grid.begin(), grid.end());
+  return grid;
+}
 
 // Joins the roots within `radius` of each other through a plan grid. Its
 // cells are two thirds of `radius` wide, so any two points in one cell are
@@ -112,13 +125,7 @@ constexpr std::size_t kPairwiseUpTo = 8;
 // stays within the radius after rounding, and points three cells apart are
 // more than the radius apart.
 void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double radius) {
-  const double side = radius / 1.5;
-  std::vector<ClusterLists::Point>& grid = lists.grid;
-  grid.clear();
-  for (int i : lists.roots)
-    grid.push_back({static_cast<long long>(std::floor(cs[i].p.x / side)),
-                    static_cast<long long>(std::floor(cs[i].p.y / side)), i});
-  std::sort(grid.begin(), grid.end());
+  const std::vector<ClusterLists::Point>& grid = roots_in_cells(cs, lists, radius / 1.5);
   const auto cell_end = [&](std::size_t from) {
     std::size_t to = from + 1;
     while (to < grid.size() && grid[to].x == grid[from].x && grid[to].y == grid[from].y) ++to;
@@ -148,6 +155,28 @@ void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double 
   }
 }
 
+// Joins each root whose radius passes delta3 (a meeting rounding may have
+// put further off: State::meeting_slack) with the roots within it, and
+// within their own, through a grid of cells as wide as the largest radius.
+void join_uncertain(const std::vector<Collision>& cs, ClusterLists& lists, double delta3) {
+  double side = 0.0;
+  for (int i : lists.roots) side = std::max(side, lists.radius[i]);
+  if (side <= delta3) return;
+  const std::vector<ClusterLists::Point>& grid = roots_in_cells(cs, lists, side);
+  for (const ClusterLists::Point& a : grid) {
+    if (lists.radius[a.i] <= delta3) continue;
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        const long long x = a.x + dx, y = a.y + dy;
+        for (auto b = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0});
+             b != grid.end() && b->x == x && b->y == y; ++b)
+          if (lists.find(a.i) != lists.find(b->i) &&
+              glm::length(cs[a.i].p - cs[b->i].p) <= std::max(lists.radius[a.i], lists.radius[b->i]))
+            lists.join(b->i, a.i);
+      }
+  }
+}
+
 // Sets the number of groups, moving lists between them and the spares
 // rather than freeing and making them: made afresh for a batch's groups,
 // they were 100,000 of the city's allocations.
@@ -163,8 +192,9 @@ void resize_groups(std::vector<std::vector<int>>& groups, std::size_t n, Cluster
   }
 }
 
-// Clusters collisions at one height closer than delta3 in the plan, in
-// first-member order. Collisions that share a corner there are one event
+// Clusters collisions at one height closer than delta3 in the plan (or than
+// the slack of either's meeting, where that passes delta3), in first-member
+// order. Collisions that share a corner there are one event
 // (a corner meeting many planes at once, the corners of a regular polygon
 // meeting at its centre): they are joined through their corners first (each
 // to the first collision of the corner), then one point per such group is
@@ -179,7 +209,12 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
     if (!cs.empty()) groups[0].assign(1, 0);
     return;
   }
-  const double radius = st.tol().position();
+  const double delta3 = st.tol().position();
+  std::vector<double>& radius = lists.radius;
+  radius.clear();
+  for (const Collision& c : cs)
+    radius.push_back(std::max(delta3, st.meeting_slack(c.edges[0], c.edges[1], c.edges[2], c.corners())));
+  const auto near = [&](int i, int j) { return glm::length(cs[i].p - cs[j].p) <= std::max(radius[i], radius[j]); };
   std::vector<int>& parent = lists.parent;
   parent.resize(cs.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -191,18 +226,19 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
     for (int c : cs[i].corners()) {
       const int f = std::lower_bound(by_corner.begin(), by_corner.end(), std::pair<int, int>{c, 0})->second;
-      if (f != i && glm::length(cs[i].p - cs[f].p) <= radius) lists.join(i, f);
+      if (f != i && near(i, f)) lists.join(i, f);
     }
   std::vector<int>& roots = lists.roots;
   roots.clear();
   for (int i = 0; i < static_cast<int>(cs.size()); ++i)
     if (lists.find(i) == i) roots.push_back(i);
   if (roots.size() > kPairwiseUpTo) {
-    join_by_grid(cs, lists, radius);
+    join_by_grid(cs, lists, delta3);
+    join_uncertain(cs, lists, delta3);
   } else {
     for (std::size_t a = 0; a < roots.size(); ++a)
       for (std::size_t b = a + 1; b < roots.size(); ++b)
-        if (glm::length(cs[roots[a]].p - cs[roots[b]].p) <= radius) lists.join(roots[b], roots[a]);
+        if (near(roots[a], roots[b])) lists.join(roots[b], roots[a]);
   }
   std::vector<int>& group_of = lists.group_of;
   group_of.assign(cs.size(), kNone);

@@ -3,10 +3,13 @@
 // at height z the edge's line has moved k z inward.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "core/geom/cross.h"
 
@@ -59,6 +62,25 @@ inline glm::dvec2 crossing_velocity(const Plane& a, const Plane& b) {
   const glm::dvec2 sum = a.n + b.n, diff = a.n - b.n;
   const double ls = sum.x * sum.x + sum.y * sum.y, ld = diff.x * diff.x + diff.y * diff.y;
   return sum * ((a.k + b.k) / ls) + diff * ((a.k - b.k) / ld);
+}
+
+// How much where planes a, b and c meet moves when the planes do, per unit
+// each plane's offset moves: the sum of the lengths of the columns of the
+// inverse of their rows (n, -k), |b x c| + |c x a| + |a x b| over |a.(b x c)|.
+// Rounding moves every line of a plan by about an ulp of its extent, and
+// where the three planes are nearly parallel (an edge between two slight
+// turns, as along a finely drawn circle) their meeting moves by that over the
+// turns' product: a regular 262,144-gon's edge events lie 3.5e-5 m apart at a
+// 100 m radius, 17 times the clustering distance. The determinant is taken
+// of differences of rows, which are exact between nearly parallel planes, so
+// it keeps its digits where it is the product of three small turns. HUGE_VAL
+// where the planes do not meet in one point.
+inline double meeting_condition(const Plane& a, const Plane& b, const Plane& c) {
+  const glm::dvec3 ra{a.n, -a.k}, rb{b.n, -b.k}, rc{c.n, -c.k};
+  const double det = std::abs(glm::dot(ra - rb, glm::cross(rb, rc - rb)));
+  const double columns = glm::length(glm::cross(rb, rc - rb)) + glm::length(glm::cross(rc, ra - rc)) +
+                         glm::length(glm::cross(ra, rb - ra));
+  return det > 0.0 ? columns / det : HUGE_VAL;
 }
 
 }  // namespace procex::engine

@@ -179,6 +179,12 @@ double State::span_closes_at(int c, double floor) const {
   return at;
 }
 
+double State::meeting_slack(int a, int b, int c, std::span<const int> ends) const {
+  for (int k : ends)
+    if (corners[k].motion != Motion::Regular) return 0.0;
+  return tol_.meeting_slack(meeting_condition(edges[a].plane, edges[b].plane, edges[c].plane));
+}
+
 void State::emit_trajectory(int c, std::uint32_t v) {
   const Corner& k = corners[c];
   if (v == k.origin) return;

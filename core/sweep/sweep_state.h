@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <iterator>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -210,6 +211,11 @@ class State {
   // below `floor` (beyond rounding), or were made at one collision and meet
   // there because of it.
   double span_closes_at(int c, double floor) const;
+
+  // Tolerances::meeting_slack of planes a, b and c, where corners `ends` run
+  // into them: 0 where one of those moves by a rule of its own (parallel,
+  // ambiguous), not along two of the planes' crossing.
+  double meeting_slack(int a, int b, int c, std::span<const int> ends) const;
 
   // Output: a corner's trajectory from its origin up to vertex v, shared by the
   // faces of its two edges. The corner is not killed.

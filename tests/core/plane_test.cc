@@ -1,5 +1,6 @@
 // The sweep's plane algebra where it is ill-conditioned: edges collinear only
-// up to the rounding of rotated coordinates.
+// up to the rounding of rotated coordinates, and three planes turned by
+// slight angles from each other.
 #include "core/sweep/plane.h"
 
 #include <cmath>
@@ -39,6 +40,24 @@ TEST(Plane, CrossingVelocitySolvesBothPlanesAtEveryAngle) {
     EXPECT_NEAR(glm::dot(pa.n, v), pa.k, 1e-12 / std::abs(std::sin(t))) << turn;
     EXPECT_NEAR(glm::dot(pb.n, v), pb.k, 1e-12 / std::abs(std::sin(t))) << turn;
   }
+}
+
+// The planes of three consecutive edges of a regular n-gon at 45 degrees,
+// each turned by t = 2 pi / n from the last, meet where a move of d in the
+// middle one moves them by about 2 sqrt(2) d / t^2 (and d / t^2 for each
+// outer one): the meeting's condition is 4 sqrt(2) / t^2. At a million sides
+// the determinant, t^3, is 2e-16 and the triple product of the rows as they
+// stand is rounding's noise.
+TEST(Plane, MeetingConditionOfThreeSlightlyTurnedPlanes) {
+  for (const double n : {4096.0, 262144.0, 1048576.0}) {
+    const double t = 2.0 * M_PI / n;
+    auto plane = [&](double a) { return Plane::through({std::cos(a), std::sin(a)}, 0.0, {-std::sin(a), std::cos(a)}, 1.0); };
+    const double condition = meeting_condition(plane(-t), plane(0.0), plane(t));
+    EXPECT_NEAR(condition * t * t / (4.0 * std::sqrt(2.0)), 1.0, 1e-3) << n;
+  }
+  // Three walls of a square meet where the plan leaves a point free: no point at all.
+  const Plane wall{{1.0, 0.0}, 0.0, 0.0};
+  EXPECT_EQ(meeting_condition(wall, {{0.0, 1.0}, 0.0, 0.0}, {{-1.0, 0.0}, 0.0, -1.0}), HUGE_VAL);
 }
 
 }  // namespace
