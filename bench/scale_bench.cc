@@ -262,7 +262,8 @@ int run(int argc, char** argv) {
     }
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] [--surfer2 SURFER] DIR\n"
+    std::fprintf(stderr, "usage: procex_scale_bench [--budget SECONDS] [--memory-gb GB] [--no-cgal] "
+                         "[--surfer2 SURFER] DIR\n"
                          "  DIR: the files bench/scale_inputs.py wrote\n"
                          "  SURFER: Surfer2's command-line program, as bench/surfer2_build.sh builds it\n");
     return 2;

@@ -447,8 +447,8 @@ class Partitioner {
       if (s.x < lo_x || s.x > hi_x || s.y < lo_y || s.y > hi_y) return true;
       if (nodes_[q].removed || q == p || q == v || q == n || s == a || s == b || s == c) return true;
       // The ear's one new edge, c -> a, must not pass through the ring either.
-      if ((orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0) || between_up_to_rounding(c, s, a))
-        blocker = q;
+      const bool inside = orient2d(a, b, s) >= 0 && orient2d(b, c, s) >= 0 && orient2d(c, a, s) >= 0;
+      if (inside || between_up_to_rounding(c, s, a)) blocker = q;
       return blocker == kNone;
     });
     return blocker;
@@ -626,11 +626,10 @@ class Partitioner {
         }
       }
       // An edge listed twice (a ring that runs along itself) keeps its last
-      // slot, the highest.
+      // slot, the highest: sorted, the last of each edge's run.
       std::sort(edge_slot.begin(), edge_slot.end());
-      std::size_t kept = 0;
-      for (const auto& e : edge_slot) (kept > 0 && edge_slot[kept - 1].first == e.first ? edge_slot[kept - 1] : edge_slot[kept++]) = e;
-      edge_slot.resize(kept);
+      const auto same_edge = [](const auto& x, const auto& y) { return x.first == y.first; };
+      edge_slot.erase(edge_slot.begin(), std::unique(edge_slot.rbegin(), edge_slot.rend(), same_edge).base());
     }
     static std::uint64_t edge(Index a, Index b) { return std::uint64_t{a} << 32 | b; }
     // The slot edge a -> b starts from, or null.

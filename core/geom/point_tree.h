@@ -76,7 +76,8 @@ class PointTree {
   // leaves the halves nearer even, unless every point has it.
   static std::size_t split(Iterator begin, Iterator end, int axis) {
     const auto count = end - begin, half = count / 2;
-    std::nth_element(begin, begin + half, end, [axis](const auto& a, const auto& b) { return a.first[axis] < b.first[axis]; });
+    std::nth_element(begin, begin + half, end,
+                     [axis](const auto& a, const auto& b) { return a.first[axis] < b.first[axis]; });
     const double median = begin[half].first[axis];
     const auto below = std::partition(begin, begin + half, [&](const auto& p) { return p.first[axis] < median; });
     const auto above = std::partition(begin + half, end, [&](const auto& p) { return p.first[axis] == median; });

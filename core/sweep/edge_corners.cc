@@ -15,6 +15,14 @@ constexpr std::size_t kSlack = 64;
 // Entries made since the last merge that queries look through one by one.
 constexpr std::size_t kFew = 32;
 
+// Drops the entries (place or partner, corner) whose corner has died.
+template <class Entry>
+void drop_dead(const State& st, std::vector<Entry>& entries) {
+  entries.erase(std::remove_if(entries.begin(), entries.end(),
+                               [&](const Entry& entry) { return !st.corners[entry.second].alive; }),
+                entries.end());
+}
+
 }  // namespace
 
 void EdgeCorners::take_new_corners(const State& st) {
@@ -44,8 +52,7 @@ std::size_t EdgeCorners::Runs<Entry>::size() const {
 
 template <class Entry>
 void EdgeCorners::merge_recent(const State& st, Runs<Entry>& runs) {
-  const auto dead = [&](const Entry& entry) { return !st.corners[entry.second].alive; };
-  runs.recent.erase(std::remove_if(runs.recent.begin(), runs.recent.end(), dead), runs.recent.end());
+  drop_dead(st, runs.recent);
   if (runs.recent.empty()) return;
   std::sort(runs.recent.begin(), runs.recent.end());
   moved_ += runs.recent.size();
@@ -57,7 +64,7 @@ void EdgeCorners::merge_recent(const State& st, Runs<Entry>& runs) {
     const auto middle = static_cast<std::ptrdiff_t>(into.size());
     into.insert(into.end(), last.begin(), last.end());
     std::inplace_merge(into.begin(), into.begin() + middle, into.end());
-    into.erase(std::remove_if(into.begin(), into.end(), dead), into.end());
+    drop_dead(st, into);
     moved_ += into.size();
     runs.sorted.pop_back();
   }
@@ -67,8 +74,7 @@ void EdgeCorners::retake(const State& st, Index& index, int e, double z) {
   auto& [sorted, recent] = index.places;
   for (auto& run : sorted) recent.insert(recent.end(), run.begin(), run.end());
   sorted.clear();
-  recent.erase(std::remove_if(recent.begin(), recent.end(), [&](const auto& entry) { return !st.corners[entry.second].alive; }),
-               recent.end());
+  drop_dead(st, recent);
   const glm::dvec2 dir = st.edges[e].dir;
   index.z0 = z;
   index.fastest = 0.0;

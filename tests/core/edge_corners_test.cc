@@ -120,9 +120,11 @@ TEST(EdgeCorners, FindEveryCornerWithinReachForUpkeepOfNLogN) {
     }
     found.clear();
     index.between(st, e, 1, found);
-    EXPECT_EQ(found.size(), static_cast<std::size_t>(std::count_if(st.corners.begin(), st.corners.end(), [](const Corner& k) {
-                return k.alive && std::min(k.prev_edge, k.next_edge) == 0 && std::max(k.prev_edge, k.next_edge) == 1;
-              })));
+    const auto between_0_and_1 = [](const Corner& k) {
+      return k.alive && std::min(k.prev_edge, k.next_edge) == 0 && std::max(k.prev_edge, k.next_edge) == 1;
+    };
+    const auto live_between = std::count_if(st.corners.begin(), st.corners.end(), between_0_and_1);
+    EXPECT_EQ(found.size(), static_cast<std::size_t>(live_between));
     const double log_n = std::log2(static_cast<double>(n));
     EXPECT_LE(static_cast<double>(index.moved()), 4.0 * n * log_n) << n;
   }

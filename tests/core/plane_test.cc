@@ -51,7 +51,9 @@ TEST(Plane, CrossingVelocitySolvesBothPlanesAtEveryAngle) {
 TEST(Plane, MeetingConditionOfThreeSlightlyTurnedPlanes) {
   for (const double n : {4096.0, 262144.0, 1048576.0}) {
     const double t = 2.0 * M_PI / n;
-    auto plane = [&](double a) { return Plane::through({std::cos(a), std::sin(a)}, 0.0, {-std::sin(a), std::cos(a)}, 1.0); };
+    auto plane = [&](double a) {
+      return Plane::through({std::cos(a), std::sin(a)}, 0.0, {-std::sin(a), std::cos(a)}, 1.0);
+    };
     const double condition = meeting_condition(plane(-t), plane(0.0), plane(t));
     EXPECT_NEAR(condition * t * t / (4.0 * std::sqrt(2.0)), 1.0, 1e-3) << n;
   }
