@@ -19,7 +19,9 @@ class PointTree {
  public:
   PointTree() = default;
   explicit PointTree(std::vector<std::pair<glm::dvec2, std::uint32_t>> points) : points_(std::move(points)) {
-    if (!points_.empty()) build(0, points_.size());
+    if (points_.empty()) return;
+    std::vector<std::pair<glm::dvec2, std::uint32_t>> scratch;
+    build(0, points_.size(), bounds(points_.begin(), points_.end()), scratch);
   }
 
   // Calls f(id, position) for the points in every part of the tree that
@@ -38,34 +40,42 @@ class PointTree {
     std::uint32_t right = 0;     // an inner node's second child (its first follows it)
   };
 
-  void build(std::size_t first, std::size_t count) {
+  using Iterator = std::vector<std::pair<glm::dvec2, std::uint32_t>>::iterator;
+  using Box = std::pair<glm::dvec2, glm::dvec2>;
+
+  // box: the node's points' bounds; scratch: room for its points.
+  void build(std::size_t first, std::size_t count, const Box& box,
+             std::vector<std::pair<glm::dvec2, std::uint32_t>>& scratch) {
     const std::size_t id = nodes_.size();
+    nodes_.push_back({box.first, box.second, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count)});
+    if (count <= kLeafSize) return;
     const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(first);
     const auto end = begin + static_cast<std::ptrdiff_t>(count);
-    const auto [lo, hi] = bounds(begin, end);
-    nodes_.push_back({lo, hi, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count)});
-    if (count <= kLeafSize) return;
     // Split across x or y, whichever leaves the smaller boxes. Points on a
     // line across the split stay on one side, so rows of points (the
     // corners of a grid of holes) end in boxes of their own that a thin
     // triangle between two rows passes by: a split through a row would leave
-    // boxes reaching over the gap between it and the next.
+    // boxes reaching over the gap between it and the next. The points as
+    // split across x wait in scratch while y is tried.
     std::size_t mid[2];
+    Box halves[2][2];
     double area[2];
     for (int axis = 0; axis < 2; ++axis) {
+      if (axis == 1) scratch.assign(begin, end);
       mid[axis] = split(begin, end, axis);
-      const auto [lo0, hi0] = bounds(begin, begin + static_cast<std::ptrdiff_t>(mid[axis]));
-      const auto [lo1, hi1] = bounds(begin + static_cast<std::ptrdiff_t>(mid[axis]), end);
-      area[axis] = (hi0.x - lo0.x) * (hi0.y - lo0.y) + (hi1.x - lo1.x) * (hi1.y - lo1.y);
+      halves[axis][0] = bounds(begin, begin + static_cast<std::ptrdiff_t>(mid[axis]));
+      halves[axis][1] = bounds(begin + static_cast<std::ptrdiff_t>(mid[axis]), end);
+      area[axis] = 0.0;
+      for (const auto& [lo, hi] : halves[axis]) area[axis] += (hi.x - lo.x) * (hi.y - lo.y);
     }
-    const std::size_t half = area[0] < area[1] ? split(begin, end, 0) : mid[1];
-    build(first, half);
+    const int axis = area[0] < area[1] ? 0 : 1;
+    if (axis == 0) std::copy(scratch.begin(), scratch.end(), begin);
+    build(first, mid[axis], halves[axis][0], scratch);
     nodes_[id].right = static_cast<std::uint32_t>(nodes_.size());
-    build(first + half, count - half);
+    build(first + mid[axis], count - mid[axis], halves[axis][1], scratch);
   }
 
-  using Iterator = std::vector<std::pair<glm::dvec2, std::uint32_t>>::iterator;
-  static std::pair<glm::dvec2, glm::dvec2> bounds(Iterator begin, Iterator end) {
+  static Box bounds(Iterator begin, Iterator end) {
     glm::dvec2 lo = begin->first, hi = lo;
     for (auto it = begin; it != end; ++it) lo = glm::min(lo, it->first), hi = glm::max(hi, it->first);
     return {lo, hi};
