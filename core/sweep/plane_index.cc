@@ -135,7 +135,7 @@ void PlaneIndex::extend(const Planes& planes, std::size_t size, glm::dvec2 near)
   }
 }
 
-double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q) {
+double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q, double h0) {
   // The corner's signed distance to a plane's line, n.(p - origin) - c' - k z,
   // and the rate it changes at, n.v - k, over the node's ranges.
   const glm::dvec2 r = q.p - t.origin;
@@ -169,6 +169,15 @@ double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q) {
   if (q.after.edge >= 0 && !q.outward && r_hi < 0.0) {
     const double highest = q.z + std::max(d_hi, 0.0) / -r_hi * (1.0 + 1e-9) + kSlack * std::abs(q.z);
     if (highest < std::max(q.after.at, q.z)) return HUGE_VAL;
+    // Or seen from where the corner is at the last queued: every line
+    // already behind it there was met below.
+    if (q.after.at > q.z) {
+      const auto [a_lo, a_hi] = distance_at(t, n, q, q.after.at);
+      if (a_hi < 0.0) {
+        const double met = q.after.at + a_hi / -r_lo;
+        if (met + (met - q.z) * 1e-9 + kSlack * std::abs(q.after.at) < q.after.at) return HUGE_VAL;
+      }
+    }
   }
   // The meeting's height above z is d / -rate: from inside (rate < 0) at
   // least d_lo / -r_lo, from outside (rate > 0, d < 0) at least -d_hi / r_hi.
@@ -182,7 +191,38 @@ double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q) {
   if (above == HUGE_VAL) return HUGE_VAL;
   // Less the rounding of the division and the sum.
   const double lowest = q.z + above * (1.0 - 1e-9) - kSlack * std::abs(q.z);
-  return above > 0.0 && lowest > q.cap ? HUGE_VAL : lowest;
+  const double nearer = h0 > q.z ? std::max(lowest, bound_from(t, n, q, h0, r_lo, r_hi)) : lowest;
+  return above > 0.0 && nearer > q.cap ? HUGE_VAL : nearer;
+}
+
+std::pair<double, double> PlaneIndex::distance_at(const Tree& t, const Node& n, const Query& q, double h0) {
+  const double dz = h0 - q.z;
+  const glm::dvec2 r0 = q.p + q.v * dz - t.origin;
+  double ax_lo, ax_hi, ay_lo, ay_hi, kz_lo, kz_hi;
+  scaled(n.nx_lo, n.nx_hi, r0.x, ax_lo, ax_hi);
+  scaled(n.ny_lo, n.ny_hi, r0.y, ay_lo, ay_hi);
+  scaled(n.k_lo, n.k_hi, h0, kz_lo, kz_hi);
+  // Rounding of r0 and of the sums here, and of meeting_heights' distance at
+  // z, which this one equals in exact arithmetic.
+  const double slack = kSlack * (std::abs(q.p.x) + std::abs(q.p.y) + (std::abs(q.v.x) + std::abs(q.v.y)) * dz +
+                                 std::abs(t.origin.x) + std::abs(t.origin.y) + std::abs(r0.x) + std::abs(r0.y) +
+                                 t.c_abs + t.k_abs * (std::abs(q.z) + std::abs(h0)));
+  return {ax_lo + ay_lo - n.c_hi - kz_hi - slack, ax_hi + ay_hi - n.c_lo - kz_lo + slack};
+}
+
+double PlaneIndex::bound_from(const Tree& t, const Node& n, const Query& q, double h0, double r_lo, double r_hi) {
+  const double dz = h0 - q.z;
+  const auto [d_lo, d_hi] = distance_at(t, n, q, h0);
+  if (std::isnan(d_lo + d_hi)) return -HUGE_VAL;
+  // From inside every plane still ahead of the corner at h0 (d_lo >= 0)
+  // meets it no lower than the fastest approach gives; from outside, every
+  // plane still behind (d_hi <= 0). A plane that may have been met by h0
+  // bounds nothing here.
+  double above = HUGE_VAL;
+  if (r_lo < 0.0) above = d_lo >= 0.0 ? dz + d_lo / -r_lo : -HUGE_VAL;
+  if (q.outward && r_hi > 0.0) above = std::min(above, d_hi <= 0.0 ? dz - d_hi / r_hi : -HUGE_VAL);
+  if (above == -HUGE_VAL || above == HUGE_VAL) return -HUGE_VAL;
+  return q.z + above * (1.0 - 1e-9) - kSlack * std::abs(q.z);
 }
 
 std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query& q, std::size_t hold,
@@ -221,31 +261,37 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
   auto& open = scratch.open;
   open.clear();
   const auto later = [](const auto& x, const auto& y) { return x.first > y.first; };
-  const auto push = [&](std::size_t tree, std::int32_t node) {
-    const double b = bound(trees_[tree], trees_[tree].nodes[node], q);
+  const auto push = [&](std::size_t tree, std::int32_t node, double h0) {
+    const double b = bound(trees_[tree], trees_[tree].nodes[node], q, h0);
     if (b == HUGE_VAL) return;
     open.push_back({b, (static_cast<std::uint64_t>(tree) << 32) | static_cast<std::uint32_t>(node)});
     std::push_heap(open.begin(), open.end(), later);
   };
   for (std::size_t i = 0; i < trees_.size(); ++i)
-    if (trees_[i].from < q.size) push(i, 0);
+    if (trees_[i].from < q.size) push(i, 0, q.z);
   while (!open.empty()) {
     const auto [b, id] = open.front();
     // Every meeting left is queued at or above b: those held are the lowest
     // once b is past the highest of them (at b itself, a lower edge may wait).
-    if (out.size() == hold && b > std::max(out.front().at, q.z)) break;
+    const double top = out.size() == hold ? std::max(out.front().at, q.z) : HUGE_VAL;
+    if (b > top) break;
     std::pop_heap(open.begin(), open.end(), later);
     open.pop_back();
     const Tree& t = trees_[id >> 32];
     const Node& node = t.nodes[id & 0xffffffffu];
+    // Bounded again from where the corner is at the highest held meeting:
+    // lines through a star's centre all pass near the corner there, however
+    // their normals differ, where from the corner's own place they did not.
+    if (top != HUGE_VAL && bound(t, node, q, top) > top) continue;
     if (node.left != kLeaf) {
-      push(id >> 32, node.left);
-      push(id >> 32, node.left + 1);
+      const double h0 = top != HUGE_VAL ? top : b;
+      push(id >> 32, node.left, h0);
+      push(id >> 32, node.left + 1, h0);
       continue;
     }
     const std::size_t n = node.end - node.begin;
     tested += n;
-    if (4 * tested > q.size) {
+    if (tested > std::max(q.size / kGiveUpPast, kGiveUpLeast)) {
       ++given_up_;
       // Not searched again: its trees would only hold memory (as much as the
       // planes again, for as long as any list of the set lives).

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -73,10 +74,11 @@ class PlaneIndex {
 
   // The `hold` lowest meetings after q.after (MeetingEarlier), into `out`
   // (unordered), each plane's once. Returns how many meetings it worked out,
-  // or nothing where the search gives up: past a quarter of the planes the
+  // or nothing where the search gives up: past a sixteenth of the planes the
   // bounds do not tell the lowest apart (a star's reflex corner meets almost
   // every line near the star's centre, within a millimetre of one height),
-  // and testing every plane costs less.
+  // and testing every plane costs less (a node's bounds and the heap cost a
+  // few plane tests each, which run side by side).
   std::optional<std::size_t> lowest(const Planes& planes, const Query& q, std::size_t hold, std::vector<Meeting>& out,
                                     Scratch& scratch);
   // Whether searching is worth it: not once a quarter of the searches gave up.
@@ -103,11 +105,23 @@ class PlaneIndex {
   };
   static Tree build(const Planes& planes, std::size_t from, std::size_t to, glm::dvec2 near);
   // A height no meeting with the node's planes is queued below, or HUGE_VAL
-  // where none of them can meet the corner or all meet it before q.after.
-  static double bound(const Tree& t, const Node& n, const Query& q);
+  // where none of them can meet the corner or all meet it before q.after;
+  // the higher of the bounds taken at the corner's height and at h0.
+  static double bound(const Tree& t, const Node& n, const Query& q, double h0);
+  // The same seen from where the corner is at height h0 > q.z, given the
+  // planes' rates of approach [r_lo, r_hi]; -HUGE_VAL where it bounds nothing.
+  // The corner's distance to the node's planes' lines where it is at height
+  // h0, n.(p + v (h0 - z) - origin) - c' - k h0, bounded with the rounding of
+  // it and of meeting_heights' distance at z (equal in exact arithmetic).
+  static std::pair<double, double> distance_at(const Tree& t, const Node& n, const Query& q, double h0);
+  static double bound_from(const Tree& t, const Node& n, const Query& q, double h0, double r_lo, double r_hi);
 
   // Searches before worth_searching() judges.
   static constexpr std::size_t kTrial = 16;
+  // A search gives up past 1 / kGiveUpPast of the planes, and not before
+  // kGiveUpLeast (a few dozen leaves: a search through fewer planes than that
+  // costs little whichever way it goes).
+  static constexpr std::size_t kGiveUpPast = 16, kGiveUpLeast = 512;
 
   std::vector<Tree> trees_;
   std::size_t indexed_ = 0;

@@ -338,6 +338,19 @@ TEST(EventQueue, IndexedListsWorkOutFarFewerSplits) {
                                 << " testing every edge";
 }
 
+// Every edge of a random star-shaped polygon runs nearly through its centre,
+// and its reflex corners race there: seen from where a corner starts, a node
+// of lines at a spread of angles may meet it anywhere near the centre, so the
+// search opened most nodes (a quarter of the planes, then gave up and tested
+// every edge); seen from where the corner is at the highest meeting held,
+// those lines pass by at their own small offsets, most of them still ahead.
+TEST(EventQueue, IndexedListsTellApartLinesThroughOnePoint) {
+  const auto [indexed, every] =
+      expect_indexed_sweep_as_every_edge(random_star_shaped(16000, 5), EventQueue::kIndexedFrom);
+  EXPECT_LT(20 * indexed, every) << indexed << " splits worked out through the index, " << every
+                                 << " testing every edge";
+}
+
 // Planes of one line (the edges between a comb's teeth) are never met by a
 // corner that runs along it; the index's bounds alone could not tell, so it
 // opened them all, gave up and tested every edge. (Those edges are one plane
