@@ -25,6 +25,7 @@
 #include "core/geom/error.h"
 #include "core/sweep/edge_corners.h"
 #include "core/sweep/meeting_heights.h"
+#include "core/sweep/resolve_order.h"
 #include "core/sweep/settle.h"
 #include "core/sweep/spares.h"
 
@@ -1054,7 +1055,6 @@ struct BatchScratch {
     waiting.clear();
     first.clear();
     zs.clear();
-    order.clear();
     rewired.clear();
     collapses.clear();
     moved.clear();
@@ -1068,7 +1068,8 @@ struct BatchScratch {
   ResolveLists resolving;
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
-  std::vector<std::size_t> order;
+  ResolveOrder order;
+  std::vector<std::size_t> pending;  // order's, for LaterGroups
   RewiredList rewired;
   std::deque<Candidate> collapses;  // addresses stay put as it grows
   std::vector<int> moved, spans, settled;
@@ -1136,10 +1137,11 @@ class LaterGroups {
     return false;
   }
 
-  // `order` is the order the groups are resolved in: by first collision, but
-  // for a collapse added below the group resolved just before it.
-  bool read_above(const int (&pair)[3], double at, const std::vector<std::size_t>& order) {
-    if (listed_ == 0) list(order);
+  bool read_above(const int (&pair)[3], double at, ResolveOrder& order) {
+    if (listed_ == 0) {
+      order.pending(lists_.pending);
+      list(lists_.pending);
+    }
     const std::vector<std::uint32_t>& start = lists_.start;
     for (int e : pair) {
       if (static_cast<std::size_t>(e) + 1 >= start.size()) continue;
@@ -1236,7 +1238,8 @@ class LaterGroups {
     out.insert(out.end(), {k.prev_edge, k.next_edge, c.edge == kNone ? st_.corners[c.next].next_edge : c.edge});
   }
 
-  // Each edge's groups, last resolved first, each once (counted, then placed).
+  // Each edge's groups not yet resolved, last resolved first, each once
+  // (counted, then placed), from those pending, the next first.
   void list(const std::vector<std::size_t>& order) {
     std::vector<std::uint32_t>& start = lists_.start;
     std::vector<std::size_t>& last = lists_.last;
@@ -1373,15 +1376,8 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   const std::size_t clustered = groups.size();
   const auto first_of = [&](std::size_t g) { return later_groups.first_of(g); };
   const auto height_of = [&](std::size_t g) { return g < clustered ? zs[g] : waiting[g - clustered]->z; };
-  std::vector<std::size_t>& order = lists.order;
-  order.resize(later_groups.size());
-  std::iota(order.begin(), order.end(), 0);
-  // Groups first met at one height keep the order they are listed in (by
-  // index, not by a stable sort: std::stable_sort takes a buffer from the
-  // heap at every batch).
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return first_of(a) != first_of(b) ? first_of(a) < first_of(b) : a < b;
-  });
+  ResolveOrder& order = lists.order;
+  order.start(later_groups.size(), first_of);
   // Clusters at one height up to rounding are one instant, so their order is
   // rounding's: rewire them all before any settles. Settling folds spikes,
   // hands runs to parallel neighbours and closes flat loops, reaching along
@@ -1457,8 +1453,8 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   std::vector<int>& spans = lists.spans;
   int made_from = 0;  // the first corner made in this instant
   std::vector<std::pair<int, double>> named;  // a new corner's splits of spans the batch collapses: span, height
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const std::size_t g = order[i];
+  while (!order.empty()) {
+    const std::size_t g = order.next();
     later_groups.resolving(g);
     const bool later = first_of(g) > instant + st.tol().simultaneous();
     if (later) settle_rewired();
@@ -1482,9 +1478,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
                     lists.resolving, rewired, moved);
     const auto wait = [&](const Candidate* w) {
       waiting.push_back(w);
-      order.insert(std::upper_bound(order.begin() + i + 1, order.end(), later_groups.size() - 1,
-                                    [&](std::size_t a, std::size_t b) { return first_of(a) < first_of(b); }),
-                   later_groups.size() - 1);
+      order.add(later_groups.size() - 1, w->z);
     };
     // A corner made here that cuts into a span a later group of the batch
     // collapses, within this instant and below that group's first collision,

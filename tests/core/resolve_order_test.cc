@@ -1,0 +1,59 @@
+// ResolveOrder against the order it stands for: the groups sorted by first
+// collision (then by index), and each group added during the batch inserted
+// in place after every group still to come that is first met no higher.
+#include "core/sweep/resolve_order.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace procex::engine {
+namespace {
+
+// Heights drawn from few values, so that groups are often first met at one.
+double height(std::mt19937_64& rng) { return static_cast<double>(rng() % 8) * 0.25; }
+
+TEST(ResolveOrder, ResolvesGroupsAsInsertingEachInPlaceWould) {
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<double> first(1 + rng() % 40);
+    for (double& f : first) f = height(rng);
+    const auto first_of = [&](std::size_t g) { return first[g]; };
+
+    std::vector<std::size_t> model(first.size());
+    std::iota(model.begin(), model.end(), 0);
+    std::sort(model.begin(), model.end(),
+              [&](std::size_t a, std::size_t b) { return first[a] != first[b] ? first[a] < first[b] : a < b; });
+    ResolveOrder order;
+    order.start(first.size(), first_of);
+
+    std::size_t i = 0;  // the model's next
+    while (!order.empty()) {
+      ASSERT_LT(i, model.size());
+      // Now and then, what is still to come, as LaterGroups reads it.
+      if (rng() % 4 == 0) {
+        std::vector<std::size_t> pending;
+        order.pending(pending);
+        EXPECT_EQ(pending, std::vector<std::size_t>(model.begin() + static_cast<std::ptrdiff_t>(i), model.end()))
+            << "seed " << seed;
+      }
+      EXPECT_EQ(order.next(), model[i]) << "seed " << seed << ", group " << i;
+      ++i;
+      for (std::size_t added = rng() % 3; added > 0 && first.size() < 200; --added) {
+        const std::size_t g = first.size();
+        first.push_back(height(rng));
+        model.insert(std::upper_bound(model.begin() + static_cast<std::ptrdiff_t>(i), model.end(), g,
+                                      [&](std::size_t a, std::size_t b) { return first[a] < first[b]; }),
+                     g);
+        order.add(g, first[g]);
+      }
+    }
+    EXPECT_EQ(i, model.size()) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace procex::engine
