@@ -24,17 +24,24 @@ class Budget {
   Budget(const SweepBudget& limits, std::size_t plan_vertices);
 
   // A new attempt (another tolerance): its vertices and events count afresh.
-  void start_attempt() { vertices_ = events_ = 0; }
+  void start_attempt() { vertices_ = corners_ = events_ = 0; }
   // Each throws SweepBudgetError past its limit, at sweep height `z`.
   void add_vertex(double z) {
     if (++vertices_ > limits_.max_vertices && limits_.max_vertices > 0) vertices_exceeded(z);
+  }
+  // Corners are counted apart against the same limit: corners made at one
+  // point share its vertex, so a sweep running away there (a jittered star's
+  // centre) makes corners, and memory, without vertices.
+  void add_corner(double z) {
+    if (++corners_ > limits_.max_vertices && limits_.max_vertices > 0) corners_exceeded(z);
   }
   void add_events(std::size_t n, double z) {
     events_ += n;
     if (events_ > limits_.max_events && limits_.max_events > 0) events_exceeded(z);
   }
   // Reads the clock only every few calls: it is called once per event batch
-  // (and the thread's CPU clock is a system call, not the vDSO).
+  // and per list or group of a large one (and the thread's CPU clock is a
+  // system call, not the vDSO).
   void check_time(double z) {
     if (++since_clock_ < kClockStride || !(limits_.max_seconds > 0.0)) return;
     since_clock_ = 0;
@@ -49,12 +56,13 @@ class Budget {
  private:
   static double thread_cpu_seconds();
   [[noreturn]] void vertices_exceeded(double z) const;
+  [[noreturn]] void corners_exceeded(double z) const;
   [[noreturn]] void events_exceeded(double z) const;
   [[noreturn]] void time_exceeded(double z) const;
 
   SweepBudget limits_;
   double deadline_;  // in thread_cpu_seconds(); 0 until the clock is first read
-  std::size_t vertices_ = 0, events_ = 0, since_clock_ = 0;
+  std::size_t vertices_ = 0, corners_ = 0, events_ = 0, since_clock_ = 0;
 };
 
 }  // namespace procex::engine

@@ -1455,6 +1455,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   std::vector<std::pair<int, double>> named;  // a new corner's splits of spans the batch collapses: span, height
   while (!order.empty()) {
     const std::size_t g = order.next();
+    st.check_time();
     later_groups.resolving(g);
     const bool later = first_of(g) > instant + st.tol().simultaneous();
     if (later) settle_rewired();

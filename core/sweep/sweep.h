@@ -25,7 +25,8 @@ enum class Ambiguity { MaximizeVolume, MinimizeVolume };
 // limit it passed, in bounded time and memory, instead of a hang or a crash.
 struct SweepBudget {
   // Vertices made by one attempt (nested sweeps included): corners, planes
-  // and faces grow with them, so this bounds the engine's memory.
+  // and faces grow with them, so this bounds the engine's memory. The corners
+  // made are held to it apart.
   std::size_t max_vertices = 10'000'000;
   // Potential events worked out by one attempt as its corners are listed: a
   // reflex corner lists one per live plane it meets, or among many thousands

@@ -78,6 +78,7 @@ int State::add_corner(int prev_edge, int next_edge, std::uint32_t origin) {
   c.base = glm::dvec2(vertices[origin]);
   c.base_z = vertices[origin].z;
   std::tie(c.motion, c.velocity) = motion_of(prev_edge, next_edge);
+  if (budget_) budget_->add_corner(height);
   const int id = static_cast<int>(corners.size());
   corners.push_back(c);
   Edge& e = edges[next_edge];

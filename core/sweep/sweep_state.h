@@ -158,7 +158,8 @@ class State {
   void count_events(std::size_t n) const {
     if (budget_) budget_->add_events(n, height);
   }
-  // Refuses the sweep once its time is up (called once per event batch).
+  // Refuses the sweep once its time is up (called once per event batch, and
+  // as a large batch is gathered and resolved).
   void check_time() const {
     if (budget_) budget_->check_time(height);
   }

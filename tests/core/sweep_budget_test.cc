@@ -118,6 +118,51 @@ TEST(SweepBudget, ASmallPlansClockStartsAtItsFirstRead) {
   EXPECT_THROW(check(), SweepBudgetError);
 }
 
+// Corners made at one point share its vertex: they count against the vertex
+// budget apart, as many again.
+TEST(SweepBudget, CornersPastTheLimitRefuseTheFootprint) {
+  SweepBudget limits;
+  limits.max_vertices = 100;
+  engine::Budget budget(limits, engine::Budget::kClockedFromTheStart);
+  for (int i = 0; i < 100; ++i) {
+    budget.add_vertex(1.0);
+    budget.add_corner(1.0);
+  }
+  try {
+    budget.add_corner(1.0);
+    ADD_FAILURE() << "the 101st corner passed";
+  } catch (const SweepBudgetError& e) {
+    EXPECT_NE(std::string(e.what()).find("after 100 corners (the vertex budget"), std::string::npos) << e.what();
+  }
+}
+
+// A star of alternating radii jittered by a millimetre: its 16,384 reflex
+// corners race to the centre and meet there within one batch, where the
+// sweep makes corners at one point without end (issue 18: not yet resolved)
+// and each batch holds millions of candidates. Both limits still hold there:
+// the corners made, and the time, read as the batch is worked through.
+TEST(SweepBudget, ARunawayAtOnePointIsRefusedInBoundedTimeAndMemory) {
+  std::vector<glm::dvec2> p;
+  unsigned seed = 18;
+  const int n = 32768;
+  for (int k = 0; k < n; ++k) {
+    seed = seed * 1103515245u + 12345u;
+    const double jitter = 1e-3 * (static_cast<double>(seed >> 16 & 0x7fff) / 16384.0 - 1.0);
+    const double r = (k % 2 ? 90.0 : 100.0) + jitter, a = 2 * M_PI * k / n;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  const Footprint fp = make_footprint({p}, 45);
+  SweepBudget corners;
+  corners.max_vertices = 1'000'000;
+  const std::string by_corners = refusal(fp, corners);
+  EXPECT_NE(by_corners.find("after 1000000 corners"), std::string::npos) << by_corners;
+  SweepBudget time;
+  time.max_vertices = 0;
+  time.max_seconds = 2.0;
+  const std::string by_time = refusal(fp, time);
+  EXPECT_NE(by_time.find("after 2 CPU seconds (the time budget)"), std::string::npos) << by_time;
+}
+
 TEST(SweepBudget, DefaultsLeaveLargeInputsAlone) {
   EXPECT_EQ(refusal(make_footprint({star(1000, 100, 60)}, 45), SweepBudget{}), "");
 }
