@@ -245,6 +245,19 @@ std::string slope(const std::vector<std::pair<std::size_t, double>>& points) {
   return buf;
 }
 
+// The folder Surfer2's files pass through, removed with whatever is in it
+// however run() ends: a GraphML that cannot be written throws past the loop.
+struct ScratchFolder {
+  fs::path path;
+  ScratchFolder() = default;
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  ~ScratchFolder() {
+    std::error_code ec;  // nothing to report it to on the way out
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
 int run(int argc, char** argv) {
   double budget_s = 120.0, memory_gb = 8.0;
   bool with_cgal = true;
@@ -280,7 +293,7 @@ int run(int argc, char** argv) {
   }
   std::vector<Engine> engines{Engine::Sweep, Engine::Roof};
   if (with_cgal) engines.push_back(Engine::Cgal);
-  fs::path scratch;
+  ScratchFolder scratch;
   if (!surfer2.empty()) {
     engines.push_back(Engine::Surfer2);
     std::string folder = (fs::temp_directory_path() / "procex_scale_bench_XXXXXX").string();
@@ -289,7 +302,7 @@ int run(int argc, char** argv) {
                    fs::temp_directory_path().c_str());
       return 2;
     }
-    scratch = folder;
+    scratch.path = folder;
   }
 
   std::printf("| family | n | engine | status | CPU s | peak MB |\n|---|---:|---|---|---:|---:|\n");
@@ -299,7 +312,7 @@ int run(int argc, char** argv) {
     for (const Engine e : engines) {
       if (stopped[{in.family, e}]) continue;
       const std::string stem = in.path.stem().string();
-      const Surfer2Files files{surfer2, scratch / (stem + ".graphml"), scratch / (stem + ".obj")};
+      const Surfer2Files files{surfer2, scratch.path / (stem + ".graphml"), scratch.path / (stem + ".obj")};
       if (e == Engine::Surfer2) {
         write_surfer2_graphml(read_footprint(in), files.graphml);
         ::malloc_trim(0);  // as in list_inputs
@@ -319,11 +332,19 @@ int run(int argc, char** argv) {
   std::printf("\n| family | engine | log-log slope of CPU time, n >= 4096 |\n|---|---|---:|\n");
   for (const auto& [key, points] : times)
     std::printf("| %s | %s | %s |\n", key.first.c_str(), engine_name(key.second), slope(points).c_str());
-  if (!scratch.empty()) fs::remove_all(scratch);
   return 0;
 }
 
 }  // namespace
 }  // namespace procex
 
-int main(int argc, char** argv) { return procex::run(argc, argv); }
+// An exception that left main would end the program without unwinding run(),
+// so its scratch folder would stay.
+int main(int argc, char** argv) {
+  try {
+    return procex::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "procex_scale_bench: %s\n", e.what());
+    return 1;
+  }
+}
