@@ -136,7 +136,8 @@ ChildResult run_engine(const Input& in, Engine engine, double& engine_cpu_s) {
       return r;
     }
     const Surface surface = sweep(footprint);
-    if (engine == Engine::Roof && !validate(build_mesh(surface)).ok()) std::snprintf(r.status, sizeof r.status, "invalid");
+    if (engine == Engine::Roof && !validate(build_mesh(surface)).ok())
+      std::snprintf(r.status, sizeof r.status, "invalid");
   } catch (const std::bad_alloc&) {
     std::snprintf(r.status, sizeof r.status, "memory");
   } catch (const std::exception&) {

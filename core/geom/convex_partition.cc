@@ -430,8 +430,8 @@ class Partitioner {
       const glm::dvec2 d = w - u;
       const double length = glm::length(d);
       for (const glm::dvec2 k : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
-        const double reach =
-            length * (slack + 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(k.x - u.x) + std::abs(k.y - u.y)));
+        const double reach = length * (slack + 8.0 * std::numeric_limits<double>::epsilon() *
+                                                   (std::abs(k.x - u.x) + std::abs(k.y - u.y)));
         if (d.x * (k.y - u.y) - d.y * (k.x - u.x) >= -reach) return false;
       }
       return true;
@@ -572,7 +572,8 @@ class Partitioner {
         q = nodes_[q].next;
       } while (q != head_ && forced == kNone);
       if (forced == kNone) break;
-      pieces_.push_back({nodes_[nodes_[forced].prev].vertex, nodes_[forced].vertex, nodes_[nodes_[forced].next].vertex});
+      pieces_.push_back(
+          {nodes_[nodes_[forced].prev].vertex, nodes_[forced].vertex, nodes_[nodes_[forced].next].vertex});
       node = stop = nodes_[forced].next;
       remove(forced);
     }

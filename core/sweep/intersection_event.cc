@@ -142,7 +142,8 @@ void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double 
       for (long long dy = -2; dy <= 2; ++dy) {
         if (dx < 0 || (dx == 0 && dy <= 0)) continue;  // each pair of cells once
         const long long x = grid[from].x + dx, y = grid[from].y + dy;
-        const std::size_t there = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
+        const std::size_t there =
+            std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
         if (there == grid.size() || grid[there].x != x || grid[there].y != y) continue;
         const std::size_t there_end = cell_end(there);
         bool joined = lists.find(grid[from].i) == lists.find(grid[there].i);
@@ -337,7 +338,9 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
   if (!(std::abs(det) > 1e-9)) return fallback;
   const glm::dvec3 x = glm::inverse(a) * b;
   const double reach = 10.0 * st.tol().height();
-  auto within = [&](glm::dvec3 q) { return glm::length(glm::dvec2(q) - mean) <= near && std::abs(q.z - st.height) <= reach; };
+  auto within = [&](glm::dvec3 q) {
+    return glm::length(glm::dvec2(q) - mean) <= near && std::abs(q.z - st.height) <= reach;
+  };
   const glm::dvec3 fit = within(x) ? x : fallback;
   // Three planes meet in one point whatever their weights.
   if (planes.size() <= 3) return fit;
@@ -734,13 +737,15 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
       if (at(st.corners[c].prev)) continue;
       int last = c;
       while (at(st.corners[last].next)) last = st.corners[last].next;
-      chains.push_back({st.corners[c].prev_edge, st.corners[c].prev, st.corners[last].next_edge, st.corners[last].next});
+      chains.push_back(
+          {st.corners[c].prev_edge, st.corners[c].prev, st.corners[last].next_edge, st.corners[last].next});
     }
     marks.uncut();
     for (int named : edges) {
       // A group resolved before this one at this height may have handed the
       // named edge's span to its heir: the collision then cuts through the heir.
-      for (int e = named, hops = 0; e != kNone && hops <= static_cast<int>(st.edges.size()); e = st.edges[e].heir, ++hops) {
+      for (int e = named, hops = 0; e != kNone && hops <= static_cast<int>(st.edges.size());
+           e = st.edges[e].heir, ++hops) {
         if (participates(e) && e != named) break;  // the heir is cut as named itself
         if (marks.touched(e)) break;
         const int s = st.span_through(e, p, z, near);

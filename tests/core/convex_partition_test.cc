@@ -56,7 +56,8 @@ void expect_partition(const std::vector<std::vector<glm::dvec2>>& loops, std::si
       const glm::dvec2 middle = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
       for (std::size_t j = 0; j < polys.size(); ++j)
         EXPECT_FALSE(j != i && strictly_inside(polys[j], middle))
-            << "pieces " << ::testing::PrintToString(pieces[i]) << " and " << ::testing::PrintToString(pieces[j]) << " overlap";
+            << "pieces " << ::testing::PrintToString(pieces[i]) << " and " << ::testing::PrintToString(pieces[j])
+            << " overlap";
     }
   EXPECT_EQ(used.size(), pts.size());
   EXPECT_LE(pieces.size(), max_pieces);
@@ -194,7 +195,8 @@ TEST(ConvexPartition, NoPieceAlongHolesOnOneLineFarAway) {
     std::vector<std::vector<glm::dvec2>> loops;
     for (const auto& loop : grid) {
       loops.emplace_back();
-      for (const glm::dvec2& p : loop) loops.back().push_back({5e5 + 25 * (c * p.x - s * p.y), 5e6 + 25 * (s * p.x + c * p.y)});
+      for (const glm::dvec2& p : loop)
+        loops.back().push_back({5e5 + 25 * (c * p.x - s * p.y), 5e6 + 25 * (s * p.x + c * p.y)});
     }
     SCOPED_TRACE(degrees);
     expect_partition(loops, flatten(loops).size());

@@ -44,13 +44,14 @@ TEST(PointTree, ARegionSearchedByItsHalfPlanesGivesExactlyItsPointsOnce) {
       };
       std::vector<std::uint32_t> got, want;
       std::size_t seen = 0;
-      EXPECT_TRUE(tree.search([&](glm::dvec2 lo, glm::dvec2 hi) { return right_of(0, lo, hi) || right_of(1, lo, hi) || right_of(2, lo, hi); },
-                              [&](std::uint32_t id, glm::dvec2 p) {
-                                ++seen;
-                                if (cross(t[0], t[1], p) >= 0 && cross(t[1], t[2], p) >= 0 && cross(t[2], t[0], p) >= 0)
-                                  got.push_back(id);
-                                return true;
-                              }));
+      const auto outside = [&](glm::dvec2 lo, glm::dvec2 hi) {
+        return right_of(0, lo, hi) || right_of(1, lo, hi) || right_of(2, lo, hi);
+      };
+      EXPECT_TRUE(tree.search(outside, [&](std::uint32_t id, glm::dvec2 p) {
+        ++seen;
+        if (cross(t[0], t[1], p) >= 0 && cross(t[1], t[2], p) >= 0 && cross(t[2], t[0], p) >= 0) got.push_back(id);
+        return true;
+      }));
       for (const auto& [p, id] : pts)
         if (cross(t[0], t[1], p) >= 0 && cross(t[1], t[2], p) >= 0 && cross(t[2], t[0], p) >= 0) want.push_back(id);
       std::sort(got.begin(), got.end());
@@ -82,9 +83,11 @@ TEST(PointTree, AThinTriangleLooksAtFewPoints) {
 TEST(PointTree, SearchStopsWhenTold) {
   const PointTree tree(scattered(500, {0.0, 0.0}, 10.0, 3));
   std::size_t visits = 0;
-  EXPECT_FALSE(tree.search([](glm::dvec2, glm::dvec2) { return false; }, [&](std::uint32_t, glm::dvec2) { return ++visits < 5; }));
+  EXPECT_FALSE(tree.search([](glm::dvec2, glm::dvec2) { return false; },
+                           [&](std::uint32_t, glm::dvec2) { return ++visits < 5; }));
   EXPECT_EQ(visits, 5u);
-  EXPECT_TRUE(PointTree().search([](glm::dvec2, glm::dvec2) { return false; }, [](std::uint32_t, glm::dvec2) { return false; }));
+  EXPECT_TRUE(PointTree().search([](glm::dvec2, glm::dvec2) { return false; },
+                                 [](std::uint32_t, glm::dvec2) { return false; }));
 }
 
 }  // namespace

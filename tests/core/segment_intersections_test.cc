@@ -48,7 +48,8 @@ std::vector<Segment2> mixed(std::mt19937_64& rng, glm::dvec2 origin, std::size_t
     const double a = turn(rng);
     const glm::dvec2 dir{std::cos(a), std::sin(a)};
     if (k % 3 == 0) {
-      out.push_back({origin + dir * radius(rng), origin + (dir + glm::dvec2(step(rng), step(rng)) * 0.01) * radius(rng)});
+      out.push_back(
+          {origin + dir * radius(rng), origin + (dir + glm::dvec2(step(rng), step(rng)) * 0.01) * radius(rng)});
     } else if (k % 3 == 1) {
       const glm::dvec2 p = origin + glm::dvec2(at(rng), at(rng));
       out.push_back({p, p + glm::dvec2(step(rng), step(rng))});
