@@ -249,6 +249,20 @@ TEST(ConvexPartition, EarsAcrossRowsOfHolesLookAtFewVerticesEach) {
   }
 }
 
+// A random star-shaped plan's ears are spikes running every way, each as
+// thin as the gap between corners and tens of metres long. Each looks at
+// the reflex corners within a few of the tree's boxes of it: about the
+// square root of n when the boxes are about as long as wide; when they grew
+// into strips across the whole plan, O(n) (1,060 a corner at 65,536 corners,
+// 279 at 16,384, and 4,160 at 262,144: the partition took 21 s).
+TEST(ConvexPartition, ThinEarsOfARandomPlanLookAtFewVerticesEach) {
+  for (const int n : {4096, 16384}) {
+    PartitionWork work;
+    convex_partition({engine::random_star_shaped(n, 18)}, &work);
+    EXPECT_LT(work.vertices_examined, 100 * static_cast<std::size_t>(n)) << n << " corners";
+  }
+}
+
 TEST(ConvexPartition, HoleOutsideIsRefused) {
   EXPECT_THROW(convex_partition({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{5, 5}, {5, 6}, {6, 6}}}), std::invalid_argument);
 }
