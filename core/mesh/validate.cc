@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <sstream>
 #include <unordered_map>
 
@@ -113,40 +114,57 @@ void check_topology(const Mesh& mesh, const std::vector<std::uint32_t>& welded, 
   // Directed edges between welded positions: each must be used once, and
   // each undirected edge by exactly two faces, unless parts of the solid
   // touch along it (round_edge.h): as many faces each way, alternating round it.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<int>> directed;
+  // One array sorted by edge, each edge's faces in the order met (a tree map
+  // of a list an edge made a heap block per half-edge, in no order in memory).
+  struct Directed {
+    std::uint32_t from, to;
+    int face;
+  };
+  std::vector<Directed> directed;
+  directed.reserve(mesh.n_halfedges());
   std::vector<glm::dvec3> position(mesh.n_vertices());
   for (const auto v : mesh.vertices()) position[welded[v.idx()]] = to_glm(mesh.point(v));
   for (const auto f : mesh.faces())
     for (const auto h : mesh.fh_range(f))
-      directed[{welded[mesh.from_vertex_handle(h).idx()], welded[mesh.to_vertex_handle(h).idx()]}].push_back(f.idx());
+      directed.push_back({welded[mesh.from_vertex_handle(h).idx()], welded[mesh.to_vertex_handle(h).idx()], f.idx()});
+  const auto by_edge = [](const Directed& a, const Directed& b) {
+    return a.from != b.from ? a.from < b.from : a.to < b.to;
+  };
+  std::stable_sort(directed.begin(), directed.end(), by_edge);
   auto normal = [&](int f) {
     std::vector<glm::dvec3> pts;
     for (const auto v : mesh.fv_range(mesh.face_handle(f))) pts.push_back(to_glm(mesh.point(v)));
     return glm::normalize(newell_normal(pts));
   };
-  auto touching_along = [&](std::pair<std::uint32_t, std::uint32_t> edge, const std::vector<int>& ahead,
-                            const std::vector<int>& back) {
+  using Run = std::span<const Directed>;
+  auto touching_along = [&](const Directed& edge, Run ahead, Run back) {
     if (ahead.size() != back.size()) return false;
     std::vector<FaceAtEdge> round;
-    for (int f : ahead) round.push_back({normal(f), true});
-    for (int f : back) round.push_back({normal(f), false});
-    return twins_round_edge(position[edge.second] - position[edge.first], round).has_value();
+    for (const Directed& d : ahead) round.push_back({normal(d.face), true});
+    for (const Directed& d : back) round.push_back({normal(d.face), false});
+    return twins_round_edge(position[edge.to] - position[edge.from], round).has_value();
   };
   bool edges_ok = true, directions_ok = true;
-  for (const auto& [edge, faces] : directed) {
-    const auto back = directed.find({edge.second, edge.first});
-    const std::size_t total = faces.size() + (back == directed.end() ? 0 : back->second.size());
-    if (total > 2 && back != directed.end() && touching_along(edge, faces, back->second)) continue;
-    if (total > 2 && edge.first < edge.second) {
+  for (auto first = directed.begin(); first != directed.end();) {
+    const auto last = std::find_if(first, directed.end(), [&](const Directed& d) { return by_edge(*first, d); });
+    const Directed& edge = *first;
+    const Run faces(first, last);
+    const auto [back_first, back_last] = std::equal_range(directed.begin(), directed.end(),
+                                                          Directed{edge.to, edge.from, 0}, by_edge);
+    const Run back(back_first, back_last);
+    first = last;
+    const std::size_t total = faces.size() + back.size();
+    if (total > 2 && !back.empty() && touching_along(edge, faces, back)) continue;
+    if (total > 2 && edge.from < edge.to) {
       edges_ok = false;
-      problems.add("manifold", "edge between welded vertices " + std::to_string(edge.first) + " and " +
-                                   std::to_string(edge.second) + " has " + std::to_string(total) + " faces");
+      problems.add("manifold", "edge between welded vertices " + std::to_string(edge.from) + " and " +
+                                   std::to_string(edge.to) + " has " + std::to_string(total) + " faces");
     }
     if (faces.size() > 1) {
       directions_ok = false;
-      problems.add("oriented", "faces " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) +
-                                   " both run along the edge from welded vertex " + std::to_string(edge.first) +
-                                   " to " + std::to_string(edge.second) + ": one of them is flipped");
+      problems.add("oriented", "faces " + std::to_string(faces[0].face) + " and " + std::to_string(faces[1].face) +
+                                   " both run along the edge from welded vertex " + std::to_string(edge.from) +
+                                   " to " + std::to_string(edge.to) + ": one of them is flipped");
     }
   }
   r.manifold = r.closed && fans_ok && edges_ok;
@@ -283,13 +301,14 @@ std::pair<double, double> plane_interval(const Triangle& t, const std::array<dou
   return {lo, hi};
 }
 
+glm::dvec3 unit_normal(const Triangle& t) { return glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])); }
+
 // Two triangles intersect when each passes through the other's plane
 // (vertices strictly on both sides) and the two crossing segments, which lie
 // on the planes' common line, overlap by more than tol. Triangles that only
 // touch (a vertex or edge on the other's plane, or along a line) do not.
-bool triangles_intersect(const Triangle& a, const Triangle& b, double tol) {
-  const glm::dvec3 na = glm::normalize(glm::cross(a.p[1] - a.p[0], a.p[2] - a.p[0]));
-  const glm::dvec3 nb = glm::normalize(glm::cross(b.p[1] - b.p[0], b.p[2] - b.p[0]));
+// na and nb are the triangles' unit_normal.
+bool triangles_intersect(const Triangle& a, const Triangle& b, const glm::dvec3& na, const glm::dvec3& nb, double tol) {
   std::array<double, 3> da{}, db{};  // a's vertices against b's plane, and back
   for (int k = 0; k < 3; ++k) {
     da[k] = glm::dot(nb, a.p[k] - b.p[0]);
@@ -336,9 +355,10 @@ bool share_edge(const Triangle& a, const Triangle& b) {
 class IntersectionSearch {
  public:
   IntersectionSearch(const std::vector<Triangle>& tris, double tol, ValidationReport& r, Problems& problems)
-      : tris_(tris), tol_(tol), r_(r), problems_(problems), boxes_(tris.size()), fit_(tris.size()),
-        turned_(tris.size() >= kTurnedFrom) {
+      : tris_(tris), tol_(tol), r_(r), problems_(problems), boxes_(tris.size()), normals_(tris.size()),
+        fit_(tris.size()), turned_(tris.size() >= kTurnedFrom) {
     for (std::size_t i = 0; i < tris.size(); ++i) {
+      normals_[i] = unit_normal(tris[i]);
       glm::dvec3 a = tris[i].p[0], b = tris[i].p[0];
       for (const auto& p : tris[i].p) {
         a = glm::min(a, p);
@@ -422,7 +442,7 @@ class IntersectionSearch {
     ++r_.triangle_pairs_tested;
     const Triangle &a = tris_[i], &b = tris_[j];
     if (a.face == b.face || share_edge(a, b) || !overlap(boxes_[i], boxes_[j])) return;
-    if (!triangles_intersect(a, b, tol_)) return;
+    if (!triangles_intersect(a, b, normals_[i], normals_[j], tol_)) return;
     r_.self_intersection_free = false;
     ++found_;
     if (!reported_.insert({std::min(a.face, b.face), std::max(a.face, b.face)}).second) return;
@@ -727,7 +747,9 @@ class IntersectionSearch {
   ValidationReport& r_;
   Problems& problems_;
   std::vector<Box> boxes_;
-  std::vector<Fit> fit_;  // by triangle
+  // Made once: a sliver of a spiky plan's roof is in a hundred pairs.
+  std::vector<glm::dvec3> normals_;  // by triangle
+  std::vector<Fit> fit_;             // by triangle
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> split_;  // scratch of split_loose
   std::vector<double> keys_;          // by triangle, scratch of split_loose
