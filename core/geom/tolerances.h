@@ -63,9 +63,11 @@ struct SweepTolerances {
   // nested sweep of a step): the corners' own rules place such an event.
   double meeting_slack(double condition) const {
     if (!(condition < HUGE_VAL)) return 0.0;
-    return std::min(std::numeric_limits<double>::epsilon() * scale * condition,
-                    std::end(retry_relative)[-1] * scale);
+    return std::min(std::numeric_limits<double>::epsilon() * scale * condition, most_meeting_slack());
   }
+  // What meeting_slack gives at the most, whatever the planes: events further
+  // apart than this and delta3 are apart without working their slack out.
+  double most_meeting_slack() const { return std::end(retry_relative)[-1] * scale; }
   // Beyond this height the sweep is considered to run away (no closing event).
   double runaway_height() const { return 1e7 * scale; }
 

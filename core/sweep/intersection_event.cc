@@ -89,7 +89,7 @@ struct ClusterLists {
   std::vector<int> roots;                      // one collision per group joined through corners
   std::vector<Point> grid;                     // sorted: each cell's points are a run
   std::vector<int> group_of;                   // by root collision
-  std::vector<double> radius;                  // by collision: delta3, or its meeting's slack past that
+  std::vector<double> radius;                  // by collision: delta3, or its meeting's slack past that (-1: not yet)
   std::vector<std::vector<int>> spare;         // lists of groups a batch had and the next did not
   int find(int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -160,20 +160,21 @@ void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double 
 // Joins each root whose radius passes delta3 (a meeting rounding may have
 // put further off: State::meeting_slack) with the roots within it, and
 // within their own, through a grid of cells as wide as the largest radius.
-void join_uncertain(const std::vector<Collision>& cs, ClusterLists& lists, double delta3) {
+template <class Radius>
+void join_uncertain(const std::vector<Collision>& cs, ClusterLists& lists, double delta3, const Radius& radius) {
   double side = 0.0;
-  for (int i : lists.roots) side = std::max(side, lists.radius[i]);
+  for (int i : lists.roots) side = std::max(side, radius(i));
   if (side <= delta3) return;
   const std::vector<ClusterLists::Point>& grid = roots_in_cells(cs, lists, side);
   for (const ClusterLists::Point& a : grid) {
-    if (lists.radius[a.i] <= delta3) continue;
+    if (radius(a.i) <= delta3) continue;
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
         const long long x = a.x + dx, y = a.y + dy;
         for (auto b = std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0});
              b != grid.end() && b->x == x && b->y == y; ++b)
           if (lists.find(a.i) != lists.find(b->i) &&
-              glm::length(cs[a.i].p - cs[b->i].p) <= std::max(lists.radius[a.i], lists.radius[b->i]))
+              glm::length(cs[a.i].p - cs[b->i].p) <= std::max(radius(a.i), radius(b->i)))
             lists.join(b->i, a.i);
       }
   }
@@ -212,11 +213,24 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
     return;
   }
   const double delta3 = st.tol().position();
+  // A meeting's slack is worked out only where it decides: for a pair
+  // further apart than delta3 but not than any slack can reach, and for
+  // join_uncertain. Most pairs of a batch are within delta3 (one corner's
+  // collisions) or far apart (events of one height elsewhere in the plan).
   std::vector<double>& radius = lists.radius;
-  radius.clear();
-  for (const Collision& c : cs)
-    radius.push_back(std::max(delta3, st.meeting_slack(c.edges[0], c.edges[1], c.edges[2], c.corners())));
-  const auto near = [&](int i, int j) { return glm::length(cs[i].p - cs[j].p) <= std::max(radius[i], radius[j]); };
+  radius.assign(cs.size(), -1.0);
+  const auto radius_of = [&](int i) {
+    if (radius[i] < 0.0) {
+      const Collision& c = cs[i];
+      radius[i] = std::max(delta3, st.meeting_slack(c.edges[0], c.edges[1], c.edges[2], c.corners()));
+    }
+    return radius[i];
+  };
+  const double reach = std::max(delta3, st.tol().most_meeting_slack());
+  const auto near = [&](int i, int j) {
+    const double d = glm::length(cs[i].p - cs[j].p);
+    return d <= delta3 || (d <= reach && d <= std::max(radius_of(i), radius_of(j)));
+  };
   std::vector<int>& parent = lists.parent;
   parent.resize(cs.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -236,7 +250,7 @@ void cluster(const State& st, const std::vector<Collision>& cs, ClusterLists& li
     if (lists.find(i) == i) roots.push_back(i);
   if (roots.size() > kPairwiseUpTo) {
     join_by_grid(cs, lists, delta3);
-    join_uncertain(cs, lists, delta3);
+    join_uncertain(cs, lists, delta3, radius_of);
   } else {
     for (std::size_t a = 0; a < roots.size(); ++a)
       for (std::size_t b = a + 1; b < roots.size(); ++b)
