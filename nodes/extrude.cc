@@ -43,8 +43,8 @@ void declare(NodeDecl& d) {
   const SweepBudget budget;
   par.max_vertices = d.param<std::int64_t>("max_vertices")
       .default_value(static_cast<std::int64_t>(budget.max_vertices)).range(0, 1e12)
-      .doc("refuse a footprint whose sweep makes more vertices, or more corners, than this (it runs away; 0: no "
-           "limit)")
+      .doc("refuse a footprint whose sweep makes more vertices, or more corners, or more events at one height, than "
+           "this (it runs away; 0: no limit)")
       .index();
   par.max_events = d.param<std::int64_t>("max_events")
       .default_value(static_cast<std::int64_t>(budget.max_events)).range(0, 1e15)

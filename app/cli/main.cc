@@ -86,7 +86,8 @@ void add_budget_options(CLI::App* cmd, BudgetSettings& budget) {
   const SweepBudget defaults;
   cmd->add_option_function<std::int64_t>(
          "--max-vertices", [&budget](std::int64_t n) { budget.max_vertices = n; },
-         "Refuse a footprint whose sweep makes more vertices, or more corners (0: no limit; default " +
+         "Refuse a footprint whose sweep makes more vertices, or more corners, or more events at one height (0: no "
+         "limit; default " +
              std::to_string(defaults.max_vertices) + ")")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{1'000'000'000'000}));
   cmd->add_option_function<std::int64_t>(

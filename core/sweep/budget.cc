@@ -35,6 +35,13 @@ void Budget::corners_exceeded(double z) const {
                          z, {});
 }
 
+void Budget::candidates_exceeded(double z) const {
+  throw SweepBudgetError("sweep: refused with over " + std::to_string(limits_.max_vertices) +
+                             " potential events at one height (the vertex budget bounds them too): the footprint "
+                             "makes the sweep run away; raise the budget (max_vertices) if it is really this large",
+                         z, {});
+}
+
 void Budget::events_exceeded(double z) const {
   throw SweepBudgetError("sweep: refused after " + std::to_string(limits_.max_events) +
                              " potential events (the event budget): the footprint makes the sweep run away; raise "

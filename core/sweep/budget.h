@@ -35,6 +35,14 @@ class Budget {
   void add_corner(double z) {
     if (++corners_ > limits_.max_vertices && limits_.max_vertices > 0) corners_exceeded(z);
   }
+  // A batch's candidates (every potential event at one height) are held at
+  // once, and so are their collisions: they too are held to the vertex limit.
+  // Where thousands of corners race through one point within delta2 (a
+  // jittered star's apex) each meets every plane there, a batch of corners
+  // times planes, many GB, that no other limit saw.
+  void hold_candidates(std::size_t n, double z) const {
+    if (n > limits_.max_vertices && limits_.max_vertices > 0) candidates_exceeded(z);
+  }
   void add_events(std::size_t n, double z) {
     events_ += n;
     if (events_ > limits_.max_events && limits_.max_events > 0) events_exceeded(z);
@@ -57,6 +65,7 @@ class Budget {
   static double thread_cpu_seconds();
   [[noreturn]] void vertices_exceeded(double z) const;
   [[noreturn]] void corners_exceeded(double z) const;
+  [[noreturn]] void candidates_exceeded(double z) const;
   [[noreturn]] void events_exceeded(double z) const;
   [[noreturn]] void time_exceeded(double z) const;
 

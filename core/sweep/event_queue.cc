@@ -524,6 +524,7 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
       if (closes_here(st, out[at])) out[at].corner = kNone;
     }
     drain(st, i, c, through);
+    st.hold_candidates(out.size());
     st.check_time();
   }
   const auto dropped = std::remove_if(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(popped),

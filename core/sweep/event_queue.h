@@ -60,6 +60,12 @@ class EventQueue {
   void schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved = {});
   // Queues only the event of corner c with its next corner.
   void schedule_edge_event(State& st, int c);
+  // Whether a corner made by a collision of the planes of `resolved` meets
+  // edge's plane at height `at` because of it: one of them, no higher than
+  // `near` (just above where it was made).
+  static bool met_where_made(const std::vector<int>& resolved, int edge, double at, double near) {
+    return at <= near && std::find(resolved.begin(), resolved.end(), edge) != resolved.end();
+  }
   // Whether corner c's splits were listed by the rule in force now: once a
   // plane leans out, convex corners split too, and corners meet planes from
   // outside.
@@ -189,8 +195,7 @@ class EventQueue {
   // the corner's own edges, nor where the collision that made the corner put it.
   static bool queues(const SplitList& list, double at, int edge) {
     if (edge == list.prev_edge || edge == list.next_edge) return false;
-    // A corner made by a collision with this edge meets it there because of it.
-    return !(at <= list.near && std::find(list.resolved.begin(), list.resolved.end(), edge) != list.resolved.end());
+    return !met_where_made(list.resolved, edge, at, list.near);
   }
   // The height a list's split is queued at: not below where it was listed.
   static double queued_at(const SplitList& list, const Split& s) { return std::max(s.at, list.z); }

@@ -1199,10 +1199,11 @@ class LaterGroups {
   // A member taken out of its cluster to wait for its own height.
   void waits(int m) { lists_.waits[m] = 1; }
 
-  // The collapsing spans of later groups that corner n, made in this batch,
-  // runs into within the instant (up to `until`) below the group: the span's
-  // first corner and the height it meets the span's edge, in `out`.
-  void splits_below(int n, double until, std::vector<std::pair<int, double>>& out) {
+  // The collapsing spans of later groups that corner n, made in this batch
+  // by a collision of the planes of `made_by`, runs into within the instant
+  // (up to `until`) below the group: the span's first corner and the height
+  // it meets the span's edge, in `out`.
+  void splits_below(int n, const std::vector<int>& made_by, double until, std::vector<std::pair<int, double>>& out) {
     if (!collapses_listed_) {
       collapses_listed_ = true;
       lists_.collapsing.clear();
@@ -1231,8 +1232,15 @@ class LaterGroups {
       const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];
       const Corner& s = st_.corners[c];
+      // As the queue lists its splits: not with its own edges, nor where the
+      // collision that made it put it. A plane of that collision meets the
+      // corner where it starts, and taken for a split there, resolved, it
+      // made the corner again, as often as the budget let it (jittered star
+      // 8,192 seed 11: corner (3005, 2823) and the end of edge 2980's span
+      // made, the same, at one point without end).
       if (meet[j] == HUGE_VAL || resolved(g) || !(meet[j] < first_of(g)) || !s.alive || s.next_edge == k.prev_edge ||
-          s.next_edge == k.next_edge)
+          s.next_edge == k.next_edge ||
+          EventQueue::met_where_made(made_by, s.next_edge, meet[j], k.base_z + st_.tol().height()))
         continue;
       out.push_back({c, meet[j]});
     }
@@ -1514,7 +1522,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       for (int n : rewired.back().made) {
         const Corner& k = st.corners[n];
         if (!k.alive || k.motion != Motion::Regular || !(st.any_outward || st.reflex(n))) continue;
-        later_groups.splits_below(n, instant + st.tol().simultaneous(), named);
+        later_groups.splits_below(n, rewired.back().edges, instant + st.tol().simultaneous(), named);
         for (const auto& [s, at] : named) {
           const int e = st.corners[s].next_edge;
           const Candidate c{at, st.position(n, at), n, kNone, e};

@@ -26,7 +26,7 @@ enum class Ambiguity { MaximizeVolume, MinimizeVolume };
 struct SweepBudget {
   // Vertices made by one attempt (nested sweeps included): corners, planes
   // and faces grow with them, so this bounds the engine's memory. The corners
-  // made are held to it apart.
+  // made, and the potential events held at one height, are held to it apart.
   std::size_t max_vertices = 10'000'000;
   // Potential events worked out by one attempt as its corners are listed: a
   // reflex corner lists one per live plane it meets, or among many thousands

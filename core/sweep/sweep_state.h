@@ -158,6 +158,10 @@ class State {
   void count_events(std::size_t n) const {
     if (budget_) budget_->add_events(n, height);
   }
+  // Refuses the sweep once a batch holds more than the budget's candidates.
+  void hold_candidates(std::size_t n) const {
+    if (budget_) budget_->hold_candidates(n, height);
+  }
   // Refuses the sweep once its time is up (called once per event batch, and
   // as a large batch is gathered and resolved).
   void check_time() const {

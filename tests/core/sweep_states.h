@@ -22,9 +22,9 @@ namespace procex::engine {
 constexpr Tolerances kStarTolerances{200.0, Tolerances::retry_relative[0]};
 
 inline State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol, const SweepOptions& options = {},
-             std::vector<double> slopes = {}) {
+             std::vector<double> slopes = {}, Budget* budget = nullptr) {
   if (slopes.empty()) slopes.assign(points.size(), 1.0);
-  State st(tol, options);
+  State st(tol, options, budget);
   FaceGroup base;
   base.kind = FaceKind::Base;
   st.base_face = 0;
@@ -42,6 +42,19 @@ inline std::vector<glm::dvec2> star(int n) {
   for (int i = 0; i < n; ++i) {
     const double r = (i % 2 == 0 ? 100.0 : 90.0) + 1e-3 * std::sin(12.9898 * i);
     const double a = 2.0 * M_PI * i / n;
+    points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return points;
+}
+
+// A star of n corners with radii 100 m and `inner` alternating, each jittered
+// by up to a millimetre (seeded).
+inline std::vector<glm::dvec2> jittered_star(int n, unsigned seed, double inner) {
+  std::vector<glm::dvec2> points;
+  for (int k = 0; k < n; ++k) {
+    seed = seed * 1103515245u + 12345u;
+    const double jitter = 1e-3 * (static_cast<double>(seed >> 16 & 0x7fff) / 16384.0 - 1.0);
+    const double r = (k % 2 ? inner : 100.0) + jitter, a = 2 * M_PI * k / n;
     points.push_back({r * std::cos(a), r * std::sin(a)});
   }
   return points;
