@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/geom/error.h"
 #include "core/geom/footprint.h"
@@ -196,6 +198,38 @@ TEST(Validate, AnEdgeOfThreeFacesIsNotManifold) {
   const ValidationReport r = validate(mesh);
   EXPECT_FALSE(r.manifold);
   EXPECT_TRUE(mentions(r, "has 3 faces")) << ::testing::PrintToString(r.problems);
+}
+
+// Welded ids name each position by the order of its first vertex, and
+// positions are equal as numbers (-0.0 is 0.0), as when they were looked up in
+// a hash map: a box whose cap is flipped, the cap's corners copies of the
+// walls' written with -0.0 where the walls have 0.0, and a third page hinged
+// on a wall's edge through copies too. The problems are main's at 1272093.
+TEST(Validate, WeldedVerticesAreNamedInTheOrderOfTheirFirstCopy) {
+  Surface s = test::box({0, 0, 0}, {1, 1, 1});
+  s.faces.erase(s.faces.begin() + 1);
+  Mesh mesh = build_mesh(s);
+  std::vector<Mesh::VertexHandle> copies;
+  for (int v : {4, 5, 6, 7}) {
+    Mesh::Point p = mesh.point(Mesh::VertexHandle(v));  // a copy: add_vertex may reallocate the points
+    for (int k = 0; k < 3; ++k)
+      if (p[k] == 0.0) p[k] = -0.0;
+    copies.push_back(mesh.add_vertex(p));
+  }
+  std::reverse(copies.begin(), copies.end());
+  ASSERT_TRUE(mesh.add_face(copies).is_valid());
+  const auto a = mesh.add_vertex({0, 0, 0}), b = mesh.add_vertex({-0.0, 0, 1});
+  ASSERT_TRUE(mesh.add_face(a, b, mesh.add_vertex({-1, -1, 0.5})).is_valid());
+  const ValidationReport r = validate(mesh);
+  const std::vector<std::string> welded(r.problems.end() - 6, r.problems.end());
+  EXPECT_EQ(welded, (std::vector<std::string>{
+                        "edge between welded vertices 0 and 4 has 3 faces",
+                        "faces 4 and 6 both run along the edge from welded vertex 0 to 4: one of them is flipped",
+                        "faces 4 and 5 both run along the edge from welded vertex 4 to 7: one of them is flipped",
+                        "faces 1 and 5 both run along the edge from welded vertex 5 to 4: one of them is flipped",
+                        "faces 2 and 5 both run along the edge from welded vertex 6 to 5: one of them is flipped",
+                        "faces 3 and 5 both run along the edge from welded vertex 7 to 6: one of them is flipped"}));
+  EXPECT_EQ(r.problems.size(), 17u) << ::testing::PrintToString(r.problems);
 }
 
 // Two boxes touching along an edge, each with its own copies of the edge's
