@@ -290,13 +290,14 @@ std::size_t EventQueue::hold_next(int i, double through) {
     // the lowest it queues.
     const std::size_t more = 2 + list.resolved.size();
     t.index.extend(t.planes(), list.size, list.p);
-    worked = t.index.lowest(t.planes(),
-                            {list.p, list.v, list.z, list.earliest, list.cap, list.outward, list.size, list.last},
-                            list.hold + more, found_, index_scratch_);
+    worked = t.index.lowest(
+        t.planes(), {list.p, list.v, list.z, list.earliest, list.cap, list.outward, list.size, list.last, through},
+        list.hold + more, found_, found_within_, index_scratch_);
     if (worked) {
       every = found_.size() < list.hold + more;
-      for (const Split& s : found_)
-        if (queues(list, s.at, s.edge)) offer(list, s, through);
+      for (const auto* found : {&found_within_, &found_})
+        for (const Split& s : *found)
+          if (queues(list, s.at, s.edge)) offer(list, s, through);
     }
   }
   if (!worked) worked = find_splits(list, through);

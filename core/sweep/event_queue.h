@@ -246,7 +246,7 @@ class EventQueue {
   PlaneIndex::Scratch index_scratch_;
   std::vector<double> at_;  // scratch of find_splits
   std::vector<std::uint32_t> hits_;
-  std::vector<Split> found_;  // of the index's search
+  std::vector<Split> found_, found_within_;  // of the index's search: above and within the batch
   // hold_next's: the lowest offered above its `through`, in order, and how
   // many were offered there.
   std::vector<Split> lowest_;

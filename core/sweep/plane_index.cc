@@ -135,23 +135,27 @@ void PlaneIndex::extend(const Planes& planes, std::size_t size, glm::dvec2 near)
   }
 }
 
+std::pair<double, double> PlaneIndex::rates(const Tree& t, const Node& n, const Query& q) {
+  double vx_lo, vx_hi, vy_lo, vy_hi;
+  scaled(n.nx_lo, n.nx_hi, q.v.x, vx_lo, vx_hi);
+  scaled(n.ny_lo, n.ny_hi, q.v.y, vy_lo, vy_hi);
+  const double slack = kSlack * (std::abs(q.v.x) + std::abs(q.v.y) + t.k_abs);
+  return {vx_lo + vy_lo - n.k_hi - slack, vx_hi + vy_hi - n.k_lo + slack};
+}
+
 double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q, double h0) {
   // The corner's signed distance to a plane's line, n.(p - origin) - c' - k z,
   // and the rate it changes at, n.v - k, over the node's ranges.
   const glm::dvec2 r = q.p - t.origin;
-  double ax_lo, ax_hi, ay_lo, ay_hi, vx_lo, vx_hi, vy_lo, vy_hi, kz_lo, kz_hi;
+  double ax_lo, ax_hi, ay_lo, ay_hi, kz_lo, kz_hi;
   scaled(n.nx_lo, n.nx_hi, r.x, ax_lo, ax_hi);
   scaled(n.ny_lo, n.ny_hi, r.y, ay_lo, ay_hi);
-  scaled(n.nx_lo, n.nx_hi, q.v.x, vx_lo, vx_hi);
-  scaled(n.ny_lo, n.ny_hi, q.v.y, vy_lo, vy_hi);
   scaled(n.k_lo, n.k_hi, q.z, kz_lo, kz_hi);
   const double slack_d =
       kSlack * (std::abs(q.p.x) + std::abs(q.p.y) + std::abs(r.x) + std::abs(r.y) + t.c_abs + t.k_abs * std::abs(q.z));
-  const double slack_r = kSlack * (std::abs(q.v.x) + std::abs(q.v.y) + t.k_abs);
   const double d_lo = ax_lo + ay_lo - n.c_hi - kz_hi - slack_d;
   const double d_hi = ax_hi + ay_hi - n.c_lo - kz_lo + slack_d;
-  const double r_lo = vx_lo + vy_lo - n.k_hi - slack_r;
-  const double r_hi = vx_hi + vy_hi - n.k_lo + slack_r;
+  const auto [r_lo, r_hi] = rates(t, n, q);
   // Coefficients not all finite bound nothing: such a node is visited first.
   if (std::isnan(d_lo + d_hi + r_lo + r_hi)) return -HUGE_VAL;
   // Planes of one direction and slope (the collinear edges of a grid plan)
@@ -172,7 +176,7 @@ double PlaneIndex::bound(const Tree& t, const Node& n, const Query& q, double h0
     // Or seen from where the corner is at the last queued: every line
     // already behind it there was met below.
     if (q.after.at > q.z) {
-      const auto [a_lo, a_hi] = distance_at(t, n, q, q.after.at);
+      const double a_hi = distance_at(t, n, q, q.after.at).second;
       if (a_hi < 0.0) {
         const double met = q.after.at + a_hi / -r_lo;
         if (met + (met - q.z) * 1e-9 + kSlack * std::abs(q.after.at) < q.after.at) return HUGE_VAL;
@@ -226,8 +230,10 @@ double PlaneIndex::bound_from(const Tree& t, const Node& n, const Query& q, doub
 }
 
 std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query& q, std::size_t hold,
-                                              std::vector<Meeting>& out, Scratch& scratch) {
+                                              std::vector<Meeting>& out, std::vector<Meeting>& within,
+                                              Scratch& scratch) {
   out.clear();
+  within.clear();
   ++searches_;
   std::size_t tested = 0;
   const MeetingEarlier earlier{q.z};
@@ -238,6 +244,10 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
     ++worked;
     const Meeting s{at, edge};
     if (after && !earlier(q.after, s)) return;
+    if (std::max(at, q.z) <= q.through) {
+      within.push_back(s);
+      return;
+    }
     if (out.size() < hold) {
       out.push_back(s);
       std::push_heap(out.begin(), out.end(), earlier);
@@ -272,7 +282,8 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
   while (!open.empty()) {
     const auto [b, id] = open.front();
     // Every meeting left is queued at or above b: those held are the lowest
-    // once b is past the highest of them (at b itself, a lower edge may wait).
+    // once b is past the highest of them (at b itself, a lower edge may wait),
+    // which is above q.through.
     const double top = out.size() == hold ? std::max(out.front().at, q.z) : HUGE_VAL;
     if (b > top) break;
     std::pop_heap(open.begin(), open.end(), later);
@@ -282,7 +293,12 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
     // Bounded again from where the corner is at the highest held meeting:
     // lines through a star's centre all pass near the corner there, however
     // their normals differ, where from the corner's own place they did not.
-    if (top != HUGE_VAL && bound(t, node, q, top) > top) continue;
+    // The bound from the corner's own place is b, no higher than top (or
+    // -HUGE_VAL: coefficients not all finite, which bound nothing).
+    if (top != HUGE_VAL && top > q.z && b != -HUGE_VAL) {
+      const auto [r_lo, r_hi] = rates(t, node, q);
+      if (bound_from(t, node, q, top, r_lo, r_hi) > top) continue;
+    }
     if (node.left != kLeaf) {
       const double h0 = top != HUGE_VAL ? top : b;
       push(id >> 32, node.left, h0);
@@ -291,7 +307,7 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
     }
     const std::size_t n = node.end - node.begin;
     tested += n;
-    if (tested > std::max(q.size / kGiveUpPast, kGiveUpLeast)) {
+    if (tested > std::max(q.size / kGiveUpPast, kGiveUpLeast) + within.size()) {
       ++given_up_;
       // Not searched again: its trees would only hold memory (as much as the
       // planes again, for as long as any list of the set lives).

@@ -53,12 +53,15 @@ class PlaneIndex {
   // A corner at p at height z moving by v per unit of height, tested against
   // the first `size` planes as meeting_heights tests them; only meetings
   // after `after` (MeetingEarlier) count, unless its edge is negative.
+  // Every meeting queued at or below `through` is wanted (a batch takes them
+  // all at once).
   struct Query {
     glm::dvec2 p, v;
     double z, earliest, cap;
     bool outward;
     std::size_t size;
     Meeting after;
+    double through;
   };
   // Scratch space of lowest(), kept by the caller across searches.
   struct Scratch {
@@ -72,15 +75,17 @@ class PlaneIndex {
   void extend(const Planes& planes, std::size_t size, glm::dvec2 near);
   std::size_t indexed() const { return indexed_; }
 
-  // The `hold` lowest meetings after q.after (MeetingEarlier), into `out`
-  // (unordered), each plane's once. Returns how many meetings it worked out,
-  // or nothing where the search gives up: past a sixteenth of the planes the
-  // bounds do not tell the lowest apart (a star's reflex corner meets almost
-  // every line near the star's centre, within a millimetre of one height),
-  // and testing every plane costs less (a node's bounds and the heap cost a
-  // few plane tests each, which run side by side).
+  // The meetings after q.after (MeetingEarlier) queued at or below
+  // q.through, into `within`, and the `hold` lowest above it, into `out`
+  // (each unordered), each plane's once. Returns how many meetings it worked
+  // out, or nothing where the search gives up: past a sixteenth of the planes
+  // besides those it hands out within, the bounds do not tell the lowest apart
+  // (a star's reflex corner meets almost every line near the star's centre,
+  // within a millimetre of one height), and testing every plane costs less (a
+  // node's bounds and the heap cost a few plane tests each, which run side by
+  // side).
   std::optional<std::size_t> lowest(const Planes& planes, const Query& q, std::size_t hold, std::vector<Meeting>& out,
-                                    Scratch& scratch);
+                                    std::vector<Meeting>& within, Scratch& scratch);
   // Whether searching is worth it: not once a quarter of the searches gave up.
   bool worth_searching() const { return searches_ < kTrial || 4 * given_up_ < searches_; }
 
@@ -108,6 +113,9 @@ class PlaneIndex {
   // where none of them can meet the corner or all meet it before q.after;
   // the higher of the bounds taken at the corner's height and at h0.
   static double bound(const Tree& t, const Node& n, const Query& q, double h0);
+  // The rates the corner's distance to the node's planes changes at, n.v - k,
+  // bounded with their rounding.
+  static std::pair<double, double> rates(const Tree& t, const Node& n, const Query& q);
   // The same seen from where the corner is at height h0 > q.z, given the
   // planes' rates of approach [r_lo, r_hi]; -HUGE_VAL where it bounds nothing.
   // The corner's distance to the node's planes' lines where it is at height

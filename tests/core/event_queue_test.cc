@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <vector>
@@ -29,6 +30,7 @@
 
 #include "core/sweep/driver.h"
 #include "core/sweep/intersection_event.h"
+#include "core/sweep/meeting_heights.h"
 #include "core/sweep/profile_event.h"
 #include "tests/core/sweep_states.h"
 
@@ -349,6 +351,58 @@ TEST(EventQueue, IndexedListsTellApartLinesThroughOnePoint) {
       expect_indexed_sweep_as_every_edge(random_star_shaped(16000, 5), EventQueue::kIndexedFrom);
   EXPECT_LT(20 * indexed, every) << indexed << " splits worked out through the index, " << every
                                  << " testing every edge";
+}
+
+// A corner crossing the centre of a random star-shaped plan meets nearly
+// every line there within one batch (at 262,144 corners, tens of thousands
+// each): the batch takes them all at once, so one search hands out every
+// meeting up to the batch's top besides the lowest few above it. Worked out a
+// few lowest at a time, each search went through the lines met before again
+// and past a sixteenth of the planes gave up for one testing every plane.
+TEST(EventQueue, IndexHandsOutABatchsMeetingsInOneSearch) {
+  constexpr std::size_t kPlanes = 20000, kHold = 16;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), offset(-0.01, 0.01);
+  std::vector<int> edge(kPlanes);
+  std::vector<double> nx(kPlanes), ny(kPlanes), k(kPlanes, 1.0), c(kPlanes);
+  for (std::size_t j = 0; j < kPlanes; ++j) {
+    const double a = angle(rng);
+    edge[j] = static_cast<int>(j);
+    nx[j] = std::cos(a);
+    ny[j] = std::sin(a);
+    c[j] = offset(rng);
+  }
+  const PlaneIndex::Planes planes{edge.data(), nx.data(), ny.data(), k.data(), c.data()};
+  // 60 m out, at 1,000 m per m of rise straight through the lines' point.
+  const glm::dvec2 p{60.0, 0.3}, v{-1000.0, 0.0};
+  std::vector<double> meet(kPlanes);
+  meeting_heights(nx.data(), ny.data(), k.data(), c.data(), kPlanes, p, v, 0.0, -1e-9, HUGE_VAL, false, meet.data());
+  std::vector<Meeting> expected;
+  for (std::size_t j = 0; j < kPlanes; ++j)
+    if (meet[j] != HUGE_VAL) expected.push_back({meet[j], edge[j]});
+  const MeetingEarlier earlier{0.0};
+  std::sort(expected.begin(), expected.end(), earlier);
+  // A batch up to the middle meeting: half of those the corner meets.
+  const double through = expected[expected.size() / 2].at;
+  const std::size_t within_expected = expected.size() / 2 + 1;
+  ASSERT_GT(within_expected, kPlanes / 5);
+  PlaneIndex index;
+  index.extend(planes, kPlanes, p);
+  std::vector<Meeting> held, within;
+  PlaneIndex::Scratch scratch;
+  const std::optional<std::size_t> worked = index.lowest(
+      planes, {p, v, 0.0, -1e-9, HUGE_VAL, false, kPlanes, {0.0, kNone}, through}, kHold, held, within, scratch);
+  ASSERT_TRUE(worked) << "gave up";
+  ASSERT_EQ(within.size(), within_expected);
+  ASSERT_EQ(held.size(), kHold);
+  std::sort(within.begin(), within.end(), earlier);
+  std::sort(held.begin(), held.end(), earlier);
+  for (std::size_t j = 0; j < within.size() + held.size(); ++j) {
+    const Meeting& got = j < within.size() ? within[j] : held[j - within.size()];
+    ASSERT_TRUE(got.at == expected[j].at && got.edge == expected[j].edge) << "meeting " << j;
+  }
+  // Those it hands out and a few more: testing every plane works out twice as many.
+  EXPECT_LT(4 * *worked, 5 * (within.size() + held.size())) << *worked << " meetings worked out";
 }
 
 // Planes of one line (the edges between a comb's teeth) are never met by a
