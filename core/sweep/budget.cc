@@ -21,41 +21,43 @@ double Budget::thread_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-void Budget::vertices_exceeded(double z) const {
-  throw SweepBudgetError("sweep: refused after " + std::to_string(limits_.max_vertices) +
-                             " vertices (the vertex budget): the footprint makes the sweep run away; raise the "
-                             "budget (max_vertices) if it is really this large",
+namespace {
+
+// Every refusal names the limit passed (`passed`: "after 300 vertices (the
+// vertex budget)") and the knob that raises it.
+[[noreturn]] void refuse(const std::string& passed, const char* knob, const char* why_large, double z) {
+  throw SweepBudgetError("sweep: refused " + passed + ": the footprint makes the sweep run away; raise the budget (" +
+                             knob + ") if it is really this " + why_large,
                          z, {});
+}
+
+}  // namespace
+
+void Budget::vertices_exceeded(double z) const {
+  refuse("after " + std::to_string(limits_.max_vertices) + " vertices (the vertex budget)", "max_vertices", "large",
+         z);
 }
 
 void Budget::corners_exceeded(double z) const {
-  throw SweepBudgetError("sweep: refused after " + std::to_string(limits_.max_vertices) +
-                             " corners (the vertex budget bounds them too): the footprint makes the sweep run away; "
-                             "raise the budget (max_vertices) if it is really this large",
-                         z, {});
+  refuse("after " + std::to_string(limits_.max_vertices) + " corners (the vertex budget bounds them too)",
+         "max_vertices", "large", z);
 }
 
 void Budget::candidates_exceeded(double z) const {
-  throw SweepBudgetError("sweep: refused with over " + std::to_string(limits_.max_vertices) +
-                             " potential events at one height (the vertex budget bounds them too): the footprint "
-                             "makes the sweep run away; raise the budget (max_vertices) if it is really this large",
-                         z, {});
+  refuse("with over " + std::to_string(limits_.max_vertices) +
+             " potential events at one height (the vertex budget bounds them too)",
+         "max_vertices", "large", z);
 }
 
 void Budget::events_exceeded(double z) const {
-  throw SweepBudgetError("sweep: refused after " + std::to_string(limits_.max_events) +
-                             " potential events (the event budget): the footprint makes the sweep run away; raise "
-                             "the budget (max_events) if it is really this large",
-                         z, {});
+  refuse("after " + std::to_string(limits_.max_events) + " potential events (the event budget)", "max_events",
+         "large", z);
 }
 
 void Budget::time_exceeded(double z) const {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%g", limits_.max_seconds);
-  throw SweepBudgetError("sweep: refused after " + std::string(seconds) +
-                             " CPU seconds (the time budget): the footprint makes the sweep run away; raise the "
-                             "budget (max_seconds) if it is really this slow",
-                         z, {});
+  refuse("after " + std::string(seconds) + " CPU seconds (the time budget)", "max_seconds", "slow", z);
 }
 
 }  // namespace procex::engine
