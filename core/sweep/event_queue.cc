@@ -181,7 +181,7 @@ inline void EventQueue::offer(const SplitList& list, const Split& s, double thro
   }
   ++after_through_;
   // Most splits are above the highest held: one comparison turns them away.
-  if (lowest_.size() == list.hold && !SplitEarlier{list.z}(s, lowest_.back())) return;
+  if (lowest_.size() == list.hold && !SplitEarlier{list.path.z}(s, lowest_.back())) return;
   hold_among_lowest(list, s);
 }
 
@@ -189,7 +189,7 @@ void EventQueue::hold_among_lowest(const SplitList& list, const Split& s) {
   // The highest held drops out when all are held.
   if (lowest_.size() < list.hold) lowest_.emplace_back();
   const auto last = lowest_.end() - 1;
-  const auto at = std::upper_bound(lowest_.begin(), last, s, SplitEarlier{list.z});
+  const auto at = std::upper_bound(lowest_.begin(), last, s, SplitEarlier{list.path.z});
   std::move_backward(at, last, lowest_.end());
   *at = s;
 }
@@ -202,8 +202,7 @@ std::size_t EventQueue::find_splits(const SplitList& list, double through) {
   constexpr std::size_t kRun = 8;
   const std::size_t padded = (n + kRun - 1) / kRun * kRun;
   at_.resize(padded);
-  meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, list.p, list.v, list.z, list.earliest,
-                  list.cap, list.outward, at_.data());
+  meeting_heights(t.nx.data(), t.ny.data(), t.k.data(), t.c.data(), n, list.path, at_.data());
   std::fill(at_.begin() + static_cast<std::ptrdiff_t>(n), at_.end(), HUGE_VAL);
   const double* meet = at_.data();
   // The few that meet, gathered without a branch per edge; in a capped
@@ -220,7 +219,7 @@ std::size_t EventQueue::find_splits(const SplitList& list, double through) {
     }
   }
   // Those queued already: up to the last, and as many equal to it as were queued.
-  const SplitEarlier earlier{list.z};
+  const SplitEarlier earlier{list.path.z};
   std::size_t same = list.same, worked = 0;
   for (std::size_t h = 0; h < m; ++h) {
     const std::size_t j = hits_[h];
@@ -254,14 +253,16 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   SplitList& list = lists_[i];
   list.targets = std::move(targets);
   list.size = size;
-  list.z = st.height;
-  list.p = st.position(c, list.z);
-  list.v = k.velocity;
-  list.earliest = list.z - st.tol().height();
-  list.near = list.z + st.tol().height();
+  list.path.z = st.height;
+  list.path.p = st.position(c, list.path.z);
+  list.path.v = k.velocity;
+  list.path.earliest = list.path.z - st.tol().height();
+  list.near = list.path.z + st.tol().height();
   // Nothing above the cap is ever resolved.
-  list.cap = st.options().max_height.value_or(HUGE_VAL);
-  list.outward = st.any_outward;
+  list.path.cap = st.options().max_height.value_or(HUGE_VAL);
+  list.path.outward = st.any_outward;
+  list.path.on = st.tol().position();
+  list.path.along = st.tol().relative;
   list.prev_edge = k.prev_edge;
   list.next_edge = k.next_edge;
   list.resolved = resolved;
@@ -282,16 +283,16 @@ std::size_t EventQueue::hold_next(int i, double through) {
   after_through_ = 0;
   std::optional<std::size_t> worked;
   bool every = true;  // every split not yet queued was offered
-  if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(list.p.x) &&
-      std::isfinite(list.p.y) && std::isfinite(list.v.x) && std::isfinite(list.v.y) && std::isfinite(list.z)) {
+  if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(list.path.p.x) &&
+      std::isfinite(list.path.p.y) && std::isfinite(list.path.v.x) && std::isfinite(list.path.v.y) && std::isfinite(list.path.z)) {
     // The live edges are each listed once, so the splits not queued yet are
     // those after the last queued. Of the lowest of them, the list does not
     // queue at most its two edges' and its collision's: as many more hold
     // the lowest it queues.
     const std::size_t more = 2 + list.resolved.size();
-    t.index.extend(t.planes(), list.size, list.p);
+    t.index.extend(t.planes(), list.size, list.path.p);
     worked = t.index.lowest(
-        t.planes(), {list.p, list.v, list.z, list.earliest, list.cap, list.outward, list.size, list.last, through},
+        t.planes(), {list.path, list.size, list.last, through},
         list.hold + more, found_, found_within_, index_scratch_);
     if (worked) {
       every = found_.size() < list.hold + more;
@@ -337,7 +338,7 @@ void EventQueue::advance(int i, int c) {
 void EventQueue::note_queued(SplitList& list, const Split& s) {
   // A list queues its splits lowest first, except those drain() takes in one
   // pass, unordered: the last is the highest, and `same` counts its equals.
-  const SplitEarlier earlier{list.z};
+  const SplitEarlier earlier{list.path.z};
   if (list.last.edge == kNone || earlier(list.last, s)) {
     list.last = s;
     list.same = 1;

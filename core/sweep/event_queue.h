@@ -142,10 +142,8 @@ class EventQueue {
   struct SplitList {
     std::shared_ptr<const Targets> targets;
     std::size_t size = 0;  // the first `size` of targets
-    glm::dvec2 p{0.0}, v{0.0};
-    double z = 0.0;  // the sweep plane's height when listed
-    double earliest = 0.0, near = 0.0, cap = 0.0;
-    bool outward = false;
+    CornerPath path;  // at the sweep plane's height when listed
+    double near = 0.0;
     int prev_edge = kNone, next_edge = kNone;
     std::vector<int> resolved;  // edges of the collision that made the corner
     std::vector<Split> splits;  // the lowest not yet queued, lowest last
@@ -198,7 +196,7 @@ class EventQueue {
     return !met_where_made(list.resolved, edge, at, list.near);
   }
   // The height a list's split is queued at: not below where it was listed.
-  static double queued_at(const SplitList& list, const Split& s) { return std::max(s.at, list.z); }
+  static double queued_at(const SplitList& list, const Split& s) { return std::max(s.at, list.path.z); }
   // Puts the lowest split of list i (of corner c) in the queue, or frees the list.
   void advance(int i, int c);
   // Notes that list i queued split s: its last, and how many equal to it.

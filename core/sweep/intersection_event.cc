@@ -1226,8 +1226,9 @@ class LaterGroups {
     std::vector<double>& meet = lists_.meet;
     meet.resize(lists_.collapsing.size());
     const PlaneColumns& planes = lists_.planes;
-    meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), k.base,
-                    k.velocity, k.base_z, k.base_z, until, st_.any_outward, meet.data());
+    const CornerPath path{k.base, k.velocity, k.base_z, k.base_z, until, st_.any_outward, st_.tol().position(),
+                          st_.tol().relative};
+    meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), path, meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {
       const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];

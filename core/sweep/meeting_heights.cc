@@ -8,9 +8,13 @@ namespace procex::engine {
 // multiply, divide and compare round the same at any width, and no fused
 // multiply-add is enabled, so every width gives the same bits).
 [[gnu::target_clones("avx2", "default")]] void meeting_heights(const double* nx, const double* ny, const double* kk,
-                                                               const double* cc, std::size_t n, glm::dvec2 p,
-                                                               glm::dvec2 v, double z, double earliest, double cap,
-                                                               bool outward, double* meet) {
+                                                               const double* cc, std::size_t n, const CornerPath& path,
+                                                               double* meet) {
+  // Copied: meet[] could alias the path, which would keep the loop from vectorizing.
+  const glm::dvec2 p = path.p, v = path.v;
+  const double z = path.z, earliest = path.earliest, cap = path.cap, on = path.on, along = path.along;
+  const double speed = std::abs(v.x) + std::abs(v.y);
+  const bool outward = path.outward;
   for (std::size_t j = 0; j < n; ++j) {
     // Signed distance from the edge's line changes at `rate`: a corner inside
     // meets it when the distance falls to zero, a corner of another polygon
@@ -20,7 +24,8 @@ namespace procex::engine {
     const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
     // A meeting point below the sweep plane means the planes diverge from here.
     const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    meet[j] = (meets & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
+    const bool runs_along = (std::abs(distance) <= on) & (std::abs(rate) <= along * (speed + std::abs(kk[j])));
+    meet[j] = (meets & !runs_along & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
   }
 }
 

@@ -259,7 +259,7 @@ std::optional<std::size_t> PlaneIndex::lowest(const Planes& planes, const Query&
   };
   const auto test = [&](const double* nx, const double* ny, const double* k, const double* c, std::size_t n) {
     scratch.meet.resize(n);
-    meeting_heights(nx, ny, k, c, n, q.p, q.v, q.z, q.earliest, q.cap, q.outward, scratch.meet.data());
+    meeting_heights(nx, ny, k, c, n, q, scratch.meet.data());
   };
   if (q.size > indexed_) {
     const std::size_t n = q.size - indexed_;

@@ -25,6 +25,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/sweep/meeting_heights.h"
+
 namespace procex::engine {
 
 // Where a corner meets an edge's plane.
@@ -55,10 +57,7 @@ class PlaneIndex {
   // after `after` (MeetingEarlier) count, unless its edge is negative.
   // Every meeting queued at or below `through` is wanted (a batch takes them
   // all at once).
-  struct Query {
-    glm::dvec2 p, v;
-    double z, earliest, cap;
-    bool outward;
+  struct Query : CornerPath {
     std::size_t size;
     Meeting after;
     double through;

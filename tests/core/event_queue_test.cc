@@ -376,7 +376,8 @@ TEST(EventQueue, IndexHandsOutABatchsMeetingsInOneSearch) {
   // 60 m out, at 1,000 m per m of rise straight through the lines' point.
   const glm::dvec2 p{60.0, 0.3}, v{-1000.0, 0.0};
   std::vector<double> meet(kPlanes);
-  meeting_heights(nx.data(), ny.data(), k.data(), c.data(), kPlanes, p, v, 0.0, -1e-9, HUGE_VAL, false, meet.data());
+  const CornerPath path{p, v, 0.0, -1e-9, HUGE_VAL, false};
+  meeting_heights(nx.data(), ny.data(), k.data(), c.data(), kPlanes, path, meet.data());
   std::vector<Meeting> expected;
   for (std::size_t j = 0; j < kPlanes; ++j)
     if (meet[j] != HUGE_VAL) expected.push_back({meet[j], edge[j]});
@@ -391,7 +392,7 @@ TEST(EventQueue, IndexHandsOutABatchsMeetingsInOneSearch) {
   std::vector<Meeting> held, within;
   PlaneIndex::Scratch scratch;
   const std::optional<std::size_t> worked = index.lowest(
-      planes, {p, v, 0.0, -1e-9, HUGE_VAL, false, kPlanes, {0.0, kNone}, through}, kHold, held, within, scratch);
+      planes, {path, kPlanes, {0.0, kNone}, through}, kHold, held, within, scratch);
   ASSERT_TRUE(worked) << "gave up";
   ASSERT_EQ(within.size(), within_expected);
   ASSERT_EQ(held.size(), kHold);
@@ -403,6 +404,44 @@ TEST(EventQueue, IndexHandsOutABatchsMeetingsInOneSearch) {
   }
   // Those it hands out and a few more: testing every plane works out twice as many.
   EXPECT_LT(4 * *worked, 5 * (within.size() + held.size())) << *worked << " meetings worked out";
+}
+
+// A corner running along a wall meets no wall collinear with it. Far from the
+// origin the two walls' lines round apart by an ulp or so, and their meeting
+// was then wherever rounding put it: in a step's nested sweep a corner went
+// along one wall and split the next 4 delta2 below the step's top, where
+// nothing meets, and moved to (5e5, 5e6) the roof was another roof (angles
+// seed 8865, tests/data/generated_angles_8865.geojson). A wall turned off the
+// line by a milliradian is still met where it crosses.
+TEST(EventQueue, ACornerRunningAlongAPlaneDoesNotMeetItsCollinearNeighbour) {
+  constexpr double kScale = 20.0, kRelative = 1e-7;
+  std::mt19937_64 rng(8865);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), far(-5e6, 5e6);
+  const auto wall = [](glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 d = glm::normalize(b - a), n{-d.y, d.x};  // the inside on the left
+    return std::pair{n, glm::dot(n, a)};
+  };
+  for (int i = 0; i < 1000; ++i) {
+    const double a = angle(rng);
+    const glm::dvec2 d{std::cos(a), std::sin(a)}, start{far(rng), far(rng)};
+    // Edges start-mid and mid-end on one line; the corner leaves `end` along it, back towards mid.
+    const glm::dvec2 mid = start + 2.0 * d, end = mid + 1.0 * d;
+    const auto [n, c] = wall(start, mid);
+    const double nx[] = {n.x}, ny[] = {n.y}, k[] = {0.0}, cc[] = {c};
+    const CornerPath path{end, -d, 0.0, -kRelative * kScale, HUGE_VAL, false, kRelative * kScale, kRelative};
+    double meet = 0.0;
+    meeting_heights(nx, ny, k, cc, 1, path, &meet);
+    ASSERT_EQ(meet, HUGE_VAL) << "a corner at (" << end.x << ", " << end.y << ") running along the wall meets it at " << meet;
+    // Turned by a milliradian about a point 1.5 along the corner's way, the
+    // corner on its inside.
+    const double t = 1e-3;
+    const glm::dvec2 turned{d.x * std::cos(t) - d.y * std::sin(t), d.x * std::sin(t) + d.y * std::cos(t)};
+    const glm::dvec2 pivot = end - 1.5 * d;
+    const auto [m, e] = wall(pivot + turned, pivot - turned);
+    const double mx[] = {m.x}, my[] = {m.y}, ee[] = {e};
+    meeting_heights(mx, my, k, ee, 1, path, &meet);
+    ASSERT_NEAR(meet, 1.5, 1e-3) << "a corner at (" << end.x << ", " << end.y << ") and the turned wall";
+  }
 }
 
 // Planes of one line (the edges between a comb's teeth) are never met by a
