@@ -287,4 +287,11 @@ LoopSegments loop_segments(const std::vector<std::vector<glm::dvec2>>& loops) {
   return out;
 }
 
+std::optional<std::pair<std::size_t, std::size_t>> loop_crossing(const std::vector<glm::dvec2>& loop) {
+  const LoopSegments segs = loop_segments({loop});
+  const auto crossings = intersecting_segment_pairs(segs.segments, segs.next, 1);
+  if (crossings.empty()) return std::nullopt;
+  return crossings[0];
+}
+
 }  // namespace procex

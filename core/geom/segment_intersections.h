@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -52,5 +53,10 @@ struct LoopSegments {
   std::vector<std::size_t> first;
 };
 LoopSegments loop_segments(const std::vector<std::vector<glm::dvec2>>& loops);
+
+// The first two edges of a closed loop found to meet other than where one
+// follows the other (edge k runs from loop[k] to loop[k + 1]): none where the
+// loop is a simple polygon.
+std::optional<std::pair<std::size_t, std::size_t>> loop_crossing(const std::vector<glm::dvec2>& loop);
 
 }  // namespace procex

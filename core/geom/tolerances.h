@@ -41,7 +41,8 @@ struct SweepTolerances {
 
   // Where rounding makes a sweep fail at the default clustering distance, it
   // runs again with these, in order (a near-coincidence at one scale is
-  // usually clear at another); the output is checked closed each time.
+  // usually clear at another); the output is checked closed, and each face
+  // simple, each time.
   static constexpr double retry_relative[] = {1e-8, 1e-7, 1e-6, 1e-5};
 
   // Paper delta2: events whose heights differ by less than this form one cluster.

@@ -232,13 +232,11 @@ std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std:
       pieces.emplace_back(pts.size());
       for (std::uint32_t k = 0; k < pts.size(); ++k) pieces[0][k] = k;
     } else {
-      const LoopSegments segs = loop_segments({flat});
-      const auto crossings = intersecting_segment_pairs(segs.segments, segs.next, 1);
-      if (!crossings.empty()) {
+      if (const auto crossing = loop_crossing(flat)) {
         r.self_intersection_free = false;
         problems.add("self-intersection", "face " + std::to_string(f.idx()) + " is not a simple polygon: its edges " +
-                                              std::to_string(crossings[0].first) + " and " +
-                                              std::to_string(crossings[0].second) + " meet");
+                                              std::to_string(crossing->first) + " and " +
+                                              std::to_string(crossing->second) + " meet");
       }
       pieces = convex_partition({flat});
     }

@@ -18,6 +18,7 @@
 #include "core/sweep/cap_event.h"
 #include "core/sweep/driver.h"
 #include "core/sweep/plan_edit_event.h"
+#include "core/sweep/simple_faces.h"
 #include "core/sweep/spares.h"
 #include "core/sweep/surface_output.h"
 
@@ -168,6 +169,7 @@ Surface sweep_with(const Footprint& footprint, glm::dvec2 centre, const SweepOpt
   }
   Surface surface = engine::build_surface(st);
   engine::close_surface(surface);
+  engine::check_simple_faces(surface);
   surface.anchors = anchors.finish();
   surface.plan_edits = plan_edits.finish();
   return surface;

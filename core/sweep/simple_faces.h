@@ -1,0 +1,18 @@
+// The sweep's last check of its surface: every face a simple polygon.
+#pragma once
+
+#include "core/mesh/surface.h"
+
+namespace procex::engine {
+
+// Throws SweepError naming the face's source edge where a face of one loop
+// folds over itself. Events that lie closer together than rounding can order
+// at a clustering scale (the apex of a jittered star, hundreds of planes
+// through a millimetre) can leave a face whose boundary zigzags across
+// itself by micrometres: closed, and still not a solid. Thrown, it makes the
+// sweep try the next clustering scale, as a surface that does not close does.
+// A face with holes is split into simple pieces when the mesh is built, which
+// refuses one it cannot split.
+void check_simple_faces(const Surface& surface);
+
+}  // namespace procex::engine

@@ -1,0 +1,66 @@
+// Where rounding defeats one clustering scale, the sweep tries the next
+// (SweepTolerances::retry_relative), and what it checks each attempt's
+// surface for decides what counts as defeated: closed, and every face a
+// simple polygon (core/sweep/simple_faces.h). The jittered star of 82
+// vertices (radii 100 and 75.19 m, each moved by up to 1.7 um;
+// tests/data/star_fold_82.geojson) closed at the first scale with the face
+// of one spike edge zigzagging across itself by micrometres at the apex, and
+// that surface was returned: no solid, and nothing said so until the mesh
+// was validated. The tests here are of the retry itself, so a retry does not
+// fail them (tests/core/no_retry_listener.cc).
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/geom/error.h"
+#include "core/geom/prepare.h"
+#include "core/io/geojson.h"
+#include "core/mesh/surface.h"
+#include "core/sweep/simple_faces.h"
+#include "core/sweep/sweep.h"
+#include "tests/support/roof_properties.h"
+
+namespace procex::testing {
+namespace {
+
+TEST(SweepRetries, AFaceFoldedAtOneScaleIsSweptAgainAtTheNext) {
+  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/star_fold_82.geojson");
+  ASSERT_EQ(read.features.size(), 1u);
+  const Footprint fp = prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+  const Surface s = sweep(fp);
+  EXPECT_EQ(s.retries, 1);
+  EXPECT_EQ(s.tolerance_relative, 1e-7);
+  const std::vector<std::string> problems = check_valid_mesh(s);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+}
+
+// One face as the sweep's surface holds it, its points lifted onto the plane z = x.
+Surface one_face(const std::vector<glm::dvec2>& plan) {
+  Surface s;
+  SurfaceFace f;
+  f.source_edge = 7;
+  f.loops.emplace_back();
+  for (const glm::dvec2& p : plan) {
+    f.loops[0].push_back(static_cast<std::uint32_t>(s.vertices.size()));
+    s.vertices.push_back({p.x, p.y, p.x});
+  }
+  s.faces.push_back(f);
+  return s;
+}
+
+TEST(SweepRetries, AFaceWhoseBoundaryCrossesItselfIsRefusedNamingItsEdge) {
+  // An L: not convex, but simple.
+  EXPECT_NO_THROW(engine::check_simple_faces(one_face({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})));
+  // Its inner corner's lower leg run a micrometre through the first edge: edges 0 and 3 cross.
+  try {
+    engine::check_simple_faces(one_face({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, -1e-6}, {0, 2}}));
+    FAIL() << "a face crossing itself passed";
+  } catch (const SweepError& e) {
+    EXPECT_EQ(e.edge_ids(), std::vector<int>{7});
+    EXPECT_NE(std::string(e.what()).find("face 0 (of edge 7) folds over itself"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace procex::testing
