@@ -1,7 +1,7 @@
 // Jittered stars (class (c) of issue 12, tests/support/generators/): stars of
-// radii 100 and 90 m whose vertices are moved by up to a millimetre, so that
+// radii 100 and 40 to 95 m whose vertices are moved by 1 um to 1 cm, so that
 // thousands of events fall within micrometres of one height and the last
-// ones within a millimetre of one point. Every case must pass every property
+// ones within about the jitter of one point. Every case must pass every property
 // check_case applies, CGAL's skeleton included (inexact constructions above
 // kExactOracleVertices); a failure is printed when found and minimised by
 // halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices

@@ -1,5 +1,6 @@
 #include "tests/support/generators/generated_case.h"
 
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -123,13 +124,17 @@ GeneratedCase size_case(std::uint64_t seed, std::mt19937_64& rng) {
   return c;
 }
 
-// Stars of radii 100 and 90 m whose vertices are moved radially by up to
-// 1 mm, every edge at 45 degrees: the spikes collapse within micrometres of
-// one height, corners form between nearly opposite edges, and the rest closes
-// to a point within a millimetre.
+// Stars of outer radius 100 m and an inner radius of 40 to 95 m whose
+// vertices are moved radially by 1 um to 1 cm (drawn evenly in its
+// logarithm), every edge at 45 degrees: the spikes collapse within
+// micrometres of one height, corners form between nearly opposite edges, and
+// the rest closes to a point within about the jitter: as far apart as the
+// sweep's clustering scales tell events apart, or not.
 GeneratedCase stars_case(std::mt19937_64& rng, std::size_t least, std::size_t most) {
   const std::size_t n = std::uniform_int_distribution<std::size_t>(least / 2, most / 2)(rng) * 2;
-  const NamedPlan plan = jittered_star(n, 100.0, 90.0, 1e-3, rng);
+  const double inner = std::uniform_real_distribution<double>(40.0, 95.0)(rng);
+  const double jitter = std::pow(10.0, std::uniform_real_distribution<double>(-6.0, -2.0)(rng));
+  const NamedPlan plan = jittered_star(n, 100.0, inner, jitter, rng);
   GeneratedCase c;
   c.footprint = make_footprint(plan.loops, 45.0);
   c.description = plan.name + ", every edge at 45 degrees";

@@ -20,7 +20,7 @@ enum class CaseClass {
   Angles,  // (b) the same plans under per-edge angles, vertical edges, caps, profiles, plan edits
   Size,    // (c) 1,000 to 10,000 vertices
   // (c) jittered stars: thousands of events within micrometres of one height
-  // and the last within a millimetre of one point; of 1,000 to 3,000 and of
+  // and the last within about the jitter of one point; of 1,000 to 3,000 and of
   // 3,000 to 12,000 vertices (tests/soak/generated_stars_test.cc).
   Stars,
   LargeStars,
