@@ -1,6 +1,7 @@
 #include "core/geom/segment_intersections.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -44,6 +45,16 @@ bool segments_meet(const Segment2& i, const Segment2& j, double within) {
 
 namespace {
 
+// Whether segments i and j of chains meet: where one follows the other (as
+// `next` links them), only by folding back onto it.
+bool chained_pair_meets(const Segment2& si, const Segment2& sj, bool i_then_j, bool j_then_i, double within) {
+  // A two-edge loop.
+  if (i_then_j && j_then_i) return consecutive_fold(si, sj, within) || consecutive_fold(sj, si, within);
+  if (i_then_j) return consecutive_fold(si, sj, within);
+  if (j_then_i) return consecutive_fold(sj, si, within);
+  return segments_meet(si, sj, within);
+}
+
 struct Box2 {
   glm::dvec2 lo, hi;
 };
@@ -80,6 +91,9 @@ bool strips_overlap(const Strip& a, const Strip& b) {
 // plan's edges), after an O(n log n) build.
 class SegmentTree {
  public:
+  // At most this many segments are compared pair by pair, in order, without a tree.
+  static constexpr std::uint32_t kFlatMost = 32;
+
   SegmentTree(const std::vector<Segment2>& segments, double within) : segments_(segments), boxes_(segments.size()) {
     double reach = 0.0;
     glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
@@ -108,7 +122,7 @@ class SegmentTree {
 
  private:
   static constexpr std::uint32_t kLeaf = std::numeric_limits<std::uint32_t>::max();
-  static constexpr std::uint32_t kLeafMost = 4, kFlatMost = 32;
+  static constexpr std::uint32_t kLeafMost = 4;
 
   struct Node {
     Strip strip;
@@ -254,20 +268,9 @@ std::vector<std::pair<std::size_t, std::size_t>> intersecting_segment_pairs(cons
                                                                             std::size_t max_pairs, double within) {
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for_each_near_segment_pair(segments, within, [&](std::size_t i, std::size_t j) {
-    const Segment2 &si = segments[i], &sj = segments[j];
     const bool i_then_j = !next.empty() && next[i] == j;
     const bool j_then_i = !next.empty() && next[j] == i;
-    bool hit;
-    if (i_then_j && j_then_i) {
-      hit = consecutive_fold(si, sj, within) || consecutive_fold(sj, si, within);  // a two-edge loop
-    } else if (i_then_j) {
-      hit = consecutive_fold(si, sj, within);
-    } else if (j_then_i) {
-      hit = consecutive_fold(sj, si, within);
-    } else {
-      hit = segments_meet(si, sj, within);
-    }
-    if (hit) out.push_back({i, j});
+    if (chained_pair_meets(segments[i], segments[j], i_then_j, j_then_i, within)) out.push_back({i, j});
     return out.size() < max_pairs;
   });
   std::sort(out.begin(), out.end());
@@ -288,6 +291,23 @@ LoopSegments loop_segments(const std::vector<std::vector<glm::dvec2>>& loops) {
 }
 
 std::optional<std::pair<std::size_t, std::size_t>> loop_crossing(const std::vector<glm::dvec2>& loop) {
+  // A short loop's pairs in the order the tree's flat root visits them,
+  // without building it: the sweep asks this of most faces it makes.
+  const std::size_t n = loop.size();
+  if (n <= SegmentTree::kFlatMost) {
+    std::array<Box2, SegmentTree::kFlatMost> boxes;
+    for (std::size_t k = 0; k < n; ++k)
+      boxes[k] = {glm::min(loop[k], loop[(k + 1) % n]), glm::max(loop[k], loop[(k + 1) % n])};
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Box2 &bi = boxes[i], &bj = boxes[j];
+        if (bi.hi.x < bj.lo.x || bj.hi.x < bi.lo.x || bi.hi.y < bj.lo.y || bj.hi.y < bi.lo.y) continue;
+        if (chained_pair_meets({loop[i], loop[(i + 1) % n]}, {loop[j], loop[(j + 1) % n]}, (i + 1) % n == j,
+                               (j + 1) % n == i, 0.0))
+          return std::pair{i, j};
+      }
+    return std::nullopt;
+  }
   const LoopSegments segs = loop_segments({loop});
   const auto crossings = intersecting_segment_pairs(segs.segments, segs.next, 1);
   if (crossings.empty()) return std::nullopt;

@@ -12,8 +12,9 @@ namespace procex::engine {
                                                                double* meet) {
   // Copied: meet[] could alias the path, which would keep the loop from vectorizing.
   const glm::dvec2 p = path.p, v = path.v;
-  const double z = path.z, earliest = path.earliest, cap = path.cap, on = path.on, along = path.along;
-  const double speed = std::abs(v.x) + std::abs(v.y);
+  const double z = path.z, earliest = path.earliest, cap = path.cap, on = path.on;
+  // A rate this small moves the corner off a plane by `along` of its own travel.
+  const double drift = path.along * (std::abs(v.x) + std::abs(v.y));
   const bool outward = path.outward;
   for (std::size_t j = 0; j < n; ++j) {
     // Signed distance from the edge's line changes at `rate`: a corner inside
@@ -24,7 +25,7 @@ namespace procex::engine {
     const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
     // A meeting point below the sweep plane means the planes diverge from here.
     const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    const bool runs_along = (std::abs(distance) <= on) & (std::abs(rate) <= along * (speed + std::abs(kk[j])));
+    const bool runs_along = (std::abs(distance) <= on) & (std::abs(rate) <= drift);
     meet[j] = (meets & !runs_along & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
   }
 }

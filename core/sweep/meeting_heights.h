@@ -13,7 +13,7 @@ namespace procex::engine {
 // A corner at p at height z, moving by v per unit of height, and which of its
 // meetings count: none below `earliest` or above `cap`; with `outward` it also
 // meets planes from outside. A plane it runs along, within `on` of it where it
-// is and drifting off it by at most `along` of its own and the plane's speed,
+// is and drifting off it by at most `along` of the plan distance it travels,
 // it never meets: it moves in that plane, and where it comes to the plane's
 // edge it comes to the edge's end, another corner's event. Taken for a split,
 // the meeting of two such planes is wherever rounding puts it (a wall beside a

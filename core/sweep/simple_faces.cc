@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "core/geom/convex_partition.h"
 #include "core/geom/error.h"
 #include "core/geom/polygon3.h"
 #include "core/geom/segment_intersections.h"
@@ -15,12 +14,13 @@ void check_simple_faces(const Surface& surface) {
   std::vector<glm::dvec3> points;
   for (std::size_t f = 0; f < surface.faces.size(); ++f) {
     const SurfaceFace& face = surface.faces[f];
-    if (face.loops.size() != 1) continue;
+    // A triangle cannot cross itself, and the base is the plan, checked
+    // simple before the sweep (prepare_footprint).
+    if (face.loops.size() != 1 || face.loops[0].size() < 4 || face.kind == FaceKind::Base) continue;
     points.clear();
     for (std::uint32_t v : face.loops[0]) points.push_back(surface.vertices[v]);
     // Seen as the mesh validator sees it (core/mesh/validate.cc).
     const std::vector<glm::dvec2> flat = drop_axis(points, newell_normal(points));
-    if (is_convex(flat)) continue;
     const auto crossing = loop_crossing(flat);
     if (!crossing) continue;
     const double z = std::max(points[crossing->first].z, points[crossing->second].z);

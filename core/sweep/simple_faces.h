@@ -12,7 +12,7 @@ namespace procex::engine {
 // itself by micrometres: closed, and still not a solid. Thrown, it makes the
 // sweep try the next clustering scale, as a surface that does not close does.
 // A face with holes is split into simple pieces when the mesh is built, which
-// refuses one it cannot split.
+// refuses one it cannot split; the base is the plan, checked before the sweep.
 void check_simple_faces(const Surface& surface);
 
 }  // namespace procex::engine
