@@ -17,7 +17,7 @@ glm::dvec3 newell_normal(const std::vector<glm::dvec3>& points) {
   return n;
 }
 
-std::vector<glm::dvec2> drop_axis(const std::vector<glm::dvec3>& points, const glm::dvec3& normal) {
+void drop_axis(const std::vector<glm::dvec3>& points, const glm::dvec3& normal, std::vector<glm::dvec2>& out) {
   const glm::dvec3 a{std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)};
   // Axes (u, v) with u x v along +normal's dominant axis: (y, z) for x,
   // (z, x) for y, (x, y) for z; swapped when that component is negative.
@@ -29,9 +29,14 @@ std::vector<glm::dvec2> drop_axis(const std::vector<glm::dvec3>& points, const g
     u = 2, v = 0, sign = normal.y;
   }
   if (sign < 0) std::swap(u, v);
-  std::vector<glm::dvec2> out;
+  out.clear();
   out.reserve(points.size());
   for (const glm::dvec3& p : points) out.push_back({p[u], p[v]});
+}
+
+std::vector<glm::dvec2> drop_axis(const std::vector<glm::dvec3>& points, const glm::dvec3& normal) {
+  std::vector<glm::dvec2> out;
+  drop_axis(points, normal, out);
   return out;
 }
 

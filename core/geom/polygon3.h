@@ -17,5 +17,7 @@ glm::dvec3 newell_normal(const std::vector<glm::dvec3>& points);
 // two axes ordered so that a loop counter-clockwise around normal stays
 // counter-clockwise in 2D. Exact: coordinates are copied, not rotated.
 std::vector<glm::dvec2> drop_axis(const std::vector<glm::dvec3>& points, const glm::dvec3& normal);
+// The same into `out`, whose storage a caller of many faces keeps.
+void drop_axis(const std::vector<glm::dvec3>& points, const glm::dvec3& normal, std::vector<glm::dvec2>& out);
 
 }  // namespace procex

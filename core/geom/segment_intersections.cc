@@ -21,7 +21,8 @@ namespace {
 // Consecutive segments i -> j share i.b == j.a; they overlap beyond it only
 // if j turns straight back along i.
 bool consecutive_overlap(const Segment2& i, const Segment2& j) {
-  return orient2d(i.a, i.b, j.b) == 0 && glm::dot(i.b - i.a, j.b - j.a) < 0.0;
+  // The cheap test first: most turns do not reverse.
+  return glm::dot(i.b - i.a, j.b - j.a) < 0.0 && orient2d(i.a, i.b, j.b) == 0;
 }
 
 // Closest approach of two segments that do not cross: at an endpoint of one.
@@ -295,16 +296,17 @@ std::optional<std::pair<std::size_t, std::size_t>> loop_crossing(const std::vect
   // without building it: the sweep asks this of most faces it makes.
   const std::size_t n = loop.size();
   if (n <= SegmentTree::kFlatMost) {
+    std::array<Segment2, SegmentTree::kFlatMost> segs;
     std::array<Box2, SegmentTree::kFlatMost> boxes;
-    for (std::size_t k = 0; k < n; ++k)
-      boxes[k] = {glm::min(loop[k], loop[(k + 1) % n]), glm::max(loop[k], loop[(k + 1) % n])};
+    for (std::size_t k = 0; k < n; ++k) {
+      segs[k] = {loop[k], loop[k + 1 == n ? 0 : k + 1]};
+      boxes[k] = {glm::min(segs[k].a, segs[k].b), glm::max(segs[k].a, segs[k].b)};
+    }
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j) {
         const Box2 &bi = boxes[i], &bj = boxes[j];
         if (bi.hi.x < bj.lo.x || bj.hi.x < bi.lo.x || bi.hi.y < bj.lo.y || bj.hi.y < bi.lo.y) continue;
-        if (chained_pair_meets({loop[i], loop[(i + 1) % n]}, {loop[j], loop[(j + 1) % n]}, (i + 1) % n == j,
-                               (j + 1) % n == i, 0.0))
-          return std::pair{i, j};
+        if (chained_pair_meets(segs[i], segs[j], j == i + 1, i == 0 && j == n - 1, 0.0)) return std::pair{i, j};
       }
     return std::nullopt;
   }

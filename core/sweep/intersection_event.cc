@@ -1486,6 +1486,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
     st.check_time();
     later_groups.resolving(g);
     const bool later = first_of(g) > instant + st.tol().simultaneous();
+    if (!later) st.shared_instant = true;
     if (later) settle_rewired();
     if (g >= clustered) {
       // A corner's edges never change: its collision now is the one it had

@@ -12,6 +12,7 @@ namespace procex::engine {
 
 void check_simple_faces(const Surface& surface) {
   std::vector<glm::dvec3> points;
+  std::vector<glm::dvec2> flat;
   for (std::size_t f = 0; f < surface.faces.size(); ++f) {
     const SurfaceFace& face = surface.faces[f];
     // A triangle cannot cross itself, and the base is the plan, checked
@@ -20,7 +21,7 @@ void check_simple_faces(const Surface& surface) {
     points.clear();
     for (std::uint32_t v : face.loops[0]) points.push_back(surface.vertices[v]);
     // Seen as the mesh validator sees it (core/mesh/validate.cc).
-    const std::vector<glm::dvec2> flat = drop_axis(points, newell_normal(points));
+    drop_axis(points, newell_normal(points), flat);
     const auto crossing = loop_crossing(flat);
     if (!crossing) continue;
     const double z = std::max(points[crossing->first].z, points[crossing->second].z);

@@ -169,7 +169,7 @@ Surface sweep_with(const Footprint& footprint, glm::dvec2 centre, const SweepOpt
   }
   Surface surface = engine::build_surface(st);
   engine::close_surface(surface);
-  engine::check_simple_faces(surface);
+  if (st.shared_instant) engine::check_simple_faces(surface);
   surface.anchors = anchors.finish();
   surface.plan_edits = plan_edits.finish();
   return surface;

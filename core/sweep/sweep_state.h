@@ -176,6 +176,9 @@ class State {
   int base_face = kNone;
   double height = 0.0;  // the sweep plane's current height
   bool any_outward = false;  // some plane leans outward: convex corners can split too
+  // Some batch resolved several groups as one instant, in rounding's order
+  // (resolve_intersections): what can leave a face folded (simple_faces.h).
+  bool shared_instant = false;
   // An edge with this many spans (and more than four per edge taking part)
   // has the corners at their ends looked up, not visited one by one, where a
   // cluster gathers the corners at its point (edge_corners.h). Tests compare
