@@ -25,7 +25,8 @@ namespace procex::engine {
     const double at = z - distance / (rate + static_cast<double>(rate == 0.0));
     // A meeting point below the sweep plane means the planes diverge from here.
     const bool meets = (rate < 0.0) | ((rate > 0.0) & outward);
-    const bool runs_along = (std::abs(distance) <= on) & (std::abs(rate) <= drift);
+    const double off = std::abs(distance), drifts = std::abs(rate);
+    const bool runs_along = (off <= on) & (drifts <= drift);
     meet[j] = (meets & !runs_along & !(at < earliest) & !(at > cap)) ? at : HUGE_VAL;
   }
 }
