@@ -60,6 +60,10 @@ struct Box2 {
   glm::dvec2 lo, hi;
 };
 
+bool boxes_overlap(const Box2& a, const Box2& b) {
+  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y);
+}
+
 glm::dvec2 perp(glm::dvec2 v) { return {-v.y, v.x}; }
 
 // A box turned along a direction. The long thin spikes of a plan side by side
@@ -217,8 +221,7 @@ class SegmentTree {
   }
 
   bool emit(std::uint32_t i, std::uint32_t j) const {
-    const Box2 &bi = boxes_[i], &bj = boxes_[j];
-    if (bi.hi.x < bj.lo.x || bj.hi.x < bi.lo.x || bi.hi.y < bj.lo.y || bj.hi.y < bi.lo.y) return true;
+    if (!boxes_overlap(boxes_[i], boxes_[j])) return true;
     return (*visit_)(std::min(i, j), std::max(i, j));
   }
 
@@ -303,11 +306,10 @@ std::optional<std::pair<std::size_t, std::size_t>> loop_crossing(const std::vect
       boxes[k] = {glm::min(segs[k].a, segs[k].b), glm::max(segs[k].a, segs[k].b)};
     }
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const Box2 &bi = boxes[i], &bj = boxes[j];
-        if (bi.hi.x < bj.lo.x || bj.hi.x < bi.lo.x || bi.hi.y < bj.lo.y || bj.hi.y < bi.lo.y) continue;
-        if (chained_pair_meets(segs[i], segs[j], j == i + 1, i == 0 && j == n - 1, 0.0)) return std::pair{i, j};
-      }
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (boxes_overlap(boxes[i], boxes[j]) &&
+            chained_pair_meets(segs[i], segs[j], j == i + 1, i == 0 && j == n - 1, 0.0))
+          return std::pair{i, j};
     return std::nullopt;
   }
   const LoopSegments segs = loop_segments({loop});

@@ -366,9 +366,10 @@ class IntersectionSearch {
       : tris_(std::move(tris)), tol_(tol), r_(r), problems_(problems), boxes_(tris_.size()), normals_(tris_.size()),
         fit_(tris_.size()), turned_(tris_.size() >= kTurnedFrom) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {
-      normals_[i] = unit_normal(tris_[i]);
-      glm::dvec3 a = tris_[i].p[0], b = tris_[i].p[0];
-      for (const auto& p : tris_[i].p) {
+      const Triangle& t = tris_[i];
+      normals_[i] = unit_normal(t);
+      glm::dvec3 a = t.p[0], b = t.p[0];
+      for (const auto& p : t.p) {
         a = glm::min(a, p);
         b = glm::max(b, p);
       }
@@ -379,7 +380,7 @@ class IntersectionSearch {
       if (e.x < e.y) std::swap(e.x, e.y);
       if (e.y < e.z) std::swap(e.y, e.z);
       if (e.x < e.y) std::swap(e.x, e.y);
-      fit_[i] = {e.x * e.y, 0.5 * glm::length(glm::cross(tris_[i].p[1] - tris_[i].p[0], tris_[i].p[2] - tris_[i].p[0]))};
+      fit_[i] = {e.x * e.y, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]))};
     }
   }
 

@@ -283,17 +283,17 @@ std::size_t EventQueue::hold_next(int i, double through) {
   after_through_ = 0;
   std::optional<std::size_t> worked;
   bool every = true;  // every split not yet queued was offered
-  if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(list.path.p.x) &&
-      std::isfinite(list.path.p.y) && std::isfinite(list.path.v.x) && std::isfinite(list.path.v.y) && std::isfinite(list.path.z)) {
+  const CornerPath& path = list.path;
+  if (t.live && list.size >= indexed_from_ && t.index.worth_searching() && std::isfinite(path.p.x) &&
+      std::isfinite(path.p.y) && std::isfinite(path.v.x) && std::isfinite(path.v.y) && std::isfinite(path.z)) {
     // The live edges are each listed once, so the splits not queued yet are
     // those after the last queued. Of the lowest of them, the list does not
     // queue at most its two edges' and its collision's: as many more hold
     // the lowest it queues.
     const std::size_t more = 2 + list.resolved.size();
-    t.index.extend(t.planes(), list.size, list.path.p);
-    worked = t.index.lowest(
-        t.planes(), {list.path, list.size, list.last, through},
-        list.hold + more, found_, found_within_, index_scratch_);
+    t.index.extend(t.planes(), list.size, path.p);
+    worked = t.index.lowest(t.planes(), {path, list.size, list.last, through}, list.hold + more, found_,
+                            found_within_, index_scratch_);
     if (worked) {
       every = found_.size() < list.hold + more;
       for (const auto* found : {&found_within_, &found_})

@@ -1228,7 +1228,8 @@ class LaterGroups {
     const PlaneColumns& planes = lists_.planes;
     const CornerPath path{k.base, k.velocity, k.base_z, k.base_z, until, st_.any_outward, st_.tol().position(),
                           st_.tol().relative};
-    meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), path, meet.data());
+    meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), path,
+                    meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {
       const int c = lists_.collapsing[j];
       const std::size_t g = lists_.collapse_at[j];

@@ -431,7 +431,8 @@ TEST(EventQueue, ACornerRunningAlongAPlaneDoesNotMeetItsCollinearNeighbour) {
     const CornerPath path{end, -d, 0.0, -kRelative * kScale, HUGE_VAL, false, kRelative * kScale, kRelative};
     double meet = 0.0;
     meeting_heights(nx, ny, k, cc, 1, path, &meet);
-    ASSERT_EQ(meet, HUGE_VAL) << "a corner at (" << end.x << ", " << end.y << ") running along the wall meets it at " << meet;
+    ASSERT_EQ(meet, HUGE_VAL) << "a corner at (" << end.x << ", " << end.y << ") running along the wall meets it at "
+                              << meet;
     // Turned by a milliradian about a point 1.5 along the corner's way, the
     // corner on its inside.
     const double t = 1e-3;
