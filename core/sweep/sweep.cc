@@ -187,7 +187,11 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   std::size_t plan_vertices = 0;
   for (const Loop& loop : footprint.loops) plan_vertices += loop.points.size();
   engine::Budget budget(options.budget, plan_vertices);
-  std::exception_ptr first;  // the first attempt's error, of its own type (an open roof stays one)
+  // What to report if no scale closes: the first refusal by the budget (the
+  // one error with a knob: raising that limit may close the finest scale it
+  // stopped), else the first attempt's error, of its own type (an open roof
+  // stays one).
+  std::exception_ptr first, refused;
   int retries = 0;
   // A clustering distance finer than the rounding the plan took where it
   // stands (a footprint a few centimetres across at x = 5e6) would tell
@@ -205,13 +209,18 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
       if (retries > 0) retried.fetch_add(1, std::memory_order_relaxed);
       return s;
     } catch (const SweepBudgetError&) {
-      throw;  // a runaway runs away at any tolerance
+      // Not a runaway at every scale: events rounding kept apart at a fine one
+      // (thousands of corners a few micrometres from one apex, each meeting
+      // every plane there) may be one at the next. The deadline spans every
+      // attempt, so the retries stay within the time budget.
+      if (!refused) refused = std::current_exception();
+      ++retries;
     } catch (const SweepError&) {
       if (!first) first = std::current_exception();
       ++retries;
     }
   }
-  std::rethrow_exception(first);
+  std::rethrow_exception(refused ? refused : first);
 }
 
 }  // namespace procex
