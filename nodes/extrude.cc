@@ -79,7 +79,7 @@ void evaluate(EvalContext& ctx) {
   }
   for (const std::string& note : result.notes) ctx.warning(note);
   if (ctx.param<bool>(par.validate)) {
-    const ValidationReport v = validate(*result.mesh.mesh);
+    const ValidationReport v = validate(*result.mesh.mesh, result.validation);
     if (!v.ok()) {
       std::string first = v.problems.empty() ? "no details" : v.problems.front();
       return ctx.error("the mesh does not validate (" + std::to_string(v.problems.size()) + " problems): " + first);

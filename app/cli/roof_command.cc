@@ -78,12 +78,13 @@ void extrude(const GeoJsonFeature& feature, const RoofOptions& options, FeatureR
     SweepOptions sweep_options;
     sweep_options.max_height = options.max_height;
     sweep_options.budget = with_settings(sweep_options.budget, options.budget);
-    r.mesh = build_mesh(sweep(prepared.footprint, sweep_options));
+    const Surface roof = sweep(prepared.footprint, sweep_options);
+    r.mesh = build_mesh(roof);
     r.ms = elapsed_ms(start);
     for (const auto v : r.mesh.vertices()) r.max_height = std::max(r.max_height, r.mesh.point(v)[2]);
 
     const auto validate_start = std::chrono::steady_clock::now();
-    r.validation = validate(r.mesh);
+    r.validation = validate(r.mesh, roof_validation(roof));
     r.validated = true;
     r.validate_ms = elapsed_ms(validate_start);
     if (!r.validation.ok()) r.status = Status::Failed, r.reason = first_problems(r.validation);

@@ -293,8 +293,7 @@ bool coplanar_overlap(const Triangle& a, const Triangle& b, const glm::dvec3& na
 
 // Where triangle t meets the other triangle's plane (d: its vertices' signed
 // distances to it), as an interval along the planes' common line direction.
-std::pair<double, double> plane_interval(const Triangle& t, const std::array<double, 3>& d, const glm::dvec3& dir,
-                                         double tol) {
+std::pair<double, double> plane_interval(const Triangle& t, const std::array<double, 3>& d, const glm::dvec3& dir) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   auto add = [&](const glm::dvec3& p) {
     const double s = glm::dot(dir, p);
@@ -303,8 +302,8 @@ std::pair<double, double> plane_interval(const Triangle& t, const std::array<dou
   };
   for (int k = 0; k < 3; ++k) {
     const int l = (k + 1) % 3;
-    if (std::abs(d[k]) <= tol) add(t.p[k]);
-    if ((d[k] > tol && d[l] < -tol) || (d[k] < -tol && d[l] > tol)) add(t.p[k] + (d[k] / (d[k] - d[l])) * (t.p[l] - t.p[k]));
+    if (d[k] == 0.0) add(t.p[k]);
+    if ((d[k] > 0.0 && d[l] < 0.0) || (d[k] < 0.0 && d[l] > 0.0)) add(t.p[k] + (d[k] / (d[k] - d[l])) * (t.p[l] - t.p[k]));
   }
   return {lo, hi};
 }
@@ -333,8 +332,8 @@ bool triangles_intersect(const Triangle& a, const Triangle& b, const glm::dvec3&
   const glm::dvec3 cross = glm::cross(na, nb);
   if (glm::length(cross) == 0.0) return false;
   const glm::dvec3 dir = glm::normalize(cross);
-  const auto [a_lo, a_hi] = plane_interval(a, da, dir, tol);
-  const auto [b_lo, b_hi] = plane_interval(b, db, dir, tol);
+  const auto [a_lo, a_hi] = plane_interval(a, da, dir);
+  const auto [b_lo, b_hi] = plane_interval(b, db, dir);
   return std::min(a_hi, b_hi) - std::max(a_lo, b_lo) > tol;
 }
 
@@ -804,6 +803,12 @@ class IntersectionSearch {
 
 }  // namespace
 
+ValidationOptions roof_validation(const Surface& roof) {
+  ValidationOptions options;
+  options.relative = mesh_distance_relative(roof.tolerance_relative);
+  return options;
+}
+
 ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
   ValidationReport r;
   {
@@ -819,7 +824,7 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
     }
     const double diagonal = glm::length(hi - lo);
     const double tol = options.tolerance > 0.0 ? options.tolerance
-                                               : std::max(kMeshDistanceRelative * diagonal,
+                                               : std::max(options.relative * diagonal,
                                                           std::numeric_limits<double>::min());
     const std::vector<std::uint32_t> welded = weld_positions(mesh);
     check_topology(mesh, welded, r, problems);

@@ -5,15 +5,22 @@
 #include <string>
 #include <vector>
 
+#include "core/geom/tolerances.h"
 #include "core/mesh/mesh.h"
+#include "core/mesh/surface.h"
 
 namespace procex {
 
 struct ValidationOptions {
-  // Distance tolerance; <= 0 means "relative to the mesh's bounding box".
+  // Distance tolerance; <= 0 means `relative` of the mesh's bounding-box diagonal.
   double tolerance = -1.0;
+  double relative = kMeshDistanceRelative;
   bool check_self_intersections = true;
 };
+
+// What a sweep's roof is held to: relative to the clustering scale it was
+// made at (mesh_distance_relative).
+ValidationOptions roof_validation(const Surface& roof);
 
 struct ValidationReport {
   bool closed = false;       // no boundary half-edges

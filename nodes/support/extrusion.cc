@@ -176,6 +176,7 @@ Extrusion extrude(const Footprint& footprint, const SweepOptions& options, const
 
   Surface surface = sweep(fp, engine_options);
   auto mesh = std::make_shared<Mesh>(build_mesh(surface));
+  out.validation = roof_validation(surface);
   TaggedMesh& t = out.mesh;
   t.anchors = std::move(surface.anchors);
   for (ResolvedAnchor& a : t.anchors) a.anchor = engine.spec[a.anchor];

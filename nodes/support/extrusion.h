@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/geom/footprint.h"
+#include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "nodes/values.h"
 
@@ -16,6 +17,7 @@ namespace procex {
 
 struct Extrusion {
   TaggedMesh mesh;
+  ValidationOptions validation;  // what the mesh is held to (roof_validation)
   // For warnings: repairs made by prepare_footprint, anchors resolved absent
   // (with why) and plan edits not applied.
   std::vector<std::string> notes;

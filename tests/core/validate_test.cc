@@ -89,6 +89,23 @@ TEST(Validate, NonPlanarFaceIsReportedWithItsError) {
   EXPECT_TRUE(validate(build_mesh(s), loose).planar);
 }
 
+// A roof is held to ten times the clustering scale it closed at
+// (Surface::tolerance_relative), never closer than kMeshDistanceRelative.
+TEST(Validate, ARoofIsHeldToTenTimesTheScaleItWasMadeAt) {
+  Surface s = test::box({0, 0, 0}, {1, 1, 1});
+  const double diagonal = std::sqrt(3.0);
+  s.vertices[6].z += 2e-5 * diagonal;  // the cap and two walls off their planes by about a quarter of that
+  const auto planar_made_at = [&s](double made) {
+    s.tolerance_relative = made;
+    return validate(build_mesh(s), roof_validation(s)).planar;
+  };
+  EXPECT_FALSE(planar_made_at(0.0));
+  EXPECT_FALSE(planar_made_at(1e-8));
+  EXPECT_FALSE(planar_made_at(1e-7));
+  EXPECT_TRUE(planar_made_at(1e-6));
+  EXPECT_TRUE(planar_made_at(1e-5));
+}
+
 TEST(Validate, OverlappingBoxesIntersect) {
   const Surface s = test::combine(test::box({0, 0, 0}, {2, 2, 2}), test::box({1, 1, 1}, {3, 3, 3}));
   const ValidationReport r = validate(build_mesh(s));
@@ -158,6 +175,36 @@ TEST(Validate, SeparateAndTouchingBoxesDoNotIntersect) {
   const ValidationReport touching =
       validate(build_mesh(test::combine(test::box({0, 0, 0}, {1, 1, 1}), test::box({1, 0.25, 0.25}, {2, 0.75, 0.75}))));
   EXPECT_TRUE(touching.self_intersection_free) << ::testing::PrintToString(touching.problems);
+}
+
+// A tetrahedron on vertices a, b, c, d, its faces wound consistently.
+Surface tetrahedron(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
+  Surface s;
+  s.vertices = {a, b, c, d};
+  for (const std::vector<std::uint32_t>& f : {std::vector<std::uint32_t>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}})
+    s.faces.push_back({FaceKind::Side, 0, {f}, {}});
+  return s;
+}
+
+// Two solids whose faces each pass through the other's plane, a face of one
+// (in y = 0) meeting the plane z = 0 from x = 10 to 11.6 and a face of the
+// other (in z = 0) meeting y = 0 from x = 11.8: they do not meet. The first
+// face's tip lies within the tolerance of z = 0 at x = 12, and taking it as
+// where the face meets that plane (what the check did) made the two overlap
+// by 0.2 (a 176-vertex jittered star's roof was reported so, its faces 0.74 mm
+// apart where their planes met).
+TEST(Validate, FacesThatCrossEachOthersPlanesApartDoNotIntersect) {
+  const double tol = 2e-5;  // the crossings are tens of thousands of it apart
+  ValidationOptions options;
+  options.tolerance = tol;
+  const Surface near_tip = tetrahedron({0, 0, 1}, {10, 0, -2 * tol}, {12, 0, 0.5 * tol}, {6, -3, 0});
+  const Surface wedge = tetrahedron({11.8, 0, 0}, {20, 5, 0}, {20, -5, 0}, {16, 0, -3});
+  const ValidationReport apart = validate(build_mesh(test::combine(near_tip, wedge)), options);
+  EXPECT_TRUE(apart.closed && apart.self_intersection_free) << ::testing::PrintToString(apart.problems);
+  // Moved 0.4 further, the second face reaches x = 11.4: now they cross.
+  const Surface deeper = tetrahedron({11.4, 0, 0}, {20, 5, 0}, {20, -5, 0}, {16, 0, -3});
+  const ValidationReport crossing = validate(build_mesh(test::combine(near_tip, deeper)), options);
+  EXPECT_FALSE(crossing.self_intersection_free);
 }
 
 // OpenMesh cannot close a mesh around a vertex joining two fans (build_mesh

@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/geom/tolerances.h"
 #include "core/mesh/mesh.h"
 #include "core/mesh/validate.h"
 #include "tests/support/point_set.h"
@@ -194,14 +195,14 @@ double distance_to_loops(const std::vector<std::vector<glm::dvec2>>& loops, glm:
 
 double plan_diagonal(const Footprint& footprint) { return bounds(footprint).diagonal(); }
 
-double roof_tolerance(const Footprint& footprint) {
+double roof_tolerance(const Footprint& footprint, double made_relative) {
   const Bounds b = bounds(footprint);
-  return 1e-6 * b.diagonal() + 64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
+  return mesh_distance_relative(made_relative) * b.diagonal() + 64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
 }
 
 std::vector<std::string> check_valid_mesh(const Surface& surface) {
   try {
-    const ValidationReport v = validate(build_mesh(surface));
+    const ValidationReport v = validate(build_mesh(surface), roof_validation(surface));
     if (v.ok()) return {};
     std::vector<std::string> out{std::string("mesh does not validate:") + (v.closed ? "" : " not closed") +
                                  (v.manifold ? "" : " not 2-manifold") + (v.oriented ? "" : " not oriented") +
@@ -363,19 +364,23 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
     return e.inward(p) / std::tan(e.spec.angle_deg * kDegree);
   };
 
+  // Samples keep clear of borders by ten times the finest scale's tolerance,
+  // not `tol`: a roof made at a coarse scale (a jittered star's apex closed
+  // at 1e-5) is held to ten times that, a margin wider than its thin faces.
+  const double margin = 10.0 * roof_tolerance(footprint);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> ux(0.0, 1.0);
   constexpr int kSamples = 24, kTries = 400;
   int sampled = 0;
   for (int attempt = 0; attempt < kTries && sampled < kSamples; ++attempt) {
     const glm::dvec2 local = b.lo - o + glm::dvec2(ux(rng), ux(rng)) * (b.hi - b.lo);
-    if (!inside_loops(plan_loops, local) || distance_to_loops(plan_loops, local) < 10.0 * tol) continue;
+    if (!inside_loops(plan_loops, local) || distance_to_loops(plan_loops, local) < margin) continue;
     // Points on a face's border are covered by two faces or none: not sampled.
     std::vector<std::size_t> over;
     bool on_border = false;
     for (std::size_t fi = 0; fi < faces.size() && !on_border; ++fi) {
       if (faces[fi].loops.empty() || std::abs(faces[fi].area) <= tol * faces[fi].perimeter) continue;
-      if (distance_to_loops(faces[fi].loops, local) < 10.0 * tol) on_border = true;
+      if (distance_to_loops(faces[fi].loops, local) < margin) on_border = true;
       else if (inside_loops(faces[fi].loops, local)) over.push_back(fi);
     }
     if (on_border) continue;
@@ -419,7 +424,7 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
   // clear of the margins is a small share of it (a sliver along a diagonal),
   // every draw may miss. A miss is a problem only when about ten hits were due.
   const glm::dvec2 box = b.hi - b.lo;
-  const double expected_hits = kTries * (area - 20.0 * tol * perimeter) / (box.x * box.y);
+  const double expected_hits = kTries * (area - 2.0 * margin * perimeter) / (box.x * box.y);
   if (sampled == 0 && expected_hits >= 10.0) problems.add("no samples", "no point of the footprint could be sampled");
   return problems.take();
 }

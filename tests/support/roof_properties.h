@@ -21,9 +21,11 @@ namespace procex::testing {
 // The length of the footprint's bounding-box diagonal.
 double plan_diagonal(const Footprint& footprint);
 
-// Positions agree within this: 1e-6 of the footprint's bounding-box diagonal
-// (the mesh validator's tolerance) plus the rounding of its largest coordinate.
-double roof_tolerance(const Footprint& footprint);
+// Positions agree within this: the mesh validator's tolerance for a roof made
+// at clustering scale `made_relative` (Surface::tolerance_relative; 0: the
+// finest), of the footprint's bounding-box diagonal, plus the rounding of its
+// largest coordinate.
+double roof_tolerance(const Footprint& footprint, double made_relative = 0.0);
 
 // build_mesh + validate: closed, 2-manifold, oriented, planar faces, no
 // self-intersection.

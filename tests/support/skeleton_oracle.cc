@@ -81,7 +81,7 @@ CgalSkeleton oracle_skeleton(const CgalSkeletonInput& input, std::size_t vertice
 }  // namespace
 
 std::vector<std::string> compare_with_cgal(const Footprint& footprint, const Surface& roof) {
-  const double tol = roof_tolerance(footprint);
+  const double tol = roof_tolerance(footprint, roof.tolerance_relative);
   const double rise = 1.0 / std::tan(footprint.loops.at(0).edges.at(0).angle_deg * M_PI / 180.0);
   std::vector<std::string> problems = check_valid_mesh(roof);
 

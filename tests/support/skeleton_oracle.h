@@ -19,7 +19,7 @@ namespace procex::testing {
 // construction kernel: its exact one ran past 20 GB and 75 minutes on a star
 // of 10,000 vertices (the size class, TESTING.md). The inexact kernel decides
 // every event exactly and rounds only the nodes it constructs, by far less
-// than the comparison's tolerance (roof_tolerance, 1e-6 of the diagonal):
+// than the comparison's tolerance (roof_tolerance, at least 1e-6 of the diagonal):
 // CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance.
 // Every case the suite runs in CI (up to the 4096-gon) stays on the exact
 // kernel: the inexact one took longer than the test's limit on the regular

@@ -105,7 +105,6 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
     r.problems.push_back(std::string("prepare_footprint refused it: ") + e.what());
     return r;
   }
-  const double tol = roof_tolerance(fp);
   const auto sweep_guarded = [&](const Footprint& f, const SweepOptions& o, const std::string& what) -> std::optional<Surface> {
     try {
       return sweep(f, o);
@@ -117,6 +116,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
       capped.max_height = e.height() + 10.0 * plan_diagonal(f);
       try {
         const Surface s = sweep(f, capped);
+        const double tol = roof_tolerance(f, s.tolerance_relative);
         add(r.problems, what + "refused as rising forever, capped: ", check_valid_mesh(s));
         add(r.problems, what + "refused as rising forever, capped: ", check_faces_on_planes(f, capped, s, tol));
         if (!(cap_area(s) > tol * plan_diagonal(f)))
@@ -136,6 +136,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
   };
   const std::optional<Surface> roof = sweep_guarded(fp, c.options, "");
   if (!roof) return r;
+  const double tol = roof_tolerance(fp, roof->tolerance_relative);
   add(r.problems, "", check_valid_mesh(*roof));
   add(r.problems, "", check_faces_on_planes(fp, c.options, *roof, tol));
   if (inward_roof(fp, c.options)) {
@@ -160,7 +161,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
     for (const PlanTransform& t : transforms) {
       const Footprint moved = transformed(fp, t);
       if (const std::optional<Surface> other = sweep_guarded(moved, c.options, t.name + ": ")) {
-        const double moved_tol = std::max(tol, roof_tolerance(moved));
+        const double moved_tol = std::max(tol, roof_tolerance(moved, other->tolerance_relative));
         add(r.problems, t.name + ": ", check_faces_on_planes(moved, c.options, *other, moved_tol));
         add(r.problems, t.name + ": ", compare_transformed(*roof, t, *other, moved_tol));
       }
