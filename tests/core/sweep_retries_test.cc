@@ -8,6 +8,7 @@
 // that surface was returned: no solid, and nothing said so until the mesh
 // was validated. The tests here are of the retry itself, so a retry does not
 // fail them (tests/core/no_retry_listener.cc).
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -26,10 +27,16 @@
 namespace procex::testing {
 namespace {
 
+// The one footprint of a fixture in tests/data, every edge at 45 degrees.
+Footprint star_at_45(const std::string& file) {
+  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/" + file);
+  if (read.features.size() != 1)
+    throw std::runtime_error(file + " holds " + std::to_string(read.features.size()) + " features, not 1");
+  return prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+}
+
 TEST(SweepRetries, AFaceFoldedAtOneScaleIsSweptAgainAtTheNext) {
-  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/star_fold_82.geojson");
-  ASSERT_EQ(read.features.size(), 1u);
-  const Footprint fp = prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+  const Footprint fp = star_at_45("star_fold_82.geojson");
   const Surface s = sweep(fp);
   EXPECT_EQ(s.retries, 1);
   EXPECT_EQ(s.tolerance_relative, 1e-7);
@@ -45,9 +52,7 @@ TEST(SweepRetries, AFaceFoldedAtOneScaleIsSweptAgainAtTheNext) {
 // the next like any defeat. Held here to 200,000 vertices (refused in a
 // fraction of a second), the apex at 1e-6 needs more, and 1e-5 closes.
 TEST(SweepRetries, ARefusalAtOneScaleIsSweptAgainAtTheNext) {
-  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/star_runaway_1750.geojson");
-  ASSERT_EQ(read.features.size(), 1u);
-  const Footprint fp = prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+  const Footprint fp = star_at_45("star_runaway_1750.geojson");
   SweepOptions options;
   options.budget.max_vertices = 200'000;
   const Surface s = sweep(fp, options);
@@ -64,9 +69,7 @@ TEST(SweepRetries, ARefusalAtOneScaleIsSweptAgainAtTheNext) {
 // scale is held to 0.28 mm. It is held to ten times the scale it was made
 // at, as every roof is (mesh_distance_relative).
 TEST(SweepRetries, ARoofIsHeldToTheScaleItClosedAt) {
-  const GeoJsonCollection read = read_geojson_file(std::string(PROCEX_TEST_DATA) + "/star_coarse_2226.geojson");
-  ASSERT_EQ(read.features.size(), 1u);
-  const Footprint fp = prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
+  const Footprint fp = star_at_45("star_coarse_2226.geojson");
   const Surface s = sweep(fp);
   EXPECT_EQ(s.tolerance_relative, 1e-5);
   const std::vector<std::string> problems = check_valid_mesh(s);

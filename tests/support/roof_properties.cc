@@ -197,7 +197,8 @@ double plan_diagonal(const Footprint& footprint) { return bounds(footprint).diag
 
 double roof_tolerance(const Footprint& footprint, double made_relative) {
   const Bounds b = bounds(footprint);
-  return mesh_distance_relative(made_relative) * b.diagonal() + 64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
+  return mesh_distance_relative(made_relative) * b.diagonal() +
+         64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
 }
 
 std::vector<std::string> check_valid_mesh(const Surface& surface) {
