@@ -253,16 +253,10 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   SplitList& list = lists_[i];
   list.targets = std::move(targets);
   list.size = size;
-  list.path.z = st.height;
-  list.path.p = st.position(c, list.path.z);
-  list.path.v = k.velocity;
-  list.path.earliest = list.path.z - st.tol().height();
-  list.near = list.path.z + st.tol().height();
   // Nothing above the cap is ever resolved.
-  list.path.cap = st.options().max_height.value_or(HUGE_VAL);
-  list.path.outward = st.any_outward;
-  list.path.on = st.tol().position();
-  list.path.along = st.tol().relative;
+  list.path = st.corner_path(st.position(c, st.height), k.velocity, st.height, st.height - st.tol().height(),
+                             st.options().max_height.value_or(HUGE_VAL));
+  list.near = st.height + st.tol().height();
   list.prev_edge = k.prev_edge;
   list.next_edge = k.next_edge;
   list.resolved = resolved;

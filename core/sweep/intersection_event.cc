@@ -1226,8 +1226,7 @@ class LaterGroups {
     std::vector<double>& meet = lists_.meet;
     meet.resize(lists_.collapsing.size());
     const PlaneColumns& planes = lists_.planes;
-    const CornerPath path{k.base, k.velocity, k.base_z, k.base_z, until, st_.any_outward, st_.tol().position(),
-                          st_.tol().relative};
+    const CornerPath path = st_.corner_path(k.base, k.velocity, k.base_z, k.base_z, until);
     meeting_heights(planes.nx.data(), planes.ny.data(), planes.k.data(), planes.c.data(), meet.size(), path,
                     meet.data());
     for (std::size_t j = 0; j < meet.size(); ++j) {

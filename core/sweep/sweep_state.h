@@ -17,6 +17,7 @@
 #include "core/geom/profile.h"
 #include "core/mesh/surface.h"
 #include "core/sweep/budget.h"
+#include "core/sweep/meeting_heights.h"
 #include "core/sweep/plane.h"
 #include "core/sweep/sweep.h"
 #include "core/geom/tolerances.h"
@@ -161,6 +162,12 @@ class State {
   // Refuses the sweep once a batch holds more than the budget's candidates.
   void hold_candidates(std::size_t n) const {
     if (budget_) budget_->hold_candidates(n, height);
+  }
+  // The path of a corner at p at height z moving by v per unit of height,
+  // meeting planes from `earliest` to `cap` by this sweep's rule (its
+  // tolerances; from outside too once a plane leans out).
+  CornerPath corner_path(glm::dvec2 p, glm::dvec2 v, double z, double earliest, double cap) const {
+    return {p, v, z, earliest, cap, any_outward, tol_.position(), tol_.relative};
   }
   // Refuses the sweep once its time is up (called once per event batch, and
   // as a large batch is gathered and resolved).
