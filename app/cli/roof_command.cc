@@ -49,6 +49,10 @@ struct FeatureResult {
   bool validated = false;
   ValidationReport validation;
   double max_height = 0.0;
+  // The clustering scale the roof closed at and the looser ones tried before
+  // (Surface::tolerance_relative, retries): 0 and 0 where no roof was made.
+  double clustering_scale = 0.0;
+  int retries = 0;
   double ms = 0.0;           // prepare + sweep + mesh
   double validate_ms = 0.0;
 };
@@ -80,6 +84,7 @@ void extrude(const GeoJsonFeature& feature, const RoofOptions& options, FeatureR
     sweep_options.budget = with_settings(sweep_options.budget, options.budget);
     const Surface roof = sweep(prepared.footprint, sweep_options);
     r.mesh = build_mesh(roof);
+    r.clustering_scale = roof.tolerance_relative, r.retries = roof.retries;
     r.ms = elapsed_ms(start);
     for (const auto v : r.mesh.vertices()) r.max_height = std::max(r.max_height, r.mesh.point(v)[2]);
 
@@ -114,6 +119,8 @@ nlohmann::ordered_json feature_json(const FeatureResult& r) {
   j["faces"] = r.mesh.n_faces();
   j["volume"] = r.validated ? nlohmann::ordered_json(r.validation.volume) : nlohmann::ordered_json();
   j["max_height"] = has_mesh ? nlohmann::ordered_json(r.max_height) : nlohmann::ordered_json();
+  j["clustering_scale"] = has_mesh ? nlohmann::ordered_json(r.clustering_scale) : nlohmann::ordered_json();
+  j["retries"] = r.retries;
   j["ms"] = r.ms;
   if (r.validated) {
     const ValidationReport& v = r.validation;
@@ -124,6 +131,7 @@ nlohmann::ordered_json feature_json(const FeatureResult& r) {
                        {"planar", v.planar},
                        {"self_intersection_free", v.self_intersection_free},
                        {"max_planarity_error", v.max_planarity_error},
+                       {"tolerance", v.tolerance},
                        {"problems", v.problems},
                        {"ms", r.validate_ms}};
   } else {

@@ -826,6 +826,7 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
     const double tol = options.tolerance > 0.0 ? options.tolerance
                                                : std::max(options.relative * diagonal,
                                                           std::numeric_limits<double>::min());
+    r.tolerance = tol;
     const std::vector<std::uint32_t> welded = weld_positions(mesh);
     check_topology(mesh, welded, r, problems);
 

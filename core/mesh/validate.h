@@ -31,6 +31,7 @@ struct ValidationReport {
   bool self_intersection_free = false;
   double volume = 0.0;       // signed; positive for an outward-facing solid
   double max_planarity_error = 0.0;
+  double tolerance = 0.0;  // the distance planarity and intersections were checked to
   std::vector<std::string> problems;  // one line each, naming faces / vertices
   // Pairs of triangles the self-intersection search looked at: its work, which
   // tests hold to O(n log n) where a stopwatch could not.

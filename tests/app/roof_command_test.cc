@@ -131,6 +131,26 @@ TEST_F(RoofCommand, HipRoofVolumeAndHeight) {
   EXPECT_NEAR(f["volume"].get<double>(), 500.0 / 3.0, 1e-6);
 }
 
+// Each roof says the clustering scale it closed at and what it was held to:
+// the square at the finest scale, to 1e-6 of its diagonal; the jittered star
+// of tests/data/star_coarse_2226.geojson only at the coarsest (1e-5, after
+// three finer ones), so to ten times that.
+TEST_F(RoofCommand, EachRoofSaysTheScaleItClosedAtAndTheToleranceItWasHeldTo) {
+  ASSERT_EQ(run(options_for(write("square.geojson", collection({feature("sq", kSquare10)})))), 0) << err_.str();
+  const nlohmann::json square = report()["features"][0];
+  EXPECT_EQ(square["clustering_scale"], 1e-8);
+  EXPECT_EQ(square["retries"], 0);
+  EXPECT_NEAR(square["validation"]["tolerance"].get<double>(), 1e-6 * std::sqrt(10.0 * 10.0 * 2 + 5.0 * 5.0), 1e-15);
+
+  ASSERT_EQ(run(options_for(fs::path(PROCEX_TEST_DATA) / "star_coarse_2226.geojson")), 0) << err_.str();
+  const nlohmann::json star = report()["features"][0];
+  EXPECT_EQ(star["status"], "ok") << star.dump();
+  EXPECT_EQ(star["clustering_scale"], 1e-5);
+  EXPECT_EQ(star["retries"], 3);
+  EXPECT_GT(star["validation"]["max_planarity_error"].get<double>(), 1e-3);
+  EXPECT_GT(star["validation"]["tolerance"].get<double>(), 1e-4 * 200.0);
+}
+
 // Capped at 2: a frustum, the integral of (10 - 2z)^2 from 0 to 2 = 392 / 3.
 TEST_F(RoofCommand, MaxHeightCapsTheRoof) {
   RoofOptions o = options_for(write("square.geojson", collection({feature("sq", kSquare10)})));
