@@ -3,6 +3,7 @@
 // (resolve_intersections). Like the queue's lists, it leaves alone the planes
 // of the cluster that made the corner where the corner starts: it meets them
 // there because of that cluster.
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "core/sweep/event_queue.h"
 #include "core/sweep/profile_event.h"
 #include "tests/core/sweep_states.h"
+#include "tests/support/generators/size_plans.h"
 
 namespace procex::engine {
 namespace {
@@ -27,7 +29,8 @@ namespace {
 // finer ones it still leaves some of the centre's corners open, and sweep()
 // closes the roof at the coarsest: issue 12).
 TEST(BatchNewCorners, ACornerDoesNotSplitItsOwnClustersPlanesWhereItStarts) {
-  const std::vector<glm::dvec2> points = jittered_star(1200, 3, 60.0);
+  std::mt19937_64 rng(3);
+  const std::vector<glm::dvec2> points = testing::jittered_star(1200, 100.0, 60.0, 1e-3, rng).loops[0];
   for (double relative : Tolerances::retry_relative) {
     SCOPED_TRACE(relative);
     SweepBudget limits;

@@ -47,19 +47,6 @@ inline std::vector<glm::dvec2> star(int n) {
   return points;
 }
 
-// A star of n corners with radii 100 m and `inner` alternating, each jittered
-// by up to a millimetre (seeded).
-inline std::vector<glm::dvec2> jittered_star(int n, unsigned seed, double inner) {
-  std::vector<glm::dvec2> points;
-  for (int k = 0; k < n; ++k) {
-    seed = seed * 1103515245u + 12345u;
-    const double jitter = 1e-3 * (static_cast<double>(seed >> 16 & 0x7fff) / 16384.0 - 1.0);
-    const double r = (k % 2 ? inner : 100.0) + jitter, a = 2 * M_PI * k / n;
-    points.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return points;
-}
-
 // A random star-shaped polygon as bench/scale_inputs.py makes them (sorted
 // random angles, radii 50-100 m): about half its corners reflex, their lines
 // running every way.
