@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,12 +14,14 @@
 #include <gtest/gtest.h>
 
 #include "core/geom/prepare.h"
+#include "core/geom/segment_intersections.h"
 #include "core/io/geojson.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/generators/check_case.h"
 #include "tests/support/generators/grid_plans.h"
 #include "tests/support/generators/run_generated.h"
 #include "tests/support/generators/shrink.h"
+#include "tests/support/generators/size_plans.h"
 #include "tests/support/roof_properties.h"
 
 namespace procex::testing {
@@ -124,8 +127,56 @@ TEST(Generators, PlansAreValidFootprintsOfTheirSize) {
   EXPECT_GT(with_holes, 30u);
 }
 
+// The kernel of a counter-clockwise polygon (the points that see all of it):
+// the box it lies in (lo to hi) clipped by the inner side of every edge's line.
+std::vector<glm::dvec2> kernel(const std::vector<glm::dvec2>& polygon, glm::dvec2 lo, glm::dvec2 hi) {
+  std::vector<glm::dvec2> k{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, clipped;
+  for (std::size_t i = 0; i < polygon.size() && !k.empty(); ++i) {
+    const glm::dvec2 a = polygon[i], d = polygon[(i + 1) % polygon.size()] - a;
+    const auto inside = [&](glm::dvec2 p) { return d.x * (p.y - a.y) - d.y * (p.x - a.x); };
+    clipped.clear();
+    for (std::size_t j = 0; j < k.size(); ++j) {
+      const glm::dvec2 p = k[j], q = k[(j + 1) % k.size()];
+      const double sp = inside(p), sq = inside(q);
+      if (sp >= 0.0) clipped.push_back(p);
+      if ((sp >= 0.0) != (sq >= 0.0)) clipped.push_back(p + (sp / (sp - sq)) * (q - p));
+    }
+    std::swap(k, clipped);
+  }
+  return k;
+}
+
+// Random simple polygons (2-opt untangled random points) are simple, counter-
+// clockwise, about half reflex, and not star-shaped: no point sees them whole,
+// unlike the size class's random polygons drawn round a centre.
+TEST(Generators, RandomSimplePolygonsAreSimpleAndNoPointSeesThemWhole) {
+  for (std::size_t n : {20u, 300u, 3000u}) {
+    std::mt19937_64 rng(n);
+    const std::vector<glm::dvec2> p = random_simple_polygon(n, 100.0, rng).loops.at(0);
+    ASSERT_EQ(p.size(), n);
+    EXPECT_FALSE(loop_crossing(p)) << n;
+    double area2 = 0.0;
+    std::size_t reflex = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec2 a = p[(i + n - 1) % n], b = p[i], c = p[(i + 1) % n];
+      area2 += b.x * c.y - c.x * b.y;
+      if ((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x) < 0.0) ++reflex;
+    }
+    EXPECT_GT(area2, 0.0) << n;
+    if (n >= 300) {
+      EXPECT_GT(reflex, n * 2 / 5) << n;
+      EXPECT_LT(reflex, n * 3 / 5) << n;
+    }
+    EXPECT_TRUE(kernel(p, {0, 0}, {100, 100}).empty()) << n;
+  }
+  // The clipping finds a star-shaped polygon's kernel.
+  std::mt19937_64 rng(1);
+  EXPECT_FALSE(kernel(random_star_shaped(300, 40.0, rng).loops.at(0), {-40, -40}, {40, 40}).empty());
+}
+
 TEST(Generators, ASeedGivesTheSameCaseEveryTime) {
-  for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size, CaseClass::Stars, CaseClass::LargeStars}) {
+  for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size, CaseClass::Stars, CaseClass::LargeStars,
+                        CaseClass::RandomPolygons, CaseClass::LargeRandomPolygons}) {
     for (std::uint64_t seed : {0u, 7u, 12345u}) {
       const GeneratedCase a = generate_case(cls, seed), b = generate_case(cls, seed);
       EXPECT_EQ(a.description, b.description);

@@ -141,6 +141,18 @@ GeneratedCase stars_case(std::mt19937_64& rng, std::size_t least, std::size_t mo
   return c;
 }
 
+// n vertices drawn evenly in their logarithm from `least` to `most`, in a
+// square of 100 m, every edge at 45 degrees.
+GeneratedCase random_polygons_case(std::mt19937_64& rng, double least, double most) {
+  const auto n = static_cast<std::size_t>(
+      std::exp(std::uniform_real_distribution<double>(std::log(least), std::log(most))(rng)));
+  const NamedPlan plan = random_simple_polygon(n, 100.0, rng);
+  GeneratedCase c;
+  c.footprint = make_footprint(plan.loops, 45.0);
+  c.description = plan.name + ", every edge at 45 degrees";
+  return c;
+}
+
 }  // namespace
 
 const char* class_name(CaseClass c) {
@@ -150,6 +162,8 @@ const char* class_name(CaseClass c) {
     case CaseClass::Size: return "size";
     case CaseClass::Stars: return "stars";
     case CaseClass::LargeStars: return "large_stars";
+    case CaseClass::RandomPolygons: return "random_polygons";
+    case CaseClass::LargeRandomPolygons: return "large_random_polygons";
   }
   return "?";
 }
@@ -163,6 +177,8 @@ GeneratedCase generate_case(CaseClass c, std::uint64_t seed) {
     case CaseClass::Size: out = size_case(seed, rng); break;
     case CaseClass::Stars: out = stars_case(rng, 1000, 3000); break;
     case CaseClass::LargeStars: out = stars_case(rng, 3000, 12000); break;
+    case CaseClass::RandomPolygons: out = random_polygons_case(rng, 20, 1000); break;
+    case CaseClass::LargeRandomPolygons: out = random_polygons_case(rng, 1000, 10000); break;
   }
   out.description = std::string("class ") + class_name(c) + " seed " + std::to_string(seed) + ": " + out.description;
   return out;

@@ -24,6 +24,12 @@ enum class CaseClass {
   // 3,000 to 12,000 vertices (tests/soak/generated_stars_test.cc).
   Stars,
   LargeStars,
+  // (c) random simple polygons (random_simple_polygon: 2-opt untangled random
+  // points, not star-shaped, half their corners reflex): of 20 to 1,000
+  // vertices (tests/core/generated_random_polygons_test.cc) and of 1,000 to
+  // 10,000 (tests/soak/generated_random_polygons_test.cc).
+  RandomPolygons,
+  LargeRandomPolygons,
 };
 
 const char* class_name(CaseClass c);
