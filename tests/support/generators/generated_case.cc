@@ -40,13 +40,10 @@ GeneratedCase grid_case(std::uint64_t seed, std::mt19937_64& rng) {
   return c;
 }
 
-GeneratedCase angles_case(std::uint64_t seed, std::mt19937_64& rng) {
+// Class (b)'s angles, profiles, caps and plan edits on the footprint of c
+// (mode by seed): appended to its description.
+void with_angles(GeneratedCase& c, std::uint64_t seed, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const NamedPlan plan = grid_or_letter_plan(rng, 120);
-  const PlanTransform t = generated_transform(seed % 6, rng);  // no scaling or moving: heights stay in metres
-  GeneratedCase c;
-  c.footprint = make_footprint(apply(t, plan.loops), 45.0);
-  c.description = plan.name + ", " + t.name + ", ";
   const auto angle_in = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
   const std::size_t mode = (seed / 10) % 8;
   const bool capped = mode == 1 || mode == 3 || mode == 5 || (mode == 6 && unit(rng) < 0.5);
@@ -107,6 +104,15 @@ GeneratedCase angles_case(std::uint64_t seed, std::mt19937_64& rng) {
     c.options.max_height = angle_in(0.5, 12.0);
     c.description += ", max_height " + number(*c.options.max_height);
   }
+}
+
+GeneratedCase angles_case(std::uint64_t seed, std::mt19937_64& rng) {
+  const NamedPlan plan = grid_or_letter_plan(rng, 120);
+  const PlanTransform t = generated_transform(seed % 6, rng);  // no scaling or moving: heights stay in metres
+  GeneratedCase c;
+  c.footprint = make_footprint(apply(t, plan.loops), 45.0);
+  c.description = plan.name + ", " + t.name + ", ";
+  with_angles(c, seed, rng);
   return c;
 }
 
@@ -153,6 +159,15 @@ GeneratedCase random_polygons_case(std::mt19937_64& rng, double least, double mo
   return c;
 }
 
+// The same polygons (8 to 1,000 vertices) under class (b)'s angles,
+// profiles, caps and plan edits.
+GeneratedCase random_polygons_angles_case(std::uint64_t seed, std::mt19937_64& rng) {
+  GeneratedCase c = random_polygons_case(rng, 8, 1000);
+  c.description = c.description.substr(0, c.description.find(", every edge")) + ", ";
+  with_angles(c, seed, rng);
+  return c;
+}
+
 }  // namespace
 
 const char* class_name(CaseClass c) {
@@ -164,6 +179,7 @@ const char* class_name(CaseClass c) {
     case CaseClass::LargeStars: return "large_stars";
     case CaseClass::RandomPolygons: return "random_polygons";
     case CaseClass::LargeRandomPolygons: return "large_random_polygons";
+    case CaseClass::RandomPolygonsAngles: return "random_polygons_angles";
   }
   return "?";
 }
@@ -179,6 +195,7 @@ GeneratedCase generate_case(CaseClass c, std::uint64_t seed) {
     case CaseClass::LargeStars: out = stars_case(rng, 3000, 12000); break;
     case CaseClass::RandomPolygons: out = random_polygons_case(rng, 20, 1000); break;
     case CaseClass::LargeRandomPolygons: out = random_polygons_case(rng, 1000, 10000); break;
+    case CaseClass::RandomPolygonsAngles: out = random_polygons_angles_case(seed, rng); break;
   }
   out.description = std::string("class ") + class_name(c) + " seed " + std::to_string(seed) + ": " + out.description;
   return out;

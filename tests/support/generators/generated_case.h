@@ -30,6 +30,9 @@ enum class CaseClass {
   // 10,000 (tests/soak/generated_random_polygons_test.cc).
   RandomPolygons,
   LargeRandomPolygons,
+  // (b) on (c): random simple polygons of 8 to 1,000 vertices under class
+  // (b)'s angles, profiles, caps and plan edits (tests/soak).
+  RandomPolygonsAngles,
 };
 
 const char* class_name(CaseClass c);
