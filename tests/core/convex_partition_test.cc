@@ -231,6 +231,22 @@ TEST(ConvexPartition, NoEarWhoseNewEdgeRunsThroughAVertexUpToRounding) {
                    20);
 }
 
+// The cap of a sweep (random_polygons_angles seed 493, minimised): a hole
+// whose rightmost vertex, the vertex of the outer loop the bridge must pass
+// and the end it aimed at lie on one plane's line, 1e-15 off it. Bridged
+// past that vertex, along the outer loop's own edge, one piece came out of
+// negative area over the others.
+TEST(ConvexPartition, NoBridgeAlongAnEdgeOfTheRingUpToRounding) {
+  expect_partition({{{43.350928485010321, -1.6495337116279103}, {99.421993262702671, 18.574109187541971},
+                     {99.406810017950718, 23.686349009019878}, {102.23557192383745, 20.922628865091561},
+                     {84.704876960869967, 101.22742949974135}, {-1.8091677638547168, 78.791962025373138}},
+                    {{87.422699060104662, 24.412400486680944}, {88.788669882862919, 26.376191415228408},
+                     {88.879997616849707, 24.832540838389914}},
+                    {{95.909826443642373, 27.971484247829824}, {96.841700099989026, 26.192479318859014},
+                     {96.895914814658369, 26.139511163880261}, {92.563769101317462, 25.518701208047318}}},
+                   8);
+}
+
 // A square with k x k holes (bench/scale_inputs.py's "holes"): once they are
 // bridged, ears fan from one corner across a whole row of holes. Each ear
 // asked looks at the few vertices near it (rows of holes' corners sit in
