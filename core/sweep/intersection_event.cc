@@ -511,7 +511,11 @@ bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in
   const double out = ccw_from_in(out_angle);
   double at;
   if (pa.k == 0.0 && pb.k == 0.0) {
-    return false;  // neither line moves
+    // Neither line moves, so their crossing stands where the chains met: a
+    // corner of the union if both edges run on past it (two loops whose
+    // corners met head-on on the line of a third, leaning out, between two
+    // standing walls).
+    return crossing_runs_on_both_spans(st, a_with, a, b, b_with, glm::dvec2(0.0));
   } else if (pa.k == 0.0) {
     // Along a's line; b moves k_b / (n_b . dir_a) per unit height along dir_a,
     // and the in-ray points along -dir_a.
