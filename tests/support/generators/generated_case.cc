@@ -147,12 +147,17 @@ GeneratedCase stars_case(std::mt19937_64& rng, std::size_t least, std::size_t mo
   return c;
 }
 
-// n vertices drawn evenly in their logarithm from `least` to `most`, in a
-// square of 100 m, every edge at 45 degrees.
-GeneratedCase random_polygons_case(std::mt19937_64& rng, double least, double most) {
+// A random simple polygon of n vertices, n drawn evenly in its logarithm
+// from `least` to `most`, in a square of 100 m.
+NamedPlan random_polygon_plan(std::mt19937_64& rng, double least, double most) {
   const auto n = static_cast<std::size_t>(
       std::exp(std::uniform_real_distribution<double>(std::log(least), std::log(most))(rng)));
-  const NamedPlan plan = random_simple_polygon(n, 100.0, rng);
+  return random_simple_polygon(n, 100.0, rng);
+}
+
+// Such a polygon with every edge at 45 degrees.
+GeneratedCase random_polygons_case(std::mt19937_64& rng, double least, double most) {
+  const NamedPlan plan = random_polygon_plan(rng, least, most);
   GeneratedCase c;
   c.footprint = make_footprint(plan.loops, 45.0);
   c.description = plan.name + ", every edge at 45 degrees";
@@ -162,8 +167,10 @@ GeneratedCase random_polygons_case(std::mt19937_64& rng, double least, double mo
 // The same polygons (8 to 1,000 vertices) under class (b)'s angles,
 // profiles, caps and plan edits.
 GeneratedCase random_polygons_angles_case(std::uint64_t seed, std::mt19937_64& rng) {
-  GeneratedCase c = random_polygons_case(rng, 8, 1000);
-  c.description = c.description.substr(0, c.description.find(", every edge")) + ", ";
+  const NamedPlan plan = random_polygon_plan(rng, 8, 1000);
+  GeneratedCase c;
+  c.footprint = make_footprint(plan.loops, 45.0);
+  c.description = plan.name + ", ";
   with_angles(c, seed, rng);
   return c;
 }
