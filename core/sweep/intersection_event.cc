@@ -483,17 +483,21 @@ bool crossing_runs_on_both_spans(const State& st, int a_with, int a, int b, int 
 // Whether the wedge outside the solid between an incoming ray (edge a, at
 // angle in_angle) and the next outgoing ray counter-clockwise (edge b) closes
 // as the sweep rises: the lines of a and b then cross inside that wedge, or on
-// its boundary. Where one plane is vertical its line stands still, so the
-// crossing runs exactly along that edge's ray: the other plane leaning into
-// the gap eats into the edge's span (a wall leaning out across a notch meets
-// the opposite wall), and the angle of the computed velocity, equal to the
-// ray's only up to rounding, cannot say on which side of the ray it runs.
-// Even so the crossing closes the gap only if it runs onto the wall's span:
-// a_with | a (b | b_with), the corner of the wall's own chain, bounds that
-// span on the ray, and where it runs out faster the crossing stays behind it,
-// on no edge at all (angles seed 13108: an edge leaning out at 0.6 m per m
-// follows, on its line, the other loop's edge leaning in at 1 m per m; the
-// loops only touched).
+// its boundary, or their crossing runs along both edges' spans (the regions
+// overlap above the collision, whichever way it runs; this holds where one or
+// both planes are vertical too: a corner growing out along a standing wall's
+// line meets the other loop's edge leaning in, generated_random_polygons_695).
+// Where one plane is vertical its line stands still, so the crossing runs
+// exactly along that edge's ray: the other plane leaning into the gap eats
+// into the edge's span (a wall leaning out across a notch meets the opposite
+// wall), and the angle of the computed velocity, equal to the ray's only up
+// to rounding, cannot say on which side of the ray it runs. Even so the
+// crossing closes the gap only if it runs onto the wall's span: a_with | a
+// (b | b_with), the corner of the wall's own chain, bounds that span on the
+// ray, and where it runs out faster the crossing stays behind it, on no edge
+// at all (angles seed 13108: an edge leaning out at 0.6 m per m follows, on
+// its line, the other loop's edge leaning in at 1 m per m; the loops only
+// touched).
 bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in_angle, double out_angle) {
   if (a == b) return false;
   const Plane& pa = st.edges[a].plane;
@@ -502,6 +506,10 @@ bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in
     // Lines facing each other across a sliver close it when they lean out more than in.
     return glm::dot(pa.n, pb.n) < 0.0 && pa.k + pb.k < 0.0;
   }
+  const glm::dvec2 v = crossing_velocity(pa, pb);
+  if (crossing_runs_on_both_spans(st, a_with, a, b, b_with, v)) return true;
+  // Neither line moves: their crossing stands where the chains met.
+  if (pa.k == 0.0 && pb.k == 0.0) return false;
   auto ccw_from_in = [&](double angle) {
     double d = angle - in_angle;
     while (d < 0.0) d += 2.0 * M_PI;
@@ -509,30 +517,21 @@ bool gap_closes(const State& st, int a_with, int a, int b, int b_with, double in
     return d;
   };
   const double out = ccw_from_in(out_angle);
-  double at;
-  if (pa.k == 0.0 && pb.k == 0.0) {
-    // Neither line moves, so their crossing stands where the chains met: a
-    // corner of the union if both edges run on past it (two loops whose
-    // corners met head-on on the line of a third, leaning out, between two
-    // standing walls).
-    return crossing_runs_on_both_spans(st, a_with, a, b, b_with, glm::dvec2(0.0));
-  } else if (pa.k == 0.0) {
+  if (pa.k == 0.0) {
     // Along a's line; b moves k_b / (n_b . dir_a) per unit height along dir_a,
     // and the in-ray points along -dir_a.
     const double along = -pb.k / glm::dot(pb.n, st.edges[a].dir);
     if (along > 0.0 && !ahead_of_corner(st, a_with, a, -st.edges[a].dir, along)) return false;
-    at = along > 0.0 ? 0.0 : M_PI;
-  } else if (pb.k == 0.0) {
+    return (along > 0.0 ? 0.0 : M_PI) <= out;
+  }
+  if (pb.k == 0.0) {
     const double along = pa.k / glm::dot(pa.n, st.edges[b].dir);
     if (along > 0.0 && !ahead_of_corner(st, b, b_with, st.edges[b].dir, along)) return false;
-    at = along > 0.0 ? out : ccw_from_in(out_angle + M_PI);
-  } else {
-    const glm::dvec2 v = crossing_velocity(pa, pb);
-    if (v == glm::dvec2(0.0)) return false;
-    at = ccw_from_in(std::atan2(v.y, v.x));
-    return (at > 0.0 && at < out) || crossing_runs_on_both_spans(st, a_with, a, b, b_with, v);
+    return (along > 0.0 ? out : ccw_from_in(out_angle + M_PI)) <= out;
   }
-  return at <= out;
+  if (v == glm::dvec2(0.0)) return false;
+  const double at = ccw_from_in(std::atan2(v.y, v.x));
+  return at > 0.0 && at < out;
 }
 
 // A set of corners or edges emptied in O(1): a member carries the set's
