@@ -13,9 +13,10 @@ namespace procex::engine {
 // True if corner c sits between parallel same-direction edges whose planes differ.
 bool ambiguous(const State& st, int c);
 
-// Resolves the ambiguity at corner c (alive, at the current height) by the
-// volume rule of the sweep's options. Returns the corners that replace it
-// (already linked), which may themselves need scheduling.
+// Resolves the ambiguity at corner c (alive, at the current height): by the
+// way its lines cross, where they do, else by the volume rule of the sweep's
+// options. Returns the corners that replace it (already linked), which may
+// themselves need scheduling.
 std::vector<int> resolve_ambiguity(State& st, int c);
 
 }  // namespace procex::engine

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
 #include "core/sweep/intersection_event.h"
 #include "core/sweep/plan_edit_event.h"
+#include "core/sweep/settle.h"
 
 namespace procex::engine {
 namespace {
@@ -91,7 +93,14 @@ void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<dou
                const std::vector<std::string>& tags, int first_source, int loop) {
   const std::vector<glm::dvec2> dirs = edge_directions(points, loop);
   unify_collinear_slopes(points, dirs, slopes, st.options().ambiguity, st.tol().position());
+  const int first = static_cast<int>(st.corners.size());
   load_edges(st, points, dirs, slopes, tags, first_source);
+  // Settled as any corner made later: one between lines so nearly parallel
+  // that it would run faster than any corner may (off their line by more
+  // than the clustering distance, so not straight) is resolved where it starts.
+  std::vector<int> made(st.corners.size() - static_cast<std::size_t>(first)), live;
+  std::iota(made.begin(), made.end(), first);
+  settle(st, made, live);
 }
 
 void load_edges(State& st, const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,

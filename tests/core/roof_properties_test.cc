@@ -176,7 +176,8 @@ TEST(Generators, RandomSimplePolygonsAreSimpleAndNoPointSeesThemWhole) {
 
 TEST(Generators, ASeedGivesTheSameCaseEveryTime) {
   for (CaseClass cls : {CaseClass::Grid, CaseClass::Angles, CaseClass::Size, CaseClass::Stars, CaseClass::LargeStars,
-                        CaseClass::RandomPolygons, CaseClass::LargeRandomPolygons, CaseClass::RandomPolygonsAngles}) {
+                        CaseClass::RandomPolygons, CaseClass::LargeRandomPolygons, CaseClass::RandomPolygonsAngles,
+                        CaseClass::RandomPolygonsWalls}) {
     for (std::uint64_t seed : {0u, 7u, 12345u}) {
       const GeneratedCase a = generate_case(cls, seed), b = generate_case(cls, seed);
       EXPECT_EQ(a.description, b.description);

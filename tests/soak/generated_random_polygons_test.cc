@@ -5,7 +5,9 @@
 // included (its inexact constructions past kExactOracleVertices); and 8 to
 // 1,000 vertices under class (b)'s per-edge angles, vertical edges, caps,
 // profiles and plan edits, where walls leaning out over the polygons'
-// pockets meet roofs that grid plans, whose walls stand apart, do not make.
+// pockets meet roofs that grid plans, whose walls stand apart, do not make;
+// and the same polygons of 8 to 1,500 vertices with a quarter of their edges
+// vertical on every case (class (b)'s fifth mode), capped.
 // Run by hand (ctest -L soak, or PROCEX_SOAK=1); TESTING.md records them.
 #include <cstddef>
 
@@ -34,6 +36,15 @@ TEST_P(GeneratedRandomPolygonsAngles, EveryCasePassesEveryProperty) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsAngles, ::testing::Range<std::size_t>(0, kParts));
+
+class GeneratedRandomPolygonsWalls : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedRandomPolygonsWalls, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::RandomPolygonsWalls, GetParam(), kParts,
+                {.normal = 400, .soak = 10000, .shrink_tries = 200});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsWalls, ::testing::Range<std::size_t>(0, kParts));
 
 }  // namespace
 }  // namespace procex::testing

@@ -40,6 +40,21 @@ GeneratedCase grid_case(std::uint64_t seed, std::mt19937_64& rng) {
   return c;
 }
 
+// A quarter of c's edges vertical, the rest at lo..hi degrees: appended to
+// its description. Unless `neighbouring` (capped), no two vertical edges are
+// neighbours and the last edge slopes, so that sloped ones close the roof
+// over them.
+void walls_among_slopes(GeneratedCase& c, double lo, double hi, bool neighbouring, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (Loop& loop : c.footprint.loops)
+    for (std::size_t i = 0; i < loop.edges.size(); ++i) {
+      const bool after_vertical = i > 0 && loop.edges[i - 1].angle_deg == 0.0;
+      const bool vertical = unit(rng) < 0.25 && (neighbouring || (!after_vertical && i + 1 < loop.edges.size()));
+      loop.edges[i].angle_deg = vertical ? 0.0 : lo + (hi - lo) * unit(rng);
+    }
+  c.description += "per-edge angles in " + number(lo) + ".." + number(hi) + ", a quarter vertical";
+}
+
 // Class (b)'s angles, profiles, caps and plan edits on the footprint of c
 // (mode by seed): appended to its description.
 void with_angles(GeneratedCase& c, std::uint64_t seed, std::mt19937_64& rng) {
@@ -65,15 +80,10 @@ void with_angles(GeneratedCase& c, std::uint64_t seed, std::mt19937_64& rng) {
       c.description += mode == 2 ? "per-edge angles in 5..80" : "per-edge angles in -60..80";
       break;
     case 4:
+      walls_among_slopes(c, 5, 80, false, rng);
+      break;
     case 5:
-      // A quarter of the edges vertical; uncapped, no two vertical edges are
-      // neighbours, so that sloped ones close the roof over them.
-      each_edge([&](Loop& loop, std::size_t i) {
-        const bool after_vertical = i > 0 && loop.edges[i - 1].angle_deg == 0.0;
-        const bool vertical = unit(rng) < 0.25 && (mode == 5 || (!after_vertical && i + 1 < loop.edges.size()));
-        loop.edges[i].angle_deg = vertical ? 0.0 : mode == 4 ? angle_in(5, 80) : angle_in(-60, 80);
-      });
-      c.description += mode == 4 ? "per-edge angles in 5..80, a quarter vertical" : "per-edge angles in -60..80, a quarter vertical";
+      walls_among_slopes(c, -60, 80, true, rng);
       break;
     case 6: {
       const bool one = unit(rng) < 0.5;
@@ -175,6 +185,20 @@ GeneratedCase random_polygons_angles_case(std::uint64_t seed, std::mt19937_64& r
   return c;
 }
 
+// Walls among slopes under a flat top, where a wall standing between two
+// loops meets a roof leaning out across it: such polygons of 8 to 1,500
+// vertices under class (b)'s fifth mode, on every case.
+GeneratedCase random_polygons_walls_case(std::mt19937_64& rng) {
+  const NamedPlan plan = random_polygon_plan(rng, 8, 1500);
+  GeneratedCase c;
+  c.footprint = make_footprint(plan.loops, 45.0);
+  c.description = plan.name + ", ";
+  walls_among_slopes(c, -60, 80, true, rng);
+  c.options.max_height = 0.5 + 11.5 * std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+  c.description += ", max_height " + number(*c.options.max_height);
+  return c;
+}
+
 }  // namespace
 
 const char* class_name(CaseClass c) {
@@ -187,6 +211,7 @@ const char* class_name(CaseClass c) {
     case CaseClass::RandomPolygons: return "random_polygons";
     case CaseClass::LargeRandomPolygons: return "large_random_polygons";
     case CaseClass::RandomPolygonsAngles: return "random_polygons_angles";
+    case CaseClass::RandomPolygonsWalls: return "random_polygons_walls";
   }
   return "?";
 }
@@ -203,6 +228,7 @@ GeneratedCase generate_case(CaseClass c, std::uint64_t seed) {
     case CaseClass::RandomPolygons: out = random_polygons_case(rng, 20, 1000); break;
     case CaseClass::LargeRandomPolygons: out = random_polygons_case(rng, 1000, 10000); break;
     case CaseClass::RandomPolygonsAngles: out = random_polygons_angles_case(seed, rng); break;
+    case CaseClass::RandomPolygonsWalls: out = random_polygons_walls_case(rng); break;
   }
   out.description = std::string("class ") + class_name(c) + " seed " + std::to_string(seed) + ": " + out.description;
   return out;

@@ -33,6 +33,9 @@ enum class CaseClass {
   // (b) on (c): random simple polygons of 8 to 1,000 vertices under class
   // (b)'s angles, profiles, caps and plan edits (tests/soak).
   RandomPolygonsAngles,
+  // (b) on (c): such polygons of 8 to 1,500 vertices, a quarter of their
+  // edges vertical, the rest at -60..80 degrees, capped (tests/soak).
+  RandomPolygonsWalls,
 };
 
 const char* class_name(CaseClass c);
