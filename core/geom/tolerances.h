@@ -50,6 +50,9 @@ inline double mesh_distance_relative(double made_relative) {
 struct SweepTolerances {
   double scale = 1.0;       // characteristic length of the input (bounding-box extent)
   double relative = 1e-7;   // the clustering distances below, relative to scale
+  // How far rounding may have moved one point of the plan from another where
+  // it stands (before the local frame): two ulps of its coordinates' magnitude.
+  double rounding = 0.0;
 
   // Where rounding makes a sweep fail at the default clustering distance, it
   // runs again with these, in order (a near-coincidence at one scale is
@@ -64,6 +67,12 @@ struct SweepTolerances {
   double simultaneous() const { return std::min(relative, retry_relative[0]) * scale; }
   // Paper delta3: events within this plan distance at one height are one point.
   double position() const { return relative * scale; }
+  // How far off its neighbours' line a corner may lie and still be one drawn
+  // straight (rounding's, with a margin of 32). Bent by more, the lines of
+  // edges of different slopes cross there, and their corner runs along them
+  // one way, which the weighted skeleton follows; bent by less, it has no way
+  // and the volume rule picks a slope (paper 4.5).
+  double straight() const { return 32.0 * rounding; }
   // Paper delta1: how far a collision may lie outside an edge's span and still hit it.
   double span_margin() const { return relative * scale; }
   // How far rounding may have put a meeting of planes of this conditioning

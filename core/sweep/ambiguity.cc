@@ -36,7 +36,7 @@ void emit_along(State& st, int face, std::uint32_t from, std::uint32_t to, const
 
 }  // namespace
 
-std::vector<int> resolve_ambiguity(State& st, int c) {
+std::vector<int> resolve_ambiguity(State& st, int c, double straight) {
   std::vector<int> made;
   std::vector<std::uint32_t> line{st.corners[c].origin};
   // Each step removes one span, so a loop of n corners settles in n steps.
@@ -46,18 +46,17 @@ std::vector<int> resolve_ambiguity(State& st, int c) {
     const double ka = st.edges[k.prev_edge].plane.k, kb = st.edges[k.next_edge].plane.k;
     const Plane& pa = st.edges[k.prev_edge].plane;
     const Plane& pb = st.edges[k.next_edge].plane;
-    // Where the corner lies off its neighbours' line by more than the
-    // clustering distance, the lines cross there, and the corner (too fast
-    // to follow, motion_of) runs along them one way: its plane runs on over
-    // the span it runs into, which ends here (a wall beside a roof at 72
+    // Where the corner lies off its neighbours' line by more than `straight`,
+    // the lines cross there, and the corner (too fast to follow, motion_of)
+    // runs along them one way: the plane of the span it does not run into
+    // runs on over the other, which ends here (a wall beside a roof at 72
     // degrees on a line bent by 3.7e-7 rad, its corner at 8e6 m per m,
     // generated_random_polygons_scan_1607). On a line straight up to that,
-    // whose bend is rounding's (a plan turned and moved far off), the plane
-    // leaning in less keeps more volume under it.
+    // the plane leaning in less keeps more volume under it.
     const glm::dvec2 at = st.position(c, st.height);
     const double shorter = std::min(glm::distance(st.position(k.prev, st.height), at),
                                     glm::distance(at, st.position(k.next, st.height)));
-    const bool keep_prev = std::abs(cross(pa.n, pb.n)) * shorter > st.tol().position()
+    const bool keep_prev = std::abs(cross(pa.n, pb.n)) * shorter > straight
                                ? glm::dot(crossing_velocity(pa, pb), st.edges[k.next_edge].dir) > 0.0
                                : st.options().ambiguity == Ambiguity::MaximizeVolume ? ka <= kb : ka >= kb;
     st.corners[c].alive = false;

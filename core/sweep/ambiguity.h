@@ -14,9 +14,10 @@ namespace procex::engine {
 bool ambiguous(const State& st, int c);
 
 // Resolves the ambiguity at corner c (alive, at the current height): by the
-// way its lines cross, where they do, else by the volume rule of the sweep's
-// options. Returns the corners that replace it (already linked), which may
-// themselves need scheduling.
-std::vector<int> resolve_ambiguity(State& st, int c);
+// way its lines cross, where it lies off its neighbours' line by more than
+// `straight`, else by the volume rule of the sweep's options. Returns the
+// corners that replace it (already linked), which may themselves need
+// scheduling.
+std::vector<int> resolve_ambiguity(State& st, int c, double straight);
 
 }  // namespace procex::engine

@@ -184,6 +184,7 @@ std::uint64_t sweeps_retried() { return retried.load(std::memory_order_relaxed);
 Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   const LocalFrame frame = local_frame(footprint);
   engine::Tolerances tol{frame.extent};
+  tol.rounding = frame.rounding;
   std::size_t plan_vertices = 0;
   for (const Loop& loop : footprint.loops) plan_vertices += loop.points.size();
   engine::Budget budget(options.budget, plan_vertices);

@@ -201,6 +201,19 @@ double roof_tolerance(const Footprint& footprint, double made_relative) {
          64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
 }
 
+double roof_tolerance(const Footprint& footprint, const Surface& roof) {
+  Bounds b = bounds(footprint);
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec3& v : roof.vertices) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+    b.max_abs = std::max({b.max_abs, std::abs(v.x), std::abs(v.y)});
+  }
+  const double diagonal = roof.vertices.empty() ? b.diagonal() : std::max(b.diagonal(), glm::length(hi - lo));
+  return mesh_distance_relative(roof.tolerance_relative) * diagonal +
+         64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
+}
+
 std::vector<std::string> check_valid_mesh(const Surface& surface) {
   try {
     const ValidationReport v = validate(build_mesh(surface), roof_validation(surface));

@@ -116,7 +116,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
       capped.max_height = e.height() + 10.0 * plan_diagonal(f);
       try {
         const Surface s = sweep(f, capped);
-        const double tol = roof_tolerance(f, s.tolerance_relative);
+        const double tol = roof_tolerance(f, s);
         add(r.problems, what + "refused as rising forever, capped: ", check_valid_mesh(s));
         add(r.problems, what + "refused as rising forever, capped: ", check_faces_on_planes(f, capped, s, tol));
         if (!(cap_area(s) > tol * plan_diagonal(f)))
@@ -136,7 +136,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
   };
   const std::optional<Surface> roof = sweep_guarded(fp, c.options, "");
   if (!roof) return r;
-  const double tol = roof_tolerance(fp, roof->tolerance_relative);
+  const double tol = roof_tolerance(fp, *roof);
   add(r.problems, "", check_valid_mesh(*roof));
   add(r.problems, "", check_faces_on_planes(fp, c.options, *roof, tol));
   if (inward_roof(fp, c.options)) {
@@ -161,7 +161,7 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
     for (const PlanTransform& t : transforms) {
       const Footprint moved = transformed(fp, t);
       if (const std::optional<Surface> other = sweep_guarded(moved, c.options, t.name + ": ")) {
-        const double moved_tol = std::max(tol, roof_tolerance(moved, other->tolerance_relative));
+        const double moved_tol = std::max(tol, roof_tolerance(moved, *other));
         add(r.problems, t.name + ": ", check_faces_on_planes(moved, c.options, *other, moved_tol));
         add(r.problems, t.name + ": ", compare_transformed(*roof, t, *other, moved_tol));
       }
