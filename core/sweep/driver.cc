@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <glm/geometric.hpp>
 
 #include "core/geom/error.h"
+#include "core/sweep/ambiguity.h"
 #include "core/sweep/intersection_event.h"
 #include "core/sweep/plan_edit_event.h"
-#include "core/sweep/settle.h"
 
 namespace procex::engine {
 namespace {
@@ -98,14 +97,16 @@ void load_loop(State& st, const std::vector<glm::dvec2>& points, std::vector<dou
                const std::vector<std::string>& tags, int first_source, int loop) {
   const std::vector<glm::dvec2> dirs = edge_directions(points, loop);
   unify_collinear_slopes(points, dirs, slopes, st.options().ambiguity, st.tol().straight());
-  const int first = static_cast<int>(st.corners.size());
+  const std::size_t first = st.corners.size();
   load_edges(st, points, dirs, slopes, tags, first_source);
-  // Settled as any corner made later: one between lines so nearly parallel
-  // that it would run faster than any corner may (bent, so not straight) is
-  // resolved where it starts.
-  std::vector<int> made(st.corners.size() - static_cast<std::size_t>(first)), live;
-  std::iota(made.begin(), made.end(), first);
-  settle(st, made, live, st.tol().straight());
+  // A corner between lines so nearly parallel that it would run faster than
+  // any corner may (bent, so not straight) is resolved where it starts, as
+  // one made later is when settled. A loop no wider than the clustering
+  // distance is left to the sweep, which says so (a needle).
+  const std::size_t made = st.corners.size();
+  for (std::size_t c = first; c < made; ++c)
+    if (st.corners[c].alive && ambiguous(st, static_cast<int>(c)))
+      resolve_ambiguity(st, static_cast<int>(c), st.tol().straight());
 }
 
 void load_edges(State& st, const std::vector<glm::dvec2>& points, const std::vector<glm::dvec2>& dirs,

@@ -520,7 +520,7 @@ void apply_horizontal_run(State& st, EventQueue& queue, ProfileEvents& profile_e
     for (std::size_t i = 0; i < corners.size(); ++i) st.link(corners[i], corners[(i + 1) % corners.size()]);
   }
   std::vector<int> live;
-  settle(st, made, live, st.tol().position());
+  settle(st, made, live);
   std::vector<char> fresh(st.corners.size(), 0);
   for (int c : live) {
     queue.schedule(st, c);

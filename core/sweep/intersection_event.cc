@@ -1453,7 +1453,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   auto settle_rewired = [&] {
     for (const Rewired& r : rewired) {
       st.height = r.z;
-      settle(st, r.made, lists.settled, st.tol().position());
+      settle(st, r.made, lists.settled);
       for (int n : lists.settled) {
         if (!st.corners[n].alive) continue;
         queue.schedule(st, n, r.edges);

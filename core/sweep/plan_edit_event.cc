@@ -375,7 +375,7 @@ void PlanEditEvents::finish_batch(State& st, EventQueue& queue, ProfileEvents& p
   } else {
     std::vector<char> fresh(st.corners.size(), 0);
     std::vector<int> live;
-    settle(st, batch.made, live, st.tol().position());
+    settle(st, batch.made, live);
     for (int k : live) {
       queue.schedule(st, k);
       queue.schedule_edge_event(st, st.corners[k].prev);

@@ -116,7 +116,7 @@ void apply_profile_events(State& st, EventQueue& queue, ProfileEvents& events, c
     made.push_back(fresh[c]);
   }
   std::vector<int> live;
-  settle(st, made, live, st.tol().position());
+  settle(st, made, live);
   std::vector<char> scheduled(st.corners.size(), 0);
   for (int c : live) {
     queue.schedule(st, c);

@@ -88,7 +88,7 @@ bool close_if_degenerate(State& st, int start) {
 
 }  // namespace
 
-void settle(State& st, const std::vector<int>& made, std::vector<int>& live, double straight) {
+void settle(State& st, const std::vector<int>& made, std::vector<int>& live) {
   live.clear();
   // Corners made in settling one are settled before the next of `made`; the
   // stack is needed only then (a spike folds, neighbours are ambiguous).
@@ -100,7 +100,7 @@ void settle(State& st, const std::vector<int>& made, std::vector<int>& live, dou
         if (st.corners[n].motion == Motion::Ridge) {
           replaced = close_spike(st, n);
         } else if (ambiguous(st, n)) {
-          replaced = resolve_ambiguity(st, n, straight);
+          replaced = resolve_ambiguity(st, n, st.tol().position());
         } else {
           live.push_back(n);
         }

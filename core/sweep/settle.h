@@ -10,11 +10,10 @@
 namespace procex::engine {
 
 // Settles the corners just made (and those their settling makes); `live`
-// becomes the ones still alive, in order, ready for scheduling. A corner off
-// its neighbours' line by no more than `straight` is taken as straight
-// (resolve_ambiguity): the plan's own corners are known to its rounding
-// (SweepTolerances::straight), those the sweep makes to the clustering
-// distance (position; the lines of plan edits and profiles are worked out).
-void settle(State& st, const std::vector<int>& made, std::vector<int>& live, double straight);
+// becomes the ones still alive, in order, ready for scheduling. An ambiguous
+// corner off its neighbours' line by no more than the clustering distance is
+// taken as straight (resolve_ambiguity): the sweep knows the corners it
+// makes, and the lines of plan edits and profiles it works out, no better.
+void settle(State& st, const std::vector<int>& made, std::vector<int>& live);
 
 }  // namespace procex::engine
