@@ -494,7 +494,7 @@ bool crossing_runs_on_both_spans(const State& st, int a_with, int a, int b, int 
 // its boundary, or their crossing runs along both edges' spans (the regions
 // overlap above the collision, whichever way it runs; this holds where one or
 // both planes are vertical too: a corner growing out along a standing wall's
-// line meets the other loop's edge leaning in, generated_random_polygons_695).
+// line meets the other loop's edge leaning in, generated_random_polygons_angles_695).
 // Where one plane is vertical its line stands still, so the crossing runs
 // exactly along that edge's ray: the other plane leaning into the gap eats
 // into the edge's span (a wall leaning out across a notch meets the opposite

@@ -203,14 +203,12 @@ double roof_tolerance(const Footprint& footprint, double made_relative) {
 
 double roof_tolerance(const Footprint& footprint, const Surface& roof) {
   Bounds b = bounds(footprint);
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& v : roof.vertices) {
-    lo = glm::min(lo, v);
-    hi = glm::max(hi, v);
+    b.lo = glm::min(b.lo, glm::dvec2(v));
+    b.hi = glm::max(b.hi, glm::dvec2(v));
     b.max_abs = std::max({b.max_abs, std::abs(v.x), std::abs(v.y)});
   }
-  const double diagonal = roof.vertices.empty() ? b.diagonal() : std::max(b.diagonal(), glm::length(hi - lo));
-  return mesh_distance_relative(roof.tolerance_relative) * diagonal +
+  return mesh_distance_relative(roof.tolerance_relative) * b.diagonal() +
          64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
 }
 

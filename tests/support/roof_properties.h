@@ -26,12 +26,13 @@ double plan_diagonal(const Footprint& footprint);
 // finest), of the footprint's bounding-box diagonal, plus the rounding of its
 // largest coordinate.
 double roof_tolerance(const Footprint& footprint, double made_relative = 0.0);
-// The same for `roof`, made at its own scale, of the larger of the
-// footprint's and the roof's extents, as the validator holds it: a wall
-// leaning out under a high cap carries the roof beyond its plan (a spike
-// leaning out, 0.00015 rad wide, reached 35 km from a 100 m plan at 9.7 m,
+// The same for `roof`, made at its own scale, of the plan extent of the
+// footprint and the roof together: a wall leaning out under a high cap
+// carries the roof beyond its plan (a spike leaning out, 0.00015 rad wide,
+// reached 35 km from a 100 m plan at 9.7 m,
 // generated_random_polygons_walls_5943), and what meets out there is known
-// to that extent's digits.
+// to that extent's digits. Not its height: a roof capped far above its
+// last event to show it has a top is known to its plan's.
 double roof_tolerance(const Footprint& footprint, const Surface& roof);
 
 // build_mesh + validate: closed, 2-manifold, oriented, planar faces, no
