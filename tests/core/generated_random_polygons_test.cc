@@ -1,9 +1,14 @@
 // Class (c) of issue 12 item 2, random simple polygons of 20 to 1,000
 // vertices (random_simple_polygon: random points untangled by 2-opt): plans
 // with pockets inside pockets that no point sees whole, where the other
-// classes' many-vertex plans are star-shaped. Every case must pass every
-// property check_case applies, CGAL's skeleton included; those of 1,000 to
-// 10,000 vertices are in tests/soak.
+// classes' many-vertex plans are star-shaped; and (b) on (c): such polygons
+// of 8 to 1,000 vertices under class (b)'s per-edge angles, vertical edges,
+// caps, profiles and plan edits, and of 8 to 1,500 vertices with a quarter of
+// their edges vertical on every case, capped, where walls leaning out over
+// the polygons' pockets meet roofs that grid plans, whose walls stand apart,
+// do not make. Every case must pass every property check_case applies,
+// CGAL's skeleton included; those of 1,000 to 10,000 vertices are in
+// tests/soak.
 #include <cstddef>
 
 #include <gtest/gtest.h>
@@ -22,6 +27,24 @@ TEST_P(GeneratedRandomPolygons, EveryCasePassesEveryProperty) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygons, ::testing::Range<std::size_t>(0, kParts));
+
+class GeneratedRandomPolygonsAngles : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedRandomPolygonsAngles, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::RandomPolygonsAngles, GetParam(), kParts,
+                {.normal = 400, .soak = 10000, .shrink_tries = 200});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsAngles, ::testing::Range<std::size_t>(0, kParts));
+
+class GeneratedRandomPolygonsWalls : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(GeneratedRandomPolygonsWalls, EveryCasePassesEveryProperty) {
+  run_generated(CaseClass::RandomPolygonsWalls, GetParam(), kParts,
+                {.normal = 400, .soak = 10000, .shrink_tries = 200});
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsWalls, ::testing::Range<std::size_t>(0, kParts));
 
 }  // namespace
 }  // namespace procex::testing

@@ -31,10 +31,11 @@ enum class CaseClass {
   RandomPolygons,
   LargeRandomPolygons,
   // (b) on (c): random simple polygons of 8 to 1,000 vertices under class
-  // (b)'s angles, profiles, caps and plan edits (tests/soak).
+  // (b)'s angles, profiles, caps and plan edits
+  // (tests/core/generated_random_polygons_test.cc).
   RandomPolygonsAngles,
   // (b) on (c): such polygons of 8 to 1,500 vertices, a quarter of their
-  // edges vertical, the rest at -60..80 degrees, capped (tests/soak).
+  // edges vertical, the rest at -60..80 degrees, capped (the same file).
   RandomPolygonsWalls,
 };
 
