@@ -168,6 +168,13 @@ Surface sweep_with(const Footprint& footprint, glm::dvec2 centre, const SweepOpt
     engine::cap_at(st, std::max(st.height, *options.max_height));
   }
   Surface surface = engine::build_surface(st);
+  // A plan whose every event fell within the clustering height of its base
+  // (a triangle 8e-7 m thin and 9 m long) comes out flat: no solid, and the
+  // validator's "faces point inwards" would blame the wrong thing.
+  if (std::none_of(surface.vertices.begin(), surface.vertices.end(), [](const glm::dvec3& v) { return v.z > 0.0; }))
+    throw SweepError("sweep: the roof has no height: every event fell within the clustering distance of the base, so "
+                     "the plan is too thin for the sweep everywhere; widen it",
+                     0.0, {});
   engine::close_surface(surface);
   if (st.shared_instant) engine::check_simple_faces(surface);
   surface.anchors = anchors.finish();

@@ -298,5 +298,46 @@ TEST(Sweep, VolumeMinimisingResolvesTheOtherWay) {
   EXPECT_GT(rmax.volume, rmin.volume);
 }
 
+TEST(Sweep, NeighboursBentByMoreThanRoundingFollowTheWayTheirLinesCross) {
+  // The same neighbours at 30 and 60 degrees, the second turned by 2e-7 rad:
+  // their corner runs along the line at 5.8e6 m per m, too fast to follow,
+  // into the first edge where the turn is convex (60 runs on over it) and
+  // into the second where it is reflex (30 runs on), whatever the volume rule.
+  for (const double bend : {2e-6, -2e-6}) {
+    Footprint fp = make_footprint({{{0, 0}, {10, 0}, {20, bend}, {20, 10}, {0, 10}}}, 45);
+    fp.loops[0].edges[0].angle_deg = 30;
+    fp.loops[0].edges[1].angle_deg = 60;
+    Footprint kept = fp;
+    if (bend > 0.0)
+      kept.loops[0].edges[0].angle_deg = 60;
+    else
+      kept.loops[0].edges[1].angle_deg = 30;
+    for (const Ambiguity rule : {Ambiguity::MaximizeVolume, Ambiguity::MinimizeVolume}) {
+      SweepOptions o;
+      o.ambiguity = rule;
+      const auto r = testing::check_surface(sweep(fp, o), 1e-7);
+      EXPECT_TRUE(r.closed) << bend << ": " << r.problem;
+      EXPECT_NEAR(r.volume, testing::check_surface(sweep(kept, o), 1e-7).volume, 1e-4) << bend;
+    }
+  }
+}
+
+TEST(Sweep, APlanTooThinEverywhereSaysSo) {
+  // A triangle 8e-7 m thin and 9 m long: every event falls within the
+  // clustering distance of its base, and the roof would come out flat.
+  Footprint fp = make_footprint({{{82.1377, 38.895}, {84.5968, 43.1278}, {86.6817, 46.7165}}}, 45);
+  fp.loops[0].edges[0].angle_deg = 0;
+  fp.loops[0].edges[1].angle_deg = 72;
+  fp.loops[0].edges[2].angle_deg = 30;
+  SweepOptions o;
+  o.max_height = 3.0;
+  try {
+    (void)sweep(fp, o);
+    FAIL() << "a flat roof was returned";
+  } catch (const SweepError& e) {
+    EXPECT_NE(std::string(e.what()).find("the roof has no height"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace procex
