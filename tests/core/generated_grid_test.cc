@@ -4,24 +4,12 @@
 // fixture to keep in tests/data. The class runs in parts, so that ctest
 // spreads it over the cores. Class (b) is beside it; class (c), whose cases
 // take CGAL minutes and gigabytes, is in tests/soak.
-#include <cstddef>
-
-#include <gtest/gtest.h>
-
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
 namespace {
 
-constexpr std::size_t kParts = 8;
-
-class GeneratedGrid : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedGrid, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::Grid, GetParam(), kParts, {.normal = 2000, .soak = 100000, .shrink_tries = 400});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedGrid, ::testing::Range<std::size_t>(0, kParts));
+PROCEX_GENERATED_CLASS(GeneratedGrid, CaseClass::Grid, 8, {.normal = 2000, .soak = 100000, .shrink_tries = 400});
 
 }  // namespace
 }  // namespace procex::testing

@@ -9,42 +9,19 @@
 // do not make. Every case must pass every property check_case applies,
 // CGAL's skeleton included; those of 1,000 to 10,000 vertices are in
 // tests/soak.
-#include <cstddef>
-
-#include <gtest/gtest.h>
-
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
 namespace {
 
-constexpr std::size_t kParts = 4;
+PROCEX_GENERATED_CLASS(GeneratedRandomPolygons, CaseClass::RandomPolygons, 4,
+                       {.normal = 100, .soak = 2000, .shrink_tries = 100});
 
-class GeneratedRandomPolygons : public ::testing::TestWithParam<std::size_t> {};
+PROCEX_GENERATED_CLASS(GeneratedRandomPolygonsAngles, CaseClass::RandomPolygonsAngles, 4,
+                       {.normal = 400, .soak = 10000, .shrink_tries = 200});
 
-TEST_P(GeneratedRandomPolygons, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::RandomPolygons, GetParam(), kParts, {.normal = 100, .soak = 2000, .shrink_tries = 100});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygons, ::testing::Range<std::size_t>(0, kParts));
-
-class GeneratedRandomPolygonsAngles : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedRandomPolygonsAngles, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::RandomPolygonsAngles, GetParam(), kParts,
-                {.normal = 400, .soak = 10000, .shrink_tries = 200});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsAngles, ::testing::Range<std::size_t>(0, kParts));
-
-class GeneratedRandomPolygonsWalls : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedRandomPolygonsWalls, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::RandomPolygonsWalls, GetParam(), kParts,
-                {.normal = 400, .soak = 10000, .shrink_tries = 200});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedRandomPolygonsWalls, ::testing::Range<std::size_t>(0, kParts));
+PROCEX_GENERATED_CLASS(GeneratedRandomPolygonsWalls, CaseClass::RandomPolygonsWalls, 4,
+                       {.normal = 400, .soak = 10000, .shrink_tries = 200});
 
 }  // namespace
 }  // namespace procex::testing

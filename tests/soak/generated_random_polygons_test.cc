@@ -5,24 +5,13 @@
 // constructions past kExactOracleVertices). The smaller ones, and those under
 // class (b)'s angles, are in tests/core/generated_random_polygons_test.cc.
 // Run by hand (ctest -L soak, or PROCEX_SOAK=1); TESTING.md records them.
-#include <cstddef>
-
-#include <gtest/gtest.h>
-
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
 namespace {
 
-constexpr std::size_t kParts = 4;
-
-class GeneratedLargeRandomPolygons : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedLargeRandomPolygons, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::LargeRandomPolygons, GetParam(), kParts, {.normal = 12, .soak = 1000, .shrink_tries = 4});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedLargeRandomPolygons, ::testing::Range<std::size_t>(0, kParts));
+PROCEX_GENERATED_CLASS(GeneratedLargeRandomPolygons, CaseClass::LargeRandomPolygons, 4,
+                       {.normal = 12, .soak = 1000, .shrink_tries = 4});
 
 }  // namespace
 }  // namespace procex::testing

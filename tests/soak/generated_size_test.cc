@@ -7,24 +7,12 @@
 // PROCEX_SOAK=1 for the soak one) and TESTING.md records it. A failure is
 // printed when found; minimising it tries 4 candidates (each halving the plan
 // while it still fails), minutes each, not the other classes' hundreds.
-#include <cstddef>
-
-#include <gtest/gtest.h>
-
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
 namespace {
 
-constexpr std::size_t kParts = 8;
-
-class GeneratedSize : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedSize, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::Size, GetParam(), kParts, {.normal = 48, .soak = 1000, .shrink_tries = 4});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedSize, ::testing::Range<std::size_t>(0, kParts));
+PROCEX_GENERATED_CLASS(GeneratedSize, CaseClass::Size, 8, {.normal = 48, .soak = 1000, .shrink_tries = 4});
 
 }  // namespace
 }  // namespace procex::testing

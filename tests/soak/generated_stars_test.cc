@@ -7,32 +7,14 @@
 // halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices
 // (meant for CI once the class passes; TESTING.md records its runs) and
 // 3,000 to 12,000. Label `soak`: a case takes CGAL a minute or more.
-#include <cstddef>
-
-#include <gtest/gtest.h>
-
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
 namespace {
 
-constexpr std::size_t kParts = 4;
+PROCEX_GENERATED_CLASS(GeneratedStars, CaseClass::Stars, 4, {.normal = 12, .soak = 400, .shrink_tries = 4});
 
-class GeneratedStars : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedStars, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::Stars, GetParam(), kParts, {.normal = 12, .soak = 400, .shrink_tries = 4});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedStars, ::testing::Range<std::size_t>(0, kParts));
-
-class GeneratedLargeStars : public ::testing::TestWithParam<std::size_t> {};
-
-TEST_P(GeneratedLargeStars, EveryCasePassesEveryProperty) {
-  run_generated(CaseClass::LargeStars, GetParam(), kParts, {.normal = 12, .soak = 400, .shrink_tries = 4});
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, GeneratedLargeStars, ::testing::Range<std::size_t>(0, kParts));
+PROCEX_GENERATED_CLASS(GeneratedLargeStars, CaseClass::LargeStars, 4, {.normal = 12, .soak = 400, .shrink_tries = 4});
 
 }  // namespace
 }  // namespace procex::testing

@@ -24,16 +24,22 @@ struct Bounds {
   glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
   double max_abs = 0.0;
   double diagonal() const { return glm::length(hi - lo); }
+  void add(glm::dvec2 p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+    max_abs = std::max({max_abs, std::abs(p.x), std::abs(p.y)});
+  }
+  // What rounding of the largest coordinate may move a point by.
+  double rounding() const { return 64.0 * std::numeric_limits<double>::epsilon() * max_abs; }
+  // The validator's distance at clustering scale `relative` of the diagonal,
+  // plus the rounding.
+  double tolerance(double relative) const { return mesh_distance_relative(relative) * diagonal() + rounding(); }
 };
 
 Bounds bounds(const Footprint& fp) {
   Bounds b;
   for (const Loop& loop : fp.loops)
-    for (const glm::dvec2& p : loop.points) {
-      b.lo = glm::min(b.lo, p);
-      b.hi = glm::max(b.hi, p);
-      b.max_abs = std::max({b.max_abs, std::abs(p.x), std::abs(p.y)});
-    }
+    for (const glm::dvec2& p : loop.points) b.add(p);
   return b;
 }
 
@@ -92,7 +98,7 @@ void resolve_straight_runs(std::vector<EdgeLine>& loop, Ambiguity rule, double r
 
 // Each edge's line and the angle its plane leans at.
 std::map<std::int32_t, EdgeLine> edges_by_id(const Footprint& fp, Ambiguity rule) {
-  const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * bounds(fp).max_abs;
+  const double rounding = bounds(fp).rounding();
   std::map<std::int32_t, EdgeLine> out;
   for (const Loop& loop : fp.loops) {
     std::vector<EdgeLine> lines;
@@ -196,20 +202,13 @@ double distance_to_loops(const std::vector<std::vector<glm::dvec2>>& loops, glm:
 double plan_diagonal(const Footprint& footprint) { return bounds(footprint).diagonal(); }
 
 double roof_tolerance(const Footprint& footprint, double made_relative) {
-  const Bounds b = bounds(footprint);
-  return mesh_distance_relative(made_relative) * b.diagonal() +
-         64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
+  return bounds(footprint).tolerance(made_relative);
 }
 
 double roof_tolerance(const Footprint& footprint, const Surface& roof) {
   Bounds b = bounds(footprint);
-  for (const glm::dvec3& v : roof.vertices) {
-    b.lo = glm::min(b.lo, glm::dvec2(v));
-    b.hi = glm::max(b.hi, glm::dvec2(v));
-    b.max_abs = std::max({b.max_abs, std::abs(v.x), std::abs(v.y)});
-  }
-  return mesh_distance_relative(roof.tolerance_relative) * b.diagonal() +
-         64.0 * std::numeric_limits<double>::epsilon() * b.max_abs;
+  for (const glm::dvec3& v : roof.vertices) b.add(glm::dvec2(v));
+  return b.tolerance(roof.tolerance_relative);
 }
 
 std::vector<std::string> check_valid_mesh(const Surface& surface) {

@@ -70,7 +70,7 @@ namespace {
 // events exactly and rounds only the nodes, far below the comparison's
 // tolerance (CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance).
 CgalSkeleton oracle_skeleton(const CgalSkeletonInput& input, std::size_t vertices) {
-  if (vertices > kExactOracleVertices) return input.skeleton(CgalConstructions::Inexact);
+  if (vertices > kExactOracleVertices) return input.skeleton(CgalConstructions::Inexact, kLargeOracleMemory);
   try {
     return input.skeleton(CgalConstructions::Exact);
   } catch (const CgalOutOfMemory&) {

@@ -114,3 +114,14 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
 }
 
 }  // namespace procex::testing
+
+// Registers class `cls` as the suite `Suite` of `parts` tests,
+// Parts/Suite.EveryCasePassesEveryProperty/0 to parts - 1, each running its
+// share of the budget (run_generated), so that ctest spreads a class over the
+// cores. The budget is the last argument, a Budget's designated initialisers.
+#define PROCEX_GENERATED_CLASS(Suite, cls, parts, ...)                                               \
+  class Suite : public ::testing::TestWithParam<std::size_t> {};                                     \
+  TEST_P(Suite, EveryCasePassesEveryProperty) {                                                      \
+    ::procex::testing::run_generated(cls, GetParam(), parts, ::procex::testing::Budget __VA_ARGS__); \
+  }                                                                                                  \
+  INSTANTIATE_TEST_SUITE_P(Parts, Suite, ::testing::Range<std::size_t>(0, parts))
