@@ -15,7 +15,6 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
 
 import bmesh
 import bpy
@@ -374,23 +373,8 @@ for o in from_gpkg:
 # refused one is reported, the others are the buildings procex.batch makes, and no procex worker outlives it.
 from procex_blender import batch_import  # noqa: E402
 
-
-def procex_workers():
-    """procex's worker threads still listed, once those joined have left: the
-    kernel unlists a thread a moment after pthread_join returns (1 in 20,000
-    still listed on a loaded machine), so this waits up to 10 s for none."""
-    def listed():
-        names = []
-        for t in os.listdir("/proc/self/task"):
-            try:
-                names.append(open(f"/proc/self/task/{t}/comm").read().strip())
-            except FileNotFoundError:  # a thread that has just ended
-                pass
-        return [n for n in names if n == "procex-batch"]
-    deadline = time.monotonic() + 10
-    while listed() and time.monotonic() < deadline:
-        time.sleep(0.01)
-    return listed()
+sys.path.insert(0, os.path.join(samples, os.pardir, "tests", "python"))
+from worker_threads import workers_once_joined  # noqa: E402
 
 
 def rectangle(i):
@@ -410,8 +394,8 @@ made, not_ok, total = batch_import.import_batch(bpy.context, generated, city, jo
 check(total == 120, f"{total} buildings")
 check([(b.id, b.status) for b in not_ok] == [(f"g{refused}", "refused")],
       f"not ok: {[(b.id, b.status, b.reason) for b in not_ok]}")
-workers = procex_workers()
-check(not workers, f"procex workers left after the import: {workers}")
+left = workers_once_joined(0)
+check(not left, f"{left} procex workers left after the import")
 imported = {o.name: o for o in made.objects if not o.get("procex_placed")}
 reference = {b.id: b for b in procex.batch(procex.Recipe.load(city), generated, jobs=1) if b.status == "ok"}
 check(sorted(imported) == sorted(reference) and len(reference) == 119, f"imported {sorted(imported)}")

@@ -9,13 +9,13 @@ import math
 import os
 import subprocess
 import sys
-import time
 
 import numpy as np
 import pytest
 
 import procex
 from conftest import ROOT, SAMPLES
+from worker_threads import workers, workers_once_joined
 
 BLOCK = SAMPLES / "footprints" / "sample_block.geojson"
 
@@ -37,55 +37,29 @@ def assert_same_buildings(want, got):
                 [(p.mesh.name, p.matrix.tolist()) for p in n.placed]
 
 
-def threads():
-    """The iterators' worker threads, named so by batch_iter. With jobs=1 it
-    evaluates on that thread alone; with more, TBB's pool of workers is the
-    process's, kept or ended as TBB decides, and a worker it starts from
-    there inherits the name. So this test runs first, with jobs=1."""
-    names = []
-    for task in os.listdir("/proc/self/task"):
-        try:
-            names.append(open(f"/proc/self/task/{task}/comm").read().strip())
-        except FileNotFoundError:  # a thread that has just ended
-            pass
-    return names.count("procex-batch")
-
-
-def threads_once_joined(at_most):
-    """threads() once those the iterator joined have left /proc: pthread_join
-    returns when the kernel wakes it, as the thread lets go of its memory,
-    and the task is unlisted a moment later, so a count taken at once can
-    still see a joined worker (a C loop of create, join, list: 1 in 20,000
-    still listed, beside two soak runs; this test failed once so loaded).
-    Waits up to 10 s for the count to fall to at_most."""
-    deadline = time.monotonic() + 10
-    while threads() > at_most and time.monotonic() < deadline:
-        time.sleep(0.01)
-    return threads()
-
-
 def open_files():
     return sorted(os.readlink(f"/proc/self/fd/{fd}") for fd in os.listdir("/proc/self/fd")
                   if os.path.exists(f"/proc/self/fd/{fd}"))
 
 
 def test_dropped_early_leaves_no_thread_or_temporary_file():
+    # First in the file, with jobs=1: a later test's TBB workers may carry the name on (workers()).
     gc.collect()
-    threads_before, files_before = threads(), open_files()
+    workers_before, files_before = workers(), open_files()
     it = procex.batch_iter(city(), BLOCK, jobs=1)
     # The footprints' spool is an unnamed temporary file open while the iterator lives.
     assert any("(deleted)" in f or "#" in f for f in set(open_files()) - set(files_before))
-    assert threads() == threads_before + 1  # its worker
+    assert workers() == workers_before + 1  # its worker
     got = [next(it) for _ in range(3)]
     assert [b.index for b in got] == [0, 1, 2]
     del it
     gc.collect()
-    assert threads_once_joined(threads_before) <= threads_before
+    assert workers_once_joined(workers_before) <= workers_before
     assert open_files() == files_before
     # close() and a with block do the same, and an iterator closed yields nothing more.
     with procex.batch_iter(city(), BLOCK, jobs=1) as it:
         next(it)
-    assert threads_once_joined(threads_before) <= threads_before and open_files() == files_before
+    assert workers_once_joined(workers_before) <= workers_before and open_files() == files_before
     with pytest.raises(StopIteration):
         next(it)
 
