@@ -3,7 +3,7 @@
 // property check_case applies, and a failure is reported minimised, as a
 // fixture to keep in tests/data. The class runs in parts, so that ctest
 // spreads it over the cores. Class (b) is beside it; class (c), whose cases
-// take CGAL minutes and gigabytes, is in tests/soak.
+// take CGAL up to a minute and gigabytes, is in tests/large.
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {

@@ -8,7 +8,7 @@
 // the polygons' pockets meet roofs that grid plans, whose walls stand apart,
 // do not make. Every case must pass every property check_case applies,
 // CGAL's skeleton included; those of 1,000 to 10,000 vertices are in
-// tests/soak.
+// tests/large.
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {

@@ -21,15 +21,16 @@ namespace procex::testing {
 // every event exactly and rounds only the nodes it constructs, by far less
 // than the comparison's tolerance (roof_tolerance, at least 1e-6 of the diagonal):
 // CgalOracle.TheInexactKernelsNodesAreTheExactOnesWithinTheTolerance.
-// Every case the suite runs in CI (up to the 4096-gon) stays on the exact
+// Every case the sanitized suite runs (up to the 4096-gon) stays on the exact
 // kernel: the inexact one took longer than the test's limit on the regular
 // 4096-gon under AddressSanitizer, its coincident events all at one point.
+// The plans past it (tests/large) run in the Release build only.
 constexpr std::size_t kExactOracleVertices = 4096;
 // The memory cap of the inexact skeleton of a plan past kExactOracleVertices,
-// which only the classes run by hand reach (tests/soak, a case or two at a
-// time): kCgalChildMemory left random star-shaped plans of 9,376 and 9,716
-// vertices without an oracle (the size class's seeds 308 and 305; 6.3 GB at
-// 9,716, and the class goes up to 10,000).
+// which only tests/large reaches (two of its parts at a time under ctest -j2):
+// kCgalChildMemory left random star-shaped plans of 9,376 and 9,716 vertices
+// without an oracle (the size class's seeds 308 and 305; 6.3 GB at 9,716, and
+// the class goes up to 10,000).
 constexpr std::size_t kLargeOracleMemory = std::size_t{8} << 30;
 
 // Empty when `roof` and CGAL's skeleton of `footprint` agree, else one line

@@ -21,13 +21,13 @@ enum class CaseClass {
   Size,    // (c) 1,000 to 10,000 vertices
   // (c) jittered stars: thousands of events within micrometres of one height
   // and the last within about the jitter of one point; of 1,000 to 3,000 and of
-  // 3,000 to 12,000 vertices (tests/soak/generated_stars_test.cc).
+  // 3,000 to 12,000 vertices (tests/large/generated_stars_test.cc).
   Stars,
   LargeStars,
   // (c) random simple polygons (random_simple_polygon: 2-opt untangled random
   // points, not star-shaped, half their corners reflex): of 20 to 1,000
   // vertices (tests/core/generated_random_polygons_test.cc) and of 1,000 to
-  // 10,000 (tests/soak/generated_random_polygons_test.cc).
+  // 10,000 (tests/large/generated_random_polygons_test.cc).
   RandomPolygons,
   LargeRandomPolygons,
   // (b) on (c): random simple polygons of 8 to 1,000 vertices under class

@@ -2,9 +2,9 @@
 // (tests/support/generators/): every case must pass every property
 // check_case applies, CGAL's skeleton included (with inexact constructions at
 // these sizes, kExactOracleVertices, its child process capped at
-// kCgalChildMemory). A case takes CGAL a minute or more and up to gigabytes,
-// so the class runs by hand (ctest -L soak; the normal budget, or
-// PROCEX_SOAK=1 for the soak one) and TESTING.md records it. A failure is
+// kLargeOracleMemory). A case takes seconds to a minute and up to gigabytes:
+// CI runs the normal budget in the Release build (label slow), the soak one
+// runs by hand (PROCEX_SOAK=1) and TESTING.md records it. A failure is
 // printed when found; minimising it tries 4 candidates (each halving the plan
 // while it still fails), minutes each, not the other classes' hundreds.
 #include "tests/support/generators/run_generated.h"

@@ -4,9 +4,10 @@
 // ones within about the jitter of one point. Every case must pass every property
 // check_case applies, CGAL's skeleton included (inexact constructions above
 // kExactOracleVertices); a failure is printed when found and minimised by
-// halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices
-// (meant for CI once the class passes; TESTING.md records its runs) and
-// 3,000 to 12,000. Label `soak`: a case takes CGAL a minute or more.
+// halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices,
+// whose normal budget CI runs (label slow, tests/CMakeLists.txt), and 3,000
+// to 12,000, run by hand only (label soak) while their apex is refused
+// (TESTING.md records both).
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {

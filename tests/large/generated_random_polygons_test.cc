@@ -4,7 +4,8 @@
 // every property check_case applies, CGAL's skeleton included (its inexact
 // constructions past kExactOracleVertices). The smaller ones, and those under
 // class (b)'s angles, are in tests/core/generated_random_polygons_test.cc.
-// Run by hand (ctest -L soak, or PROCEX_SOAK=1); TESTING.md records them.
+// CI runs the normal budget in the Release build (label slow), the soak one
+// runs by hand (PROCEX_SOAK=1); TESTING.md records them.
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {
