@@ -91,6 +91,19 @@ Opening outline(const Box3& box, const glm::dmat4& t, std::int32_t edge, const F
   return o;
 }
 
+// Adds the mesh and its instances to `result` once every one of them was
+// placed, so that a failure leaves `result` as it was.
+PlaceMeshReport commit(PlacementResult& result, const PlaceableMesh& mesh, std::vector<Instance>& placed,
+                       PlaceMeshReport report) {
+  const std::size_t index = result.add_mesh(mesh);
+  for (Instance& in : placed) {
+    in.mesh = index;
+    result.add_instance(std::move(in));
+  }
+  report.instances = placed.size();
+  return report;
+}
+
 }  // namespace
 
 PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
@@ -100,7 +113,7 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
   if (!mesh.mesh) throw PlacementError("the mesh '" + mesh.name + "' to place is null");
   const Box3 box = bounds(*mesh.mesh);
   PlaceMeshReport report;
-  std::vector<Instance> placed;  // added at the end, so a failure leaves `result` as it was
+  std::vector<Instance> placed;  // committed at the end
   for (const ResolvedAnchor* a : resolutions) {
     if (!a->present) {
       report.absent.push_back(where(*a) + " is absent: " + a->reason);
@@ -127,13 +140,7 @@ PlaceMeshReport place_mesh(PlacementResult& result, const PlaceableMesh& mesh,
       throw PlacementError(where(*a) + ": " + e.what());
     }
   }
-  const std::size_t index = result.add_mesh(mesh);
-  for (Instance& in : placed) {
-    in.mesh = index;
-    result.add_instance(std::move(in));
-  }
-  report.instances = placed.size();
-  return report;
+  return commit(result, mesh, placed, std::move(report));
 }
 
 PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mesh, const std::vector<FacadeTile>& tiles,
@@ -156,13 +163,7 @@ PlaceMeshReport place_in_tiles(PlacementResult& result, const PlaceableMesh& mes
                            ", bay " + std::to_string(t.bay) + ": " + e.what());
     }
   }
-  const std::size_t index = result.add_mesh(mesh);
-  for (Instance& in : placed) {
-    in.mesh = index;
-    result.add_instance(std::move(in));
-  }
-  report.instances = placed.size();
-  return report;
+  return commit(result, mesh, placed, std::move(report));
 }
 
 }  // namespace procex
