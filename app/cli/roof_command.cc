@@ -49,7 +49,7 @@ struct FeatureResult {
   bool validated = false;
   ValidationReport validation;
   double max_height = 0.0;
-  // The clustering scale the roof closed at and the looser ones tried before
+  // The clustering scale the roof closed at and how many were tried before
   // (Surface::tolerance_relative, retries): 0 and 0 where no roof was made.
   double clustering_scale = 0.0;
   int retries = 0;

@@ -206,8 +206,7 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   // points apart by where it stands: such scales are not tried, the coarsest
   // always is.
   for (double relative : engine::Tolerances::retry_relative) {
-    if (relative * frame.extent < frame.rounding && relative != std::end(engine::Tolerances::retry_relative)[-1])
-      continue;
+    if (relative * frame.extent < frame.rounding && relative != engine::Tolerances::coarsest_relative) continue;
     tol.relative = relative;
     try {
       Surface s = sweep_with(footprint, frame.centre, options, tol, budget);

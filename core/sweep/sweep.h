@@ -54,7 +54,7 @@ struct SweepOptions {
 // that is not closed.
 Surface sweep(const Footprint& footprint, const SweepOptions& options = {});
 
-// How many sweeps in this process closed only after a retry at a looser
+// How many sweeps in this process closed only after a retry at another
 // clustering scale (Surface::retries > 0): what a hand-made case must never
 // need, counted where no caller can forget to look.
 std::uint64_t sweeps_retried();

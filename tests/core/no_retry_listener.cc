@@ -22,7 +22,7 @@ class NoRetryListener : public ::testing::EmptyTestEventListener {
     suite = suite.substr(suite.find('/') + 1);  // a parameterised suite's instantiation prefix
     if (kCorpusSuites.contains(suite)) return;
     ADD_FAILURE() << retried << " sweep(s) in " << info.test_suite_name() << "." << info.name()
-                  << " closed only after a retry at a looser clustering scale (Surface::retries)";
+                  << " closed only after a retry at another clustering scale (Surface::retries)";
   }
   // And SweepRetries, whose subject is the retry.
   inline static const std::set<std::string> kCorpusSuites = {

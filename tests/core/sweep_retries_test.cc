@@ -62,6 +62,24 @@ TEST(SweepRetries, ARefusalAtOneScaleIsSweptAgainAtTheNext) {
   EXPECT_TRUE(problems.empty()) << problems.front();
 }
 
+// The jittered star of 7,694 vertices (large_stars class seed 1; radii 100
+// and 59.46 m, each moved by up to 7.2 mm): its corners race to the centre
+// at up to 2,300 m per m, and their events there lie micrometres apart. At
+// 1e-8 and 1e-7 clusters join collisions whose planes do not meet and a loop
+// turns inside out; at 1e-6 and 1e-5 every reflex corner meets every plane
+// of the centre in one batch and the budget refuses. The last resort, finer
+// than all of them, tells the events apart and closes.
+TEST(SweepRetries, AStarsCentreClosesAtTheFinestScaleTriedLast) {
+  const Footprint fp = star_at_45("star_centre_7694.geojson");
+  const Surface s = sweep(fp);
+  EXPECT_EQ(s.retries, 4);
+  EXPECT_EQ(s.tolerance_relative, 1e-10);
+  const std::vector<std::string> problems = check_valid_mesh(s);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  for (const std::string& line : check_faces_on_planes(fp, {}, s, roof_tolerance(fp, s.tolerance_relative)))
+    ADD_FAILURE() << line;
+}
+
 // The jittered star of 2,226 vertices (stars class seed 11: radii 100 and
 // 92.16 m, each moved by up to 44 um) closes only at the coarsest scale,
 // 1e-5 (2 mm on its 200 m), where events that far apart are one: its faces

@@ -387,10 +387,15 @@ std::vector<std::string> check_inward_roof(const Footprint& footprint, const Swe
     const glm::dvec2 local = b.lo - o + glm::dvec2(ux(rng), ux(rng)) * (b.hi - b.lo);
     if (!inside_loops(plan_loops, local) || distance_to_loops(plan_loops, local) < margin) continue;
     // Points on a face's border are covered by two faces or none: not sampled.
+    // Every face counts, however thin: a point further than the margin from
+    // a face's border is inside it or not whatever its width. (Faces no wider
+    // than `tol` were left out, and the 10,000-vertex jittered star of
+    // large_stars seed 0, closed at 1e-5, held to 2.8 cm, had every point in
+    // its 6 cm wide spike faces covered by none.)
     std::vector<std::size_t> over;
     bool on_border = false;
     for (std::size_t fi = 0; fi < faces.size() && !on_border; ++fi) {
-      if (faces[fi].loops.empty() || std::abs(faces[fi].area) <= tol * faces[fi].perimeter) continue;
+      if (faces[fi].loops.empty()) continue;
       if (distance_to_loops(faces[fi].loops, local) < margin) on_border = true;
       else if (inside_loops(faces[fi].loops, local)) over.push_back(fi);
     }

@@ -110,7 +110,7 @@ inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, co
   }
   std::cout << "class " << class_name(cls) << " seeds " << begin << ".." << end - 1 << ": " << end - begin
             << " cases, " << failed << " failed, " << sweeps_retried() - retried_before
-            << " sweeps closed after a retry at a looser clustering scale\n";
+            << " sweeps closed after a retry at another clustering scale\n";
 }
 
 }  // namespace procex::testing
