@@ -13,19 +13,18 @@
 // the bytes an unsharded run writes.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "app/cli/budget_settings.h"
+#include "app/cli/mesh_run_options.h"
 #include "core/io/gltf_write.h"
-#include "nodes/support/mesh_export.h"
 
 namespace procex {
 
-struct BatchCommandOptions {
+struct BatchCommandOptions : MeshRunOptions {
   std::filesystem::path recipe;
   std::filesystem::path footprints;  // GeoJSON FeatureCollection
   std::filesystem::path output;      // mesh file, or folder for one file per building
@@ -34,19 +33,11 @@ struct BatchCommandOptions {
   int jobs = 0;                      // worker threads; 0 = one per hardware thread
   std::size_t shard = 0, shards = 1;
   std::vector<std::string> settings;  // name=value applied to every building
-  std::vector<std::filesystem::path> allowed_paths;  // --allow-path: folders besides the recipe's its files may lie in
   // What a batch into one .obj, .ply, .gpkg or CityJSON file may hold in
   // memory (building faces plus placed meshes' faces; placed meshes): more
   // is refused, exit 2, nothing written. A folder or a .glb streams out.
   std::size_t max_faces = 20000000, max_placed = 2000000;
   bool progress = true;               // progress on err: a bar on a terminal, else lines every 10%
-  ExportOptions export_options;       // --up, --crs (the footprints' CRS, core/io/footprint_read.h)
-  std::string target_crs;             // --target-crs
-  BudgetSettings budget;              // set on every Extrude node
-  std::string layer;                  // --layer (core/io/footprint_read.h)
-  std::optional<int> lod = std::nullopt;  // --lod: the level of detail (EvalOptions::lod)
-  std::filesystem::path streets = {};     // --streets: street lines (FootprintReadOptions::streets)
-  std::string streets_layer = {};         // --streets-layer
   std::uint64_t glb_max_bytes = kGlbMaxBytes;  // what one .glb may hold: glTF's 4 GiB, less only in tests
 };
 

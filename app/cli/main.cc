@@ -15,6 +15,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/merge_command.h"
+#include "app/cli/mesh_run_options.h"
 #include "app/cli/recipe_session.h"
 #include "app/cli/nodes_command.h"
 #include "app/cli/roof_command.h"
@@ -137,6 +138,15 @@ void add_up_option(CLI::App* cmd, ExportOptions& options) {
       ->check(CLI::IsMember({"y", "z"}));
 }
 
+// What eval and batch share (mesh_run_options.h).
+void add_mesh_run_options(CLI::App* cmd, MeshRunOptions& options) {
+  add_allow_path(cmd, options.allowed_paths);
+  add_up_option(cmd, options.export_options);
+  add_footprint_options(cmd, options.export_options.crs, options.target_crs, options.layer);
+  add_budget_options(cmd, options.budget);
+  add_lod_option(cmd, options.lod);
+  add_streets_options(cmd, options.streets, options.streets_layer);
+}
 
 Runner add_eval(CLI::App& app) {
   auto options = std::make_shared<EvalCommandOptions>();
@@ -152,12 +162,7 @@ Runner add_eval(CLI::App& app) {
                                             "Footprint file (GeoJSON, Shapefile, GeoPackage, FlatGeobuf, OSM): bind one feature as `procex batch` does");
   cmd->add_option("--feature", options->feature, "The feature's id, or its index in --footprints")->needs(footprints);
   footprints->needs("--feature");
-  add_allow_path(cmd, options->allowed_paths);
-  add_up_option(cmd, options->export_options);
-  add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
-  add_budget_options(cmd, options->budget);
-  add_lod_option(cmd, options->lod);
-  add_streets_options(cmd, options->streets, options->streets_layer);
+  add_mesh_run_options(cmd, *options);
   cmd->get_option("--streets")->needs(footprints);
   return [cmd, options] { return *cmd ? run_eval(*options, std::cout, std::cerr) : -1; };
 }
@@ -218,12 +223,7 @@ Runner add_batch(CLI::App& app) {
   cmd->add_option("--max-placed", options->max_placed, "Refuse a batch with more placed meshes than this")
       ->capture_default_str();
   cmd->add_flag("!--no-progress", options->progress, "No progress output");
-  add_allow_path(cmd, options->allowed_paths);
-  add_up_option(cmd, options->export_options);
-  add_footprint_options(cmd, options->export_options.crs, options->target_crs, options->layer);
-  add_budget_options(cmd, options->budget);
-  add_lod_option(cmd, options->lod);
-  add_streets_options(cmd, options->streets, options->streets_layer);
+  add_mesh_run_options(cmd, *options);
   return [cmd, options] { return *cmd ? run_batch(*options, std::cout, std::cerr) : -1; };
 }
 

@@ -50,7 +50,7 @@ TEST_F(AnchoredSamples, EvaluateToValidGlbWithInstancedMeshes) {
     SCOPED_TRACE(name);
     const fs::path glb = dir_ / (std::string(name) + ".glb");
     out_.str("");
-    ASSERT_EQ(run_eval({kSamples / (std::string(name) + ".pxg"), glb, {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+    ASSERT_EQ(run_eval(test::eval_options(kSamples / (std::string(name) + ".pxg"), glb), out_, err_), 0) << err_.str();
     // The summary line counts what was placed, not only the building.
     EXPECT_NE(out_.str().find("1 meshes, "), std::string::npos) << out_.str();
     EXPECT_NE(out_.str().find(", " + std::to_string(count) + " placed meshes -> "), std::string::npos) << out_.str();

@@ -84,7 +84,7 @@ class GltfExport : public test::ScratchDirTest {
     fs::create_directories(dir_ / "out");
     const fs::path output = dir_ / "out" / ("house" + extension);
     std::ostringstream o, e;
-    EXPECT_EQ(run_eval({dir_ / "textured.pxg", output, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+    EXPECT_EQ(run_eval(test::eval_options(dir_ / "textured.pxg", output), o, e), 0) << e.str();
     return output;
   }
   json node_json(const char* script, const fs::path& glb, int want_code) {
@@ -111,7 +111,7 @@ TEST_F(GltfExport, EverySampleValidatesWithoutErrors) {
   for (const fs::path& recipe : recipes) {
     const fs::path out = dir_ / (recipe.stem().string() + ".glb");
     std::ostringstream o, e;
-    ASSERT_EQ(run_eval({recipe, out, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << recipe << ": " << e.str();
+    ASSERT_EQ(run_eval(test::eval_options(recipe, out), o, e), 0) << recipe << ": " << e.str();
     files.push_back(out);
   }
   for (const fs::path& f : files) {
@@ -343,7 +343,7 @@ fs::path textured_batch_recipe(const fs::path& dir) {
 TEST_F(GltfExport, MaterialsReachTheValidatorAndThreeJs) {
   const fs::path single = dir_ / "textured_house.glb";
   std::ostringstream o, e;
-  ASSERT_EQ(run_eval({kRoot / "samples" / "textured_house.pxg", single, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+  ASSERT_EQ(run_eval(test::eval_options(kRoot / "samples" / "textured_house.pxg", single), o, e), 0) << e.str();
   BatchCommandOptions b;
   b.recipe = textured_batch_recipe(dir_);
   b.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
@@ -397,7 +397,7 @@ TEST_F(GltfExport, ObjLibraryScalesTheTextureToItsTiles) {
   fs::copy_file(kRoot / "samples" / "textured_house.pxg", dir_ / "textured_house.pxg");
   fs::create_directories(dir_ / "out");
   std::ostringstream o, e;
-  ASSERT_EQ(run_eval({dir_ / "textured_house.pxg", dir_ / "out" / "house.obj", {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0)
+  ASSERT_EQ(run_eval(test::eval_options(dir_ / "textured_house.pxg", dir_ / "out" / "house.obj"), o, e), 0)
       << e.str();
   std::ifstream in(dir_ / "out" / "house.mtl");
   const std::string mtl((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -434,7 +434,7 @@ fs::path tagged_doors(const fs::path& dir, bool material, const std::string& ext
   fs::create_directories(dir / "out");
   const fs::path output = dir / "out" / (pxg.stem().string() + extension);
   std::ostringstream o, e;
-  EXPECT_EQ(run_eval({pxg, output, {}, {}, {}, {}, {}, {}, {}, {}, {}}, o, e), 0) << e.str();
+  EXPECT_EQ(run_eval(test::eval_options(pxg, output), o, e), 0) << e.str();
   return output;
 }
 

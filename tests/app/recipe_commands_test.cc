@@ -39,7 +39,7 @@ using test::read_text;
 TEST_F(RecipeCommands, EvalWritesEveryFormat) {
   for (const char* ext : {".obj", ".ply", ".glb"}) {
     const fs::path out = dir_ / (std::string("house") + ext);
-    EXPECT_EQ(run_eval({kSamples / "house.pxg", out, {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+    EXPECT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", out), out_, err_), 0) << err_.str();
     EXPECT_GT(fs::file_size(out), 100u) << ext;
   }
   const std::string obj = read_text(dir_ / "house.obj");
@@ -51,21 +51,21 @@ TEST_F(RecipeCommands, EvalWritesEveryFormat) {
 
 TEST_F(RecipeCommands, SetChangesExposedParameters) {
   const fs::path a = dir_ / "a.obj", b = dir_ / "b.obj";
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", a, {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", b, {"shape=rectangle", "pitch=30"}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", a), out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", b, {"shape=rectangle", "pitch=30"}), out_, err_), 0) << err_.str();
   EXPECT_NE(read_text(a), read_text(b));
 }
 
 // A preset is a named set of exposed values: the same mesh as setting them one by one; --set still wins.
 TEST_F(RecipeCommands, PresetSetsItsExposedValues) {
   const fs::path by_hand = dir_ / "a.ply", preset = dir_ / "b.ply", both = dir_ / "c.ply", plain = dir_ / "d.ply";
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", by_hand, {"pitch=35", "shape=rectangle"}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", preset, {}, {}, {}, {}, "cottage", {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", by_hand, {"pitch=35", "shape=rectangle"}), out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", preset, {}, "cottage"), out_, err_), 0) << err_.str();
   EXPECT_EQ(read_text(by_hand), read_text(preset));
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", both, {"pitch=50", "shape=l"}, {}, {}, {}, "cottage", {}, {}, {}, {}}, out_, err_), 0) << err_.str();
-  ASSERT_EQ(run_eval({kSamples / "house.pxg", plain, {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", both, {"pitch=50", "shape=l"}, "cottage"), out_, err_), 0) << err_.str();
+  ASSERT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", plain), out_, err_), 0) << err_.str();
   EXPECT_EQ(read_text(both), read_text(plain));
-  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {}, {}, {}, {}, "tall", {}, {}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", dir_ / "x.obj", {}, "tall"), out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--preset tall: no preset 'tall' (it has: cottage, steep)"), std::string::npos) << err_.str();
 }
 
@@ -94,11 +94,11 @@ TEST_F(RecipeCommands, BudgetReachesEveryExtrudeNode) {
 }
 
 TEST_F(RecipeCommands, BadSettingsNameTheProblem) {
-  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"colour=red"}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", dir_ / "x.obj", {"colour=red"}), out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--set colour=red: the recipe has no exposed parameter or input named 'colour'"),
             std::string::npos) << err_.str();
   err_.str("");
-  EXPECT_EQ(run_eval({kSamples / "house.pxg", dir_ / "x.obj", {"shape=star"}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval(test::eval_options(kSamples / "house.pxg", dir_ / "x.obj", {"shape=star"}), out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("--set shape=star: "), std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "x.obj"));
 }
@@ -107,7 +107,7 @@ TEST_F(RecipeCommands, FailingNodeIsNamedAndNothingIsWritten) {
   std::string text = read_text(kSamples / "gallery_hipped.pxg");
   text.replace(text.find("\"* = hip\""), 9, "\"* = pagoda\"");
   const fs::path recipe = write("broken.pxg", text);
-  EXPECT_EQ(run_eval({recipe, dir_ / "broken.obj", {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed);
+  EXPECT_EQ(run_eval(test::eval_options(recipe, dir_ / "broken.obj"), out_, err_), kExitEvaluationFailed);
   EXPECT_NE(err_.str().find("broken.pxg: error: node 11 (Assign Profiles): rules: rule 1 ('* = pagoda')"),
             std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "broken.obj"));
@@ -115,7 +115,7 @@ TEST_F(RecipeCommands, FailingNodeIsNamedAndNothingIsWritten) {
 
 TEST_F(RecipeCommands, UnreadableRecipeNamesFileAndPlace) {
   const fs::path recipe = write("bad.pxg", "{\"format\": \"procex-graph\",\n \"version\": 2,\n \"nodes\": [}");
-  EXPECT_EQ(run_eval({recipe, dir_ / "x.glb", {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitUnusableInput);
+  EXPECT_EQ(run_eval(test::eval_options(recipe, dir_ / "x.glb"), out_, err_), kExitUnusableInput);
   EXPECT_NE(err_.str().find("bad.pxg: line 3"), std::string::npos) << err_.str();
   err_.str("");
   EXPECT_EQ(run_validate({dir_ / "missing.pxg", {}}, out_, err_), kExitUnusableInput);
@@ -191,7 +191,7 @@ TEST_F(RecipeCommands, ValidateTypeChecksThroughSwitches) {
     EXPECT_NE(err_.str().find(c.validate_said), std::string::npos) << c.name << ": " << err_.str();
     if (c.eval_said.empty()) continue;
     err_.str("");
-    EXPECT_EQ(run_eval({file, dir_ / (c.name + ".obj"), {}, {}, {}, {}, {}, {}, {}, {}, {}}, out_, err_), kExitEvaluationFailed) << c.name;
+    EXPECT_EQ(run_eval(test::eval_options(file, dir_ / (c.name + ".obj")), out_, err_), kExitEvaluationFailed) << c.name;
     EXPECT_NE(err_.str().find(c.eval_said), std::string::npos) << c.name << ": " << err_.str();
     EXPECT_FALSE(fs::exists(dir_ / (c.name + ".obj"))) << c.name;
   }

@@ -191,7 +191,7 @@ TEST_F(GltfInstances, ThreeJsPlacesEveryInstanceWhereFlattenDoes) {
   const GltfScene scene = street();
   const fs::path file = dir_ / "street.glb";
   write_glb(file, scene);
-  const test::NodeScriptRun v = test::run_gltf_script("world_bounds_three.mjs", file);
+  const test::NodeScriptRun v = test::run_gltf_script("load_gltf_three.mjs", file);
   ASSERT_TRUE(v.problem.empty()) << v.problem;
   ASSERT_EQ(v.exit_code, 0);
   using Bounds = std::array<double, 6>;

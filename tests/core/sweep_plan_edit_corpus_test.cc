@@ -26,6 +26,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/sweep.h"
 #include "tests/support/data_files.h"
+#include "tests/support/generators/edge_profiles.h"
 #include "tests/support/sanitizers.h"
 
 namespace procex {
@@ -33,33 +34,6 @@ namespace {
 
 // Under the sanitizers every kSanitizedStride-th footprint is swept.
 constexpr std::size_t kSanitizedStride = 16;
-
-const std::vector<Profile> kProfiles{
-    {"hip", {{0, 0}, {0, 3}, {-10, 13}}, {"wall", "roof"}},
-    {"bay", {{0, 0}, {0, 1.5}, {-2, 3.5}}, {"bay wall", "bay roof"}},
-    {"dormer", {{0, 0}, {0, 1.2}, {-3, 4.2}}, {"dormer wall", "dormer roof"}},
-    {"recess", {{0, 0}, {0, 2.2}, {-3, 5.2}}, {"recess wall", "recess roof"}},
-};
-
-PlanEdit natural(const std::string& name, double height, double width, double depth, int profile) {
-  PlanEdit e;
-  e.name = name;
-  e.at = {name, {PlanAnchor::Mode::Fraction, 0.5}, height, 0, {}};
-  e.kind = PlanEdit::Kind::Natural;
-  e.width = width;
-  e.depth = depth;
-  e.edges.assign(3, EdgeSpec{0.0, 1000000, profile});
-  return e;
-}
-
-std::vector<PlanEdit> edits() {
-  PlanEdit recess;
-  recess.name = "recess";
-  recess.at = {"recess", {PlanAnchor::Mode::FromStart, 1.0}, 0.0, 0, {}};
-  recess.shape = {{0, 0}, {0, -0.5}, {0.8, -0.5}, {0.8, 0}};
-  recess.edges.assign(3, EdgeSpec{0.0, 2000000, 3});
-  return {natural("bay", 1.0, 1.5, 0.6, 1), natural("dormer", 3.0, 1.2, 0.3, 2), recess};
-}
 
 // ---- What the footprint alone says about each edit, independently of the
 // engine: plain 2D geometry on the prepared footprint. The recess stands on
@@ -254,11 +228,13 @@ TEST_P(PlanEditCorpus, EveryFootprintValidatesAndEveryAbsenceIsExplained) {
       continue;
     }
     Footprint& fp = prepared.footprint;
-    fp.profiles = kProfiles;
+    fp.profiles.clear();
+    for (const std::string& name : testing::plan_edit_profile_names())
+      fp.profiles.push_back(testing::profile_preset(name));
     for (Loop& loop : fp.loops)
       for (EdgeSpec& e : loop.edges) e.profile = 0;
     SweepOptions options;
-    options.plan_edits = edits();
+    options.plan_edits = testing::preset_plan_edits();
     try {
       const Surface s = sweep(fp, options);
       const std::map<std::int32_t, EdgePredictions> predicted = predict(fp);
