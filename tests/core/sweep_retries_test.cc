@@ -8,6 +8,7 @@
 // that surface was returned: no solid, and nothing said so until the mesh
 // was validated. The tests here are of the retry itself, so a retry does not
 // fail them (tests/core/no_retry_listener.cc).
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "core/mesh/validate.h"
 #include "core/sweep/simple_faces.h"
 #include "core/sweep/sweep.h"
+#include "tests/support/generators/size_plans.h"
 #include "tests/support/roof_properties.h"
 
 namespace procex::testing {
@@ -78,6 +80,24 @@ TEST(SweepRetries, AStarsCentreClosesAtTheFinestScaleTriedLast) {
   EXPECT_TRUE(problems.empty()) << problems.front();
   for (const std::string& line : check_faces_on_planes(fp, {}, s, roof_tolerance(fp, s.tolerance_relative)))
     ADD_FAILURE() << line;
+}
+
+// The 32,768-star of radii 100 and 90, each vertex moved by up to 1 mm: at
+// 1e-8 to 1e-5 its reflex corners meet at the centre within one batch, each
+// meeting every plane, past the budget's million potential events at one
+// height (SweepBudget.ARunawayAtOnePointIsRefusedInBoundedTimeAndMemory); at
+// the finest scale, tried last, the events there are told apart.
+TEST(SweepRetries, ACentreRunningAwayAtEveryOtherScaleClosesAtTheFinest) {
+  std::mt19937_64 rng(5);
+  const Footprint fp =
+      prepare_footprint(make_footprint(testing::jittered_star(32768, 100.0, 90.0, 1e-3, rng).loops, 45.0)).footprint;
+  SweepOptions options;
+  options.budget.max_vertices = 1'000'000;
+  const Surface s = sweep(fp, options);
+  EXPECT_EQ(s.retries, 4);
+  EXPECT_EQ(s.tolerance_relative, 1e-10);
+  const std::vector<std::string> problems = check_valid_mesh(s);
+  EXPECT_TRUE(problems.empty()) << problems.front();
 }
 
 // The jittered star of 2,226 vertices (stars class seed 11: radii 100 and
