@@ -31,7 +31,7 @@ inline constexpr double kSameWayAngle = 1e-9;
 // the mesh's bounding-box diagonal when ValidationOptions::tolerance <= 0.
 // Ten times the sweep's clustering tolerances: a cluster's vertex is the best
 // fit of planes that meet only to within those, and a fast corner carries
-// that offset along. At the finest scale, 1e-8, fits are off by more than
+// that offset along. At the first scale, 1e-8, fits are off by more than
 // ten times that (three of the 6,000 buildings of
 // data/synthetic/d_city_6000.json, by up to 2e-7), so no roof is held closer
 // than this.

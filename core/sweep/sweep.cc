@@ -196,7 +196,7 @@ Surface sweep(const Footprint& footprint, const SweepOptions& options) {
   for (const Loop& loop : footprint.loops) plan_vertices += loop.points.size();
   engine::Budget budget(options.budget, plan_vertices);
   // What to report if no scale closes: the first refusal by the budget (the
-  // one error with a knob: raising that limit may close the finest scale it
+  // one error with a knob: raising that limit may close the scale it
   // stopped), else the first attempt's error, of its own type (an open roof
   // stays one).
   std::exception_ptr first, refused;

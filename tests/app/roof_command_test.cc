@@ -132,7 +132,7 @@ TEST_F(RoofCommand, HipRoofVolumeAndHeight) {
 }
 
 // Each roof says the clustering scale it closed at and what it was held to:
-// the square at the finest scale, to 1e-6 of its diagonal; the jittered star
+// the square at the first scale, to 1e-6 of its diagonal; the jittered star
 // of tests/data/star_coarse_2226.geojson only at the coarsest (1e-5, after
 // three finer ones), so to ten times that.
 TEST_F(RoofCommand, EachRoofSaysTheScaleItClosedAtAndTheToleranceItWasHeldTo) {

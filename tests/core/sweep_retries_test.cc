@@ -37,17 +37,23 @@ Footprint star_at_45(const std::string& file) {
   return prepare_footprint(to_footprint(read.features[0], 45.0)).footprint;
 }
 
-TEST(SweepRetries, AFaceFoldedAtOneScaleIsSweptAgainAtTheNext) {
-  const Footprint fp = star_at_45("star_fold_82.geojson");
-  const Surface s = sweep(fp);
-  EXPECT_EQ(s.retries, 1);
-  EXPECT_EQ(s.tolerance_relative, 1e-7);
+// That `s` closed after `retries` defeats, at clustering scale `relative`,
+// and is a valid solid.
+void expect_closed_at(const Surface& s, int retries, double relative) {
+  EXPECT_EQ(s.retries, retries);
+  EXPECT_EQ(s.tolerance_relative, relative);
   const std::vector<std::string> problems = check_valid_mesh(s);
   EXPECT_TRUE(problems.empty()) << problems.front();
 }
 
+TEST(SweepRetries, AFaceFoldedAtOneScaleIsSweptAgainAtTheNext) {
+  const Footprint fp = star_at_45("star_fold_82.geojson");
+  const Surface s = sweep(fp);
+  expect_closed_at(s, 1, 1e-7);
+}
+
 // The jittered star of 1,750 vertices (stars class seed 124: radii 100 and
-// 54.83 m, each moved by up to 0.19 mm): at the finest clustering scale its
+// 54.83 m, each moved by up to 0.19 mm): at the first clustering scale its
 // reflex corners reach the apex micrometres apart, each meeting every plane
 // there, and the sweep runs away (refused after 10,000,000 corners); at 1e-6
 // they are one event and the roof closes. A refusal at one scale is tried at
@@ -58,10 +64,7 @@ TEST(SweepRetries, ARefusalAtOneScaleIsSweptAgainAtTheNext) {
   SweepOptions options;
   options.budget.max_vertices = 200'000;
   const Surface s = sweep(fp, options);
-  EXPECT_EQ(s.retries, 3);
-  EXPECT_EQ(s.tolerance_relative, 1e-5);
-  const std::vector<std::string> problems = check_valid_mesh(s);
-  EXPECT_TRUE(problems.empty()) << problems.front();
+  expect_closed_at(s, 3, 1e-5);
 }
 
 // The jittered star of 7,694 vertices (large_stars class seed 1; radii 100
@@ -74,10 +77,7 @@ TEST(SweepRetries, ARefusalAtOneScaleIsSweptAgainAtTheNext) {
 TEST(SweepRetries, AStarsCentreClosesAtTheFinestScaleTriedLast) {
   const Footprint fp = star_at_45("star_centre_7694.geojson");
   const Surface s = sweep(fp);
-  EXPECT_EQ(s.retries, 4);
-  EXPECT_EQ(s.tolerance_relative, 1e-10);
-  const std::vector<std::string> problems = check_valid_mesh(s);
-  EXPECT_TRUE(problems.empty()) << problems.front();
+  expect_closed_at(s, 4, 1e-10);
   for (const std::string& line : check_faces_on_planes(fp, {}, s, roof_tolerance(fp, s.tolerance_relative)))
     ADD_FAILURE() << line;
 }
@@ -94,16 +94,13 @@ TEST(SweepRetries, ACentreRunningAwayAtEveryOtherScaleClosesAtTheFinest) {
   SweepOptions options;
   options.budget.max_vertices = 1'000'000;
   const Surface s = sweep(fp, options);
-  EXPECT_EQ(s.retries, 4);
-  EXPECT_EQ(s.tolerance_relative, 1e-10);
-  const std::vector<std::string> problems = check_valid_mesh(s);
-  EXPECT_TRUE(problems.empty()) << problems.front();
+  expect_closed_at(s, 4, 1e-10);
 }
 
 // The jittered star of 2,226 vertices (stars class seed 11: radii 100 and
 // 92.16 m, each moved by up to 44 um) closes only at the coarsest scale,
 // 1e-5 (2 mm on its 200 m), where events that far apart are one: its faces
-// are their edges' planes to within that, 2.7 mm, where a roof of the finest
+// are their edges' planes to within that, 2.7 mm, where a roof of the first
 // scale is held to 0.28 mm. It is held to ten times the scale it was made
 // at, as every roof is (mesh_distance_relative).
 TEST(SweepRetries, ARoofIsHeldToTheScaleItClosedAt) {
@@ -114,7 +111,7 @@ TEST(SweepRetries, ARoofIsHeldToTheScaleItClosedAt) {
   EXPECT_TRUE(problems.empty()) << problems.front();
   for (const std::string& line : check_faces_on_planes(fp, {}, s, roof_tolerance(fp, s.tolerance_relative)))
     ADD_FAILURE() << line;
-  EXPECT_FALSE(validate(build_mesh(s)).planar) << "held to the finest scale's tolerance";
+  EXPECT_FALSE(validate(build_mesh(s)).planar) << "held to the first scale's tolerance";
 }
 
 // One face as the sweep's surface holds it, its points lifted onto the plane z = x.

@@ -23,7 +23,7 @@ double plan_diagonal(const Footprint& footprint);
 
 // Positions agree within this: the mesh validator's tolerance for a roof made
 // at clustering scale `made_relative` (Surface::tolerance_relative; 0: the
-// finest), of the footprint's bounding-box diagonal, plus the rounding of its
+// first scale or finer), of the footprint's bounding-box diagonal, plus the rounding of its
 // largest coordinate.
 double roof_tolerance(const Footprint& footprint, double made_relative = 0.0);
 // The same for `roof`, made at its own scale, of the plan extent of the
