@@ -218,6 +218,10 @@ TEST_P(PlanEditCorpus, EveryFootprintValidatesAndEveryAbsenceIsExplained) {
   auto failed = [&](const GeoJsonFeature& f, const std::string& why) {
     ADD_FAILURE() << f.id << " (feature " << f.index << "): " << why;
   };
+  std::vector<Profile> profiles;
+  for (const std::string& name : testing::plan_edit_profile_names()) profiles.push_back(testing::profile_preset(name));
+  SweepOptions options;
+  options.plan_edits = testing::preset_plan_edits();
   for (const GeoJsonFeature& f : corpus.features) {
     if (kSanitized && f.index % kSanitizedStride != 0) continue;
     PreparedFootprint prepared;
@@ -228,13 +232,9 @@ TEST_P(PlanEditCorpus, EveryFootprintValidatesAndEveryAbsenceIsExplained) {
       continue;
     }
     Footprint& fp = prepared.footprint;
-    fp.profiles.clear();
-    for (const std::string& name : testing::plan_edit_profile_names())
-      fp.profiles.push_back(testing::profile_preset(name));
+    fp.profiles = profiles;
     for (Loop& loop : fp.loops)
       for (EdgeSpec& e : loop.edges) e.profile = 0;
-    SweepOptions options;
-    options.plan_edits = testing::preset_plan_edits();
     try {
       const Surface s = sweep(fp, options);
       const std::map<std::int32_t, EdgePredictions> predicted = predict(fp);

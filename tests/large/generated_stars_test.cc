@@ -6,8 +6,9 @@
 // kExactOracleVertices); a failure is printed when found and minimised by
 // halving the star while it still fails. Two sizes: 1,000 to 3,000 vertices,
 // and 3,000 to 12,000, whose centres often close only at the coarsest
-// clustering scale or at the finest, tried last (core/geom/tolerances.h). CI runs both normal budgets
-// (label slow, tests/CMakeLists.txt); TESTING.md records the soaks.
+// clustering scale or at the finest, tried last (core/geom/tolerances.h).
+// CI runs both normal budgets (label slow, tests/CMakeLists.txt); TESTING.md
+// records the soaks.
 #include "tests/support/generators/run_generated.h"
 
 namespace procex::testing {

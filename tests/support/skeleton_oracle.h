@@ -31,9 +31,9 @@ constexpr std::size_t kExactOracleVertices = 4096;
 // plans of 9,376 and 9,716 vertices without an oracle (the size class's seeds
 // 308 and 305; 6.3 GB at 9,716), and 8 GB jittered stars of 10,070 and 11,020
 // (large_stars seeds 0 and 4; 11.2 GB at 10,070, growing as n^2, and the
-// class goes up to 12,000). A cap, not a reservation: the parts the Release
-// suite runs two at a time (ctest -j2) take 6.3 GB at the most, and the
-// soak runs one large star at a time on this 23 GB machine.
+// class goes up to 12,000). A cap, not a reservation: under ctest -j2 the
+// large stars hold one lock (tests/CMakeLists.txt), so at most one of them
+// (12.4 GB) runs beside another part (6.3 GB) on this 23 GB machine.
 constexpr std::size_t kLargeOracleMemory = std::size_t{20} << 30;
 
 // Empty when `roof` and CGAL's skeleton of `footprint` agree, else one line
