@@ -20,6 +20,7 @@
 #include "core/geom/round_edge.h"
 #include "core/geom/segment_intersections.h"
 #include "core/geom/tolerances.h"
+#include "core/mesh/height_field.h"
 
 namespace procex {
 
@@ -204,17 +205,13 @@ double signed_volume(const Mesh& mesh) {
 
 namespace {
 
-struct Triangle {
-  std::array<glm::dvec3, 3> p;
-  std::array<std::uint32_t, 3> v;  // welded vertex ids
-  int face;
-};
-
-// Splits every face into triangles (over each convex piece), dropping
-// slivers without area; checks on the way that each face is a simple polygon.
-std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std::uint32_t>& welded, double tolerance,
-                                        ValidationReport& r, Problems& problems) {
-  std::vector<Triangle> tris;
+// Splits every face into triangles (over each convex piece), the slivers
+// without area after the rest (their count is returned in `slivers`); checks
+// on the way that each face is a simple polygon.
+std::vector<MeshTriangle> triangulate_faces(const Mesh& mesh, const std::vector<std::uint32_t>& welded,
+                                            double tolerance, ValidationReport& r, Problems& problems,
+                                            std::size_t& slivers) {
+  std::vector<MeshTriangle> tris, thin;
   tris.reserve(mesh.n_faces() * 2);
   std::vector<glm::dvec3> pts;
   std::vector<std::uint32_t> ids;
@@ -252,23 +249,27 @@ std::vector<Triangle> triangulate_faces(const Mesh& mesh, const std::vector<std:
         const std::size_t mid = (lo + hi) / 2;
         chains.push_back({lo, mid});
         chains.push_back({mid, hi});
-        Triangle t{{pts[piece[lo]], pts[piece[mid]], pts[piece[hi]]}, {ids[piece[lo]], ids[piece[mid]], ids[piece[hi]]},
-                   f.idx()};
+        MeshTriangle t{{pts[piece[lo]], pts[piece[mid]], pts[piece[hi]]},
+                       {ids[piece[lo]], ids[piece[mid]], ids[piece[hi]]},
+                       f.idx()};
         const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
         const double longest = std::max({glm::length(e1), glm::length(e2), glm::length(t.p[2] - t.p[1])});
-        if (glm::length(glm::cross(e1, e2)) > tolerance * longest) tris.push_back(t);
+        (glm::length(glm::cross(e1, e2)) > tolerance * longest ? tris : thin).push_back(t);
       }
     }
   }
+  slivers = thin.size();
+  tris.insert(tris.end(), thin.begin(), thin.end());
   return tris;
 }
 
 // Coplanar triangles facing the same way overlap if an edge of one properly
 // crosses an edge of the other or a vertex of one lies inside the other.
 // Facing opposite ways they are two solids in contact, which is allowed.
-bool coplanar_overlap(const Triangle& a, const Triangle& b, const glm::dvec3& na, const glm::dvec3& nb, double tol) {
+bool coplanar_overlap(const MeshTriangle& a, const MeshTriangle& b, const glm::dvec3& na, const glm::dvec3& nb,
+                      double tol) {
   if (glm::dot(na, nb) <= 0.0) return false;
-  auto inside = [&](const glm::dvec3& x, const Triangle& t) {
+  auto inside = [&](const glm::dvec3& x, const MeshTriangle& t) {
     for (int k = 0; k < 3; ++k) {
       const glm::dvec3 inward = glm::normalize(glm::cross(na, t.p[(k + 1) % 3] - t.p[k]));
       if (glm::dot(inward, x - t.p[k]) <= tol) return false;
@@ -293,7 +294,7 @@ bool coplanar_overlap(const Triangle& a, const Triangle& b, const glm::dvec3& na
 
 // Where triangle t meets the other triangle's plane (d: its vertices' signed
 // distances to it), as an interval along the planes' common line direction.
-std::pair<double, double> plane_interval(const Triangle& t, const std::array<double, 3>& d, const glm::dvec3& dir) {
+std::pair<double, double> plane_interval(const MeshTriangle& t, const std::array<double, 3>& d, const glm::dvec3& dir) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   auto add = [&](const glm::dvec3& p) {
     const double s = glm::dot(dir, p);
@@ -308,14 +309,15 @@ std::pair<double, double> plane_interval(const Triangle& t, const std::array<dou
   return {lo, hi};
 }
 
-glm::dvec3 unit_normal(const Triangle& t) { return glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])); }
+glm::dvec3 unit_normal(const MeshTriangle& t) { return glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])); }
 
 // Two triangles intersect when each passes through the other's plane
 // (vertices strictly on both sides) and the two crossing segments, which lie
 // on the planes' common line, overlap by more than tol. Triangles that only
 // touch (a vertex or edge on the other's plane, or along a line) do not.
 // na and nb are the triangles' unit_normal.
-bool triangles_intersect(const Triangle& a, const Triangle& b, const glm::dvec3& na, const glm::dvec3& nb, double tol) {
+bool triangles_intersect(const MeshTriangle& a, const MeshTriangle& b, const glm::dvec3& na, const glm::dvec3& nb,
+                         double tol) {
   std::array<double, 3> da{}, db{};  // a's vertices against b's plane, and back
   for (int k = 0; k < 3; ++k) {
     da[k] = glm::dot(nb, a.p[k] - b.p[0]);
@@ -342,7 +344,7 @@ bool triangles_intersect(const Triangle& a, const Triangle& b, const glm::dvec3&
 // allows). Triangles sharing one vertex are tested: planes through a common
 // vertex cross on a line through it, and a fold-over there shows as a segment
 // of that line inside both.
-bool share_edge(const Triangle& a, const Triangle& b) {
+bool share_edge(const MeshTriangle& a, const MeshTriangle& b) {
   int shared = 0;
   for (std::uint32_t u : a.v)
     for (std::uint32_t w : b.v)
@@ -361,11 +363,11 @@ bool share_edge(const Triangle& a, const Triangle& b) {
 // subtree of its own and never compares a fan with itself.
 class IntersectionSearch {
  public:
-  IntersectionSearch(std::vector<Triangle> tris, double tol, ValidationReport& r, Problems& problems)
+  IntersectionSearch(std::vector<MeshTriangle> tris, double tol, ValidationReport& r, Problems& problems)
       : tris_(std::move(tris)), tol_(tol), r_(r), problems_(problems), boxes_(tris_.size()), normals_(tris_.size()),
         fit_(tris_.size()), turned_(tris_.size() >= kTurnedFrom) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {
-      const Triangle& t = tris_[i];
+      const MeshTriangle& t = tris_[i];
       normals_[i] = unit_normal(t);
       glm::dvec3 a = t.p[0], b = t.p[0];
       for (const auto& p : t.p) {
@@ -442,7 +444,7 @@ class IntersectionSearch {
 
   std::vector<std::vector<std::uint32_t>> triangles_around_vertices() const {
     std::uint32_t n = 0;
-    for (const Triangle& t : tris_) n = std::max({n, t.v[0] + 1, t.v[1] + 1, t.v[2] + 1});
+    for (const MeshTriangle& t : tris_) n = std::max({n, t.v[0] + 1, t.v[1] + 1, t.v[2] + 1});
     std::vector<std::vector<std::uint32_t>> around(n);
     for (std::uint32_t i = 0; i < tris_.size(); ++i)
       for (std::uint32_t v : tris_[i].v) around[v].push_back(i);
@@ -451,7 +453,7 @@ class IntersectionSearch {
 
   void test(std::uint32_t i, std::uint32_t j) {
     ++r_.triangle_pairs_tested;
-    const Triangle &a = tris_[i], &b = tris_[j];
+    const MeshTriangle &a = tris_[i], &b = tris_[j];
     if (a.face == b.face || share_edge(a, b) || !overlap(boxes_[i], boxes_[j])) return;
     if (!triangles_intersect(a, b, normals_[i], normals_[j], tol_)) return;
     r_.self_intersection_free = false;
@@ -486,7 +488,7 @@ class IntersectionSearch {
     std::vector<std::array<glm::dvec3, 2>> arcs(fan.size());
     glm::dvec3 axis{0.0};
     for (std::size_t k = 0; k < fan.size(); ++k) {
-      const Triangle& t = tris_[fan[k]];
+      const MeshTriangle& t = tris_[fan[k]];
       const int at = t.v[0] == v ? 0 : t.v[1] == v ? 1 : 2;
       for (int e = 0; e < 2; ++e) {
         arcs[k][e] = glm::normalize(t.p[(at + 1 + e) % 3] - t.p[at]);
@@ -520,7 +522,7 @@ class IntersectionSearch {
     });
   }
 
-  static std::uint32_t shared_vertex(const Triangle& a, const Triangle& b) {
+  static std::uint32_t shared_vertex(const MeshTriangle& a, const MeshTriangle& b) {
     for (std::uint32_t u : a.v)
       for (std::uint32_t w : b.v)
         if (u == w) return u;
@@ -569,7 +571,7 @@ class IntersectionSearch {
     // directions doubled in angle, so that opposite edges add up.
     glm::dvec2 doubled{0.0};
     for (auto it = begin; it != end; ++it) {
-      const Triangle& t = tris_[*it];
+      const MeshTriangle& t = tris_[*it];
       glm::dvec3 longest{0.0};
       for (int k = 0; k < 3; ++k) {
         const glm::dvec3 e = t.p[(k + 1) % 3] - t.p[k];
@@ -687,7 +689,7 @@ class IntersectionSearch {
     for (std::uint32_t start = 0; start < order_.size(); ++start) {
       if (placed[start]) continue;
       // Each triangle k takes the one at order_[k]: round the cycle from start.
-      const Triangle tri = tris_[start];
+      const MeshTriangle tri = tris_[start];
       const Box box = boxes_[start];
       const glm::dvec3 normal = normals_[start];
       std::uint32_t k = start;
@@ -778,7 +780,7 @@ class IntersectionSearch {
     if (shared_vertex(tris_[i], tris_[j]) == kNone) test(i, j);
   }
 
-  std::vector<Triangle> tris_;  // in tree order once the hierarchy is built (in_tree_order)
+  std::vector<MeshTriangle> tris_;  // in tree order once the hierarchy is built (in_tree_order)
   double tol_;
   ValidationReport& r_;
   Problems& problems_;
@@ -865,7 +867,12 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
 
     r.self_intersection_free = true;
     if (options.check_self_intersections) {
-      IntersectionSearch(triangulate_faces(mesh, welded, tol, r, problems), tol, r, problems).run();
+      std::size_t slivers = 0;
+      std::vector<MeshTriangle> tris = triangulate_faces(mesh, welded, tol, r, problems, slivers);
+      r.proven_apart = proven_apart_over_base(tris, slivers);
+      tris.resize(tris.size() - slivers);
+      if (!r.proven_apart || options.search_proven_pairs)
+        IntersectionSearch(std::move(tris), tol, r, problems).run();
     }
   }
   return r;

@@ -16,6 +16,9 @@ struct ValidationOptions {
   double tolerance = -1.0;
   double relative = kMeshDistanceRelative;
   bool check_self_intersections = true;
+  // Search pairs of triangles for intersections even where a roof's are
+  // proven apart over its base (height_field.h): tests compare the two.
+  bool search_proven_pairs = false;
 };
 
 // What a sweep's roof is held to: relative to the clustering scale it was
@@ -36,6 +39,9 @@ struct ValidationReport {
   // Pairs of triangles the self-intersection search looked at: its work, which
   // tests hold to O(n log n) where a stopwatch could not.
   std::size_t triangle_pairs_tested = 0;
+  // Whether the triangles were proven to pass through none of each other
+  // (height_field.h), which takes no pairs.
+  bool proven_apart = false;
 
   bool ok() const {
     return closed && manifold && oriented && planar && self_intersection_free;

@@ -213,12 +213,17 @@ double roof_tolerance(const Footprint& footprint, const Surface& roof) {
 
 std::vector<std::string> check_valid_mesh(const Surface& surface) {
   try {
-    const ValidationReport v = validate(build_mesh(surface), roof_validation(surface));
+    ValidationOptions options = roof_validation(surface);
+    options.search_proven_pairs = true;
+    const ValidationReport v = validate(build_mesh(surface), options);
     if (v.ok()) return {};
     std::vector<std::string> out{std::string("mesh does not validate:") + (v.closed ? "" : " not closed") +
                                  (v.manifold ? "" : " not 2-manifold") + (v.oriented ? "" : " not oriented") +
                                  (v.planar ? "" : " not planar") +
-                                 (v.self_intersection_free ? "" : " self-intersecting")};
+                                 (v.self_intersection_free ? "" : " self-intersecting") +
+                                 (v.self_intersection_free || !v.proven_apart
+                                      ? ""
+                                      : " (though its triangles were proven apart over its base)")};
     for (std::size_t i = 0; i < v.problems.size() && i < kShown; ++i) out.push_back(v.problems[i]);
     return out;
   } catch (const std::exception& e) {

@@ -1,0 +1,122 @@
+#include "core/mesh/height_field.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+#include "core/geom/nesting.h"
+#include "core/geom/predicates.h"
+#include "core/geom/segment_intersections.h"
+
+namespace procex {
+
+namespace {
+
+struct Directed {
+  std::uint32_t from, to;
+  bool operator<(const Directed& o) const { return from != o.from ? from < o.from : to < o.to; }
+};
+
+// An edge between two vertices, the lower id first, and which way it runs:
+// +1 from the lower, -1 to it.
+struct Way {
+  std::uint32_t lo, hi;
+  int way;
+  bool operator<(const Way& o) const { return lo != o.lo ? lo < o.lo : hi < o.hi; }
+};
+
+Way way_of(std::uint32_t from, std::uint32_t to) { return from < to ? Way{from, to, 1} : Way{to, from, -1}; }
+
+// The edges of `ways` not matched by one running the other way: the boundary
+// of the triangles they came from, sorted by where they start.
+std::vector<Directed> unmatched(std::vector<Way>& ways) {
+  std::sort(ways.begin(), ways.end());
+  std::vector<Directed> out;
+  for (std::size_t first = 0; first < ways.size();) {
+    int surplus = 0;
+    std::size_t last = first;
+    for (; last < ways.size() && ways[last].lo == ways[first].lo && ways[last].hi == ways[first].hi; ++last)
+      surplus += ways[last].way;
+    for (; surplus > 0; --surplus) out.push_back({ways[first].lo, ways[first].hi});
+    for (; surplus < 0; ++surplus) out.push_back({ways[first].hi, ways[first].lo});
+    first = last;
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Which way a simple loop turns, exactly: at its least vertex (by x, then y)
+// the loop is convex, and its neighbours there are not on one line with it.
+int turn_of_simple_loop(const std::vector<glm::dvec2>& loop) {
+  const std::size_t n = loop.size();
+  std::size_t least = 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if (loop[k].x < loop[least].x || (loop[k].x == loop[least].x && loop[k].y < loop[least].y)) least = k;
+  return orient2d(loop[(least + n - 1) % n], loop[least], loop[(least + 1) % n]);
+}
+
+}  // namespace
+
+bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::size_t slivers) {
+  if (triangles.empty()) return false;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const MeshTriangle& t : triangles)
+    for (const glm::dvec3& p : t.p) lowest = std::min(lowest, p.z);
+
+  std::vector<Way> all, base;
+  all.reserve(3 * triangles.size());
+  std::vector<glm::dvec2> position;  // by welded id, of the base's vertices
+  const std::size_t solid = triangles.size() - slivers;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const MeshTriangle& t = triangles[i];
+    // An edge between one welded vertex and itself is a point: no boundary.
+    for (int k = 0; k < 3; ++k)
+      if (t.v[k] != t.v[(k + 1) % 3]) all.push_back(way_of(t.v[k], t.v[(k + 1) % 3]));
+    const bool flat = t.p[0].z == lowest && t.p[1].z == lowest && t.p[2].z == lowest;
+    if (i < solid) {
+      const int turn = orient2d(glm::dvec2(t.p[0]), glm::dvec2(t.p[1]), glm::dvec2(t.p[2]));
+      if (turn == 0) return false;  // upright: its neighbours may pass through it
+      if (turn < 0 && !flat) return false;  // facing down above the base: a second sheet may be there
+      if (turn > 0) continue;
+    } else if (!flat) {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (t.v[k] != t.v[(k + 1) % 3]) base.push_back(way_of(t.v[k], t.v[(k + 1) % 3]));
+      if (position.size() <= t.v[k]) position.resize(t.v[k] + 1);
+      position[t.v[k]] = glm::dvec2(t.p[k]);
+    }
+  }
+  if (base.empty()) return false;
+  if (!unmatched(all).empty()) return false;  // not closed, as triangles
+
+  // The base's outline, as loops: each vertex on it left by one edge of it.
+  const std::vector<Directed> outline = unmatched(base);
+  for (std::size_t k = 1; k < outline.size(); ++k)
+    if (outline[k].from == outline[k - 1].from) return false;  // the outline touches itself there
+  std::vector<std::vector<glm::dvec2>> loops;
+  std::vector<char> used(outline.size(), 0);
+  for (std::size_t start = 0; start < outline.size(); ++start) {
+    if (used[start]) continue;
+    std::vector<glm::dvec2> loop;
+    for (std::size_t k = start; !used[k];) {
+      used[k] = 1;
+      loop.push_back(position[outline[k].from]);
+      const auto next = std::lower_bound(outline.begin(), outline.end(), Directed{outline[k].to, 0});
+      if (next == outline.end() || next->from != outline[k].to) return false;
+      k = static_cast<std::size_t>(next - outline.begin());
+      if (k != start && used[k]) return false;
+    }
+    if (loop.size() < 3) return false;
+    loops.push_back(std::move(loop));
+  }
+  const LoopSegments segments = loop_segments(loops);
+  if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return false;
+  const LoopNesting nesting = loop_nesting(loops);
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return false;
+  return true;
+}
+
+}  // namespace procex
