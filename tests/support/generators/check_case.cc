@@ -93,7 +93,32 @@ void add(std::vector<std::string>& to, const std::string& prefix, const std::vec
   for (const std::string& line : lines) to.push_back(prefix + line);
 }
 
+bool cgal_judges(const Footprint& fp, const SweepOptions& options) {
+  return inward_roof(fp, options) && one_angle(fp) && !options.max_height;
+}
+
+// A quarter turn, a move to (5e5, 5e6), and a mirror, which turns FromStart
+// anchors into FromEnd ones: not for plan edits.
+std::vector<PlanTransform> case_transforms(const Footprint& fp, const SweepOptions& options) {
+  glm::dvec2 lo(INFINITY);
+  for (const Loop& loop : fp.loops)
+    for (const glm::dvec2& p : loop.points) lo = glm::min(lo, p);
+  std::vector<PlanTransform> transforms{PlanTransform::rotation(90), PlanTransform::translation(glm::dvec2(5e5, 5e6) - lo)};
+  if (options.plan_edits.empty()) transforms.push_back(PlanTransform::mirror());
+  return transforms;
+}
+
 }  // namespace
+
+std::vector<std::pair<std::string, Footprint>> checked_plans(const Footprint& prepared, const SweepOptions& options,
+                                                             const CheckSelection& selection) {
+  std::vector<std::pair<std::string, Footprint>> out;
+  if (selection.transforms)
+    for (const PlanTransform& t : case_transforms(prepared, options)) out.emplace_back(t.name, transformed(prepared, t));
+  if (selection.oracle && cgal_judges(prepared, options))
+    out.emplace_back("CGAL's plan", without_straight_vertices(prepared));
+  return out;
+}
 
 CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
   CaseResult r;
@@ -149,16 +174,10 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
       if (std::abs(got - *v) > 1e-9 * *v + tol * extent * extent)
         r.problems.push_back("volume " + std::to_string(got) + ", the integral of the offset areas " + std::to_string(*v));
     }
-    if (selection.oracle && one_angle(fp) && !c.options.max_height) add(r.problems, "CGAL: ", sweep_and_compare_with_cgal(fp));
+    if (selection.oracle && cgal_judges(fp, c.options)) add(r.problems, "CGAL: ", sweep_and_compare_with_cgal(fp));
   }
   if (selection.transforms) {
-    glm::dvec2 lo(INFINITY);
-    for (const Loop& loop : fp.loops)
-      for (const glm::dvec2& p : loop.points) lo = glm::min(lo, p);
-    std::vector<PlanTransform> transforms{PlanTransform::rotation(90), PlanTransform::translation(glm::dvec2(5e5, 5e6) - lo)};
-    // A mirror turns FromStart anchors into FromEnd ones: not for plan edits.
-    if (c.options.plan_edits.empty()) transforms.push_back(PlanTransform::mirror());
-    for (const PlanTransform& t : transforms) {
+    for (const PlanTransform& t : case_transforms(fp, c.options)) {
       const Footprint moved = transformed(fp, t);
       if (const std::optional<Surface> other = sweep_guarded(moved, c.options, t.name + ": ")) {
         const double moved_tol = std::max(tol, roof_tolerance(moved, *other));

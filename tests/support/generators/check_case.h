@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/support/generators/generated_case.h"
@@ -25,5 +26,12 @@ struct CheckSelection {
 };
 
 CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection = {});
+
+// The plans check_case sweeps besides the case's own (prepared) plan, each
+// named: its transforms, and with CGAL as the oracle the plan it compares
+// (straight vertices dropped). What tests/tools/roof_hashes.cc fingerprints to show
+// that an engine change leaves every sweep of a soak the same.
+std::vector<std::pair<std::string, Footprint>> checked_plans(const Footprint& prepared, const SweepOptions& options,
+                                                             const CheckSelection& selection = {});
 
 }  // namespace procex::testing

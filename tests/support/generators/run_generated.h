@@ -38,24 +38,28 @@ inline bool soak_run() {
   return s != nullptr && std::string(s) == "1";
 }
 
-// The seeds PROCEX_SEEDS names ("834" or "800-899", both ends in), to rerun a
-// reported failure; nullopt when unset. Anything else is refused by name.
-inline std::optional<std::pair<std::size_t, std::size_t>> seeds_asked() {
-  const char* s = std::getenv("PROCEX_SEEDS");
-  if (s == nullptr || *s == 0) return std::nullopt;
-  const std::string text(s);
+// The seeds `text` names ("834" or "800-899", both ends in) as [first, end);
+// anything else is refused naming `source`, where the text came from.
+inline std::pair<std::size_t, std::size_t> seed_range(const std::string& text, const std::string& source) {
   auto number = [&](std::size_t from, std::size_t to) {
     std::size_t value = 0;
     const auto [end, error] = std::from_chars(text.data() + from, text.data() + to, value);
     if (from == to || error != std::errc() || end != text.data() + to)
-      throw std::invalid_argument("PROCEX_SEEDS='" + text + "': expected a seed (834) or a range of seeds (800-899)");
+      throw std::invalid_argument(source + "='" + text + "': expected a seed (834) or a range of seeds (800-899)");
     return value;
   };
   const std::size_t dash = text.find('-');
   const std::size_t first = number(0, std::min(dash, text.size()));
   const std::size_t last = dash == std::string::npos ? first : number(dash + 1, text.size());
-  if (last < first) throw std::invalid_argument("PROCEX_SEEDS='" + text + "': the range ends before it starts");
+  if (last < first) throw std::invalid_argument(source + "='" + text + "': the range ends before it starts");
   return std::pair(first, last + 1);
+}
+
+// The seeds PROCEX_SEEDS names, to rerun a reported failure; nullopt when unset.
+inline std::optional<std::pair<std::size_t, std::size_t>> seeds_asked() {
+  const char* s = std::getenv("PROCEX_SEEDS");
+  if (s == nullptr || *s == 0) return std::nullopt;
+  return seed_range(s, "PROCEX_SEEDS");
 }
 
 inline void run_generated(CaseClass cls, std::size_t part, std::size_t parts, const Budget& budget) {
