@@ -31,22 +31,6 @@ bool pairs_cross(const ValidationReport& r) {
 
 ValidationReport searched(const Mesh& mesh) { return validate(mesh, {.search_proven_pairs = true}); }
 
-// n corners at sorted random angles and radii from 50 to 100 m: a roof of
-// long thin faces running every way (bench/scale_inputs.py's random family).
-std::vector<glm::dvec2> spiky_plan(int n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi), radius(50.0, 100.0);
-  std::vector<double> angles(static_cast<std::size_t>(n));
-  for (double& a : angles) a = turn(rng);
-  std::sort(angles.begin(), angles.end());
-  std::vector<glm::dvec2> ring;
-  for (const double a : angles) {
-    const double r = radius(rng);
-    ring.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return ring;
-}
-
 Surface roof(const std::vector<std::vector<glm::dvec2>>& loops, double angle = 45.0) {
   return sweep(make_footprint(loops, angle));
 }
@@ -62,7 +46,7 @@ TEST(HeightField, RoofsOverTheirBasesAreProvenApartWithoutPairs) {
   const std::vector<std::vector<std::vector<glm::dvec2>>> plans{
       {{{0, 0}, {24, 0}, {24, 8}, {16, 8}, {16, 20}, {8, 20}, {8, 8}, {0, 8}}},  // T, exact
       {test::rectangle(0, 0, 24, 24), court},                                  // a courtyard
-      {spiky_plan(512, 1)}};
+      {test::spiky_plan(512, 1)}};
   for (const auto& plan : plans) {
     const ValidationReport proven = validate(build_mesh(roof(plan)));
     EXPECT_TRUE(proven.ok()) << ::testing::PrintToString(proven.problems);
@@ -120,7 +104,7 @@ TEST(HeightField, NoMovedVertexTheSearchFindsCrossingIsProvenApart) {
   const int budget = testing::soak_run() ? 200000 : 600;  // TESTING.md records the soaks
   for (int seed = 0; seed < budget; ++seed) {
     const std::vector<glm::dvec2> plan =
-        seed % 2 == 0 ? spiky_plan(8 + seed % 40, static_cast<std::uint64_t>(seed))
+        seed % 2 == 0 ? test::spiky_plan(8 + seed % 40, static_cast<std::uint64_t>(seed))
                       : std::vector<glm::dvec2>{{0, 0}, {8, 0}, {8, 8}, {16, 8}, {16, 0}, {24, 0}, {24, 24},
                                                 {16, 24}, {16, 16}, {8, 16}, {8, 24}, {0, 24}};  // H, exact
     Mesh mesh;

@@ -1,8 +1,13 @@
-// Hand-made closed surfaces for the mesh tests: vertical prisms over planar
+// Hand-made closed surfaces and plans for the mesh tests: vertical prisms over planar
 // footprints (loops at even nesting depth CCW, odd depth CW), so every
 // expected property (closed, oriented, volume) is known in closed form.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <random>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -69,6 +74,23 @@ inline Surface square_ring() {
   std::vector<glm::dvec2> hole = rectangle(3, 3, 7, 7);
   std::reverse(hole.begin(), hole.end());
   return extrude({rectangle(0, 0, 10, 10), hole}, 0.0, 2.0);
+}
+
+// n corners at sorted random angles and radii from 50 to 100 m
+// (bench/scale_inputs.py's random family): its roof at 45 degrees is n long
+// thin triangles side by side, running every way.
+inline std::vector<glm::dvec2> spiky_plan(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi), radius(50.0, 100.0);
+  std::vector<double> angles(static_cast<std::size_t>(n));
+  for (double& a : angles) a = turn(rng);
+  std::sort(angles.begin(), angles.end());
+  std::vector<glm::dvec2> ring;
+  for (const double a : angles) {
+    const double r = radius(rng);
+    ring.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return ring;
 }
 
 // Both surfaces in one, the second's vertex ids shifted.

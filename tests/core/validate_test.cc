@@ -349,22 +349,10 @@ void expect_pairs_grow_less_than(Mesh (*roof)(int), std::size_t most) {
 // not 64 (every pair of sides).
 TEST(Validate, PairsTestedRoundAnApexGrowAsNLogN) { expect_pairs_grow_less_than(regular_roof, 16); }
 
-// The roof at 45 degrees over a spiky plan (bench/scale_inputs.py's random
-// family): n corners at sorted random angles and radii from 50 to 100 m, so
-// the roof is n long thin triangles side by side, running every way, whose
-// axis-aligned boxes overlap by the thousand.
+// The roof at 45 degrees over a spiky plan, whose slivers' axis-aligned
+// boxes overlap by the thousand.
 Mesh spiky_roof(int n) {
-  std::mt19937_64 rng(static_cast<std::uint64_t>(n));
-  std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi), radius(50.0, 100.0);
-  std::vector<double> angles(static_cast<std::size_t>(n));
-  for (double& a : angles) a = turn(rng);
-  std::sort(angles.begin(), angles.end());
-  std::vector<glm::dvec2> ring;
-  for (const double a : angles) {
-    const double r = radius(rng);
-    ring.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return build_mesh(sweep(make_footprint({ring}, 45.0)));
+  return build_mesh(sweep(make_footprint({test::spiky_plan(n, static_cast<std::uint64_t>(n))}, 45.0)));
 }
 
 // Boxes turned along the slivers part them, and bundles of slivers are split
