@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "core/geom/nesting.h"
@@ -58,8 +59,9 @@ int turn_of_simple_loop(const std::vector<glm::dvec2>& loop) {
 
 }  // namespace
 
-bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::size_t slivers) {
-  if (triangles.empty()) return false;
+std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
+                                                        std::size_t slivers) {
+  if (triangles.empty()) return std::nullopt;
   double lowest = std::numeric_limits<double>::infinity();
   for (const MeshTriangle& t : triangles)
     for (const glm::dvec3& p : t.p) lowest = std::min(lowest, p.z);
@@ -68,6 +70,7 @@ bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::siz
   all.reserve(3 * triangles.size());
   std::vector<glm::dvec2> position;  // by welded id, of the base's vertices
   const std::size_t solid = triangles.size() - slivers;
+  std::vector<char> upright(solid, 0);
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const MeshTriangle& t = triangles[i];
     // An edge between one welded vertex and itself is a point: no boundary.
@@ -76,9 +79,9 @@ bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::siz
     const bool flat = t.p[0].z == lowest && t.p[1].z == lowest && t.p[2].z == lowest;
     if (i < solid) {
       const int turn = orient2d(glm::dvec2(t.p[0]), glm::dvec2(t.p[1]), glm::dvec2(t.p[2]));
-      if (turn == 0) return false;  // upright: its neighbours may pass through it
-      if (turn < 0 && !flat) return false;  // facing down above the base: a second sheet may be there
-      if (turn > 0) continue;
+      if (turn == 0) upright[i] = 1;  // covers nothing seen from above, so it may be passed through
+      if (turn < 0 && !flat) return std::nullopt;  // facing down above the base: a second sheet may be there
+      if (turn >= 0) continue;
     } else if (!flat) {
       continue;
     }
@@ -88,13 +91,13 @@ bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::siz
       position[t.v[k]] = glm::dvec2(t.p[k]);
     }
   }
-  if (base.empty()) return false;
-  if (!unmatched(all).empty()) return false;  // not closed, as triangles
+  if (base.empty()) return std::nullopt;
+  if (!unmatched(all).empty()) return std::nullopt;  // not closed, as triangles
 
   // The base's outline, as loops: each vertex on it left by one edge of it.
   const std::vector<Directed> outline = unmatched(base);
   for (std::size_t k = 1; k < outline.size(); ++k)
-    if (outline[k].from == outline[k - 1].from) return false;  // the outline touches itself there
+    if (outline[k].from == outline[k - 1].from) return std::nullopt;  // the outline touches itself there
   std::vector<std::vector<glm::dvec2>> loops;
   std::vector<char> used(outline.size(), 0);
   for (std::size_t start = 0; start < outline.size(); ++start) {
@@ -104,19 +107,19 @@ bool proven_apart_over_base(const std::vector<MeshTriangle>& triangles, std::siz
       used[k] = 1;
       loop.push_back(position[outline[k].from]);
       const auto next = std::lower_bound(outline.begin(), outline.end(), Directed{outline[k].to, 0});
-      if (next == outline.end() || next->from != outline[k].to) return false;
+      if (next == outline.end() || next->from != outline[k].to) return std::nullopt;
       k = static_cast<std::size_t>(next - outline.begin());
-      if (k != start && used[k]) return false;
+      if (k != start && used[k]) return std::nullopt;
     }
-    if (loop.size() < 3) return false;
+    if (loop.size() < 3) return std::nullopt;
     loops.push_back(std::move(loop));
   }
   const LoopSegments segments = loop_segments(loops);
-  if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return false;
+  if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return std::nullopt;
   const LoopNesting nesting = loop_nesting(loops);
   for (std::size_t i = 0; i < loops.size(); ++i)
-    if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return false;
-  return true;
+    if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return std::nullopt;
+  return upright;
 }
 
 }  // namespace procex

@@ -363,9 +363,15 @@ bool share_edge(const MeshTriangle& a, const MeshTriangle& b) {
 // subtree of its own and never compares a fan with itself.
 class IntersectionSearch {
  public:
-  IntersectionSearch(std::vector<MeshTriangle> tris, double tol, ValidationReport& r, Problems& problems)
-      : tris_(std::move(tris)), tol_(tol), r_(r), problems_(problems), boxes_(tris_.size()), normals_(tris_.size()),
-        fit_(tris_.size()), turned_(tris_.size() >= kTurnedFrom) {
+  // `left`, by triangle: whether the proof over the base (height_field.h)
+  // left it to the search; empty where the proof did not hold. With
+  // only_left, a pair of two triangles the proof covers is not tested; else
+  // it is, and found crossing contradicts the proof.
+  IntersectionSearch(std::vector<MeshTriangle> tris, double tol, ValidationReport& r, Problems& problems,
+                     std::vector<char> left = {}, bool only_left = false)
+      : tris_(std::move(tris)), tol_(tol), r_(r), problems_(problems), left_(std::move(left)),
+        only_left_(only_left && !left_.empty()), boxes_(tris_.size()), normals_(tris_.size()), fit_(tris_.size()),
+        turned_(tris_.size() >= kTurnedFrom) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {
       const MeshTriangle& t = tris_[i];
       normals_[i] = unit_normal(t);
@@ -394,7 +400,12 @@ class IntersectionSearch {
       build_hierarchy(around);
     }
     in_tree_order();
-    if (!nodes_.empty()) self_pairs(root_);
+    if (nodes_.empty()) return;
+    if (only_left_) {
+      holds_left_.assign(nodes_.size(), 0);
+      mark_left(root_);
+    }
+    self_pairs(root_);
   }
 
  private:
@@ -451,12 +462,17 @@ class IntersectionSearch {
     return around;
   }
 
+  // Whether the proof covers the pair: neither was left to the search.
+  bool covered(std::uint32_t i, std::uint32_t j) const { return !left_.empty() && !left_[i] && !left_[j]; }
+
   void test(std::uint32_t i, std::uint32_t j) {
+    if (only_left_ && covered(i, j)) return;
     ++r_.triangle_pairs_tested;
     const MeshTriangle &a = tris_[i], &b = tris_[j];
     if (a.face == b.face || share_edge(a, b) || !overlap(boxes_[i], boxes_[j])) return;
     if (!triangles_intersect(a, b, normals_[i], normals_[j], tol_)) return;
     r_.self_intersection_free = false;
+    if (covered(i, j)) r_.proof_contradicted = true;
     ++found_;
     if (!reported_.insert({std::min(a.face, b.face), std::max(a.face, b.face)}).second) return;
     problems_.add("self-intersection", "faces " + std::to_string(std::min(a.face, b.face)) + " and " +
@@ -473,6 +489,7 @@ class IntersectionSearch {
   // every pair tested.
   void check_vertex(std::uint32_t v, const std::vector<std::uint32_t>& fan) {
     if (fan.size() < 2) return;
+    if (only_left_ && std::none_of(fan.begin(), fan.end(), [&](std::uint32_t t) { return left_[t]; })) return;
     // The list is in triangle order, so a face's triangles form one run, and
     // pairs start after it: a face fanned from this vertex (a footprint's
     // base split into thousands of triangles) adds no pairs of its own.
@@ -692,18 +709,35 @@ class IntersectionSearch {
       const MeshTriangle tri = tris_[start];
       const Box box = boxes_[start];
       const glm::dvec3 normal = normals_[start];
+      const char left = left_.empty() ? 0 : left_[start];
       std::uint32_t k = start;
       for (; order_[k] != start; k = order_[k]) {
         tris_[k] = tris_[order_[k]];
         boxes_[k] = boxes_[order_[k]];
         normals_[k] = normals_[order_[k]];
+        if (!left_.empty()) left_[k] = left_[order_[k]];
         placed[k] = true;
       }
       tris_[k] = tri, boxes_[k] = box, normals_[k] = normal;
+      if (!left_.empty()) left_[k] = left;
       placed[k] = true;
     }
     order_ = {};
     fit_ = {};
+  }
+
+  // Whether node id holds a triangle left to the search (only_left_): a
+  // subtree without one has no pair to test, within it or with another such.
+  char mark_left(std::uint32_t id) {
+    const Node& n = nodes_[id];
+    char any = 0;
+    if (n.count > 0)
+      for (std::uint32_t k = n.first; k < n.first + n.count && !any; ++k) any = left_[k];
+    if (!is_leaf(n)) {
+      const char l = mark_left(n.left), r = mark_left(n.right);
+      any = any || l || r;
+    }
+    return holds_left_[id] = any;
   }
 
   bool is_leaf(const Node& n) const { return n.left == kNone; }
@@ -739,6 +773,7 @@ class IntersectionSearch {
   void self_pairs(std::uint32_t id) {
     const Node& n = nodes_[id];
     if (done() || n.fan != kNone) return;  // a fan's pairs were tested round its vertex
+    if (only_left_ && !holds_left_[id]) return;
     if (is_leaf(n)) {
       for (std::uint32_t p = n.first; p < n.first + n.count; ++p)
         for (std::uint32_t q = p + 1; q < n.first + n.count; ++q) test_apart(p, q);
@@ -753,6 +788,7 @@ class IntersectionSearch {
   void cross_pairs(std::uint32_t a, std::uint32_t b) {
     const Node &na = nodes_[a], &nb = nodes_[b];
     if (done() || !overlap(na.box, nb.box) || (na.fan != kNone && na.fan == nb.fan) ||
+        (only_left_ && !holds_left_[a] && !holds_left_[b]) ||
         (loose(na) && loose(nb) && !oriented_overlap(turned(a), turned(b))))
       return;
     if (is_leaf(na) && is_leaf(nb)) {
@@ -784,6 +820,9 @@ class IntersectionSearch {
   double tol_;
   ValidationReport& r_;
   Problems& problems_;
+  std::vector<char> left_;  // by triangle, as tris_
+  const bool only_left_;
+  std::vector<char> holds_left_;  // by node, with only_left_
   std::vector<Box> boxes_;
   // Made once: a sliver of a spiky plan's roof is in a hundred pairs.
   std::vector<glm::dvec3> normals_;  // by triangle
@@ -869,10 +908,14 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
     if (options.check_self_intersections) {
       std::size_t slivers = 0;
       std::vector<MeshTriangle> tris = triangulate_faces(mesh, welded, tol, r, problems, slivers);
-      r.proven_apart = proven_apart_over_base(tris, slivers);
+      std::optional<std::vector<char>> left = proven_apart_over_base(tris, slivers);
+      r.proven_apart = left.has_value();
       tris.resize(tris.size() - slivers);
-      if (!r.proven_apart || options.search_proven_pairs)
-        IntersectionSearch(std::move(tris), tol, r, problems).run();
+      // Fully proven, nothing is left; with walls, only their pairs are.
+      if (!left || options.search_proven_pairs || std::find(left->begin(), left->end(), 1) != left->end())
+        IntersectionSearch(std::move(tris), tol, r, problems, left.value_or(std::vector<char>{}),
+                           !options.search_proven_pairs)
+            .run();
     }
   }
   return r;

@@ -16,8 +16,9 @@ struct ValidationOptions {
   double tolerance = -1.0;
   double relative = kMeshDistanceRelative;
   bool check_self_intersections = true;
-  // Search pairs of triangles for intersections even where a roof's are
-  // proven apart over its base (height_field.h): tests compare the two.
+  // Search every pair of triangles for intersections even where a roof's are
+  // proven apart over its base (height_field.h): tests compare the two
+  // (ValidationReport::proof_contradicted).
   bool search_proven_pairs = false;
 };
 
@@ -40,8 +41,12 @@ struct ValidationReport {
   // tests hold to O(n log n) where a stopwatch could not.
   std::size_t triangle_pairs_tested = 0;
   // Whether the triangles were proven to pass through none of each other
-  // (height_field.h), which takes no pairs.
+  // (height_field.h), which takes no pairs; but upright ones (walls), whose
+  // pairs are searched.
   bool proven_apart = false;
+  // Whether the search found two triangles crossing that the proof covered:
+  // a fault of the proof (tests search every pair to see it).
+  bool proof_contradicted = false;
 
   bool ok() const {
     return closed && manifold && oriented && planar && self_intersection_free;

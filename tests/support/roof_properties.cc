@@ -221,9 +221,7 @@ std::vector<std::string> check_valid_mesh(const Surface& surface) {
                                  (v.manifold ? "" : " not 2-manifold") + (v.oriented ? "" : " not oriented") +
                                  (v.planar ? "" : " not planar") +
                                  (v.self_intersection_free ? "" : " self-intersecting") +
-                                 (v.self_intersection_free || !v.proven_apart
-                                      ? ""
-                                      : " (though its triangles were proven apart over its base)")};
+                                 (v.proof_contradicted ? " (and triangles the proof over its base covered cross)" : "")};
     for (std::size_t i = 0; i < v.problems.size() && i < kShown; ++i) out.push_back(v.problems[i]);
     return out;
   } catch (const std::exception& e) {

@@ -37,8 +37,8 @@ double roof_tolerance(const Footprint& footprint, const Surface& roof);
 
 // build_mesh + validate: closed, 2-manifold, oriented, planar faces, no
 // self-intersection, every pair of triangles searched even where the
-// validator proves them apart (height_field.h), which it then names as wrong
-// too.
+// validator proves them apart (height_field.h); a crossing the proof covered
+// is named too.
 std::vector<std::string> check_valid_mesh(const Surface& surface);
 
 // Every face with a footprint edge's id lies on a plane of that edge: the
