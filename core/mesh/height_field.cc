@@ -59,8 +59,8 @@ int turn_of_simple_loop(const std::vector<glm::dvec2>& loop) {
 
 }  // namespace
 
-std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
-                                                        std::size_t slivers) {
+std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
+                                                                 std::size_t slivers, double tolerance) {
   if (triangles.empty()) return std::nullopt;
   double lowest = std::numeric_limits<double>::infinity();
   for (const MeshTriangle& t : triangles)
@@ -70,7 +70,7 @@ std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTr
   all.reserve(3 * triangles.size());
   std::vector<glm::dvec2> position;  // by welded id, of the base's vertices
   const std::size_t solid = triangles.size() - slivers;
-  std::vector<char> upright(solid, 0);
+  std::vector<std::uint32_t> left(solid, kCovered);
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const MeshTriangle& t = triangles[i];
     // An edge between one welded vertex and itself is a point: no boundary.
@@ -79,7 +79,7 @@ std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTr
     const bool flat = t.p[0].z == lowest && t.p[1].z == lowest && t.p[2].z == lowest;
     if (i < solid) {
       const int turn = orient2d(glm::dvec2(t.p[0]), glm::dvec2(t.p[1]), glm::dvec2(t.p[2]));
-      if (turn == 0) upright[i] = 1;  // covers nothing seen from above, so it may be passed through
+      if (turn == 0) left[i] = kUpright;  // covers nothing seen from above, so it may be passed through
       if (turn < 0 && !flat) return std::nullopt;  // facing down above the base: a second sheet may be there
       if (turn >= 0) continue;
     } else if (!flat) {
@@ -116,10 +116,39 @@ std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTr
   }
   const LoopSegments segments = loop_segments(loops);
   if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return std::nullopt;
+  bool near = false;  // two edges of the outline that do not meet, nearer each other than the tolerance
+  for_each_near_segment_pair(segments.segments, tolerance, [&](std::size_t i, std::size_t j) {
+    near = segments.next[i] != j && segments.next[j] != i && segments_meet(segments.segments[i], segments.segments[j], tolerance);
+    return !near;
+  });
+  if (near) return std::nullopt;
   const LoopNesting nesting = loop_nesting(loops);
   for (std::size_t i = 0; i < loops.size(); ++i)
     if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return std::nullopt;
-  return upright;
+
+  // Upright triangles standing on an edge of the outline, their shadow that
+  // edge (height_field.h), by the edge.
+  using Segment = std::pair<glm::dvec2, glm::dvec2>;  // the lesser end first
+  const auto lesser = [](glm::dvec2 a, glm::dvec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  const auto segment = [&](glm::dvec2 a, glm::dvec2 b) { return lesser(b, a) ? Segment(b, a) : Segment(a, b); };
+  const auto segment_less = [&](const Segment& e, const Segment& f) {
+    return lesser(e.first, f.first) || (e.first == f.first && lesser(e.second, f.second));
+  };
+  std::vector<Segment> edges;  // the outline's, in the plan
+  edges.reserve(outline.size());
+  for (const Directed& d : outline) edges.push_back(segment(position[d.from], position[d.to]));
+  std::sort(edges.begin(), edges.end(), segment_less);
+  for (std::size_t i = 0; i < solid; ++i) {
+    if (left[i] != kUpright) continue;
+    const MeshTriangle& t = triangles[i];
+    const glm::dvec2 a(t.p[0]), b(t.p[1]), c(t.p[2]);
+    // Its shadow's two ends: a wall split along a diagonal has each twice.
+    const glm::dvec2 w = a == b ? c : b;
+    if (w == a || (a != b && c != a && c != b)) continue;  // its shadow's ends are not two of its corners
+    const auto at = std::lower_bound(edges.begin(), edges.end(), segment(a, w), segment_less);
+    if (at != edges.end() && *at == segment(a, w)) left[i] = static_cast<std::uint32_t>(at - edges.begin());
+  }
+  return left;
 }
 
 }  // namespace procex

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -22,7 +23,10 @@ namespace procex {
 //   down lie in the plane of the lowest vertex, to the bit: the base;
 // - the base's outline is loops that neither cross nor touch, each turning
 //   clockwise at an even depth of nesting and counter-clockwise at an odd
-//   one.
+//   one; and two of its edges that do not meet come no nearer each other
+//   than `tolerance`, since the pair search takes what is apart by less than
+//   its tolerance as touching (the walls either side of a needle of a plan,
+//   which it finds overlapping): there it decides.
 // Every turn is decided by exact predicates. Then no point of a triangle
 // facing up lies inside another triangle facing up or the base's, and no
 // triangle facing up reaches below the base: none of those pass through each
@@ -35,11 +39,22 @@ namespace procex {
 // inside one of them would cover the points round its shadow twice. Slivers,
 // left out of the turns, move this only within their width, under the
 // search's tolerance.
-// Returns, where the proof holds, which of the triangles before the slivers
-// it leaves to the search, each to be tested against every other: the
-// upright ones (walls), whose shadow is a line. Nullopt: it does not hold,
-// and every pair must be searched.
-std::optional<std::vector<char>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
-                                                        std::size_t slivers);
+// Upright triangles (walls) cover no area seen from above: the proof leaves
+// them to the search. One standing on an edge of the base's outline, its
+// shadow that edge, is reached by nothing facing up or down: the base covers
+// one side of the edge and nothing the other, and a triangle passing through
+// the wall would cover points on both; and walls on two edges of the outline
+// meet at most above a corner they share, at their sides. Such a wall needs
+// comparing only with the walls on its own edge.
+constexpr std::uint32_t kCovered = 0xffffffffu;  // facing up or down: crosses no covered triangle
+constexpr std::uint32_t kUpright = 0xfffffffeu;  // every pair with it is searched
+
+// Where the proof holds, how it leaves each triangle before the slivers to
+// the search: kCovered, kUpright, or, for a wall on the base's outline, the
+// number of its outline edge, whose walls are to be compared with each
+// other. Nullopt where the proof does not hold, and every pair must be
+// searched.
+std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
+                                                                 std::size_t slivers, double tolerance);
 
 }  // namespace procex

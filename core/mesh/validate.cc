@@ -363,12 +363,12 @@ bool share_edge(const MeshTriangle& a, const MeshTriangle& b) {
 // subtree of its own and never compares a fan with itself.
 class IntersectionSearch {
  public:
-  // `left`, by triangle: whether the proof over the base (height_field.h)
-  // left it to the search; empty where the proof did not hold. With
-  // only_left, a pair of two triangles the proof covers is not tested; else
-  // it is, and found crossing contradicts the proof.
+  // `left`, by triangle: how the proof over the base (height_field.h) left
+  // it to the search (kCovered, kUpright or a wall's outline edge); empty
+  // where the proof did not hold. With only_left, a pair the proof covers is
+  // not tested; else it is, and found crossing contradicts the proof.
   IntersectionSearch(std::vector<MeshTriangle> tris, double tol, ValidationReport& r, Problems& problems,
-                     std::vector<char> left = {}, bool only_left = false)
+                     std::vector<std::uint32_t> left = {}, bool only_left = false)
       : tris_(std::move(tris)), tol_(tol), r_(r), problems_(problems), left_(std::move(left)),
         only_left_(only_left && !left_.empty()), boxes_(tris_.size()), normals_(tris_.size()), fit_(tris_.size()),
         turned_(tris_.size() >= kTurnedFrom) {
@@ -393,6 +393,10 @@ class IntersectionSearch {
 
   void run() {
     if (tris_.size() < 2) return;
+    if (only_left_) {
+      check_walls_by_edge();
+      if (std::find(left_.begin(), left_.end(), kUpright) == left_.end()) return;
+    }
     {
       const std::vector<std::vector<std::uint32_t>> around = triangles_around_vertices();
       for (std::uint32_t v = 0; v < around.size() && !done(); ++v) check_vertex(v, around[v]);
@@ -402,8 +406,8 @@ class IntersectionSearch {
     in_tree_order();
     if (nodes_.empty()) return;
     if (only_left_) {
-      holds_left_.assign(nodes_.size(), 0);
-      mark_left(root_);
+      upright_.assign(nodes_.size(), 0);
+      mark_upright(root_);
     }
     self_pairs(root_);
   }
@@ -462,11 +466,30 @@ class IntersectionSearch {
     return around;
   }
 
-  // Whether the proof covers the pair: neither was left to the search.
-  bool covered(std::uint32_t i, std::uint32_t j) const { return !left_.empty() && !left_[i] && !left_[j]; }
+  // Whether the proof covers the pair: neither is upright, and they are not
+  // walls on one edge of the base's outline.
+  bool covered(std::uint32_t i, std::uint32_t j) const {
+    return !left_.empty() && left_[i] != kUpright && left_[j] != kUpright && (left_[i] != left_[j] || left_[i] == kCovered);
+  }
+
+  // The pairs of walls on one edge of the base's outline (only_left_): the
+  // rest of their pairs the proof covers.
+  void check_walls_by_edge() {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> walls;  // (edge, triangle)
+    for (std::uint32_t i = 0; i < left_.size(); ++i)
+      if (left_[i] != kCovered && left_[i] != kUpright) walls.emplace_back(left_[i], i);
+    std::sort(walls.begin(), walls.end());
+    for (std::size_t first = 0; first < walls.size() && !done();) {
+      std::size_t end = first;
+      while (end < walls.size() && walls[end].first == walls[first].first) ++end;
+      for (std::size_t p = first; p < end; ++p)
+        for (std::size_t q = p + 1; q < end; ++q) test(walls[p].second, walls[q].second);
+      first = end;
+    }
+  }
 
   void test(std::uint32_t i, std::uint32_t j) {
-    if (only_left_ && covered(i, j)) return;
+    if (only_left_ && covered(i, j)) return;  // walls on one edge are not: check_walls_by_edge
     ++r_.triangle_pairs_tested;
     const MeshTriangle &a = tris_[i], &b = tris_[j];
     if (a.face == b.face || share_edge(a, b) || !overlap(boxes_[i], boxes_[j])) return;
@@ -489,7 +512,8 @@ class IntersectionSearch {
   // every pair tested.
   void check_vertex(std::uint32_t v, const std::vector<std::uint32_t>& fan) {
     if (fan.size() < 2) return;
-    if (only_left_ && std::none_of(fan.begin(), fan.end(), [&](std::uint32_t t) { return left_[t]; })) return;
+    if (only_left_ && std::none_of(fan.begin(), fan.end(), [&](std::uint32_t t) { return left_[t] == kUpright; }))
+      return;
     // The list is in triangle order, so a face's triangles form one run, and
     // pairs start after it: a face fanned from this vertex (a footprint's
     // base split into thousands of triangles) adds no pairs of its own.
@@ -709,7 +733,7 @@ class IntersectionSearch {
       const MeshTriangle tri = tris_[start];
       const Box box = boxes_[start];
       const glm::dvec3 normal = normals_[start];
-      const char left = left_.empty() ? 0 : left_[start];
+      const std::uint32_t left = left_.empty() ? kCovered : left_[start];
       std::uint32_t k = start;
       for (; order_[k] != start; k = order_[k]) {
         tris_[k] = tris_[order_[k]];
@@ -726,18 +750,19 @@ class IntersectionSearch {
     fit_ = {};
   }
 
-  // Whether node id holds a triangle left to the search (only_left_): a
-  // subtree without one has no pair to test, within it or with another such.
-  char mark_left(std::uint32_t id) {
+  // Whether node id holds an upright triangle the proof left to the search
+  // (only_left_): the pairs of a subtree without one the proof covers, but
+  // those of walls on one edge, which check_walls_by_edge tested.
+  char mark_upright(std::uint32_t id) {
     const Node& n = nodes_[id];
     char any = 0;
     if (n.count > 0)
-      for (std::uint32_t k = n.first; k < n.first + n.count && !any; ++k) any = left_[k];
+      for (std::uint32_t k = n.first; k < n.first + n.count && !any; ++k) any = left_[k] == kUpright;
     if (!is_leaf(n)) {
-      const char l = mark_left(n.left), r = mark_left(n.right);
+      const char l = mark_upright(n.left), r = mark_upright(n.right);
       any = any || l || r;
     }
-    return holds_left_[id] = any;
+    return upright_[id] = any;
   }
 
   bool is_leaf(const Node& n) const { return n.left == kNone; }
@@ -773,7 +798,7 @@ class IntersectionSearch {
   void self_pairs(std::uint32_t id) {
     const Node& n = nodes_[id];
     if (done() || n.fan != kNone) return;  // a fan's pairs were tested round its vertex
-    if (only_left_ && !holds_left_[id]) return;
+    if (only_left_ && !upright_[id]) return;
     if (is_leaf(n)) {
       for (std::uint32_t p = n.first; p < n.first + n.count; ++p)
         for (std::uint32_t q = p + 1; q < n.first + n.count; ++q) test_apart(p, q);
@@ -788,7 +813,7 @@ class IntersectionSearch {
   void cross_pairs(std::uint32_t a, std::uint32_t b) {
     const Node &na = nodes_[a], &nb = nodes_[b];
     if (done() || !overlap(na.box, nb.box) || (na.fan != kNone && na.fan == nb.fan) ||
-        (only_left_ && !holds_left_[a] && !holds_left_[b]) ||
+        (only_left_ && !upright_[a] && !upright_[b]) ||
         (loose(na) && loose(nb) && !oriented_overlap(turned(a), turned(b))))
       return;
     if (is_leaf(na) && is_leaf(nb)) {
@@ -820,9 +845,9 @@ class IntersectionSearch {
   double tol_;
   ValidationReport& r_;
   Problems& problems_;
-  std::vector<char> left_;  // by triangle, as tris_
+  std::vector<std::uint32_t> left_;  // by triangle, as tris_
   const bool only_left_;
-  std::vector<char> holds_left_;  // by node, with only_left_
+  std::vector<char> upright_;  // by node, with only_left_ (mark_upright)
   std::vector<Box> boxes_;
   // Made once: a sliver of a spiky plan's roof is in a hundred pairs.
   std::vector<glm::dvec3> normals_;  // by triangle
@@ -908,12 +933,13 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
     if (options.check_self_intersections) {
       std::size_t slivers = 0;
       std::vector<MeshTriangle> tris = triangulate_faces(mesh, welded, tol, r, problems, slivers);
-      std::optional<std::vector<char>> left = proven_apart_over_base(tris, slivers);
+      std::optional<std::vector<std::uint32_t>> left = proven_apart_over_base(tris, slivers, tol);
       r.proven_apart = left.has_value();
       tris.resize(tris.size() - slivers);
       // Fully proven, nothing is left; with walls, only their pairs are.
-      if (!left || options.search_proven_pairs || std::find(left->begin(), left->end(), 1) != left->end())
-        IntersectionSearch(std::move(tris), tol, r, problems, left.value_or(std::vector<char>{}),
+      if (!left || options.search_proven_pairs ||
+          std::any_of(left->begin(), left->end(), [](std::uint32_t l) { return l != kCovered; }))
+        IntersectionSearch(std::move(tris), tol, r, problems, left.value_or(std::vector<std::uint32_t>{}),
                            !options.search_proven_pairs)
             .run();
     }

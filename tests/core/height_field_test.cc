@@ -85,6 +85,19 @@ TEST(HeightField, WallsAreSearchedAndOverhangsWholly) {
   EXPECT_FALSE(overhang.proven_apart);
 }
 
+// A plan folded like a Z: two long walls facing one way, 1e-6 m apart, less
+// than the validator's tolerance. The search takes them as overlapping; the
+// proof, exact, would not, so it leaves such a plan to the search.
+TEST(HeightField, WallsNearerThanTheToleranceAreLeftToTheSearch) {
+  std::vector<glm::dvec2> z{{0, 0}, {10, 0}, {2, 1e-6}, {12, 2e-6}, {12, 5}, {0, 5}};
+  if (twice_signed_area(z) < 0.0) std::reverse(z.begin(), z.end());
+  const Mesh prism = build_mesh(test::extrude({z}, 0.0, 3.0));
+  const ValidationReport fast = validate(prism), all = searched(prism);
+  EXPECT_FALSE(fast.proven_apart);
+  EXPECT_FALSE(all.self_intersection_free) << "the search takes walls nearer than its tolerance as touching";
+  EXPECT_EQ(fast.self_intersection_free, all.self_intersection_free);
+}
+
 // Two roofs whose bases overlap: their outlines cross. One roof wholly over
 // another's base: the outlines nest, but turn the same way, so the inner
 // base covers its part twice. The search finds both crossing.
