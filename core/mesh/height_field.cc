@@ -1,10 +1,13 @@
 #include "core/mesh/height_field.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
+
+#include <glm/geometric.hpp>
 
 #include "core/geom/nesting.h"
 #include "core/geom/predicates.h"
@@ -57,6 +60,25 @@ int turn_of_simple_loop(const std::vector<glm::dvec2>& loop) {
   return orient2d(loop[(least + n - 1) % n], loop[least], loop[(least + 1) % n]);
 }
 
+// Whether a sliver above the base turns clockwise seen from above, folding
+// its face back, by more than `most` (and its coordinates' rounding): the
+// triangles beside it then cover the fold's shadow twice. The shadow is
+// thinner than the search's tolerance, but two triangles overlapping along
+// a long thin strip can still cross by more than it (a ridge vertex moved
+// 2e-5 m across a ridge, tolerance 1e-5: HeightField's moved vertices).
+// Slivers that turn either way by their rounding (three points of a straight
+// ridge) or by the sweep's clustering (a spiky roof's, up to 0.0015 of the
+// tolerance at 262,144 corners) move nothing the search would see.
+bool folded_past(const MeshTriangle& t, double most) {
+  const glm::dvec2 a(t.p[0]), b(t.p[1]), c(t.p[2]);
+  const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  if (!(twice_area < 0.0)) return false;
+  const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+  double magnitude = longest;
+  for (const glm::dvec3& p : t.p) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
+  return -twice_area / longest > std::max(most, 64.0 * std::numeric_limits<double>::epsilon() * magnitude);
+}
+
 }  // namespace
 
 std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vector<MeshTriangle>& triangles,
@@ -83,6 +105,7 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
       if (turn < 0 && !flat) return std::nullopt;  // facing down above the base: a second sheet may be there
       if (turn >= 0) continue;
     } else if (!flat) {
+      if (folded_past(t, 0.01 * tolerance)) return std::nullopt;
       continue;
     }
     for (int k = 0; k < 3; ++k) {
@@ -116,12 +139,15 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
   }
   const LoopSegments segments = loop_segments(loops);
   if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return std::nullopt;
-  bool near = false;  // two edges of the outline that do not meet, nearer each other than the tolerance
+  // Edges of the outline that do not meet, nearer each other than the
+  // tolerance: the search takes walls on them as touching (height_field.h).
+  std::vector<std::size_t> near;
   for_each_near_segment_pair(segments.segments, tolerance, [&](std::size_t i, std::size_t j) {
-    near = segments.next[i] != j && segments.next[j] != i && segments_meet(segments.segments[i], segments.segments[j], tolerance);
-    return !near;
+    if (segments.next[i] != j && segments.next[j] != i &&
+        segments_meet(segments.segments[i], segments.segments[j], tolerance))
+      near.insert(near.end(), {i, j});
+    return true;
   });
-  if (near) return std::nullopt;
   const LoopNesting nesting = loop_nesting(loops);
   for (std::size_t i = 0; i < loops.size(); ++i)
     if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return std::nullopt;
@@ -138,6 +164,11 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
   edges.reserve(outline.size());
   for (const Directed& d : outline) edges.push_back(segment(position[d.from], position[d.to]));
   std::sort(edges.begin(), edges.end(), segment_less);
+  std::vector<char> near_edge(edges.size(), 0);  // by place in `edges`
+  for (std::size_t k : near) {
+    const Segment e = segment(segments.segments[k].a, segments.segments[k].b);
+    near_edge[static_cast<std::size_t>(std::lower_bound(edges.begin(), edges.end(), e, segment_less) - edges.begin())] = 1;
+  }
   for (std::size_t i = 0; i < solid; ++i) {
     if (left[i] != kUpright) continue;
     const MeshTriangle& t = triangles[i];
@@ -146,7 +177,8 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
     const glm::dvec2 w = a == b ? c : b;
     if (w == a || (a != b && c != a && c != b)) continue;  // its shadow's ends are not two of its corners
     const auto at = std::lower_bound(edges.begin(), edges.end(), segment(a, w), segment_less);
-    if (at != edges.end() && *at == segment(a, w)) left[i] = static_cast<std::uint32_t>(at - edges.begin());
+    if (at != edges.end() && *at == segment(a, w) && !near_edge[static_cast<std::size_t>(at - edges.begin())])
+      left[i] = static_cast<std::uint32_t>(at - edges.begin());
   }
   return left;
 }

@@ -15,7 +15,8 @@ namespace procex {
 
 // The last `slivers` of `triangles` are the validator's slivers, too thin for
 // its pair search, which leaves them out: here they close the surface and
-// the base, and which way they turn is not asked. The proof holds when
+// the base, and may turn either way by a hundredth of `tolerance` (or their
+// coordinates' rounding), but not fold back by more. The proof holds when
 // - the triangles form a closed surface: each directed edge, between welded
 //   vertices, is matched by as many running the other way;
 // - every other triangle, seen from above, turns counter-clockwise (faces
@@ -23,10 +24,7 @@ namespace procex {
 //   down lie in the plane of the lowest vertex, to the bit: the base;
 // - the base's outline is loops that neither cross nor touch, each turning
 //   clockwise at an even depth of nesting and counter-clockwise at an odd
-//   one; and two of its edges that do not meet come no nearer each other
-//   than `tolerance`, since the pair search takes what is apart by less than
-//   its tolerance as touching (the walls either side of a needle of a plan,
-//   which it finds overlapping): there it decides.
+//   one.
 // Every turn is decided by exact predicates. Then no point of a triangle
 // facing up lies inside another triangle facing up or the base's, and no
 // triangle facing up reaches below the base: none of those pass through each
@@ -36,16 +34,19 @@ namespace procex {
 // cover no area), so the triangles facing up cover x as often as the base
 // does. The base's cover of x is minus the winding number of its outline
 // about x, 0 or 1 by the nesting. Two triangles facing up with a common point
-// inside one of them would cover the points round its shadow twice. Slivers,
-// left out of the turns, move this only within their width, under the
-// search's tolerance.
+// inside one of them would cover the points round its shadow twice. Slivers
+// turning clockwise move this only within their fold.
 // Upright triangles (walls) cover no area seen from above: the proof leaves
 // them to the search. One standing on an edge of the base's outline, its
 // shadow that edge, is reached by nothing facing up or down: the base covers
 // one side of the edge and nothing the other, and a triangle passing through
 // the wall would cover points on both; and walls on two edges of the outline
 // meet at most above a corner they share, at their sides. Such a wall needs
-// comparing only with the walls on its own edge.
+// comparing only with the walls on its own edge; but where another edge of
+// the outline that does not meet its own comes nearer than `tolerance`, it
+// is compared with every triangle, since the pair search takes what is apart
+// by less than its tolerance as touching (walls either side of a Z-fold of
+// the plan, facing one way, which it finds overlapping).
 constexpr std::uint32_t kCovered = 0xffffffffu;  // facing up or down: crosses no covered triangle
 constexpr std::uint32_t kUpright = 0xfffffffeu;  // every pair with it is searched
 

@@ -87,15 +87,17 @@ TEST(HeightField, WallsAreSearchedAndOverhangsWholly) {
 
 // A plan folded like a Z: two long walls facing one way, 1e-6 m apart, less
 // than the validator's tolerance. The search takes them as overlapping; the
-// proof, exact, would not, so it leaves such a plan to the search.
+// proof, exact, would not, so it leaves walls that near another edge of the
+// outline to the search, which finds them as before.
 TEST(HeightField, WallsNearerThanTheToleranceAreLeftToTheSearch) {
   std::vector<glm::dvec2> z{{0, 0}, {10, 0}, {2, 1e-6}, {12, 2e-6}, {12, 5}, {0, 5}};
   if (twice_signed_area(z) < 0.0) std::reverse(z.begin(), z.end());
   const Mesh prism = build_mesh(test::extrude({z}, 0.0, 3.0));
   const ValidationReport fast = validate(prism), all = searched(prism);
-  EXPECT_FALSE(fast.proven_apart);
+  EXPECT_TRUE(fast.proven_apart);
   EXPECT_FALSE(all.self_intersection_free) << "the search takes walls nearer than its tolerance as touching";
   EXPECT_EQ(fast.self_intersection_free, all.self_intersection_free);
+  EXPECT_FALSE(all.proof_contradicted);
 }
 
 // Two roofs whose bases overlap: their outlines cross. One roof wholly over
@@ -117,19 +119,22 @@ TEST(HeightField, BasesCoveringAPointTwiceAreNotProven) {
   EXPECT_FALSE(stacked.proven_apart);
 }
 
-// A roof to move: over a spiky plan, an exact H, or a grid class case (exact
-// plans with holes, turned, mirrored, scaled from 1e-3 to 1e4 and moved as
-// far as (1e9, -1e9)), or a prism of upright walls; none where the sweep
-// refuses the plan.
+// A roof to move: over a spiky plan, an exact H, a grid or angles class case
+// (exact plans with holes, turned, mirrored, scaled from 1e-3 to 1e4 and
+// moved as far as (1e9, -1e9); per-edge angles, walls, caps, profiles, plan
+// edits), or a prism of upright walls; none where the sweep refuses the plan.
 std::optional<Mesh> roof_to_move(int seed) {
   const std::vector<glm::dvec2> h{{0, 0},   {8, 0},   {8, 8},   {16, 8}, {16, 0}, {24, 0},
                                   {24, 24}, {16, 24}, {16, 16}, {8, 16}, {8, 24}, {0, 24}};
   try {
-    if (seed % 4 == 0) return build_mesh(roof({test::spiky_plan(8 + seed % 40, static_cast<std::uint64_t>(seed))}));
-    if (seed % 4 == 1) return build_mesh(roof({h}));
-    if (seed % 4 == 2)  // upright walls under a flat top
-      return build_mesh(test::extrude({seed % 8 == 2 ? h : test::spiky_plan(8 + seed % 40, seed)}, 0.0, 5.0));
-    const testing::GeneratedCase c = testing::generate_case(testing::CaseClass::Grid, static_cast<std::uint64_t>(seed));
+    if (seed % 5 == 0) return build_mesh(roof({test::spiky_plan(8 + seed % 40, static_cast<std::uint64_t>(seed))}));
+    if (seed % 5 == 1) return build_mesh(roof({h}));
+    if (seed % 5 == 2)  // upright walls under a flat top
+      return build_mesh(test::extrude({seed % 10 == 2 ? h : test::spiky_plan(8 + seed % 40, seed)}, 0.0, 5.0));
+    // Grid plans at one angle, or under class (b)'s per-edge angles, walls, caps, profiles and plan edits.
+    const testing::GeneratedCase c =
+        testing::generate_case(seed % 5 == 3 ? testing::CaseClass::Grid : testing::CaseClass::Angles,
+                               static_cast<std::uint64_t>(seed));
     return build_mesh(sweep(prepare_footprint(c.footprint).footprint, c.options));
   } catch (const SweepError&) {
     return std::nullopt;  // random angles may nearly repeat: a plan too thin for the sweep
@@ -140,8 +145,8 @@ std::optional<Mesh> roof_to_move(int seed) {
 // the roof or the base, by up to the plan's size, in the plan or up and down.
 // No crossing the search finds is between triangles the proof covered, and
 // validation as users get it finds the same crossings; both outcomes occur
-// often enough to mean something (600 cases: 131
-// crossing, 160 proven).
+// often enough to mean something (600 cases: 139
+// crossing, 138 proven).
 TEST(HeightField, NoMovedVertexTheSearchFindsCrossingIsProvenApart) {
   std::mt19937_64 rng(20261206);
   std::size_t crossing = 0, proven = 0, cases = 0;
@@ -157,9 +162,9 @@ TEST(HeightField, NoMovedVertexTheSearchFindsCrossingIsProvenApart) {
     const double size = glm::length(hi - lo);
     std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh->n_vertices()) - 1);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(-5.0, 0.2);
-    const bool level = (seed / 4) % 3 == 0;  // in the plan only
+    const bool level = (seed / 5) % 3 == 0;  // in the plan only
     std::string what;
-    for (int k = 0; k <= (seed / 12) % 3; ++k) {
+    for (int k = 0; k <= (seed / 15) % 3; ++k) {
       const Mesh::VertexHandle v(vertex(rng));
       const double reach = std::pow(10.0, scale(rng)) * size;
       mesh->set_point(v, mesh->point(v) + Mesh::Point(unit(rng), unit(rng), level ? 0.0 : unit(rng)) * reach);
