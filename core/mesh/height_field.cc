@@ -50,13 +50,21 @@ std::vector<Directed> unmatched(std::vector<Way>& ways) {
   return out;
 }
 
+// Points in the plan by x, then y.
+bool lesser(glm::dvec2 a, glm::dvec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
+
+// A segment of the plan, its lesser end first, and their order.
+using Segment = std::pair<glm::dvec2, glm::dvec2>;
+Segment plan_segment(glm::dvec2 a, glm::dvec2 b) { return lesser(b, a) ? Segment(b, a) : Segment(a, b); }
+bool segment_less(const Segment& e, const Segment& f) {
+  return lesser(e.first, f.first) || (e.first == f.first && lesser(e.second, f.second));
+}
+
 // Which way a simple loop turns, exactly: at its least vertex (by x, then y)
 // the loop is convex, and its neighbours there are not on one line with it.
 int turn_of_simple_loop(const std::vector<glm::dvec2>& loop) {
   const std::size_t n = loop.size();
-  std::size_t least = 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if (loop[k].x < loop[least].x || (loop[k].x == loop[least].x && loop[k].y < loop[least].y)) least = k;
+  const auto least = static_cast<std::size_t>(std::min_element(loop.begin(), loop.end(), lesser) - loop.begin());
   return orient2d(loop[(least + n - 1) % n], loop[least], loop[(least + 1) % n]);
 }
 
@@ -139,36 +147,33 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
   }
   const LoopSegments segments = loop_segments(loops);
   if (!intersecting_segment_pairs(segments.segments, segments.next, 1).empty()) return std::nullopt;
-  // Edges of the outline that do not meet, nearer each other than the
-  // tolerance: the search takes walls on them as touching (height_field.h).
-  std::vector<std::size_t> near;
-  for_each_near_segment_pair(segments.segments, tolerance, [&](std::size_t i, std::size_t j) {
-    if (segments.next[i] != j && segments.next[j] != i &&
-        segments_meet(segments.segments[i], segments.segments[j], tolerance))
-      near.insert(near.end(), {i, j});
-    return true;
-  });
   const LoopNesting nesting = loop_nesting(loops);
   for (std::size_t i = 0; i < loops.size(); ++i)
     if (turn_of_simple_loop(loops[i]) != (nesting.depth[i] % 2 == 0 ? -1 : 1)) return std::nullopt;
+  if (std::find(left.begin(), left.end(), kUpright) == left.end()) return left;
 
   // Upright triangles standing on an edge of the outline, their shadow that
-  // edge (height_field.h), by the edge.
-  using Segment = std::pair<glm::dvec2, glm::dvec2>;  // the lesser end first
-  const auto lesser = [](glm::dvec2 a, glm::dvec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  const auto segment = [&](glm::dvec2 a, glm::dvec2 b) { return lesser(b, a) ? Segment(b, a) : Segment(a, b); };
-  const auto segment_less = [&](const Segment& e, const Segment& f) {
-    return lesser(e.first, f.first) || (e.first == f.first && lesser(e.second, f.second));
-  };
+  // edge (height_field.h), by the edge; but not on edges that another edge,
+  // not meeting them, comes nearer than the tolerance: the search takes
+  // walls on those as touching.
   std::vector<Segment> edges;  // the outline's, in the plan
   edges.reserve(outline.size());
-  for (const Directed& d : outline) edges.push_back(segment(position[d.from], position[d.to]));
+  for (const Directed& d : outline) edges.push_back(plan_segment(position[d.from], position[d.to]));
   std::sort(edges.begin(), edges.end(), segment_less);
   std::vector<char> near_edge(edges.size(), 0);  // by place in `edges`
-  for (std::size_t k : near) {
-    const Segment e = segment(segments.segments[k].a, segments.segments[k].b);
-    near_edge[static_cast<std::size_t>(std::lower_bound(edges.begin(), edges.end(), e, segment_less) - edges.begin())] = 1;
-  }
+  const auto mark_near = [&](const Segment2& s) {
+    const Segment e = plan_segment(s.a, s.b);
+    const auto at = std::lower_bound(edges.begin(), edges.end(), e, segment_less);
+    near_edge[static_cast<std::size_t>(at - edges.begin())] = 1;
+  };
+  for_each_near_segment_pair(segments.segments, tolerance, [&](std::size_t i, std::size_t j) {
+    const Segment2 &si = segments.segments[i], &sj = segments.segments[j];
+    if (segments.next[i] != j && segments.next[j] != i && segments_meet(si, sj, tolerance)) {
+      mark_near(si);
+      mark_near(sj);
+    }
+    return true;
+  });
   for (std::size_t i = 0; i < solid; ++i) {
     if (left[i] != kUpright) continue;
     const MeshTriangle& t = triangles[i];
@@ -176,8 +181,9 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
     // Its shadow's two ends: a wall split along a diagonal has each twice.
     const glm::dvec2 w = a == b ? c : b;
     if (w == a || (a != b && c != a && c != b)) continue;  // its shadow's ends are not two of its corners
-    const auto at = std::lower_bound(edges.begin(), edges.end(), segment(a, w), segment_less);
-    if (at != edges.end() && *at == segment(a, w) && !near_edge[static_cast<std::size_t>(at - edges.begin())])
+    const Segment shadow = plan_segment(a, w);
+    const auto at = std::lower_bound(edges.begin(), edges.end(), shadow, segment_less);
+    if (at != edges.end() && *at == shadow && !near_edge[static_cast<std::size_t>(at - edges.begin())])
       left[i] = static_cast<std::uint32_t>(at - edges.begin());
   }
   return left;

@@ -469,7 +469,8 @@ class IntersectionSearch {
   // Whether the proof covers the pair: neither is upright, and they are not
   // walls on one edge of the base's outline.
   bool covered(std::uint32_t i, std::uint32_t j) const {
-    return !left_.empty() && left_[i] != kUpright && left_[j] != kUpright && (left_[i] != left_[j] || left_[i] == kCovered);
+    return !left_.empty() && left_[i] != kUpright && left_[j] != kUpright &&
+           (left_[i] != left_[j] || left_[i] == kCovered);
   }
 
   // The pairs of walls on one edge of the base's outline (only_left_): the
@@ -939,7 +940,7 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
       // Fully proven, nothing is left; with walls, only their pairs are.
       if (!left || options.search_proven_pairs ||
           std::any_of(left->begin(), left->end(), [](std::uint32_t l) { return l != kCovered; }))
-        IntersectionSearch(std::move(tris), tol, r, problems, left.value_or(std::vector<std::uint32_t>{}),
+        IntersectionSearch(std::move(tris), tol, r, problems, std::move(left).value_or(std::vector<std::uint32_t>{}),
                            !options.search_proven_pairs)
             .run();
     }
