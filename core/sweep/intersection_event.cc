@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -91,6 +92,7 @@ struct ClusterLists {
   std::vector<int> group_of;                   // by root collision
   std::vector<double> radius;                  // by collision: delta3, or its meeting's slack past that (-1: not yet)
   std::vector<std::vector<int>> spare;         // lists of groups a batch had and the next did not
+  std::vector<std::pair<double, int>> by_x;    // a cell's points by x (any_within)
   int find(int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
@@ -112,6 +114,57 @@ const std::vector<ClusterLists::Point>& roots_in_cells(const std::vector<Collisi
                     static_cast<long long>(std::floor(cs[i].p.y / side)), i});
   std::sort(grid.begin(), grid.end());
   return grid;
+}
+
+// Whether a point of grid[from, to) lies within `radius` of one of grid[there,
+// there_end). Two cells of thousands of points each that lie apart (a jittered
+// star's centre) are compared by the box around each cell's points first,
+// then only the points near the other's box, through those sorted by x: not
+// pair by pair. The boxes' distances are taken wider than the radius by more
+// than rounding can take off a distance, so they pass every pair it does.
+bool any_within(const std::vector<Collision>& cs, ClusterLists& lists, std::size_t from, std::size_t to,
+                std::size_t there, std::size_t there_end, double radius) {
+  const std::vector<ClusterLists::Point>& grid = lists.grid;
+  const auto within = [&](int a, int b) { return glm::length(cs[a].p - cs[b].p) <= radius; };
+  if ((to - from) * (there_end - there) <= 1024) {
+    for (std::size_t a = from; a < to; ++a)
+      for (std::size_t b = there; b < there_end; ++b)
+        if (within(grid[a].i, grid[b].i)) return true;
+    return false;
+  }
+  struct Box {
+    glm::dvec2 lo{HUGE_VAL}, hi{-HUGE_VAL};
+    double distance(glm::dvec2 p) const {
+      return glm::length(glm::max(glm::max(lo - p, p - hi), glm::dvec2(0.0)));
+    }
+  };
+  const auto box_of = [&](std::size_t i, std::size_t end) {
+    Box b;
+    for (; i < end; ++i) {
+      b.lo = glm::min(b.lo, cs[grid[i].i].p);
+      b.hi = glm::max(b.hi, cs[grid[i].i].p);
+    }
+    return b;
+  };
+  const Box a_box = box_of(from, to), b_box = box_of(there, there_end);
+  const double wide = radius * (1.0 + 1e-9);
+  const glm::dvec2 gap = glm::max(glm::max(a_box.lo - b_box.hi, b_box.lo - a_box.hi), glm::dvec2(0.0));
+  if (glm::length(gap) > wide) return false;
+  std::vector<std::pair<double, int>>& by_x = lists.by_x;
+  by_x.clear();
+  for (std::size_t b = there; b < there_end; ++b) {
+    const glm::dvec2 p = cs[grid[b].i].p;
+    if (a_box.distance(p) <= wide) by_x.push_back({p.x, grid[b].i});
+  }
+  std::sort(by_x.begin(), by_x.end());
+  for (std::size_t a = from; a < to; ++a) {
+    const glm::dvec2 p = cs[grid[a].i].p;
+    if (b_box.distance(p) > wide) continue;
+    for (auto b = std::lower_bound(by_x.begin(), by_x.end(), std::pair<double, int>{p.x - wide, INT_MIN});
+         b != by_x.end() && b->first <= p.x + wide; ++b)
+      if (within(grid[a].i, b->second)) return true;
+  }
+  return false;
 }
 
 // Joins the roots within `radius` of each other through a plan grid. Its
@@ -145,14 +198,9 @@ void join_by_grid(const std::vector<Collision>& cs, ClusterLists& lists, double 
         const std::size_t there =
             std::lower_bound(grid.begin(), grid.end(), ClusterLists::Point{x, y, 0}) - grid.begin();
         if (there == grid.size() || grid[there].x != x || grid[there].y != y) continue;
-        const std::size_t there_end = cell_end(there);
-        bool joined = lists.find(grid[from].i) == lists.find(grid[there].i);
-        for (std::size_t a = from; a < to && !joined; ++a)
-          for (std::size_t b = there; b < there_end && !joined; ++b)
-            if (glm::length(cs[grid[a].i].p - cs[grid[b].i].p) <= radius) {
-              lists.join(grid[a].i, grid[b].i);
-              joined = true;
-            }
+        if (lists.find(grid[from].i) != lists.find(grid[there].i) &&
+            any_within(cs, lists, from, to, there, cell_end(there), radius))
+          lists.join(grid[from].i, grid[there].i);
       }
   }
 }
@@ -1042,6 +1090,15 @@ struct Member {
   int member;
 };
 
+// Of a corner's members up to one height (LaterGroups::late): the height,
+// the latest first collision of their groups and that group, and the latest
+// of any other group (-inf if none).
+struct MembersBelow {
+  double z;
+  double latest, other;
+  std::size_t group;
+};
+
 // The spans (corner, next) whose collapse a batch has looked at, in an
 // open-addressed table whose slots of earlier batches count as empty: a
 // batch clears nothing. Most batches look at one or two, a jittered star's
@@ -1108,6 +1165,7 @@ struct BatchScratch {
     waiting.clear();
     first.clear();
     zs.clear();
+    thinned.clear();
     rewired.clear();
     collapses.clear();
     moved.clear();
@@ -1121,6 +1179,8 @@ struct BatchScratch {
   ResolveLists resolving;
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
+  // By group: members left it to wait since its mean height was taken.
+  std::vector<char> thinned;
   ResolveOrder order;
   std::vector<std::size_t> pending;  // order's, for LaterGroups
   RewiredList rewired;
@@ -1136,6 +1196,7 @@ struct BatchScratch {
   std::vector<int> edges;
   std::vector<Member> members;         // sorted by corner, group, member
   std::vector<char> waits;             // by member, once listed
+  std::vector<MembersBelow> below;     // by member, for corners of many (late)
   std::vector<std::pair<std::size_t, int>> taken;
   // splits_below's: the first corners of the spans the batch's groups
   // collapse, the group of each, their edges' planes and where a corner
@@ -1166,6 +1227,9 @@ namespace {
 // collapse. The few collapses the batch adds after that are looked at in turn.
 class LaterGroups {
  public:
+  // A corner in fewer members is answered by a pass over them.
+  static constexpr std::ptrdiff_t kMembersScanned = 32;
+
   LaterGroups(State& st, BatchScratch& lists, const std::vector<Collision>& cs,
               const std::vector<std::vector<int>>& groups, const std::vector<double>& first,
               const std::vector<const Candidate*>& waiting)
@@ -1184,9 +1248,21 @@ class LaterGroups {
   // cluster resolved after g meets it.
   bool late(std::size_t g, int m) {
     list_members();
-    for (int c : cs_[m].corners())
-      for (auto [it, to] = corner_range(c); it != to; ++it)
-        if (it->group != g && cs_[it->member].z < cs_[m].z && first_[it->group] >= first_[g]) return true;
+    const double z = cs_[m].z;
+    for (int c : cs_[m].corners()) {
+      const auto [it, to] = corner_range(c);
+      if (to - it < kMembersScanned) {
+        for (auto x = it; x != to; ++x)
+          if (x->group != g && cs_[x->member].z < z && first_[x->group] >= first_[g]) return true;
+        continue;
+      }
+      const auto from = lists_.below.begin() + (it - lists_.members.cbegin());
+      const auto upto = std::lower_bound(from, from + (to - it), z,
+                                         [](const MembersBelow& b, double at) { return b.z < at; });
+      if (upto == from) continue;
+      const MembersBelow& b = upto[-1];
+      if ((b.group != g ? b.latest : b.other) >= first_[g]) return true;
+    }
     return false;
   }
 
@@ -1230,8 +1306,12 @@ class LaterGroups {
           out.push_back({it->group, it->member});
     return out;
   }
-  // A member taken out of its cluster to wait for its own height.
+  // A member taken out of its cluster to wait for its own height. It stays
+  // in the cluster's list until the cluster is resolved (thin_out), so that
+  // taking many out of a large cluster costs each a mark, not a pass over
+  // the cluster; until then it is left out wherever the list is read.
   void waits(int m) { lists_.waits[m] = 1; }
+  bool left(int m) const { return members_listed_ && lists_.waits[m]; }
 
   // The collapsing spans of later groups that corner n, made in this batch
   // by a collision of the planes of `made_by`, runs into within the instant
@@ -1251,7 +1331,7 @@ class LaterGroups {
       };
       for (std::size_t g = 0; g < groups_.size(); ++g)
         for (int m : groups_[g])
-          if (cs_[m].ends_used == 2) add(cs_[m].ends[0], g);
+          if (!left(m) && cs_[m].ends_used == 2) add(cs_[m].ends[0], g);
       for (std::size_t w = 0; w < waiting_.size(); ++w)
         if (waiting_[w]->edge == kNone) add(waiting_[w]->corner, groups_.size() + w);
     }
@@ -1292,7 +1372,8 @@ class LaterGroups {
   // at (a corner's edges never change).
   void edges_of(std::size_t g, std::vector<int>& out) const {
     if (g < groups_.size()) {
-      for (int m : groups_[g]) out.insert(out.end(), cs_[m].edges.begin(), cs_[m].edges.end());
+      for (int m : groups_[g])
+        if (!left(m)) out.insert(out.end(), cs_[m].edges.begin(), cs_[m].edges.end());
       return;
     }
     const Candidate& c = *waiting_[g - groups_.size()];
@@ -1339,6 +1420,32 @@ class LaterGroups {
       return std::tie(x.corner, x.group, x.member) < std::tie(y.corner, y.group, y.member);
     });
     lists_.waits.assign(cs_.size(), 0);
+    // A corner in many members (one racing through a star's centre meets
+    // every plane there) answers late() from its members by height, not by a
+    // pass over them all for each.
+    std::vector<MembersBelow>& below = lists_.below;
+    below.resize(members.size());
+    for (std::size_t from = 0, to; from < members.size(); from = to) {
+      to = from + 1;
+      while (to < members.size() && members[to].corner == members[from].corner) ++to;
+      if (to - from < kMembersScanned) continue;
+      for (std::size_t i = from; i < to; ++i)
+        below[i] = {cs_[members[i].member].z, first_[members[i].group], -HUGE_VAL, members[i].group};
+      std::sort(below.begin() + from, below.begin() + to,
+                [](const MembersBelow& a, const MembersBelow& b) { return a.z < b.z; });
+      for (std::size_t i = from + 1; i < to; ++i) {
+        const MembersBelow& was = below[i - 1];
+        MembersBelow& b = below[i];
+        const double latest = b.latest;
+        if (b.group == was.group) {
+          b = {b.z, std::max(was.latest, latest), was.other, was.group};
+        } else if (latest > was.latest) {
+          b = {b.z, latest, was.latest, b.group};
+        } else {
+          b = {b.z, was.latest, std::max(was.other, latest), was.group};
+        }
+      }
+    }
   }
   std::pair<std::vector<Member>::const_iterator, std::vector<Member>::const_iterator> corner_range(int c) const {
     return std::equal_range(lists_.members.cbegin(), lists_.members.cend(), Member{c, 0, 0},
@@ -1429,6 +1536,16 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   };
   std::vector<double>& zs = lists.zs;
   for (const auto& g : groups) zs.push_back(mean_z(g));
+  lists.thinned.assign(groups.size(), 0);
+  // A cluster some of whose members left it to wait drops them, and its
+  // height is their mean again, when it is resolved.
+  const auto thin_out = [&](std::size_t g) {
+    if (!lists.thinned[g]) return;
+    std::vector<int>& members = groups[g];
+    members.erase(std::remove_if(members.begin(), members.end(), [&](int m) { return later_groups.left(m); }),
+                  members.end());
+    zs[g] = mean_z(members);
+  };
   // Then each waiting candidate at its own height, after the clusters there.
   // Most never meet: in a square with k x k holes every hole's corner meets
   // the planes of the k edges along each of its walls' lines at one height,
@@ -1535,6 +1652,7 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       instant = first_of(g);
       made_from = static_cast<int>(st.corners.size());
     }
+    if (g < clustered) thin_out(g);
     st.height = height_of(g);
     highest = std::max(highest, st.height);
     const std::size_t resolved = rewired.size();
@@ -1589,9 +1707,8 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
       // own height, as a late member does, when the corner is gone. Its
       // cluster's first collision is lower, so stays.
       for (const auto& [h, m] : taken) {
-        groups[h].erase(std::find(groups[h].begin(), groups[h].end(), m));
-        zs[h] = mean_z(groups[h]);
         later_groups.waits(m);
+        lists.thinned[h] = 1;
         wait(source[m]);
       }
     }
