@@ -260,6 +260,7 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   list.prev_edge = k.prev_edge;
   list.next_edge = k.next_edge;
   list.resolved = resolved;
+  std::sort(list.resolved.begin(), list.resolved.end());
   list.splits.clear();
   list.hold = kHeld;
   list.complete = false;

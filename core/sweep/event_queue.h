@@ -60,11 +60,12 @@ class EventQueue {
   void schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved = {});
   // Queues only the event of corner c with its next corner.
   void schedule_edge_event(State& st, int c);
-  // Whether a corner made by a collision of the planes of `resolved` meets
-  // edge's plane at height `at` because of it: one of them, no higher than
-  // `near` (just above where it was made).
+  // Whether a corner made by a collision of the planes of `resolved` (sorted)
+  // meets edge's plane at height `at` because of it: one of them, no higher
+  // than `near` (just above where it was made). A corner made where hundreds
+  // of planes meet (a jittered star's centre) asks this of each of its splits.
   static bool met_where_made(const std::vector<int>& resolved, int edge, double at, double near) {
-    return at <= near && std::find(resolved.begin(), resolved.end(), edge) != resolved.end();
+    return at <= near && std::binary_search(resolved.begin(), resolved.end(), edge);
   }
   // Whether corner c's splits were listed by the rule in force now: once a
   // plane leans out, convex corners split too, and corners meet planes from
@@ -145,7 +146,7 @@ class EventQueue {
     CornerPath path;  // at the sweep plane's height when listed
     double near = 0.0;
     int prev_edge = kNone, next_edge = kNone;
-    std::vector<int> resolved;  // edges of the collision that made the corner
+    std::vector<int> resolved;  // edges of the collision that made the corner, sorted
     std::vector<Split> splits;  // the lowest not yet queued, lowest last
     std::size_t hold = 0;       // how many it holds when it works them out
     bool complete = false;      // it holds every split not yet queued

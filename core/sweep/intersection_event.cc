@@ -1081,6 +1081,7 @@ void resolve_cluster(State& st, const std::vector<Collision>& cs, const std::vec
   Rewired& r = out.add(z);
   r.made = made;
   r.edges = edges;
+  std::sort(r.edges.begin(), r.edges.end());  // as met_where_made reads them
 }
 
 // A cluster's member by one of its corners.
