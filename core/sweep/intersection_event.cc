@@ -422,10 +422,11 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
   // distance do not meet in one event: the cluster joined events that happen
   // apart, each within reach of the next (hundreds of corners passing within
   // micrometres of a jittered star's centre), and wherever it ends them, some
-  // corner starts off its line. The roof that followed turned a loop inside
-  // out or ran away (large_stars seeds 1 and 3, lead's notes); no roof that
-  // closed had such a cluster (every class and file procex_roof_hashes runs).
-  // The clustering scale is defeated: sweep() tries the next.
+  // corner starts off its line. The sweep that followed turned a loop inside
+  // out or ran away (SweepRetries.EventsJoinedThatDoNotMeetAtOnePointDefeatTheScale);
+  // no roof that closes in the generated classes, the corpus or the fixtures
+  // has such a cluster (TESTING.md, thirty-eighth session). The clustering
+  // scale is defeated: sweep() tries the next.
   for (int e : planes) {
     const Plane& pl = st.edges[e].plane;
     if (std::abs(pl.signed_distance(glm::dvec2(x), x.z)) > st.tol().position() * std::sqrt(1.0 + pl.k * pl.k))
