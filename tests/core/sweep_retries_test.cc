@@ -88,9 +88,9 @@ TEST(SweepRetries, AStarsCentreClosesAtTheFinestScaleTriedLast) {
 }
 
 // The same star's first scale, as sweep() tries it: at 0.1198 m a cluster
-// joins 13 collisions, each within reach of the next, over 27 um, and the 14
-// planes they name miss their nearest point by up to 4.8e-6 m, 2.4 times the
-// clustering distance. They are not one event, and any one point ends some
+// joins 13 collisions, each within reach of the next, over 27 um, and the
+// planes they name miss their nearest point by up to 4.1e-6 m, 2.06 times
+// the clustering distance (the rule's kMisfit is 2). They are not one event, and any one point ends some
 // corner off its line: there a triangle of edges turned inside out (lead's
 // notes, session 35), and the sweep ran on to leave 31 corners open. Such a
 // cluster defeats the scale where it is made, not after the rest of the sweep
