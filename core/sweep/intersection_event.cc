@@ -436,7 +436,7 @@ glm::dvec3 meeting_point(const State& st, const std::vector<int>& planes, const 
   for (int e : planes) {
     const Plane& pl = st.edges[e].plane;
     if (std::abs(pl.signed_distance(glm::dvec2(x), x.z)) > kMisfit * st.tol().position() * std::sqrt(1.0 + pl.k * pl.k))
-      fail(st, "events joined into one do not meet at one point (a plane passes further than the clustering distance)",
+      fail(st, "events joined into one do not meet at one point (a plane passes further than twice the clustering distance)",
            glm::dvec2(x), planes);
   }
   const double reach = 10.0 * st.tol().height();
