@@ -161,10 +161,13 @@ std::optional<std::vector<std::uint32_t>> proven_apart_over_base(const std::vect
   for (const Directed& d : outline) edges.push_back(plan_segment(position[d.from], position[d.to]));
   std::sort(edges.begin(), edges.end(), segment_less);
   std::vector<char> near_edge(edges.size(), 0);  // by place in `edges`
+  // The loops' segments are the outline's edges, made from the same
+  // positions. One not among them (none is known) is no wall's shadow either,
+  // which is looked up the same way below: nothing to mark.
   const auto mark_near = [&](const Segment2& s) {
     const Segment e = plan_segment(s.a, s.b);
     const auto at = std::lower_bound(edges.begin(), edges.end(), e, segment_less);
-    near_edge[static_cast<std::size_t>(at - edges.begin())] = 1;
+    if (at != edges.end() && *at == e) near_edge[static_cast<std::size_t>(at - edges.begin())] = 1;
   };
   for_each_near_segment_pair(segments.segments, tolerance, [&](std::size_t i, std::size_t j) {
     const Segment2 &si = segments.segments[i], &sj = segments.segments[j];
