@@ -68,7 +68,7 @@ std::optional<Collision> meets(State& st, const Candidate& c) {
   std::vector<int> ids;
   for (int e : edges) ids.push_back(st.edges[e].source_id);
   std::ostringstream msg;
-  msg << "sweep: " << what << " at (" << p.x << ", " << p.y << ") height " << st.height << ", edges";
+  msg << "sweep: " << what << " at " << st.plan_position(p) << " height " << st.height << ", edges";
   for (int id : ids) msg << ' ' << id;
   throw SweepError(msg.str(), st.height, ids);
 }

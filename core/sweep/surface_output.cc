@@ -50,11 +50,11 @@ bool inside(std::span<const glm::dvec2> poly, glm::dvec2 q) {
   return in;
 }
 
-[[noreturn]] void open_face(const FaceGroup& f, std::uint32_t v, const glm::dvec3& p) {
+[[noreturn]] void open_face(const FaceGroup& f, std::uint32_t v, const glm::dvec3& p, const PlanPosition& at) {
   std::ostringstream msg;
   msg << "sweep: the boundary of " << (f.kind == FaceKind::Side ? "the face of edge " : "a horizontal face ")
       << (f.kind == FaceKind::Side ? std::to_string(f.source_edge) : std::string())
-      << " does not close at vertex " << v << " (" << p.x << ", " << p.y << ", " << p.z << ")";
+      << " does not close at vertex " << v << " " << at(p);
   throw SweepError(msg.str(), p.z, {f.source_edge});
 }
 
@@ -345,7 +345,7 @@ void chain_loops(const State& st, const FaceGroup& f, const Cuts& cuts, ChainScr
           }
         }
       }
-      if (best < 0) open_face(f, v, st.vertices[v]);
+      if (best < 0) open_face(f, v, st.vertices[v], st.plan_position);
       if (best == start) break;
       h = best;
     }
@@ -496,15 +496,10 @@ struct CloseScratch {
 
 }  // namespace
 
-void close_surface(Surface& surface) {
+void close_surface(Surface& surface, const PlanPosition& plan_position) {
   std::unique_ptr<CloseScratch> scratch = Spares<CloseScratch>::take();
   CloseScratch& arrays = *scratch;
-  auto at = [&](std::uint32_t v) {
-    const glm::dvec3 p = surface.vertices[v];
-    std::ostringstream out;
-    out << "vertex " << v << " (" << p.x << ", " << p.y << ", " << p.z << ")";
-    return out.str();
-  };
+  auto at = [&](std::uint32_t v) { return "vertex " + std::to_string(v) + " " + plan_position(surface.vertices[v]); };
   auto fail = [&](std::uint32_t v, const std::string& what) {
     throw SweepError("sweep: the surface is not closed at " + at(v) + ": " + what, surface.vertices[v].z, {});
   };

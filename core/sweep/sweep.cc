@@ -87,6 +87,7 @@ engine::FirstPlane first_plane(engine::State& st, const Footprint& fp, const Edg
 // a time: a moved copy of the whole footprint, kept through every attempt,
 // was 46 MB of the sweep of a square with 512 x 512 holes.
 void load(engine::State& st, const Footprint& fp, glm::dvec2 by) {
+  st.plan_position.centre = -by;
   engine::FaceGroup base;
   base.kind = FaceKind::Base;
   base.outward = {0.0, 0.0, -1.0};
@@ -175,7 +176,7 @@ Surface sweep_with(const Footprint& footprint, glm::dvec2 centre, const SweepOpt
     throw SweepError("sweep: the roof has no height: every event fell within the clustering distance of the base, so "
                      "the plan is too thin for the sweep everywhere; widen it",
                      0.0, {});
-  engine::close_surface(surface);
+  engine::close_surface(surface, st.plan_position);
   if (st.shared_instant) engine::check_simple_faces(surface);
   surface.anchors = anchors.finish();
   surface.plan_edits = plan_edits.finish();

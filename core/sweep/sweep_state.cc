@@ -19,7 +19,11 @@ struct StateArrays {
 };
 
 State::State(const Tolerances& tol, const SweepOptions& options, Budget* budget)
-    : tol_(tol), options_(options), budget_(budget), arrays_(Spares<StateArrays>::take()) {
+    : plan_position{glm::dvec2(0.0), tol.position()},
+      tol_(tol),
+      options_(options),
+      budget_(budget),
+      arrays_(Spares<StateArrays>::take()) {
   sources.swap(arrays_->sources);
   edges.swap(arrays_->edges);
   corners.swap(arrays_->corners);

@@ -18,6 +18,7 @@
 #include "core/mesh/surface.h"
 #include "core/sweep/budget.h"
 #include "core/sweep/meeting_heights.h"
+#include "core/sweep/plan_position.h"
 #include "core/sweep/plane.h"
 #include "core/sweep/sweep.h"
 #include "core/geom/tolerances.h"
@@ -182,6 +183,9 @@ class State {
   std::vector<FaceGroup> faces;
   int base_face = kNone;
   double height = 0.0;  // the sweep plane's current height
+  // Positions in error messages, in the footprint's own coordinates: load()
+  // (sweep.cc) sets where the frame it moves the plan into is centred.
+  PlanPosition plan_position;
   bool any_outward = false;  // some plane leans outward: convex corners can split too
   // Some batch resolved several groups as one instant, in rounding's order
   // (resolve_intersections): what can leave a face folded (simple_faces.h).

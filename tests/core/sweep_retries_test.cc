@@ -9,6 +9,7 @@
 // was validated. The tests here are of the retry itself, so a retry does not
 // fail them (tests/core/no_retry_listener.cc).
 #include <random>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -98,6 +99,9 @@ TEST(SweepRetries, AStarsCentreClosesAtTheFinestScaleTriedLast) {
 TEST(SweepRetries, EventsJoinedThatDoNotMeetAtOnePointDefeatTheScale) {
   const Footprint fp = star_at_45("star_centre_7694.geojson");
   engine::State st = engine::loaded(fp.loops[0].points, engine::kStarTolerances);
+  // As if sweep() had moved the star here from (5e5, 5e6): the refusal names
+  // the point where the user's plan has it, to the clustering distance.
+  st.plan_position.centre = {5e5, 5e6};
   engine::EventQueue queue;
   engine::ProfileEvents profiles;
   engine::schedule_all(st, queue);
@@ -107,6 +111,8 @@ TEST(SweepRetries, EventsJoinedThatDoNotMeetAtOnePointDefeatTheScale) {
   } catch (const SweepError& e) {
     EXPECT_NE(std::string(e.what()).find("do not meet at one point"), std::string::npos) << e.what();
     EXPECT_NEAR(e.height(), 0.11976, 1e-5);
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(R"(at \((499999|500000)\.\d{6}, (4999999|5000000)\.\d{6}\) height)")))
+        << e.what();
   }
 }
 
