@@ -149,6 +149,24 @@ TEST(CgalOracle, ComparisonNoticesAWrongRoof) {
   EXPECT_FALSE(compare_with_cgal(rect, renamed).empty());
 }
 
+// check_case hands the oracle the roof it swept: compared as it is where
+// CGAL's plan is the footprint itself and the options change no roof, and
+// otherwise CGAL's plan is swept. A wrong roof handed in shows which.
+TEST(CgalOracle, ARoofHandedInIsComparedOnlyWhereItIsCgalsPlansRoof) {
+  const Footprint rect = make_footprint({{{0, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
+  Surface raised = sweep(rect);
+  for (glm::dvec3& v : raised.vertices)
+    if (v.z > 1.0) v.z += 1e-3;
+  EXPECT_FALSE(sweep_and_compare_with_cgal(rect, {}, raised).empty());
+  // A straight vertex, which CGAL's plan drops: that plan is swept.
+  const Footprint straight = make_footprint({{{0, 0}, {5, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
+  for (const std::string& line : sweep_and_compare_with_cgal(straight, {}, raised)) ADD_FAILURE() << line;
+  // A budget of its own may close another scale than sweep()'s: swept again.
+  SweepOptions budget;
+  budget.budget.max_seconds = 1000.0;
+  for (const std::string& line : sweep_and_compare_with_cgal(rect, budget, raised)) ADD_FAILURE() << line;
+}
+
 // Nodes match within the tolerance at either end, so a ridge's length may
 // differ by up to twice the tolerance between roof and CGAL. A 4 x (4 + d)
 // rectangle has a ridge d long; the square's hip roof, moved to stand midway,

@@ -218,18 +218,30 @@ std::vector<std::string> compare_with_generic_neighbours(const Footprint& fp, co
   return found;
 }
 
-}  // namespace
+// Compares `roof`, fp's own, with CGAL; see sweep_and_compare_with_cgal.
+std::vector<std::string> compare_roof_with_cgal(const Footprint& fp, const Surface& roof) {
+  std::vector<std::string> problems = compare_with_cgal(fp, roof);
+  if (problems.empty() || !check_valid_mesh(roof).empty()) return problems;
+  const std::vector<std::string> limit = compare_with_generic_neighbours(fp, roof);
+  if (limit.empty()) return {};
+  problems.insert(problems.end(), limit.begin(), limit.end());
+  return problems;
+}
 
-std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint) {
+// Whether a sweep with `options` gives the roof sweep(fp) gives: the options
+// change nothing a roof is made by (a budget decides which scale closes).
+bool sweeps_as_default(const SweepOptions& options) {
+  const SweepOptions plain;
+  return !options.max_height && options.ambiguity == plain.ambiguity && options.anchors.empty() &&
+         options.plan_edits.empty() && options.budget.max_vertices == plain.budget.max_vertices &&
+         options.budget.max_events == plain.budget.max_events && options.budget.max_seconds == plain.budget.max_seconds;
+}
+
+// What f returns, or the exception it throws as a problem line.
+template <class F>
+std::vector<std::string> reported(const F& f) {
   try {
-    const Footprint fp = without_straight_vertices(footprint);
-    const Surface roof = sweep(fp);
-    std::vector<std::string> problems = compare_with_cgal(fp, roof);
-    if (problems.empty() || !check_valid_mesh(roof).empty()) return problems;
-    const std::vector<std::string> limit = compare_with_generic_neighbours(fp, roof);
-    if (limit.empty()) return {};
-    problems.insert(problems.end(), limit.begin(), limit.end());
-    return problems;
+    return f();
   } catch (const SweepError& e) {
     std::ostringstream s;
     s << "sweep failed: " << e.what() << " at height " << e.height() << ", edges";
@@ -238,6 +250,24 @@ std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint)
   } catch (const std::exception& e) {
     return {std::string("exception: ") + e.what()};
   }
+}
+
+}  // namespace
+
+std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint) {
+  return reported([&] {
+    const Footprint fp = without_straight_vertices(footprint);
+    return compare_roof_with_cgal(fp, sweep(fp));
+  });
+}
+
+std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint, const SweepOptions& options,
+                                                     const Surface& roof) {
+  if (!sweeps_as_default(options)) return sweep_and_compare_with_cgal(footprint);
+  const Footprint fp = without_straight_vertices(footprint);
+  for (std::size_t i = 0; i < fp.loops.size(); ++i)
+    if (fp.loops[i].points.size() != footprint.loops[i].points.size()) return sweep_and_compare_with_cgal(footprint);
+  return reported([&] { return compare_roof_with_cgal(fp, roof); });
 }
 
 }  // namespace procex::testing

@@ -11,6 +11,7 @@
 
 #include "core/geom/footprint.h"
 #include "core/mesh/surface.h"
+#include "core/sweep/sweep.h"
 
 namespace procex::testing {
 
@@ -64,5 +65,12 @@ Footprint without_straight_vertices(const Footprint& footprint);
 // its caps included) and the neighbours agree. A sweep exception becomes a
 // problem line.
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint);
+
+// The same, given the footprint's roof as swept with `options`. Where CGAL's
+// plan is the footprint itself (no straight vertices to drop) and the options
+// make the roof sweep(footprint) makes, that roof is compared, not swept again
+// to the same bits: a fifth of a generated case's sweeps (check_case).
+std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint, const SweepOptions& options,
+                                                     const Surface& roof);
 
 }  // namespace procex::testing

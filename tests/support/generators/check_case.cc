@@ -174,7 +174,8 @@ CaseResult check_case(const GeneratedCase& c, const CheckSelection& selection) {
       if (std::abs(got - *v) > 1e-9 * *v + tol * extent * extent)
         r.problems.push_back("volume " + std::to_string(got) + ", the integral of the offset areas " + std::to_string(*v));
     }
-    if (selection.oracle && cgal_judges(fp, c.options)) add(r.problems, "CGAL: ", sweep_and_compare_with_cgal(fp));
+    if (selection.oracle && cgal_judges(fp, c.options))
+      add(r.problems, "CGAL: ", sweep_and_compare_with_cgal(fp, c.options, *roof));
   }
   if (selection.transforms) {
     for (const PlanTransform& t : case_transforms(fp, c.options)) {
