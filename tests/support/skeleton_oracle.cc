@@ -263,11 +263,12 @@ std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint)
 
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint, const SweepOptions& options,
                                                      const Surface& roof) {
-  if (!sweeps_as_default(options)) return sweep_and_compare_with_cgal(footprint);
   const Footprint fp = without_straight_vertices(footprint);
+  bool same_plan = sweeps_as_default(options);
   for (std::size_t i = 0; i < fp.loops.size(); ++i)
-    if (fp.loops[i].points.size() != footprint.loops[i].points.size()) return sweep_and_compare_with_cgal(footprint);
-  return reported([&] { return compare_roof_with_cgal(fp, roof); });
+    same_plan = same_plan && fp.loops[i].points.size() == footprint.loops[i].points.size();
+  if (same_plan) return reported([&] { return compare_roof_with_cgal(fp, roof); });
+  return reported([&] { return compare_roof_with_cgal(fp, sweep(fp)); });
 }
 
 }  // namespace procex::testing
