@@ -22,6 +22,8 @@ struct PlanAnchor {
   };
   Mode mode = Mode::Fraction;
   double value = 0.5;
+
+  bool operator==(const PlanAnchor&) const = default;
 };
 
 struct Anchor {
@@ -33,6 +35,8 @@ struct Anchor {
   // ids) when that is not empty. One anchor resolves once per selected edge.
   int profile = -1;
   std::vector<std::int32_t> edges;
+
+  bool operator==(const Anchor&) const = default;
 };
 
 // Where a feature sits: origin on the face, `along` the edge direction at that

@@ -19,6 +19,8 @@ struct EdgeSpec {
   double angle_deg = 45.0;
   std::int32_t id = -1;
   int profile = -1;
+
+  bool operator==(const EdgeSpec&) const = default;
 };
 
 // Outer loops run counter-clockwise, holes clockwise, islands inside holes

@@ -52,6 +52,8 @@ struct PlanEdit {
   // Tag of the horizontal faces the edit makes at its height (the floor of a
   // bay window, the sill of a recess).
   std::string tag = "step";
+
+  bool operator==(const PlanEdit&) const = default;
 };
 
 }  // namespace procex

@@ -36,6 +36,8 @@ struct SweepBudget {
   // CPU seconds of the thread running sweep(), its retries included (not wall
   // time: a footprint must not pass on a quiet machine and fail on a busy one).
   double max_seconds = 600.0;
+
+  bool operator==(const SweepBudget&) const = default;
 };
 
 struct SweepOptions {
@@ -47,6 +49,10 @@ struct SweepOptions {
   // index into the footprint's.
   std::vector<PlanEdit> plan_edits;
   SweepBudget budget;
+
+  // Member by member, so that whatever is added here is compared too (the CGAL
+  // oracle tells a roof sweep() makes by options equal to the defaults).
+  bool operator==(const SweepOptions&) const = default;
 };
 
 // Throws InputError for unusable footprints, SweepError when an event cannot

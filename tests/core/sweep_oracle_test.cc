@@ -161,10 +161,18 @@ TEST(CgalOracle, ARoofHandedInIsComparedOnlyWhereItIsCgalsPlansRoof) {
   // A straight vertex, which CGAL's plan drops: that plan is swept.
   const Footprint straight = make_footprint({{{0, 0}, {5, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
   for (const std::string& line : sweep_and_compare_with_cgal(straight, {}, raised)) ADD_FAILURE() << line;
-  // A budget of its own may close another scale than sweep()'s: swept again.
-  SweepOptions budget;
-  budget.budget.max_seconds = 1000.0;
-  for (const std::string& line : sweep_and_compare_with_cgal(rect, budget, raised)) ADD_FAILURE() << line;
+  // Any option of its own, a budget too (it may close another scale than
+  // sweep()'s), makes another roof: swept again.
+  std::vector<SweepOptions> own(7);
+  own[0].budget.max_seconds = 1000.0;
+  own[1].budget.max_vertices = 1000;
+  own[2].budget.max_events = 1000;
+  own[3].max_height = 100.0;
+  own[4].ambiguity = Ambiguity::MinimizeVolume;
+  own[5].anchors.emplace_back().name = "door";
+  own[6].plan_edits.emplace_back().name = "bay";
+  for (const SweepOptions& options : own)
+    for (const std::string& line : sweep_and_compare_with_cgal(rect, options, raised)) ADD_FAILURE() << line;
 }
 
 // Nodes match within the tolerance at either end, so a ridge's length may

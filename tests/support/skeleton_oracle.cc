@@ -230,12 +230,7 @@ std::vector<std::string> compare_roof_with_cgal(const Footprint& fp, const Surfa
 
 // Whether a sweep with `options` gives the roof sweep(fp) gives: the options
 // change nothing a roof is made by (a budget decides which scale closes).
-bool sweeps_as_default(const SweepOptions& options) {
-  const SweepOptions plain;
-  return !options.max_height && options.ambiguity == plain.ambiguity && options.anchors.empty() &&
-         options.plan_edits.empty() && options.budget.max_vertices == plain.budget.max_vertices &&
-         options.budget.max_events == plain.budget.max_events && options.budget.max_seconds == plain.budget.max_seconds;
-}
+bool sweeps_as_default(const SweepOptions& options) { return options == SweepOptions{}; }
 
 // What f returns, or the exception it throws as a problem line.
 template <class F>
