@@ -161,8 +161,9 @@ TEST(CgalOracle, ARoofHandedInIsComparedOnlyWhereItIsCgalsPlansRoof) {
   // A straight vertex, which CGAL's plan drops: that plan is swept.
   const Footprint straight = make_footprint({{{0, 0}, {5, 0}, {10, 0}, {10, 4}, {0, 4}}}, 45.0);
   for (const std::string& line : sweep_and_compare_with_cgal(straight, {}, raised)) ADD_FAILURE() << line;
-  // Any option of its own, a budget too (it may close another scale than
-  // sweep()'s), makes another roof: swept again.
+  // Options of its own, whatever they are, mean CGAL's plan is swept again: a
+  // cap, the ambiguity rule or an edit change the roof, a budget may close
+  // another scale than sweep()'s, and anchors are taken as any other option.
   std::vector<SweepOptions> own(7);
   own[0].budget.max_seconds = 1000.0;
   own[1].budget.max_vertices = 1000;
