@@ -228,10 +228,6 @@ std::vector<std::string> compare_roof_with_cgal(const Footprint& fp, const Surfa
   return problems;
 }
 
-// Whether a sweep with `options` gives the roof sweep(fp) gives: the options
-// change nothing a roof is made by (a budget decides which scale closes).
-bool sweeps_as_default(const SweepOptions& options) { return options == SweepOptions{}; }
-
 // What f returns, or the exception it throws as a problem line.
 template <class F>
 std::vector<std::string> reported(const F& f) {
@@ -259,7 +255,10 @@ std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint)
 std::vector<std::string> sweep_and_compare_with_cgal(const Footprint& footprint, const SweepOptions& options,
                                                      const Surface& roof) {
   const Footprint fp = without_straight_vertices(footprint);
-  bool same_plan = sweeps_as_default(options);
+  // The roof handed in is sweep(fp)'s only with the default options, every one
+  // of them (a budget decides which scale closes), and where CGAL's plan keeps
+  // every vertex.
+  bool same_plan = options == SweepOptions{};
   for (std::size_t i = 0; i < fp.loops.size(); ++i)
     same_plan = same_plan && fp.loops[i].points.size() == footprint.loops[i].points.size();
   if (same_plan) return reported([&] { return compare_roof_with_cgal(fp, roof); });
