@@ -19,6 +19,7 @@
 #include "graph/pxg.h"
 #include "nodes/values.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 #include "tests/support/gltf_scripts.h"
 
 namespace procex {
@@ -87,7 +88,7 @@ fs::path batch_recipe(const fs::path& dir) {
 TEST_F(AnchoredSamples, BatchOfWindowsGridPlacesWindowsOnEveryBuilding) {
   BatchCommandOptions o;
   o.recipe = batch_recipe(dir_);
-  o.footprints = kSamples / "footprints" / "sample_block.geojson";
+  o.footprints = test::kSampleBlock;
   o.output = dir_ / "block.glb";
   o.report = dir_ / "block.json";
   o.progress = false;

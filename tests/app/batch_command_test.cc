@@ -24,6 +24,7 @@
 #include "core/io/glb_read.h"
 #include "core/io/gltf_write.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 #include "tests/support/gltf_scripts.h"
 #include "tests/expected/sample_summaries.h"
 
@@ -34,7 +35,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 const fs::path kSamples = PROCEX_SAMPLES;
-const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
+const fs::path& kBlock = test::kSampleBlock;
 
 using test::read_text;
 

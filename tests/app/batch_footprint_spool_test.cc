@@ -16,6 +16,7 @@
 #include "core/io/feature_spool.h"
 #include "tests/app/child_peak_memory.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 #include "tests/app/generated_footprints.h"
 #include "tests/support/sanitizers.h"
 
@@ -68,14 +69,14 @@ TEST_F(BatchFootprintSpool, PartyAndStreetEdgesAsInMemory) {
   FootprintReadOptions read;
   read.streets = kSamples / "footprints" / "terrace_east_street.geojson";
   expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "terrace.geojson", read);
-  expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "sample_block.geojson", {});
+  expect_spooled_as_in_memory(kSamples / "city.pxg", test::kSampleBlock, {});
 }
 
 // A projection rewrites every spooled footprint (FeatureSpool::keep_if).
 TEST_F(BatchFootprintSpool, ProjectedAsInMemory) {
   FootprintReadOptions read;
   read.crs = "EPSG:32632", read.target_crs = "EPSG:3857";
-  expect_spooled_as_in_memory(kSamples / "city.pxg", kSamples / "footprints" / "sample_block.geojson", read);
+  expect_spooled_as_in_memory(kSamples / "city.pxg", test::kSampleBlock, read);
   expect_spooled_as_in_memory(kSamples / "city.pxg", fs::path(PROCEX_DATA) / "footprints" / "corpus_monaco.geojson", {});
 }
 

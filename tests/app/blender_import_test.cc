@@ -19,6 +19,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -26,7 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
+const fs::path& kRoot = test::kRepository;
 
 class BlenderImport : public test::CommandTest {
  protected:
@@ -34,7 +35,7 @@ class BlenderImport : public test::CommandTest {
   void batch(const std::string& format) {
     BatchCommandOptions o;
     o.recipe = kRoot / "samples" / "city.pxg";
-    o.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+    o.footprints = test::kSampleBlock;
     o.output = dir_ / ("city." + format);
     o.report = dir_ / ("city_" + format + ".json");
     o.progress = false;
@@ -60,7 +61,7 @@ TEST_F(BlenderImport, BuildingsStandUprightNamedTexturedAndToTheMillimetre) {
   std::map<std::string, json> want;  // building id -> its entry in the batch report
   for (const json& b : procex["buildings"]) want[b["id"].get<std::string>()] = b;
   ASSERT_EQ(want.size(), 18u);
-  const json block = json::parse(test::read_text(kRoot / "samples" / "footprints" / "sample_block.geojson"));
+  const json block = json::parse(test::read_text(test::kSampleBlock));
   std::map<std::string, json> features;  // building id -> its feature's GeoJSON properties
   for (const json& f : block["features"]) features[f["id"].get<std::string>()] = f["properties"];
 

@@ -16,6 +16,7 @@
 #include "app/cli/eval_command.h"
 #include "app/cli/recipe_session.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kSamples = PROCEX_SAMPLES;
-const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
+const fs::path& kBlock = test::kSampleBlock;
 
 using test::read_text;
 

@@ -23,6 +23,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -30,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-const fs::path kRoot = fs::path(PROCEX_SAMPLES).parent_path();
+const fs::path& kRoot = test::kRepository;
 const fs::path kTools = kRoot / "tools";
 
 struct ProcessRun {
@@ -61,7 +62,7 @@ class GltfExport : public test::ScratchDirTest {
   fs::path city(std::optional<int> lod = std::nullopt) {
     BatchCommandOptions o;
     o.recipe = kRoot / "samples" / "city.pxg";
-    o.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+    o.footprints = test::kSampleBlock;
     o.output = dir_ / "city.glb";
     o.progress = false;
     o.lod = lod;
@@ -161,7 +162,7 @@ TEST_F(GltfExport, ThreeJsLoadsTagsAndBuildings) {
 TEST_F(GltfExport, ThreeJsSeesBuildingsUprightAtTheirOrigins) {
   BatchCommandOptions o;
   o.recipe = kRoot / "samples" / "city.pxg";
-  o.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+  o.footprints = test::kSampleBlock;
   o.output = dir_ / "city.glb";
   o.report = dir_ / "city.json";
   o.progress = false;
@@ -217,7 +218,7 @@ TEST_F(GltfExport, ThreeJsSeesBuildingsUprightAtTheirOrigins) {
 // building's origin in double precision, its vertices are relative to it.
 TEST_F(GltfExport, ThreeJsKeepsMillimetresAtUtmCoordinates) {
   const glm::dvec2 offset(500000.0, 4840000.0);
-  json block = json::parse(std::ifstream(kRoot / "samples" / "footprints" / "sample_block.geojson"));
+  json block = json::parse(std::ifstream(test::kSampleBlock));
   block.erase("projection");  // its frame no longer
   for (json& f : block["features"]) {
     ASSERT_EQ(f["geometry"]["type"], "Polygon");
@@ -247,7 +248,7 @@ TEST_F(GltfExport, ThreeJsKeepsMillimetresAtUtmCoordinates) {
     }
     return seen;
   };
-  const auto near = bounds(kRoot / "samples" / "footprints" / "sample_block.geojson", "near");
+  const auto near = bounds(test::kSampleBlock, "near");
   const auto far = bounds(dir_ / "block_far.geojson", "far");
   ASSERT_EQ(near.size(), 18u);
   ASSERT_EQ(far.size(), near.size());
@@ -346,7 +347,7 @@ TEST_F(GltfExport, MaterialsReachTheValidatorAndThreeJs) {
   ASSERT_EQ(run_eval(test::eval_options(kRoot / "samples" / "textured_house.pxg", single), o, e), 0) << e.str();
   BatchCommandOptions b;
   b.recipe = textured_batch_recipe(dir_);
-  b.footprints = kRoot / "samples" / "footprints" / "sample_block.geojson";
+  b.footprints = test::kSampleBlock;
   b.output = dir_ / "textured_block.glb";
   b.progress = false;
   ASSERT_EQ(run_batch(b, o, e), 0) << e.str();

@@ -15,6 +15,7 @@
 #include "app/cli/merge_command.h"
 #include "app/cli/roof_command.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 
 namespace procex {
 namespace {
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 using test::read_text;
 
 const fs::path kSamples = PROCEX_SAMPLES;
-const fs::path kBlock = kSamples / "footprints" / "sample_block.geojson";
+const fs::path& kBlock = test::kSampleBlock;
 
 class HostileInput : public test::CommandTest {
  protected:

@@ -15,6 +15,7 @@
 #include "app/cli/batch_command.h"
 #include "app/cli/eval_command.h"
 #include "tests/app/command_test.h"
+#include "tests/app/sample_block.h"
 #include "tests/support/gltf_scripts.h"
 
 namespace procex {
@@ -57,7 +58,7 @@ TEST_F(LodCommand, EvalWritesEachLevelAsAValidFile) {
 TEST_F(LodCommand, BatchWritesBlocksForEveryBuilding) {
   BatchCommandOptions o;
   o.recipe = kSamples / "city.pxg";
-  o.footprints = kSamples / "footprints" / "sample_block.geojson";
+  o.footprints = test::kSampleBlock;
   o.output = dir_ / "city.lod1.glb";
   o.report = dir_ / "city.lod1.json";
   o.progress = false;

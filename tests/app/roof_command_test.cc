@@ -1,6 +1,7 @@
 // `procex roof` end to end: GeoJSON in, one OBJ and one JSON report out, one
 // bad feature never stopping the others, the process exit codes.
 #include "app/cli/roof_command.h"
+#include "tests/app/sample_block.h"
 #include "tests/support/scratch_dir.h"
 
 #include <sys/wait.h>
@@ -72,7 +73,7 @@ std::string collection(const std::vector<std::string>& features) {
 const std::string kSquare10 = R"({"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]]]})";
 
 TEST_F(RoofCommand, SampleBlockEveryFeatureOk) {
-  RoofOptions o = options_for(fs::path(PROCEX_SAMPLES) / "footprints" / "sample_block.geojson");
+  RoofOptions o = options_for(test::kSampleBlock);
   o.angle_deg = 40.0;
   ASSERT_EQ(run(o), 0) << err_.str();
   const nlohmann::json r = report();
@@ -224,7 +225,7 @@ TEST_F(RoofCommand, UnwritableOutputIsAnError) {
 
 // Parallel runs must not change a byte of the mesh or the order of the report.
 TEST_F(RoofCommand, OutputDoesNotDependOnJobs) {
-  RoofOptions o = options_for(fs::path(PROCEX_SAMPLES) / "footprints" / "sample_block.geojson");
+  RoofOptions o = options_for(test::kSampleBlock);
   std::string obj[2];
   nlohmann::json features[2];
   for (int k = 0; k < 2; ++k) {
@@ -248,7 +249,7 @@ int exit_code_of(const std::string& command) {
 
 TEST_F(RoofCommand, ExecutableExitCodes) {
   const std::string exe = PROCEX_CLI_EXE;
-  const std::string sample = (fs::path(PROCEX_SAMPLES) / "footprints" / "sample_block.geojson").string();
+  const std::string sample = test::kSampleBlock.string();
   const std::string outs = " -o " + (dir_ / "out.obj").string() + " --report " + (dir_ / "report.json").string();
   EXPECT_EQ(exit_code_of(exe + " roof " + sample + " --angle 40 --jobs 2" + outs), 0);
   EXPECT_TRUE(fs::exists(dir_ / "report.json"));
