@@ -16,8 +16,8 @@
 #include "core/io/feature_spool.h"
 #include "tests/app/child_peak_memory.h"
 #include "tests/app/command_test.h"
-#include "tests/app/sample_block.h"
 #include "tests/app/generated_footprints.h"
+#include "tests/app/sample_block.h"
 #include "tests/support/sanitizers.h"
 
 namespace procex {
