@@ -946,7 +946,7 @@ struct BatchScratch {
   ResolveLists resolving;
   std::vector<std::vector<int>> groups;
   std::vector<double> first, zs;
-  // By group: members left it to wait since its mean height was taken.
+  // By group: members left it to wait, and its mean height is to be taken again.
   std::vector<char> thinned;
   ResolveOrder order;
   std::vector<std::size_t> pending;  // order's, for LaterGroups
@@ -1283,19 +1283,14 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   // (most of them) has no other cluster to take a corner from.
   // A cluster's first collision is never late: a cluster that meets one of
   // its corners lower is resolved before it.
-  for (std::size_t g = 0; g < groups.size() && groups.size() > 1; ++g) {
-    std::vector<int>& members = groups[g];
-    std::size_t kept = 0;
-    for (int m : members) {
+  lists.thinned.assign(groups.size(), 0);
+  for (std::size_t g = 0; g < groups.size() && groups.size() > 1; ++g)
+    for (int m : groups[g])
       if (later_groups.late(g, m)) {
         later_groups.waits(m);
+        lists.thinned[g] = 1;
         waiting.push_back(source[m]);
-      } else {
-        members[kept++] = m;
       }
-    }
-    members.resize(kept);
-  }
   const auto mean_z = [&](const std::vector<int>& g) {
     double z = 0.0;
     for (int m : g) z += cs[m].z;
@@ -1303,9 +1298,9 @@ void resolve_intersections(State& st, EventQueue& queue, const std::vector<Candi
   };
   std::vector<double>& zs = lists.zs;
   for (const auto& g : groups) zs.push_back(mean_z(g));
-  lists.thinned.assign(groups.size(), 0);
-  // A cluster some of whose members left it to wait drops them, and its
-  // height is their mean again, when it is resolved.
+  // A cluster some of whose members left it to wait (late, or taken by a
+  // collapse) drops them, and its height is the mean of those it keeps, when
+  // it is resolved.
   const auto thin_out = [&](std::size_t g) {
     if (!lists.thinned[g]) return;
     std::vector<int>& members = groups[g];
