@@ -23,9 +23,12 @@ class ResolveOrder {
   void start(std::size_t n, const FirstOf& first_of) {
     listed_.resize(n);
     for (std::size_t g = 0; g < n; ++g) listed_[g] = {first_of(g), g};
-    // The next last (by index among groups first met at one height, not by a
-    // stable sort: std::stable_sort takes a buffer from the heap at every batch).
-    std::sort(listed_.begin(), listed_.end(), std::greater<>());
+    // By (first met, index), a strict order, so one result however it is
+    // reached. The runs that already ascend are merged rather than sorted
+    // again: a batch's waiting candidates come in its order, by height, and in
+    // a random 262,144-gon's sweep a batch holds 17,000 of them on average.
+    merge_runs();
+    std::reverse(listed_.begin(), listed_.end());  // the next last
     added_.clear();
   }
   bool empty() const { return listed_.empty() && added_.empty(); }
@@ -59,8 +62,32 @@ class ResolveOrder {
   }
 
  private:
+  // listed_ sorted ascending by merging its ascending runs pairwise, through
+  // sorted_ (kept, as every list here, from batch to batch).
+  void merge_runs() {
+    runs_.clear();
+    runs_.push_back(0);
+    for (std::size_t i = 1; i < listed_.size(); ++i)
+      if (listed_[i] < listed_[i - 1]) runs_.push_back(i);
+    runs_.push_back(listed_.size());
+    while (runs_.size() > 2) {
+      sorted_.resize(listed_.size());
+      std::size_t kept = 0;
+      for (std::size_t r = 0; r + 1 < runs_.size(); r += 2) {
+        const auto at = [&](std::size_t k) { return listed_.begin() + static_cast<std::ptrdiff_t>(runs_[k]); };
+        const std::size_t end = std::min(r + 2, runs_.size() - 1);
+        std::merge(at(r), at(r + 1), at(r + 1), at(end), sorted_.begin() + static_cast<std::ptrdiff_t>(runs_[r]));
+        runs_[kept++] = runs_[r];
+      }
+      runs_[kept++] = listed_.size();
+      runs_.resize(kept);
+      listed_.swap(sorted_);
+    }
+  }
+
   // (first met, group): listed_ the next last, added_ a heap, lowest on top.
   std::vector<std::pair<double, std::size_t>> listed_, added_, sorted_;
+  std::vector<std::size_t> runs_;  // merge_runs': where each run starts, then the end
 };
 
 }  // namespace procex::engine

@@ -55,5 +55,31 @@ TEST(ResolveOrder, ResolvesGroupsAsInsertingEachInPlaceWould) {
   }
 }
 
+// A batch lists its waiting candidates by height, after its clusters: groups
+// mostly in a few runs that already ascend, which start() merges.
+TEST(ResolveOrder, GroupsListedInAscendingRunsComeOutByFirstCollisionThenIndex) {
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<double> first;
+    for (std::size_t runs = rng() % 6; runs > 0; --runs) {
+      double f = height(rng);
+      for (std::size_t k = rng() % 50; k > 0; --k) {
+        first.push_back(f);
+        if (rng() % 3 != 0) f += 0.25 * static_cast<double>(rng() % 3);
+      }
+    }
+    const auto first_of = [&](std::size_t g) { return first[g]; };
+    std::vector<std::size_t> model(first.size());
+    std::iota(model.begin(), model.end(), 0);
+    std::sort(model.begin(), model.end(),
+              [&](std::size_t a, std::size_t b) { return first[a] != first[b] ? first[a] < first[b] : a < b; });
+    ResolveOrder order;
+    order.start(first.size(), first_of);
+    std::vector<std::size_t> resolved;
+    while (!order.empty()) resolved.push_back(order.next());
+    EXPECT_EQ(resolved, model) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace procex::engine
