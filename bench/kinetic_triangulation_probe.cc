@@ -24,7 +24,7 @@
 // the probe when --runs > 1), and the probe's node heights are compared with
 // the heights of the roof's vertices above the ground.
 //
-//   procex_kinetic_triangulation_probe [--runs K] [--no-sweep] [--nodes FILE] PLAN.json...
+//   procex_kinetic_triangulation_probe [--runs K] [--no-sweep] [--nodes FILE] [--perturb EPS] PLAN.json...
 //
 // Prints one block per plan: CPU seconds (CDT, event loop, sweep()), event
 // counts, degenerate cases met, peak RSS after the probe's first run (before
@@ -582,6 +582,7 @@ class KineticTriangulation {
 struct SweepRun {
   double cpu_s = 0.0;
   std::vector<double> heights;  // roof vertices above 1e-9, sorted
+  std::vector<glm::dvec3> roof;  // the same vertices, sorted by height
   std::string error;
 };
 
@@ -592,8 +593,9 @@ SweepRun run_sweep(const procex::Footprint& footprint) {
     const procex::Surface surface = procex::sweep(footprint);
     r.cpu_s = cpu_seconds() - start;
     for (const glm::dvec3& v : surface.vertices)
-      if (v.z > 1e-9) r.heights.push_back(v.z);
+      if (v.z > 1e-9) r.heights.push_back(v.z), r.roof.push_back(v);
     std::sort(r.heights.begin(), r.heights.end());
+    std::sort(r.roof.begin(), r.roof.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return a.z < b.z; });
   } catch (const std::exception& e) {
     r.cpu_s = cpu_seconds() - start;
     r.error = e.what();
@@ -614,7 +616,33 @@ double nearest_gap(const std::vector<double>& a, const std::vector<double>& b) {
   return worst;
 }
 
-int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path) {
+// How far each point of `a` is from the nearest of `b` (sorted by height),
+// looking only within `window` in height: the largest such distance, and how
+// many are farther than each of `limits` (or have none within the window).
+struct Match {
+  double worst = 0.0;
+  std::size_t beyond[3] = {0, 0, 0};
+};
+constexpr double kMatchLimits[3] = {1e-9, 1e-7, 1e-5};
+Match match(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b, double window, const char* label) {
+  Match m;
+  for (const glm::dvec3& p : a) {
+    auto it = std::lower_bound(b.begin(), b.end(), p.z - window,
+                               [](const glm::dvec3& q, double z) { return q.z < z; });
+    double best = kInf, dz = 0.0;
+    for (; it != b.end() && it->z <= p.z + window; ++it)
+      if (glm::length(*it - p) < best) best = glm::length(*it - p), dz = it->z - p.z;
+    if (best < kInf) m.worst = std::max(m.worst, best);
+    if (best > 1e-5 && std::getenv("KT_PROBE_SHOW") != nullptr)
+      std::fprintf(stderr, "    unmatched %s %.17g %.17g %.17g nearest %.3g m, %.3g m higher\n", label, p.x, p.y, p.z,
+                   best, dz);
+    for (int k = 0; k < 3; ++k)
+      if (!(best <= kMatchLimits[k])) ++m.beyond[k];
+  }
+  return m;
+}
+
+int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path, double perturb) {
   const std::vector<procex::PolyShape> shapes = procex::read_polyjson_file(path);
   const procex::Footprint footprint = procex::prepare_footprint(procex::to_footprint(shapes.at(0), 45.0)).footprint;
   if (footprint.loops.size() != 1) {
@@ -625,6 +653,16 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
   double area2 = 0.0;
   for (std::size_t i = 0; i < pts.size(); ++i) area2 += cross(pts[i], pts[(i + 1) % pts.size()]);
   if (area2 < 0.0) std::reverse(pts.begin(), pts.end());
+  // --perturb EPS moves the probe's vertices (not the sweep's) by up to EPS:
+  // how much of a difference from procex is the plan's own conditioning.
+  if (perturb > 0.0) {
+    std::uint64_t state = 0x9e3779b97f4a7c15ull;
+    auto uniform = [&state] {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      return static_cast<double>(state >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+    };
+    for (dvec2& p : pts) p += dvec2(uniform(), uniform()) * perturb;
+  }
   const std::size_t n = pts.size();
 
   Stats kt;
@@ -676,11 +714,20 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
       for (std::size_t i = 0; i < m; ++i) paired = std::max(paired, std::abs(heights[i] - sw.heights[i]));
       std::printf("  sweep: %.4f s (min of %d); nodes above 1e-9: procex %zu, probe %zu\n", lo(sweep_cpu), runs,
                   sw.heights.size(), heights.size());
-      std::printf("  heights: paired in order max |diff| %.3g%s; nearest: probe->procex %.3g, procex->probe %.3g; "
+      std::printf("  heights: paired in order max |diff| %.3g%s; nearest height: probe->procex %.3g, procex->probe %.3g; "
                   "highest probe %.12g procex %.12g (diff %.3g)\n",
-                  paired, heights.size() == sw.heights.size() ? "" : " (counts differ)",
+                  paired, heights.size() == sw.heights.size() ? "" : " (counts differ: not meaningful)",
                   nearest_gap(heights, sw.heights), nearest_gap(sw.heights, heights), top,
                   sw.heights.empty() ? 0.0 : sw.heights.back(), sw.heights.empty() ? 0.0 : top - sw.heights.back());
+      // Nodes matched by position (x, y, height) within 1e-4 m of height.
+      std::vector<glm::dvec3> probe3;
+      for (const Node& nd : nodes) probe3.emplace_back(nd.p.x, nd.p.y, nd.t);
+      std::sort(probe3.begin(), probe3.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return a.z < b.z; });
+      const Match pm = match(probe3, sw.roof, 1e-4, "probe"), qm = match(sw.roof, probe3, 1e-4, "procex");
+      std::printf("  nodes by position: probe->nearest procex vertex max %.3g m, beyond 1e-9/1e-7/1e-5 m: %zu/%zu/%zu; "
+                  "procex->nearest probe node max %.3g m, beyond: %zu/%zu/%zu\n",
+                  pm.worst, pm.beyond[0], pm.beyond[1], pm.beyond[2], qm.worst, qm.beyond[0], qm.beyond[1],
+                  qm.beyond[2]);
     }
   } else {
     std::printf("  highest node %.12g\n", top);
@@ -702,11 +749,14 @@ int main(int argc, char** argv) {
   int runs = 1;
   bool with_sweep = true;
   const char* nodes_path = nullptr;
+  double perturb = 0.0;
   std::vector<const char*> plans;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--runs" && i + 1 < argc) {
       runs = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--perturb" && i + 1 < argc) {
+      perturb = std::atof(argv[++i]);
     } else if (a == "--no-sweep") {
       with_sweep = false;
     } else if (a == "--nodes" && i + 1 < argc) {
@@ -716,13 +766,13 @@ int main(int argc, char** argv) {
     }
   }
   if (plans.empty()) {
-    std::fprintf(stderr, "usage: %s [--runs K] [--no-sweep] [--nodes FILE] PLAN.json...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--runs K] [--no-sweep] [--nodes FILE] [--perturb EPS] PLAN.json...\n", argv[0]);
     return 64;
   }
   int status = 0;
   for (const char* p : plans) {
     try {
-      status = std::max(status, run_plan(p, runs, with_sweep, nodes_path));
+      status = std::max(status, run_plan(p, runs, with_sweep, nodes_path, perturb));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s: %s\n", p, e.what());
       status = 1;
