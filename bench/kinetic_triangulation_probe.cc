@@ -130,6 +130,7 @@ struct Stats {
   std::size_t root_in_past = 0;           // a collapse root before now (rounding), taken as now
   std::size_t fast_vertex = 0;            // a vertex made faster than 1e8 (two edges nearly antiparallel)
   std::size_t spoke_collapse = 0;         // two vertices met along a spoke (a vertex event)
+  std::size_t point_collapse = 0;         // a triangle's three vertices meet at its flat collapse: set aside
   std::size_t split_beside_corner = 0;    // a split whose edge's end is the splitting vertex's neighbour
   std::size_t edge_id_mismatch = 0;       // a wavefront side whose ends do not name its edge
   std::size_t stuck = 0;                  // the loop stopped: too many events without time moving on
@@ -327,10 +328,6 @@ class KineticTriangulation {
     double best = kInf;
     int wavefront_sides = 0;
     auto take = [&](double s, Kind kind, int side) {
-      if (s < 0.0) {
-        ++stats_->root_in_past;
-        s = 0.0;
-      }
       if (s < best) best = s, t.kind = kind, t.side = static_cast<std::uint8_t>(side);
     };
     for (int i = 0; i < 3; ++i) {
@@ -352,8 +349,12 @@ class KineticTriangulation {
       const double h0 = glm::dot(nrm, q[i] - q[a]), h1 = glm::dot(nrm, w[i] - w[a]);
       if (h1 < 0.0 && -h0 / h1 < best) {
         const Flat f = classify_flat(t, q, w, std::max(-h0 / h1, 0.0));
-        take(-h0 / h1, f.kind, f.vertex);
-        t.vertices_meet = f.vertices_meet;
+        if (f.point) {
+          ++stats_->point_collapse;  // the wavefront side shrinks there too: its edge event stands
+        } else {
+          take(-h0 / h1, f.kind, f.vertex);
+          t.vertices_meet = f.vertices_meet;
+        }
       }
     } else if (wavefront_sides == 0) {
       // 2 A(s) = c + b s + a s^2 around now.
@@ -376,34 +377,54 @@ class KineticTriangulation {
       }
       if (s < kInf) {
         const Flat f = classify_flat(t, q, w, std::max(s, 0.0));
-        take(s, f.kind, f.vertex);
-        t.vertices_meet = f.vertices_meet;
+        if (f.point) {
+          ++stats_->point_collapse;  // no flip: edge events will take its vertices
+        } else {
+          take(s, f.kind, f.vertex);
+          t.vertices_meet = f.vertices_meet;
+        }
       }
     }
     if (t.kind == Kind::None) return;
+    if (best < 0.0) {
+      ++stats_->root_in_past;
+      best = 0.0;
+    }
     heap_.push({now_ + best, ti, t.version});
   }
 
   // The triangle is flat at now + s: the vertex between the other two (the
   // one opposite the longest side) reaches that side, a split where the side
   // is a wavefront edge, else a flip.
+  //
+  // Where all three vertices meet (the longest side at the collapse under
+  // 1e-7 of the longest now, or under 1e-10 of the plan's extent) it is not
+  // a flip or a split but a vertex event: in generic position never, in a
+  // regular polygon everywhere (every vertex reaches the centre at once, and
+  // a spoke triangle's area has a double root there, which rounding moves by
+  // sqrt(ulp)). Such a collapse is set aside (`point`): the edge events of the
+  // vertices' wavefront edges, at the same time, take the vertices.
   struct Flat {
     Kind kind;
     int vertex;
     bool vertices_meet;  // the shortest side is nothing: a vertex event, not generic
+    bool point;          // all three meet
   };
-  static Flat classify_flat(const Tri& t, const dvec2* q, const dvec2* w, double s) {
+  Flat classify_flat(const Tri& t, const dvec2* q, const dvec2* w, double s) const {
     dvec2 p[3];
     for (int i = 0; i < 3; ++i) p[i] = q[i] + w[i] * s;
-    double shortest = kInf, longest = 0.0;
+    double shortest = kInf, longest = 0.0, longest_now = 0.0;
     int k = 0;
     for (int i = 0; i < 3; ++i) {
       const dvec2 d = p[(i + 2) % 3] - p[(i + 1) % 3];
       const double len = glm::dot(d, d);
       shortest = std::min(shortest, len);
       if (len > longest) longest = len, k = i;
+      const dvec2 dn = q[(i + 2) % 3] - q[(i + 1) % 3];
+      longest_now = std::max(longest_now, glm::dot(dn, dn));
     }
-    return {t.n[k] < 0 ? Kind::Split : Kind::Flip, k, shortest < 1e-24 * longest};
+    const bool point = longest < 1e-14 * longest_now || longest < 1e-20 * extent_ * extent_;
+    return {t.n[k] < 0 ? Kind::Split : Kind::Flip, k, shortest < 1e-24 * longest, point};
   }
 
   // Triangles of a fan around vertex `from`, starting beside triangle `start`
@@ -695,9 +716,9 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
   std::printf("  heap: pops %zu, stale %zu, collapses worked out %zu, fan steps %zu, vertices %zu, fastest %.3g\n",
               kt.pops, kt.stale, kt.rescheduled, kt.fan_steps, kt.vertices, kt.max_speed);
   std::printf("  events within 1e-8 of the extent in height of the one before: %zu\n", kt.close_in_height);
-  std::printf("  degenerate: simultaneous %zu, root in past %zu, fast vertex %zu, spoke collapse %zu, "
+  std::printf("  degenerate: simultaneous %zu, root in past %zu, fast vertex %zu, spoke collapse %zu, point collapse set aside %zu, "
               "split beside corner %zu, edge id mismatch %zu, stuck %zu\n",
-              kt.simultaneous, kt.root_in_past, kt.fast_vertex, kt.spoke_collapse, kt.split_beside_corner,
+              kt.simultaneous, kt.root_in_past, kt.fast_vertex, kt.spoke_collapse, kt.point_collapse, kt.split_beside_corner,
               kt.edge_id_mismatch, kt.stuck);
   std::printf("  fans thinner than 1e-8 / 1e-6 of the extent at their vertex's event: %zu / %zu of %zu events\n",
               kt.thin_fans[0], kt.thin_fans[1], kt.edge + kt.split);
