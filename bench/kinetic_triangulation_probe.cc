@@ -22,7 +22,14 @@
 //
 // The same plan is swept by procex::sweep() in the same run (interleaved with
 // the probe when --runs > 1), and the probe's node heights are compared with
-// the heights of the roof's vertices above the ground.
+// the heights of the roof's vertices above the ground, then the nodes with the
+// vertices by position (x, y, height); KT_PROBE_SHOW=1 lists on stderr those
+// more than 1e-5 m from any of the other's. --perturb moves the probe's plan
+// alone by up to EPS, to tell the plan's own conditioning from a disagreement.
+//
+// Double arithmetic, generic position assumed; degenerate cases are counted
+// and reported, not resolved (a comb's teeth, whose sides are antiparallel and
+// meet along a segment, leave it stuck, as they stop Surfer2's double build).
 //
 //   procex_kinetic_triangulation_probe [--runs K] [--no-sweep] [--nodes FILE] [--perturb EPS] PLAN.json...
 //
@@ -126,9 +133,9 @@ struct Stats {
   std::size_t fan_steps = 0;              // triangles re-pointed at new vertices
   // Degenerate cases met (none in generic position):
   std::size_t simultaneous = 0;           // an event at the same time as the one before it
-  std::size_t close_in_height = 0;        // within procex's clustering distance (1e-8 of the extent) of it
   std::size_t root_in_past = 0;           // a collapse root before now (rounding), taken as now
-  std::size_t fast_vertex = 0;            // a vertex made faster than 1e8 (two edges nearly antiparallel)
+  std::size_t fast_vertex = 0;            // a vertex made faster than 1e8 (two edges nearly antiparallel;
+                                          // exactly antiparallel, as a comb's tooth, it is left standing)
   std::size_t spoke_collapse = 0;         // two vertices met along a spoke (a vertex event)
   std::size_t point_collapse = 0;         // a triangle's three vertices meet at its flat collapse: set aside
   std::size_t split_beside_corner = 0;    // a split whose edge's end is the splitting vertex's neighbour
@@ -239,7 +246,6 @@ class KineticTriangulation {
         ++s.stale;
         continue;
       }
-      if (ev.t - now_ < 1e-8 * extent_) ++s.close_in_height;
       if (ev.t <= now_) {
         ++s.simultaneous;
         // A flip that undoes itself, or a cascade at one point, would spin here.
@@ -481,8 +487,7 @@ class KineticTriangulation {
   // point: u and w become one vertex z between the edges before u and after w.
   void edge_event(int ti, int i) {
     Tri& t = tris_[static_cast<std::size_t>(ti)];
-    const int x = t.v[i], u = t.v[(i + 1) % 3], w = t.v[(i + 2) % 3];
-    (void)x;
+    const int u = t.v[(i + 1) % 3], w = t.v[(i + 2) % 3];
     const int n1 = t.n[(i + 1) % 3];  // across (w, x)
     const int n2 = t.n[(i + 2) % 3];  // across (x, u)
     if (n1 < 0 && n2 < 0) return last_event(ti);
@@ -715,7 +720,6 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
               n - 2);
   std::printf("  heap: pops %zu, stale %zu, collapses worked out %zu, fan steps %zu, vertices %zu, fastest %.3g\n",
               kt.pops, kt.stale, kt.rescheduled, kt.fan_steps, kt.vertices, kt.max_speed);
-  std::printf("  events within 1e-8 of the extent in height of the one before: %zu\n", kt.close_in_height);
   std::printf("  degenerate: simultaneous %zu, root in past %zu, fast vertex %zu, spoke collapse %zu, point collapse set aside %zu, "
               "split beside corner %zu, edge id mismatch %zu, stuck %zu\n",
               kt.simultaneous, kt.root_in_past, kt.fast_vertex, kt.spoke_collapse, kt.point_collapse, kt.split_beside_corner,
