@@ -16,17 +16,22 @@ namespace {
 // Heights drawn from few values, so that groups are often first met at one.
 double height(std::mt19937_64& rng) { return static_cast<double>(rng() % 8) * 0.25; }
 
+// The groups in the order they stand for: by first collision, then by index.
+std::vector<std::size_t> by_first_then_index(const std::vector<double>& first) {
+  std::vector<std::size_t> order(first.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return first[a] != first[b] ? first[a] < first[b] : a < b; });
+  return order;
+}
+
 TEST(ResolveOrder, ResolvesGroupsAsInsertingEachInPlaceWould) {
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
     std::mt19937_64 rng(seed);
     std::vector<double> first(1 + rng() % 40);
     for (double& f : first) f = height(rng);
     const auto first_of = [&](std::size_t g) { return first[g]; };
-
-    std::vector<std::size_t> model(first.size());
-    std::iota(model.begin(), model.end(), 0);
-    std::sort(model.begin(), model.end(),
-              [&](std::size_t a, std::size_t b) { return first[a] != first[b] ? first[a] < first[b] : a < b; });
+    std::vector<std::size_t> model = by_first_then_index(first);
     ResolveOrder order;
     order.start(first.size(), first_of);
 
@@ -69,10 +74,7 @@ TEST(ResolveOrder, GroupsListedInAscendingRunsComeOutByFirstCollisionThenIndex) 
       }
     }
     const auto first_of = [&](std::size_t g) { return first[g]; };
-    std::vector<std::size_t> model(first.size());
-    std::iota(model.begin(), model.end(), 0);
-    std::sort(model.begin(), model.end(),
-              [&](std::size_t a, std::size_t b) { return first[a] != first[b] ? first[a] < first[b] : a < b; });
+    std::vector<std::size_t> model = by_first_then_index(first);
     ResolveOrder order;
     order.start(first.size(), first_of);
     std::vector<std::size_t> resolved;
