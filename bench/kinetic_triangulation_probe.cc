@@ -36,14 +36,13 @@
 // Prints one block per plan: CPU seconds (CDT, event loop, sweep()), event
 // counts, degenerate cases met, peak RSS after the probe's first run (before
 // the sweep), and the comparison.
-#include <sys/resource.h>
-
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <queue>
@@ -57,6 +56,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "bench/process_usage.h"
+#include "core/geom/cross.h"
+#include "core/geom/nesting.h"
 #include "core/geom/prepare.h"
 #include "core/io/polyjson.h"
 #include "core/sweep/sweep.h"
@@ -65,19 +67,9 @@ namespace {
 
 using glm::dvec2;
 
-double cross(dvec2 a, dvec2 b) { return a.x * b.y - a.y * b.x; }
-
-double cpu_seconds() {
-  timespec t{};
-  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
+using procex::cross;
+using procex::bench::cpu_seconds;
+using procex::bench::peak_rss_mb;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -676,9 +668,7 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
     return 1;
   }
   std::vector<dvec2> pts = footprint.loops[0].points;
-  double area2 = 0.0;
-  for (std::size_t i = 0; i < pts.size(); ++i) area2 += cross(pts[i], pts[(i + 1) % pts.size()]);
-  if (area2 < 0.0) std::reverse(pts.begin(), pts.end());
+  if (procex::twice_signed_area(pts) < 0.0) std::reverse(pts.begin(), pts.end());
   // --perturb EPS moves the probe's vertices (not the sweep's) by up to EPS:
   // how much of a difference from procex is the plan's own conditioning.
   if (perturb > 0.0) {
@@ -757,15 +747,21 @@ int run_plan(const char* path, int runs, bool with_sweep, const char* nodes_path
   } else {
     std::printf("  highest node %.12g\n", top);
   }
+  int status = kt.finished ? 0 : 2;
   if (nodes_path != nullptr) {
     FILE* f = std::fopen(nodes_path, "w");
+    bool written = f != nullptr;
     if (f != nullptr) {
       for (const Node& nd : nodes) std::fprintf(f, "%.17g %.17g %.17g\n", nd.p.x, nd.p.y, nd.t);
-      std::fclose(f);
+      written = std::fclose(f) == 0 && written;
+    }
+    if (!written) {
+      std::fprintf(stderr, "%s: cannot write the nodes to %s: %s\n", path, nodes_path, std::strerror(errno));
+      status = 1;
     }
   }
   std::fflush(stdout);
-  return kt.finished ? 0 : 2;
+  return status;
 }
 
 }  // namespace

@@ -31,7 +31,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <map>
 #include <new>
@@ -40,6 +39,7 @@
 #include <system_error>
 #include <vector>
 
+#include "bench/process_usage.h"
 #include "core/geom/prepare.h"
 #include "core/io/polyjson.h"
 #include "core/mesh/mesh.h"
@@ -51,6 +51,7 @@ namespace procex {
 namespace {
 
 namespace fs = std::filesystem;
+using bench::cpu_seconds;
 
 enum class Engine { Sweep, Roof, Cgal, Surfer2 };
 const char* engine_name(Engine e) {
@@ -80,12 +81,6 @@ struct Measurement {
   double cpu_s = 0.0;
   double peak_mb = 0.0;
 };
-
-double cpu_seconds() {
-  timespec t{};
-  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-}
 
 Footprint read_footprint(const Input& in) {
   const std::vector<PolyShape> shapes = read_polyjson_file(in.path);

@@ -12,7 +12,6 @@
 //
 //   procex_sweep_bench [--runs N] [--budget SECONDS] [--no-cgal] [CASE...]
 #include <malloc.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/process_usage.h"
 #include "core/geom/error.h"
 #include "core/geom/prepare.h"
 #include "core/io/geojson.h"
@@ -89,12 +89,6 @@ double resident_mb() {
   return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
-double peak_mb() {
-  rusage u{};
-  ::getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
 // Hands freed heap pages back first: otherwise they stay resident and every
 // later measurement would start at the previous one's peak.
 void reset_peak() {
@@ -127,7 +121,7 @@ Measurement measure(const Case& c, const RunLimits& limits, const std::function<
     m.failures = failures;
     spent_s += ms / 1000.0;
   }
-  m.peak_mb = peak_mb();
+  m.peak_mb = bench::peak_rss_mb();
   return m;
 }
 
