@@ -133,6 +133,7 @@ void load_edges(State& st, const std::vector<glm::dvec2>& points, const std::vec
 }
 
 void schedule_all(State& st, EventQueue& queue) {
+  queue.start(st);
   for (int c = 0; c < static_cast<int>(st.corners.size()); ++c)
     if (st.corners[c].alive) queue.schedule(st, c);
 }
@@ -146,7 +147,9 @@ void run_events(State& st, EventQueue& queue, ProfileEvents& profile_events, Anc
   std::size_t stalled = 0, stall_limit = 0;
   double last = -1.0;
   auto edits_pending = [&] { return plan_edits && !plan_edits->empty(); };
-  while (!queue.empty() || !profile_events.empty() || edits_pending()) {
+  for (;;) {
+    queue.catch_up(st);
+    if (queue.empty() && profile_events.empty() && !edits_pending()) break;
     // Collisions at a profile vertex's or a plan edit's height are resolved before the planes change.
     const double z_collide = queue.empty() ? HUGE_VAL : queue.next_height();
     const double z_profile = profile_events.empty() ? HUGE_VAL : profile_events.next_height();

@@ -43,6 +43,72 @@ void EventQueue::clear() {
   closing_.clear();
   live_corners_ = rebuilt_at_ = 0;
   held_ = peak_held_ = worked_ = 0;
+  kt_.clear();
+  triangulated_ = leave_triangulation_ = false;
+  made_by_.clear();
+  listed_whole_.clear();
+}
+
+void EventQueue::start(State& st) {
+  if (triangulated_from_ == SIZE_MAX || st.any_outward) return;
+  const auto live = static_cast<std::size_t>(
+      std::count_if(st.corners.begin(), st.corners.end(), [](const Corner& k) { return k.alive; }));
+  if (live < triangulated_from_ || !kt_.build(st)) return kt_.clear();
+  triangulated_ = true;
+  st.relinked = &kt_.relinked();
+}
+
+const std::vector<int>& EventQueue::made_by(int c) const {
+  static const std::vector<int> none;
+  return static_cast<std::size_t>(c) < made_by_.size() ? made_by_[c] : none;
+}
+
+void EventQueue::drop_triangulation(State& st) {
+  triangulated_ = leave_triangulation_ = false;
+  st.relinked = nullptr;
+  kt_.clear();
+  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) {
+    if (!st.corners[c].alive || !may_split(st, c)) continue;
+    refresh_live(st);
+    add_splits(st, c, live_, live_->edge.size(), made_by(c));
+  }
+  made_by_.clear();
+}
+
+void EventQueue::catch_up(State& st) {
+  if (!triangulated_) return;
+  // What the batch did to triangles standing past their collapse first
+  // (collapse_through asks them again), then the region round what it
+  // relinked is triangulated again.
+  if (leave_triangulation_ || st.any_outward || !kt_.collapse_through(st, st.height) || !kt_.update(st))
+    return drop_triangulation(st);
+  for (;;) {
+    // Splits listed now may come below the candidate that was next: flips
+    // up to theirs are due too.
+    auto& facing = kt_.facing();
+    std::sort(facing.begin(), facing.end(), [](const auto& a, const auto& b) { return a.corner < b.corner; });
+    for (std::size_t r = 0; r < facing.size();) {
+      const int c = facing[r].corner;
+      facing_edges_.clear();
+      for (; r < facing.size() && facing[r].corner == c; ++r) facing_edges_.push_back(facing[r].edge);
+      if (st.corners[c].alive) list_splits(st, c, facing_edges_, made_by(c));
+    }
+    facing.clear();
+    for (int c : kt_.tangled()) {
+      if (!st.corners[c].alive || !may_split(st, c)) continue;
+      listed_whole_.resize(std::max(listed_whole_.size(), static_cast<std::size_t>(c) + 1), 0);
+      if (listed_whole_[c]) continue;
+      listed_whole_[c] = 1;
+      refresh_live(st);
+      add_splits(st, c, live_, live_->edge.size(), made_by(c));
+    }
+    kt_.tangled().clear();
+    if (heap_.empty()) return;
+    const double through = heap_.top().z + st.tol().height();
+    if (kt_.next_collapse() > through) return;
+    if (!kt_.collapse_through(st, through)) return drop_triangulation(st);
+    if (kt_.facing().empty()) return;
+  }
 }
 
 void EventQueue::schedule_edge_event(State& st, int c) {
@@ -155,6 +221,15 @@ void EventQueue::list_live(const State& st, int e) {
 }
 
 void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
+  if (triangulated_) {
+    // Its splits are listed once the triangulation has taken it in (catch_up).
+    if (!resolved.empty()) {
+      made_by_.resize(std::max(made_by_.size(), static_cast<std::size_t>(c) + 1));
+      made_by_[c] = resolved;
+    }
+    schedule_edge_event(st, c);
+    return;
+  }
   if (st.any_outward) {
     outward_.resize(std::max(outward_.size(), static_cast<std::size_t>(c) + 1), 0);
     outward_[c] = 1;
@@ -166,6 +241,16 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
 }
 
 void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
+  // New planes met by corners that stay (a profile's or a plan edit's): the
+  // triangulation does not follow planes changing under its corners.
+  if (triangulated_) {
+    leave_triangulation_ = true;  // at the next catch_up(), which lists this corner's splits too
+    return;
+  }
+  list_splits(st, c, edges, resolved);
+}
+
+void EventQueue::list_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
   if (!may_split(st, c)) return;
   // Callers give every corner the same new planes in turn: one copy serves them all.
   auto some = std::make_shared<Targets>();

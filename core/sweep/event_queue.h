@@ -24,6 +24,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/sweep/kinetic_triangulation.h"
 #include "core/sweep/plane_index.h"
 #include "core/sweep/sweep_state.h"
 
@@ -44,11 +45,29 @@ class EventQueue {
   // up: random polygons of 1,024 vertices 1.7x and jittered stars of 4,096
   // 1.5x slower through it).
   static constexpr std::size_t kIndexedFrom = 8192;
+  // Sweeps of at least this many corners take their split candidates from a
+  // kinetic triangulation of the cross-section. None do yet: it does not
+  // follow every plan of 262,144 corners, and at 65,536 it costs what it
+  // saves (BENCHMARKS "Split candidates from a kinetic triangulation").
+  static constexpr std::size_t kTriangulatedFrom = SIZE_MAX;
   // Lists of at least `indexed_from` live edges are worked out through their
-  // PlaneIndex, smaller ones by testing every edge (tests choose either).
-  explicit EventQueue(std::size_t indexed_from = kIndexedFrom) : indexed_from_(indexed_from) {}
+  // PlaneIndex, smaller ones by testing every edge; sweeps of at least
+  // `triangulated_from` corners list only the spans facing a corner across
+  // the triangulation (tests choose either).
+  explicit EventQueue(std::size_t indexed_from = kIndexedFrom, std::size_t triangulated_from = kTriangulatedFrom)
+      : indexed_from_(indexed_from), triangulated_from_(triangulated_from) {}
   // Empties the queue for another sweep, keeping its storage (spares.h).
   void clear();
+  // Before the first corner is scheduled: whether this sweep's splits come
+  // from a kinetic triangulation (every plane leaning in, enough corners,
+  // loops it can triangulate).
+  void start(State& st);
+  bool triangulated() const { return triangulated_; }
+  const KineticTriangulation& triangulation() const { return kt_; }
+  // Before each batch: the triangulation follows what the last one relinked,
+  // flips its spokes up to the next candidate's height, and the spans that
+  // came to face a corner are listed as its splits.
+  void catch_up(State& st);
 
   // Queues every potential event of corner c: meeting its next corner (the
   // span between them shrinks to nothing) and, where c can cut into the loop,
@@ -226,6 +245,11 @@ class EventQueue {
   // splits at one point and height), and every span closes there.
   bool closes_here(State& st, const Candidate& k) const;
   void free_list(int i);
+  // schedule_splits' listing, of the planes of `edges` alone.
+  void list_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved);
+  // Leaves the triangulation: every live corner lists its splits against
+  // every live plane, as a sweep without it does.
+  void drop_triangulation(State& st);
   // State::meeting_slack of entry e's planes, while its corners still meet there.
   double slack(const State& st, const Entry& e) const;
 
@@ -241,7 +265,16 @@ class EventQueue {
   std::vector<char> outward_;                         // corner -> scheduled once a plane leaned out
   std::size_t live_corners_ = 0, rebuilt_at_ = 0;    // corners seen by live_, at its last full pass
   std::size_t held_ = 0, peak_held_ = 0, worked_ = 0;
-  std::size_t indexed_from_;
+  std::size_t indexed_from_, triangulated_from_;
+  KineticTriangulation kt_;
+  bool triangulated_ = false;
+  bool leave_triangulation_ = false;  // planes changed under corners: drop it at the next catch_up()
+  // The edges of the collision that made each corner, while triangulated:
+  // its splits are listed after the batch that made it.
+  std::vector<std::vector<int>> made_by_;
+  const std::vector<int>& made_by(int c) const;
+  std::vector<int> facing_edges_;  // catch_up()'s
+  std::vector<char> listed_whole_;  // corner -> listed against every live plane, the triangulation tangled round it
   PlaneIndex::Scratch index_scratch_;
   std::vector<double> at_;  // scratch of find_splits
   std::vector<std::uint32_t> hits_;

@@ -213,7 +213,11 @@ class State {
   void link(int a, int b) {  // corner a is followed by corner b
     corners[a].next = b;
     corners[b].prev = a;
+    if (relinked) relinked->insert(relinked->end(), {a, b});
   }
+  // Where the event queue's triangulation follows the loops
+  // (kinetic_triangulation.h), every corner link() relinks goes here.
+  std::vector<int>* relinked = nullptr;
 
   // Where a corner is on the sweep plane at height z.
   glm::dvec2 position(int c, double z) const {
