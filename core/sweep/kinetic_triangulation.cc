@@ -217,6 +217,31 @@ void KineticTriangulation::flip(const State& st, int t, int k, double now) {
   settle(st, o, now, 2);
 }
 
+bool KineticTriangulation::add_region(const State& st, const std::vector<std::vector<int>>& loops,
+                                      const std::vector<std::vector<glm::dvec2>>& points, std::size_t outer,
+                                      const std::vector<std::size_t>& holes, std::vector<int>& made) {
+  std::vector<std::vector<glm::dvec2>> region{points[outer]};
+  std::vector<int> corner(loops[outer]);
+  for (std::size_t h : holes) {
+    region.push_back(points[h]);
+    corner.insert(corner.end(), loops[h].begin(), loops[h].end());
+  }
+  std::vector<std::vector<std::uint32_t>> pieces;
+  try {
+    pieces = convex_partition(region);
+  } catch (const std::invalid_argument&) {
+    return false;  // a hole outside its region: the loops cross
+  }
+  const double slack = 4.0 * st.tol().position();
+  for (const auto& piece : pieces)
+    for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
+      const int a = corner[piece[0]], b = corner[piece[k]], c = corner[piece[k + 1]];
+      if (inside_out(st.position(a, now(st)), st.position(b, now(st)), st.position(c, now(st)), slack)) tangle(a, b, c);
+      made.push_back(add_tri(a, b, c));
+    }
+  return true;
+}
+
 bool KineticTriangulation::build(const State& st) {
   tris_.clear();
   free_.clear();
@@ -250,29 +275,11 @@ bool KineticTriangulation::build(const State& st) {
     if ((twice_signed_area(points[i]) > 0.0) == hole) return false;  // material turns left, holes right
     if (hole) holes[static_cast<std::size_t>(nesting.parent[i])].push_back(i);
   }
-  std::vector<std::pair<std::uint64_t, int>> sides;  // (undirected side, triangle * 3 + side)
+  std::vector<int> made;
   for (std::size_t i = 0; i < loops.size(); ++i) {
-    if (nesting.depth[i] % 2 == 1) continue;
-    std::vector<std::vector<glm::dvec2>> region{points[i]};
-    std::vector<int> corner(loops[i]);
-    for (std::size_t h : holes[i]) {
-      region.push_back(points[h]);
-      corner.insert(corner.end(), loops[h].begin(), loops[h].end());
-    }
-    std::vector<std::vector<std::uint32_t>> pieces;
-    try {
-      pieces = convex_partition(region);
-    } catch (const std::invalid_argument&) {
-      return false;
-    }
-    for (const auto& piece : pieces)
-      for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-        const int a = corner[piece[0]], b = corner[piece[k]], c = corner[piece[k + 1]];
-        if (inside_out(st.position(a, now(st)), st.position(b, now(st)), st.position(c, now(st)), 4.0 * st.tol().position()))
-          tangle(a, b, c);
-        add_tri(a, b, c);
-      }
+    if (nesting.depth[i] % 2 == 0 && !add_region(st, loops, points, i, holes[i], made)) return false;
   }
+  std::vector<std::pair<std::uint64_t, int>> sides;  // (undirected side, triangle * 3 + side)
   for (int t = 0; t < static_cast<int>(tris_.size()); ++t)
     for (int i = 0; i < 3; ++i) {
       const int a = tris_[t].v[(i + 1) % 3], b = tris_[t].v[(i + 2) % 3];
@@ -489,26 +496,7 @@ bool KineticTriangulation::fill(const State& st, const std::vector<std::vector<i
       }
       continue;
     }
-
-    std::vector<std::vector<glm::dvec2>> region{points[i]};
-    std::vector<int> corner(cycles[i]);
-    for (std::size_t h : holes[i]) {
-      region.push_back(points[h]);
-      corner.insert(corner.end(), cycles[h].begin(), cycles[h].end());
-    }
-    std::vector<std::vector<std::uint32_t>> pieces;
-    try {
-      pieces = convex_partition(region);
-    } catch (const std::invalid_argument&) {
-      return false;
-    }
-    for (const auto& piece : pieces)
-      for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-        const int a = corner[piece[0]], b = corner[piece[k]], c = corner[piece[k + 1]];
-        if (inside_out(st.position(a, now(st)), st.position(b, now(st)), st.position(c, now(st)), 4.0 * st.tol().position()))
-          tangle(a, b, c);
-        made.push_back(add_tri(a, b, c));
-      }
+    if (!add_region(st, cycles, points, i, holes[i], made)) return false;
   }
   // Join the new triangles to each other, then across the rim.
   std::vector<std::pair<std::uint64_t, int>> own;

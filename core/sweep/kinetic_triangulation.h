@@ -117,6 +117,12 @@ class KineticTriangulation {
   void settle(const State& st, int t, double now, int fresh = -1);
   // Flips the spoke opposite corner k of triangle t, which reaches it at `now`.
   void flip(const State& st, int t, int k, double now);
+  // Triangulates the region inside loops[outer] and outside loops[holes]
+  // (of corners at `points`) into new triangles, appended to `made`; false
+  // where a hole is not inside it.
+  bool add_region(const State& st, const std::vector<std::vector<int>>& loops,
+                  const std::vector<std::vector<glm::dvec2>>& points, std::size_t outer,
+                  const std::vector<std::size_t>& holes, std::vector<int>& made);
   // Triangulates the loops `cycles` (of corners) into new triangles, joined
   // to each other and across `sides`; false where they do not fit.
   bool fill(const State& st, const std::vector<std::vector<int>>& cycles, const std::vector<Side>& sides);
