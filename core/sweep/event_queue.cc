@@ -67,12 +67,18 @@ void EventQueue::drop_triangulation(State& st) {
   triangulated_ = leave_triangulation_ = false;
   st.relinked = nullptr;
   kt_.clear();
-  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) {
-    if (!st.corners[c].alive || !may_split(st, c)) continue;
-    refresh_live(st);
-    add_splits(st, c, live_, live_->edge.size(), made_by(c));
-  }
+  for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) list_every_plane(st, c);
   made_by_.clear();
+  listed_whole_.clear();
+}
+
+void EventQueue::list_every_plane(State& st, int c) {
+  if (!st.corners[c].alive || !may_split(st, c)) return;
+  listed_whole_.resize(std::max(listed_whole_.size(), static_cast<std::size_t>(c) + 1), 0);
+  if (listed_whole_[c]) return;
+  listed_whole_[c] = 1;
+  refresh_live(st);
+  add_splits(st, c, live_, live_->edge.size(), made_by(c));
 }
 
 void EventQueue::catch_up(State& st) {
@@ -94,14 +100,7 @@ void EventQueue::catch_up(State& st) {
       if (st.corners[c].alive) list_splits(st, c, facing_edges_, made_by(c));
     }
     facing.clear();
-    for (int c : kt_.tangled()) {
-      if (!st.corners[c].alive || !may_split(st, c)) continue;
-      listed_whole_.resize(std::max(listed_whole_.size(), static_cast<std::size_t>(c) + 1), 0);
-      if (listed_whole_[c]) continue;
-      listed_whole_[c] = 1;
-      refresh_live(st);
-      add_splits(st, c, live_, live_->edge.size(), made_by(c));
-    }
+    for (int c : kt_.tangled()) list_every_plane(st, c);
     kt_.tangled().clear();
     if (heap_.empty()) return;
     const double through = heap_.top().z + st.tol().height();

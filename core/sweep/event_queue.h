@@ -250,6 +250,9 @@ class EventQueue {
   // Leaves the triangulation: every live corner lists its splits against
   // every live plane, as a sweep without it does.
   void drop_triangulation(State& st);
+  // Lists live corner c's splits against every live plane, once while
+  // triangulated (listed_whole_).
+  void list_every_plane(State& st, int c);
   // State::meeting_slack of entry e's planes, while its corners still meet there.
   double slack(const State& st, const Entry& e) const;
 
@@ -274,7 +277,7 @@ class EventQueue {
   std::vector<std::vector<int>> made_by_;
   const std::vector<int>& made_by(int c) const;
   std::vector<int> facing_edges_;  // catch_up()'s
-  std::vector<char> listed_whole_;  // corner -> listed against every live plane, the triangulation tangled round it
+  std::vector<char> listed_whole_;  // corner -> listed against every live plane (a tangle round it)
   PlaneIndex::Scratch index_scratch_;
   std::vector<double> at_;  // scratch of find_splits
   std::vector<std::uint32_t> hits_;

@@ -219,19 +219,7 @@ struct HolesWork {
   std::size_t corners, largest_batch, peak_held;
 };
 HolesWork sweeping_square_with_holes(int k) {
-  const std::vector<std::vector<glm::dvec2>> loops = holes_plan(k);
-  State st(Tolerances{3.0 * k + 1.0, Tolerances::retry_relative[0]}, {});
-  FaceGroup base;
-  base.kind = FaceKind::Base;
-  st.base_face = 0;
-  st.faces.push_back(base);
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    const int first = static_cast<int>(st.sources.size());
-    for (std::size_t j = 0; j < loops[l].size(); ++j)
-      st.sources.push_back(Source{static_cast<std::int32_t>(st.sources.size())});
-    load_loop(st, loops[l], std::vector<double>(loops[l].size(), 1.0), std::vector<std::string>(loops[l].size()),
-              first, static_cast<int>(l));
-  }
+  State st = loaded_loops(holes_plan(k), Tolerances{3.0 * k + 1.0, Tolerances::retry_relative[0]});
   // Listed through the PlaneIndex, as at scale.
   EventQueue queue(0);
   schedule_all(st, queue);

@@ -7,7 +7,10 @@
 // faces yet, BENCHMARKS "Split candidates from a kinetic triangulation".)
 #include "core/sweep/kinetic_triangulation.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
+#include <tuple>
 #include <random>
 #include <vector>
 
@@ -18,7 +21,9 @@
 #include "core/sweep/event_queue.h"
 #include "core/sweep/intersection_event.h"
 #include "core/sweep/profile_event.h"
+#include "core/sweep/surface_output.h"
 #include "tests/core/sweep_states.h"
+#include "tests/support/roof_properties.h"
 
 namespace procex::engine {
 namespace {
@@ -80,6 +85,37 @@ TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneWithEachEdgeItsOwnSlope) {
 
 // A tooth's two sides are antiparallel: their corners meet along a segment.
 TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneOnAComb) { expect_triangulated_as_listed(comb(200)); }
+
+// Holes: the region between the loops is triangulated as one, and a hole's
+// loop joins the outer one where a corner of either splits the other.
+TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneRoundHoles) {
+  const auto sweep_holes = [](std::size_t triangulated_from) {
+    const int k = 6;
+    Swept out{loaded_loops(holes_plan(k), Tolerances{3.0 * k + 1.0, Tolerances::retry_relative[0]}), 0, false, {}};
+    EventQueue queue(EventQueue::kIndexedFrom, triangulated_from);
+    ProfileEvents profiles;
+    schedule_all(out.st, queue);
+    run_events(out.st, queue, profiles);
+    out.triangulated = queue.triangulated();
+    return out;
+  };
+  const Swept listed = sweep_holes(SIZE_MAX), triangulated = sweep_holes(0);
+  EXPECT_TRUE(triangulated.triangulated) << "the triangulation was left";
+  // At height 0.5 every wall between two holes meets its neighbour in one
+  // instant: the batches list those collisions in another order, so the
+  // vertices come in another order. The same vertices, and a mesh that
+  // validates.
+  const auto sorted = [](std::vector<glm::dvec3> v) {
+    std::sort(v.begin(), v.end(), [](const glm::dvec3& a, const glm::dvec3& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    });
+    return v;
+  };
+  EXPECT_EQ(sorted(triangulated.st.vertices), sorted(listed.st.vertices));
+  Surface roof = build_surface(triangulated.st);
+  close_surface(roof, triangulated.st.plan_position);
+  EXPECT_EQ(testing::check_valid_mesh(roof), std::vector<std::string>{});
+}
 
 // The point: a random plan's corners list a few spans each, where the index
 // of every live plane hands out thousands. Which splits wait in a batch

@@ -34,6 +34,25 @@ inline State loaded(const std::vector<glm::dvec2>& points, const Tolerances& tol
   return st;
 }
 
+// Loops as load_loop takes them (the first material, counter-clockwise; holes
+// clockwise), every edge of slope 1, each edge its own source.
+inline State loaded_loops(const std::vector<std::vector<glm::dvec2>>& loops, const Tolerances& tol) {
+  State st(tol, {});
+  FaceGroup base;
+  base.kind = FaceKind::Base;
+  base.outward = {0.0, 0.0, -1.0};  // as sweep() loads it, so that build_surface() makes a solid
+  st.base_face = 0;
+  st.faces.push_back(base);
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const int first = static_cast<int>(st.sources.size());
+    for (std::size_t j = 0; j < loops[l].size(); ++j)
+      st.sources.push_back(Source{static_cast<std::int32_t>(st.sources.size())});
+    load_loop(st, loops[l], std::vector<double>(loops[l].size(), 1.0), std::vector<std::string>(loops[l].size()),
+              first, static_cast<int>(l));
+  }
+  return st;
+}
+
 // A star of n corners with radii 100 and 90 m alternating, jittered by up to
 // a millimetre so that its events do not all fall at one height: every
 // second corner is reflex and can run into almost every edge.
