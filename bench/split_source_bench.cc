@@ -37,7 +37,11 @@ using namespace procex;
 
 int run(bool triangulated, const char* path) {
   const std::vector<PolyShape> shapes = read_polyjson_file(path);
-  const Footprint footprint = prepare_footprint(to_footprint(shapes.at(0), 45.0)).footprint;
+  if (shapes.empty()) {
+    std::fprintf(stderr, "%s: no shape in the file\n", path);
+    return 1;
+  }
+  const Footprint footprint = prepare_footprint(to_footprint(shapes.front(), 45.0)).footprint;
   if (footprint.loops.size() != 1) {
     std::fprintf(stderr, "%s: %zu loops; this bench takes one\n", path, footprint.loops.size());
     return 1;

@@ -313,11 +313,10 @@ bool KineticTriangulation::update(const State& st) {
   ++work_.updates;
   ++stamp_;
   cavity_tris_.clear();
-  std::vector<int> fan_of;
   for (int c : relinked_) {
-    fan_of.clear();
-    fan(c, fan_of);
-    for (int t : fan_of) take(st, t);
+    relinked_fan_.clear();
+    fan(c, relinked_fan_);
+    for (int t : relinked_fan_) take(st, t);
   }
   const bool done = !cavity_tris_.empty() && retriangulate(st);
   relinked_.clear();
@@ -325,30 +324,32 @@ bool KineticTriangulation::update(const State& st) {
 }
 
 bool KineticTriangulation::rim(const State& st, std::vector<Side>& sides, std::vector<std::vector<int>>& cycles) {
-  sides.clear();
   cycles.clear();
   // The cavity's rim: spokes to triangles that stay, and spans still live.
   // A triangle beyond it with a dead corner (whose fan was not found whole
   // from it) is taken in, and the rim worked out again.
-  bool widened = false;
-  for (std::size_t ti = 0; ti < cavity_tris_.size(); ++ti) {
-    const int t = cavity_tris_[ti];
-    const Tri& x = tris_[t];
-    for (int i = 0; i < 3; ++i) {
-      const int u = x.v[(i + 1) % 3], w = x.v[(i + 2) % 3];
-      if (x.n[i] != kNone) {
-        if (cavity_[x.n[i]] == stamp_) continue;
-        const Tri& o = tris_[x.n[i]];
-        if (!std::all_of(o.v, o.v + 3, [&](int v) { return st.corners[v].alive; })) {
-          take(st, x.n[i]);
-          widened = true;
+  for (bool widened = true; widened;) {
+    widened = false;
+    sides.clear();
+    for (std::size_t ti = 0; ti < cavity_tris_.size(); ++ti) {
+      const Tri& x = tris_[cavity_tris_[ti]];
+      for (int i = 0; i < 3; ++i) {
+        const int u = x.v[(i + 1) % 3], w = x.v[(i + 2) % 3];
+        if (x.n[i] == kNone) {
+          if (st.corners[u].alive && st.corners[w].alive && st.corners[u].next == w) sides.push_back({u, w, kNone, -1});
           continue;
         }
-        sides.push_back({u, w, x.n[i], side_of(x.n[i], w, u)});
-      } else if (st.corners[u].alive && st.corners[w].alive && st.corners[u].next == w) {
-        sides.push_back({u, w, kNone, -1});
+        if (cavity_[x.n[i]] == stamp_) continue;
+        const Tri& o = tris_[x.n[i]];
+        if (std::all_of(o.v, o.v + 3, [&](int v) { return st.corners[v].alive; })) {
+          sides.push_back({u, w, x.n[i], side_of(x.n[i], w, u)});
+        } else {
+          take(st, x.n[i]);
+          widened = true;
+        }
       }
     }
+    if (widened) ++work_.widenings;
   }
   // The spans the sweep made: round every relinked corner, and every corner new to the triangulation.
   std::vector<std::uint64_t> spans;
@@ -370,10 +371,6 @@ bool KineticTriangulation::rim(const State& st, std::vector<Side>& sides, std::v
   // The rim's sides into cycles: at a corner several leave (the region
   // touches itself there), the one turning furthest right from where the
   // walk came in keeps the region on the left.
-  if (widened) {
-    ++work_.widenings;
-    return rim(st, sides, cycles);
-  }
   std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.from < b.from; });
   std::vector<char> used(sides.size(), 0);
   const auto leaving = [&](int v) {

@@ -159,6 +159,7 @@ class KineticTriangulation {
   std::vector<std::uint32_t> cavity_;
   std::uint32_t stamp_ = 0;
   std::vector<int> cavity_tris_, fan_;
+  std::vector<int> relinked_fan_;  // update()'s (take() fills fan_ as it goes)
   Work work_;
   // The height the triangulation stands at: its flips run ahead of the
   // sweep's batches (to the next candidate's height), and what it makes
