@@ -5,6 +5,8 @@
 # Builds build-fuzz/ with clang + ASan/UBSan + libFuzzer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache keys on paths relative to the checkout, so clones in other folders share the cache.
+export CCACHE_BASEDIR="$PWD"
 seconds=${1:-12}
 shift || true
 targets=("$@")
