@@ -77,10 +77,10 @@ int run(bool triangulated, const char* path) {
     valid = std::string("INVALID: ") + e.what();
   }
   std::printf("%s n=%zu cpu=%.3f s worked=%zu kept=%s flips=%zu updates=%zu cavity=%zu widenings=%zu tangled=%zu "
-              "repairs=%zu rebuilds=%zu vertices=%zu %s peak=%.0f MB\n",
+              "walked=%zu repairs=%zu rebuilds=%zu vertices=%zu %s peak=%.0f MB\n",
               triangulated ? "triangulated" : "listed", points.size(), cpu, queue.worked(),
               queue.triangulated() ? "yes" : "no", w.flips, w.updates, w.cavity_triangles, w.widenings, w.tangled,
-              w.repairs, w.rebuilds, surface.vertices.size(), valid.c_str(), bench::peak_rss_mb());
+              w.walked, w.repairs, w.rebuilds, surface.vertices.size(), valid.c_str(), bench::peak_rss_mb());
   return valid == "valid" ? 0 : 2;
 }
 

@@ -12,17 +12,6 @@
 #include "core/sweep/meeting_heights.h"
 
 namespace procex::engine {
-namespace {
-
-// Only a reflex corner cuts into its own loop; where planes lean out, any
-// corner can also meet another polygon growing towards it.
-bool may_split(const State& st, int c) {
-  const Corner& k = st.corners[c];
-  return st.any_outward || k.motion != Motion::Regular || st.reflex(c);
-}
-
-}  // namespace
-
 bool EventQueue::EntryLater::operator()(const Entry& a, const Entry& b) const {
   if (a.z != b.z) return a.z > b.z;
   if (a.corner != b.corner) return a.corner > b.corner;
@@ -44,7 +33,7 @@ void EventQueue::clear() {
   live_corners_ = rebuilt_at_ = 0;
   held_ = peak_held_ = worked_ = 0;
   kt_.clear();
-  triangulated_ = leave_triangulation_ = false;
+  triangulated_ = leave_triangulation_ = lists_twice_ = false;
   made_by_.clear();
   listed_whole_.clear();
 }
@@ -54,7 +43,7 @@ void EventQueue::start(State& st) {
   const auto live = static_cast<std::size_t>(
       std::count_if(st.corners.begin(), st.corners.end(), [](const Corner& k) { return k.alive; }));
   if (live < triangulated_from_ || !kt_.build(st)) return kt_.clear();
-  triangulated_ = true;
+  triangulated_ = lists_twice_ = true;
   st.relinked = &kt_.relinked();
 }
 
@@ -72,10 +61,13 @@ void EventQueue::drop_triangulation(State& st) {
   listed_whole_.clear();
 }
 
+bool EventQueue::listed_whole(int c) const {
+  return static_cast<std::size_t>(c) < listed_whole_.size() && listed_whole_[c];
+}
+
 void EventQueue::list_every_plane(State& st, int c) {
-  if (!st.corners[c].alive || !may_split(st, c)) return;
+  if (!st.corners[c].alive || !st.may_split(c) || listed_whole(c)) return;
   listed_whole_.resize(std::max(listed_whole_.size(), static_cast<std::size_t>(c) + 1), 0);
-  if (listed_whole_[c]) return;
   listed_whole_[c] = 1;
   refresh_live(st);
   add_splits(st, c, live_, live_->edge.size(), made_by(c));
@@ -91,23 +83,27 @@ void EventQueue::catch_up(State& st) {
   for (;;) {
     // Splits listed now may come below the candidate that was next: flips
     // up to theirs are due too.
-    auto& facing = kt_.facing();
-    std::sort(facing.begin(), facing.end(), [](const auto& a, const auto& b) { return a.corner < b.corner; });
-    for (std::size_t r = 0; r < facing.size();) {
-      const int c = facing[r].corner;
-      facing_edges_.clear();
-      for (; r < facing.size() && facing[r].corner == c; ++r) facing_edges_.push_back(facing[r].edge);
-      if (st.corners[c].alive) list_splits(st, c, facing_edges_, made_by(c));
-    }
-    facing.clear();
-    for (int c : kt_.tangled()) list_every_plane(st, c);
-    kt_.tangled().clear();
+    list_facing(st);
     if (heap_.empty()) return;
     const double through = heap_.top().z + st.tol().height();
     if (kt_.next_collapse() > through) return;
     if (!kt_.collapse_through(st, through)) return drop_triangulation(st);
     if (kt_.facing().empty()) return;
   }
+}
+
+void EventQueue::list_facing(State& st) {
+  auto& facing = kt_.facing();
+  std::sort(facing.begin(), facing.end(), [](const auto& a, const auto& b) { return a.corner < b.corner; });
+  for (std::size_t r = 0; r < facing.size();) {
+    const int c = facing[r].corner;
+    facing_edges_.clear();
+    for (; r < facing.size() && facing[r].corner == c; ++r) facing_edges_.push_back(facing[r].edge);
+    if (st.corners[c].alive && !listed_whole(c)) list_splits(st, c, facing_edges_, made_by(c));
+  }
+  facing.clear();
+  for (int c : kt_.tangled()) list_every_plane(st, c);
+  kt_.tangled().clear();
 }
 
 void EventQueue::schedule_edge_event(State& st, int c) {
@@ -234,7 +230,7 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
     outward_[c] = 1;
   }
   schedule_edge_event(st, c);
-  if (!may_split(st, c)) return;
+  if (!st.may_split(c)) return;
   refresh_live(st);
   add_splits(st, c, live_, live_->edge.size(), resolved);
 }
@@ -250,7 +246,7 @@ void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges
 }
 
 void EventQueue::list_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
-  if (!may_split(st, c)) return;
+  if (!st.may_split(c)) return;
   // Callers give every corner the same new planes in turn: one copy serves them all.
   auto some = std::make_shared<Targets>();
   list_planes(st, edges, *some);
@@ -548,19 +544,8 @@ double EventQueue::slack(const State& st, const Entry& e) const {
   return st.meeting_slack(k.prev_edge, k.next_edge, st.corners[e.next].next_edge, ends);
 }
 
-const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
+void EventQueue::pop_through(State& st, double through) {
   std::vector<Candidate>& out = cluster_;
-  out.clear();
-  heads_.clear();
-  shared_heads_.clear();
-  ++batch_;
-  closing_.resize(st.corners.size());
-  // The lowest event and those within its own uncertainty above it, where
-  // that passes delta2: the edge events of a finely drawn circle lie apart by
-  // what rounding makes of their planes' conditioning, not by the geometry.
-  const double through = heap_.top().z + std::max(st.tol().height(), slack(st, heap_.top()));
-  // The edge events first, and each list's first split: which spans close in
-  // the batch is known before any split is dropped for one (closes_here).
   while (!heap_.empty() && heap_.top().z <= through) {
     const Entry e = heap_.top();
     heap_.pop();
@@ -589,6 +574,46 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
     if (st.corners[e.corner].next == e.next && st.corners[e.next].alive && closing.batch != batch_)
       closing = {batch_, p};
   }
+}
+
+bool EventQueue::widen(State& st, std::size_t& widened, double rise) {
+  places_.clear();
+  for (; widened < cluster_.size(); ++widened) {
+    const Candidate& k = cluster_[widened];
+    places_.push_back({k.p, k.z, k.corner, k.next, k.next == kNone ? k.edge : kNone});
+  }
+  for (; widened_shared_ < shared_heads_.size(); ++widened_shared_) {
+    const auto& [c, s] = shared_heads_[widened_shared_];
+    places_.push_back({st.position(c, s.at), s.at, c, kNone, kNone});
+  }
+  const double reach = std::max(st.tol().position(), st.tol().most_meeting_slack());
+  if (places_.empty() || !kt_.hand_around(st, places_, reach, rise)) return false;
+  list_facing(st);
+  return true;
+}
+
+const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
+  std::vector<Candidate>& out = cluster_;
+  out.clear();
+  heads_.clear();
+  shared_heads_.clear();
+  ++batch_;
+  closing_.resize(st.corners.size());
+  // The lowest event and those within its own uncertainty above it, where
+  // that passes delta2: the edge events of a finely drawn circle lie apart by
+  // what rounding makes of their planes' conditioning, not by the geometry.
+  const double lowest = heap_.top().z;
+  const double through = lowest + std::max(st.tol().height(), slack(st, heap_.top()));
+  // The edge events first, and each list's first split: which spans close in
+  // the batch is known before any split is dropped for one (closes_here).
+  // Triangulated, the pairs that may meet near them are listed too, and
+  // those of their splits in the batch are taken in with them.
+  std::size_t widened = 0;
+  widened_shared_ = 0;
+  for (bool more = true; more;) {
+    pop_through(st, through);
+    more = triangulated_ && widen(st, widened, through - lowest);
+  }
   if (heads_.empty()) return out;
   // Then the rest of each list in the batch, and the candidates in the
   // queue's order again (by height, corner, edge).
@@ -616,7 +641,24 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   };
   std::sort(middle, out.end(), earlier);
   std::inplace_merge(out.begin(), middle, out.end(), earlier);
+  if (lists_twice_) drop_repeated_splits();
   return out;
+}
+
+void EventQueue::drop_repeated_splits() {
+  std::vector<Candidate>& out = cluster_;
+  repeated_.clear();
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (out[i].next == kNone) repeated_.push_back({out[i].corner, out[i].edge, i});
+  std::sort(repeated_.begin(), repeated_.end());
+  bool any = false;
+  for (std::size_t r = 1; r < repeated_.size(); ++r)
+    if (std::get<0>(repeated_[r]) == std::get<0>(repeated_[r - 1]) &&
+        std::get<1>(repeated_[r]) == std::get<1>(repeated_[r - 1])) {
+      out[std::get<2>(repeated_[r])].corner = kNone;
+      any = true;
+    }
+  if (any) out.erase(std::remove_if(out.begin(), out.end(), [](const Candidate& k) { return k.corner == kNone; }), out.end());
 }
 
 }  // namespace procex::engine

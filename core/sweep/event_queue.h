@@ -247,12 +247,28 @@ class EventQueue {
   void free_list(int i);
   // schedule_splits' listing, of the planes of `edges` alone.
   void list_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved);
+  // Lists the splits of the pairs the triangulation handed out (facing, and
+  // the tangled corners' against every plane).
+  void list_facing(State& st);
+  // pop_cluster's: takes every candidate queued at or below `through` into
+  // the batch (cluster_, heads_, shared_heads_).
+  void pop_through(State& st, double through);
+  // Triangulated, lists the pairs that may meet near the batch's candidates
+  // from `widened` on (KineticTriangulation::hand_around), which may move
+  // `rise` within it; false where there were none.
+  bool widen(State& st, std::size_t& widened, double rise);
   // Leaves the triangulation: every live corner lists its splits against
   // every live plane, as a sweep without it does.
   void drop_triangulation(State& st);
   // Lists live corner c's splits against every live plane, once while
   // triangulated (listed_whole_).
   void list_every_plane(State& st, int c);
+  bool listed_whole(int c) const;
+  // A corner listed against every plane after some of its facing pairs were
+  // (tangled, crowded, or the triangulation left) has those splits twice: a
+  // batch keeps the first of each (corner, edge), since it does not take a
+  // collision twice well (pop_cluster, while lists_twice_).
+  void drop_repeated_splits();
   // State::meeting_slack of entry e's planes, while its corners still meet there.
   double slack(const State& st, const Entry& e) const;
 
@@ -272,6 +288,7 @@ class EventQueue {
   KineticTriangulation kt_;
   bool triangulated_ = false;
   bool leave_triangulation_ = false;  // planes changed under corners: drop it at the next catch_up()
+  bool lists_twice_ = false;          // this sweep was triangulated: a pair may be listed twice
   // The edges of the collision that made each corner, while triangulated:
   // its splits are listed after the batch that made it.
   std::vector<std::vector<int>> made_by_;
@@ -312,6 +329,9 @@ class EventQueue {
   // pop_cluster's: the heads that are splits with a shared plane (SIZE_MAX in
   // heads_), by corner.
   std::vector<std::pair<int, Split>> shared_heads_;
+  std::vector<KineticTriangulation::Place> places_;  // widen()'s
+  std::size_t widened_shared_ = 0;                   // shared_heads_ widened from
+  std::vector<std::tuple<int, int, std::size_t>> repeated_;  // drop_repeated_splits': (corner, edge, place)
 };
 
 }  // namespace procex::engine

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "core/geom/convex_partition.h"
 #include "core/geom/cross.h"
 #include "core/geom/nesting.h"
+#include "core/geom/segment_distance.h"
 
 namespace procex::engine {
 namespace {
@@ -23,6 +25,9 @@ constexpr std::size_t kMostRebuilds = 64;
 constexpr int kMostWidenings = 64;
 // Cycles of the rim longer than this are not searched for crossing spans.
 constexpr std::size_t kMostSearched = 256;
+// Triangles walked round a batch's neighbourhood of k places before its
+// corners list every live plane instead: this and 16 per place.
+constexpr std::size_t kMostWalked = 512;
 
 // A triangle's corners may meet at a point (a regular polygon's centre, a
 // split's two new corners), and a cluster moves the corners it makes to its
@@ -122,20 +127,22 @@ void KineticTriangulation::fan(int c, std::vector<int>& out) const {
   }
 }
 
+bool KineticTriangulation::hand(const State& st, int c, int e) {
+  if (static_cast<std::size_t>(c) >= handed_.size()) handed_.resize(st.corners.size());
+  std::vector<int>& h = handed_[c];
+  if (std::find(h.begin(), h.end(), e) != h.end()) return false;
+  h.push_back(e);
+  facing_.push_back({c, e});
+  return true;
+}
+
 void KineticTriangulation::settle(const State& st, int t, double now, int fresh) {
   Tri& x = tris_[t];
   x.version = ++version_;
   for (int v : x.v)
     if (!st.corners[v].alive) return;
-  for (int i = 0; i < 3; ++i) {
-    if (x.n[i] != kNone) continue;
-    const int c = x.v[i], e = st.corners[x.v[(i + 1) % 3]].next_edge;
-    if (static_cast<std::size_t>(c) >= handed_.size()) handed_.resize(st.corners.size());
-    std::vector<int>& h = handed_[c];
-    if (std::find(h.begin(), h.end(), e) != h.end()) continue;
-    h.push_back(e);
-    facing_.push_back({c, e});
-  }
+  for (int i = 0; i < 3; ++i)
+    if (x.n[i] == kNone) hand(st, x.v[i], st.corners[x.v[(i + 1) % 3]].next_edge);
   // Twice the signed area, C + B s + A s^2, s above `now`.
   glm::dvec2 q[3], w[3];
   for (int i = 0; i < 3; ++i) {
@@ -535,6 +542,191 @@ bool KineticTriangulation::fill(const State& st, const std::vector<std::vector<i
     }
   for (int t : made) settle(st, t, now(st));
   return true;
+}
+
+double KineticTriangulation::Box::distance(glm::dvec2 p) const {
+  return glm::length(p - glm::clamp(p, lo, hi));
+}
+
+double KineticTriangulation::Box::distance(glm::dvec2 a, glm::dvec2 b) const {
+  // Zero where the segment enters the box (clipped to its slabs, Liang and
+  // Barsky); else the nearest of its ends to the box or the box's corners to it.
+  double t0 = 0.0, t1 = 1.0;
+  const glm::dvec2 d = b - a;
+  bool crosses = true;
+  for (int axis = 0; axis < 2 && crosses; ++axis) {
+    if (d[axis] == 0.0) {
+      crosses = a[axis] >= lo[axis] && a[axis] <= hi[axis];
+      continue;
+    }
+    double u = (lo[axis] - a[axis]) / d[axis], v = (hi[axis] - a[axis]) / d[axis];
+    if (u > v) std::swap(u, v);
+    t0 = std::max(t0, u);
+    t1 = std::min(t1, v);
+    crosses = t0 <= t1;
+  }
+  if (crosses) return 0.0;
+  return std::min({distance(a), distance(b), distance_to_segment(lo, a, b), distance_to_segment(hi, a, b),
+                   distance_to_segment({lo.x, hi.y}, a, b), distance_to_segment({hi.x, lo.y}, a, b)});
+}
+
+bool KineticTriangulation::hand_around(const State& st, const std::vector<Place>& places, double reach,
+                                       double rise) {
+  // Places within reach of each other are one neighbourhood (chained, as the
+  // sweep clusters its collisions), found through a grid whose cells are
+  // within reach across: a cell's places are one, and two cells next to each
+  // other are joined by the first pair of their places within reach.
+  const int count = static_cast<int>(places.size());
+  hood_.resize(places.size());
+  std::iota(hood_.begin(), hood_.end(), 0);
+  const auto root = [&](int i) {
+    while (hood_[i] != i) i = hood_[i] = hood_[hood_[i]];
+    return i;
+  };
+  const double side = reach / std::numbers::sqrt2;
+  cells_.clear();
+  for (int i = 0; i < count; ++i)
+    cells_.push_back({{static_cast<std::int64_t>(std::floor(places[i].p.x / side)),
+                       static_cast<std::int64_t>(std::floor(places[i].p.y / side))},
+                      i});
+  std::sort(cells_.begin(), cells_.end());
+  const auto run_end = [&](auto from) {
+    return std::find_if(from, cells_.end(), [&](const auto& e) { return e.first != from->first; });
+  };
+  for (auto a = cells_.begin(); a != cells_.end();) {
+    const auto a_end = run_end(a);
+    for (auto i = a + 1; i != a_end; ++i) hood_[root(i->second)] = root(a->second);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const std::pair key{a->first.first + dx, a->first.second + dy};
+        if (key <= a->first) continue;  // each pair of cells once
+        const auto b = std::lower_bound(cells_.begin(), cells_.end(), std::pair{key, 0});
+        if (b == cells_.end() || b->first != key || root(b->second) == root(a->second)) continue;
+        const auto b_end = run_end(b);
+        bool joined = false;
+        for (auto i = a; i != a_end && !joined; ++i)
+          for (auto j = b; j != b_end && !joined; ++j)
+            if (glm::length(places[i->second].p - places[j->second].p) <= reach) {
+              hood_[root(j->second)] = root(i->second);
+              joined = true;
+            }
+      }
+    a = a_end;
+  }
+  near_corners_.clear();
+  near_edges_.clear();
+  // Each neighbourhood's box and lowest height; its events' corners and edges.
+  boxes_.assign(places.size(), {});
+  for (int i = 0; i < count; ++i) {
+    const Place& q = places[i];
+    Box& box = boxes_[root(i)];
+    box.lo = glm::min(box.lo, q.p);
+    box.hi = glm::max(box.hi, q.p);
+    box.z = std::min(box.z, q.z);
+    const int hood = root(i);
+    const Corner& k = st.corners[q.corner];
+    near_corners_.push_back({hood, q.corner});
+    near_edges_.insert(near_edges_.end(), {{hood, k.prev_edge}, {hood, k.next_edge}});
+    if (q.other != kNone) {
+      near_corners_.push_back({hood, q.other});
+      near_edges_.push_back({hood, st.corners[q.other].next_edge});
+    }
+    if (q.edge != kNone) near_edges_.push_back({hood, q.edge});
+  }
+  // How far from a box a corner may be now and still reach it within the batch.
+  const auto allowance = [&](int c) { return reach + rise * glm::length(st.corners[c].velocity); };
+  // Out from the triangles round each neighbourhood's corners, across every
+  // spoke near its box.
+  walked_.resize(tris_.size(), 0);
+  crowded_.assign(places.size(), 0);
+  hood_order_.clear();
+  for (int i = 0; i < count; ++i) hood_order_.push_back({root(i), i});
+  std::sort(hood_order_.begin(), hood_order_.end());
+  for (std::size_t r = 0; r < hood_order_.size();) {
+    const int hood = hood_order_[r].first;
+    const Box& box = boxes_[hood];
+    // A place alone needs no walk: a corner reaching it through triangles it
+    // does not face flips its way there before the batch (collapse_through),
+    // and the walk out of a corner of many triangles (a comb's bar cut into
+    // a fan) would cost them all at each of its events.
+    if (r + 1 == hood_order_.size() || hood_order_[r + 1].first != hood) {
+      ++r;
+      continue;
+    }
+    ++walk_;
+    walk_tris_.clear();
+    const std::size_t first = r;
+    for (; r < hood_order_.size() && hood_order_[r].first == hood; ++r) {
+      const std::size_t from = walk_tris_.size();
+      fan(places[hood_order_[r].second].corner, walk_tris_);
+      // Fans of a hood's corners overlap: each triangle is walked once.
+      std::size_t kept = from;
+      for (std::size_t w = from; w < walk_tris_.size(); ++w)
+        if (walked_[walk_tris_[w]] != walk_) walked_[walk_tris_[w]] = walk_, walk_tris_[kept++] = walk_tris_[w];
+      walk_tris_.resize(kept);
+    }
+    // Where the triangles near the box are many (a comb's bar and teeth
+    // collapsing onto one line at once: every spoke runs by every tooth),
+    // its corners list every live plane instead.
+    const std::size_t most = kMostWalked + 16 * (r - first);
+    for (std::size_t w = 0; w < walk_tris_.size(); ++w) {
+      if (w == most) {
+        crowded_[hood] = 1;
+        break;
+      }
+      ++work_.walked;
+      const Tri& x = tris_[walk_tris_[w]];
+      glm::dvec2 at[3];
+      for (int j = 0; j < 3; ++j) {
+        at[j] = st.position(x.v[j], box.z);
+        if (box.distance(at[j]) <= allowance(x.v[j])) near_corners_.push_back({hood, x.v[j]});
+      }
+      for (int j = 0; j < 3; ++j) {
+        const int a = x.v[(j + 1) % 3], b = x.v[(j + 2) % 3];
+        if (box.distance(at[(j + 1) % 3], at[(j + 2) % 3]) > std::max(allowance(a), allowance(b))) continue;
+        if (x.n[j] == kNone) {
+          near_edges_.push_back({hood, st.corners[a].next_edge});
+        } else if (walked_[x.n[j]] != walk_) {
+          walked_[x.n[j]] = walk_;
+          walk_tris_.push_back(x.n[j]);
+        }
+      }
+    }
+  }
+  // Each neighbourhood's corners and edges, once each.
+  for (auto* found : {&near_corners_, &near_edges_}) {
+    std::sort(found->begin(), found->end());
+    found->erase(std::unique(found->begin(), found->end()), found->end());
+  }
+  edge_mark_.resize(st.edges.size(), 0);
+  const std::size_t was = facing_.size();
+  auto edges = near_edges_.begin();
+  for (auto corners = near_corners_.begin(); corners != near_corners_.end();) {
+    const int hood = corners->first;
+    while (edges != near_edges_.end() && edges->first < hood) ++edges;
+    const auto edges_end = std::find_if(edges, near_edges_.end(), [&](const auto& e) { return e.first != hood; });
+    for (; corners != near_corners_.end() && corners->first == hood; ++corners) {
+      const int c = corners->second;
+      const Corner& k = st.corners[c];
+      if (!k.alive || !st.may_split(c)) continue;
+      if (crowded_[hood]) {
+        tangled_.push_back(c);
+        continue;
+      }
+      if (static_cast<std::size_t>(c) >= handed_.size()) handed_.resize(st.corners.size());
+      std::vector<int>& h = handed_[c];
+      ++mark_;
+      for (int e : h) edge_mark_[e] = mark_;
+      for (auto e = edges; e != edges_end; ++e) {
+        if (edge_mark_[e->second] == mark_ || e->second == k.prev_edge || e->second == k.next_edge) continue;
+        edge_mark_[e->second] = mark_;
+        h.push_back(e->second);
+        facing_.push_back({c, e->second});
+      }
+    }
+    edges = edges_end;
+  }
+  return facing_.size() > was || !tangled_.empty();
 }
 
 bool KineticTriangulation::collapse_through(const State& st, double z) {

@@ -225,6 +225,12 @@ class State {
     return k.base + (z - k.base_z) * k.velocity;
   }
   bool reflex(int c) const;
+  // Whether corner c may run into an edge: only a reflex corner cuts into
+  // its own loop; where planes lean out, any corner can also meet another
+  // polygon growing towards it.
+  bool may_split(int c) const {
+    return any_outward || corners[c].motion != Motion::Regular || reflex(c);
+  }
   // How fast the span from corner c to the next lengthens per unit of height:
   // it closes only where this is negative. Corners keep their velocities, so
   // it holds for the pair as long as it lives.

@@ -3,8 +3,6 @@
 // it across its triangles, not every live plane. The roofs must be those of
 // the lists of every plane, to the bit where the batches hold the same
 // events, and the triangulation must tile the loops after every batch.
-// (Jittered stars are not here: their centre's instant needs splits no span
-// faces yet, BENCHMARKS "Split candidates from a kinetic triangulation".)
 #include "core/sweep/kinetic_triangulation.h"
 
 #include <algorithm>
@@ -85,6 +83,40 @@ TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneWithEachEdgeItsOwnSlope) {
 
 // A tooth's two sides are antiparallel: their corners meet along a segment.
 TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneOnAComb) { expect_triangulated_as_listed(comb(200)); }
+
+// A jittered star's centre: hundreds of corners meet within an instant, and
+// splits that wait there (on a plane, off its spans) decide how its groups
+// rewire the spans; they are handed out round each batch's neighbourhood.
+// At this one clustering scale the listing does not close every star (sweep()
+// tries other scales); wherever it does, the triangulation must too. (Up to
+// 2,400 corners: at 3,500 and 4,000 it does not yet, kinetic_triangulation.h.)
+std::string star_roof_problem(int n, std::size_t triangulated_from) {
+  State st = loaded_loops({star(n)}, kStarTolerances);
+  EventQueue queue(EventQueue::kIndexedFrom, triangulated_from);
+  ProfileEvents profiles;
+  try {
+    schedule_all(st, queue);
+    run_events(st, queue, profiles);
+    if (queue.triangulated() != (triangulated_from == 0)) return "the triangulation was left";
+    Surface roof = build_surface(st);
+    close_surface(roof, st.plan_position);
+    const std::vector<std::string> problems = testing::check_valid_mesh(roof);
+    return problems.empty() ? "" : problems.front();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+TEST(KineticTriangulation, JitteredStarsCloseWhereTheListingDoes) {
+  int compared = 0;
+  for (int n = 400; n <= 2400; n += 200) {
+    SCOPED_TRACE(n);
+    if (!star_roof_problem(n, SIZE_MAX).empty()) continue;
+    ++compared;
+    EXPECT_EQ(star_roof_problem(n, 0), "");
+  }
+  EXPECT_GE(compared, 6);
+}
 
 // Holes: the region between the loops is triangulated as one, and a hole's
 // loop joins the outer one where a corner of either splits the other.
