@@ -35,6 +35,8 @@ void EventQueue::clear() {
   kt_.clear();
   triangulated_ = leave_triangulation_ = lists_twice_ = false;
   made_by_.clear();
+  made_at_.clear();
+  fresh_.clear();
   listed_whole_.clear();
 }
 
@@ -45,6 +47,10 @@ void EventQueue::start(State& st) {
   if (live < triangulated_from_ || !kt_.build(st)) return kt_.clear();
   triangulated_ = lists_twice_ = true;
   st.relinked = &kt_.relinked();
+}
+
+double EventQueue::listed_from(const State& st, int c) const {
+  return static_cast<std::size_t>(c) < made_at_.size() && !std::isnan(made_at_[c]) ? made_at_[c] : st.height;
 }
 
 const std::vector<int>& EventQueue::made_by(int c) const {
@@ -58,6 +64,8 @@ void EventQueue::drop_triangulation(State& st) {
   kt_.clear();
   for (int c = 0; c < static_cast<int>(st.corners.size()); ++c) list_every_plane(st, c);
   made_by_.clear();
+  made_at_.clear();
+  fresh_.clear();
   listed_whole_.clear();
 }
 
@@ -70,7 +78,7 @@ void EventQueue::list_every_plane(State& st, int c) {
   listed_whole_.resize(std::max(listed_whole_.size(), static_cast<std::size_t>(c) + 1), 0);
   listed_whole_[c] = 1;
   refresh_live(st);
-  add_splits(st, c, live_, live_->edge.size(), made_by(c));
+  add_splits(st, c, live_, live_->edge.size(), made_by(c), listed_from(st, c));
 }
 
 void EventQueue::catch_up(State& st) {
@@ -80,10 +88,18 @@ void EventQueue::catch_up(State& st) {
   // relinked is triangulated again.
   if (leave_triangulation_ || st.any_outward || !kt_.collapse_through(st, st.height) || !kt_.update(st))
     return drop_triangulation(st);
+  // The corners the batch made were not there when it was popped: the
+  // splits that may wait round them are handed out as round its events.
+  places_.clear();
+  for (int c : fresh_)
+    if (st.corners[c].alive) places_.push_back({st.position(c, made_at_[c]), made_at_[c], c, kNone, kNone});
+  if (!places_.empty()) kt_.hand_around(st, places_, reach(st), st.tol().height());
   for (;;) {
     // Splits listed now may come below the candidate that was next: flips
     // up to theirs are due too.
     list_facing(st);
+    for (int c : fresh_) made_at_[c] = NAN;
+    fresh_.clear();
     if (heap_.empty()) return;
     const double through = heap_.top().z + st.tol().height();
     if (kt_.next_collapse() > through) return;
@@ -222,6 +238,9 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
       made_by_.resize(std::max(made_by_.size(), static_cast<std::size_t>(c) + 1));
       made_by_[c] = resolved;
     }
+    made_at_.resize(std::max(made_at_.size(), static_cast<std::size_t>(c) + 1), NAN);
+    made_at_[c] = st.height;
+    fresh_.push_back(c);
     schedule_edge_event(st, c);
     return;
   }
@@ -232,7 +251,7 @@ void EventQueue::schedule(State& st, int c, const std::vector<int>& resolved) {
   schedule_edge_event(st, c);
   if (!st.may_split(c)) return;
   refresh_live(st);
-  add_splits(st, c, live_, live_->edge.size(), resolved);
+  add_splits(st, c, live_, live_->edge.size(), resolved, st.height);
 }
 
 void EventQueue::schedule_splits(State& st, int c, const std::vector<int>& edges, const std::vector<int>& resolved) {
@@ -251,7 +270,7 @@ void EventQueue::list_splits(State& st, int c, const std::vector<int>& edges, co
   auto some = std::make_shared<Targets>();
   list_planes(st, edges, *some);
   if (!some_ || !some_->same_as(*some)) some_ = std::move(some);
-  add_splits(st, c, some_, some_->edge.size(), resolved);
+  add_splits(st, c, some_, some_->edge.size(), resolved, listed_from(st, c));
 }
 
 inline void EventQueue::offer(const SplitList& list, const Split& s, double through) {
@@ -319,7 +338,7 @@ std::size_t EventQueue::find_splits(const SplitList& list, double through) {
 }
 
 void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Targets> targets, std::size_t size,
-                            const std::vector<int>& resolved) {
+                            const std::vector<int>& resolved, double from) {
   if (size == 0) return;
   const Corner& k = st.corners[c];
   int i;
@@ -334,9 +353,9 @@ void EventQueue::add_splits(const State& st, int c, std::shared_ptr<const Target
   list.targets = std::move(targets);
   list.size = size;
   // Nothing above the cap is ever resolved.
-  list.path = st.corner_path(st.position(c, st.height), k.velocity, st.height, st.height - st.tol().height(),
+  list.path = st.corner_path(st.position(c, from), k.velocity, from, from - st.tol().height(),
                              st.options().max_height.value_or(HUGE_VAL));
-  list.near = st.height + st.tol().height();
+  list.near = from + st.tol().height();
   list.prev_edge = k.prev_edge;
   list.next_edge = k.next_edge;
   list.resolved = resolved;
@@ -576,6 +595,10 @@ void EventQueue::pop_through(State& st, double through) {
   }
 }
 
+double EventQueue::reach(const State& st) {
+  return std::max(st.tol().position(), st.tol().most_meeting_slack());
+}
+
 bool EventQueue::widen(State& st, std::size_t& widened, double rise) {
   places_.clear();
   for (; widened < cluster_.size(); ++widened) {
@@ -586,8 +609,7 @@ bool EventQueue::widen(State& st, std::size_t& widened, double rise) {
     const auto& [c, s] = shared_heads_[widened_shared_];
     places_.push_back({st.position(c, s.at), s.at, c, kNone, kNone});
   }
-  const double reach = std::max(st.tol().position(), st.tol().most_meeting_slack());
-  if (places_.empty() || !kt_.hand_around(st, places_, reach, rise)) return false;
+  if (places_.empty() || !kt_.hand_around(st, places_, reach(st), rise)) return false;
   list_facing(st);
   return true;
 }

@@ -29,12 +29,14 @@
 //
 // A batch's splits that wait (on an edge's plane, on no span of it yet)
 // decide how the groups of one instant rewire the spans, and a corner faces
-// few of those edges: round every neighbourhood of a batch's events the
-// corners and spans near it are paired too (hand_around). Not enough yet, so
-// no sweep uses it (EventQueue::kTriangulatedFrom): jittered stars of 3,500
-// and 4,000 corners (tests' star()) and the scale plans' star of 16,384 still
-// do not close where the listing's do (BENCHMARKS "Split candidates from a
-// kinetic triangulation").
+// few of those edges: round every neighbourhood of a batch's events, and of
+// the corners it made, the corners and spans near it are paired too
+// (hand_around). Not enough yet, so no sweep uses it
+// (EventQueue::kTriangulatedFrom): the tests' jittered star of 3,600 corners
+// still does not close where the listing's does, and where a neighbourhood
+// is crowded its corners list every plane, which costs the star of 16,384
+// four times the listing's splits (BENCHMARKS "The instant's
+// neighbourhoods").
 #pragma once
 
 #include <cmath>

@@ -89,7 +89,7 @@ TEST(KineticTriangulation, ListsTheSplitsOfEveryPlaneOnAComb) { expect_triangula
 // rewire the spans; they are handed out round each batch's neighbourhood.
 // At this one clustering scale the listing does not close every star (sweep()
 // tries other scales); wherever it does, the triangulation must too. (Up to
-// 2,400 corners: at 3,500 and 4,000 it does not yet, kinetic_triangulation.h.)
+// 3,400 corners: at 3,600 it does not yet, kinetic_triangulation.h.)
 std::string star_roof_problem(int n, std::size_t triangulated_from) {
   State st = loaded_loops({star(n)}, kStarTolerances);
   EventQueue queue(EventQueue::kIndexedFrom, triangulated_from);
@@ -109,13 +109,13 @@ std::string star_roof_problem(int n, std::size_t triangulated_from) {
 
 TEST(KineticTriangulation, JitteredStarsCloseWhereTheListingDoes) {
   int compared = 0;
-  for (int n = 400; n <= 2400; n += 200) {
+  for (int n = 400; n <= 3400; n += 200) {
     SCOPED_TRACE(n);
     if (!star_roof_problem(n, SIZE_MAX).empty()) continue;
     ++compared;
     EXPECT_EQ(star_roof_problem(n, 0), "");
   }
-  EXPECT_GE(compared, 6);
+  EXPECT_GE(compared, 9);
 }
 
 // Holes: the region between the loops is triangulated as one, and a hole's
