@@ -599,14 +599,14 @@ double EventQueue::reach(const State& st) {
   return std::max(st.tol().position(), st.tol().most_meeting_slack());
 }
 
-bool EventQueue::widen(State& st, std::size_t& widened, double rise) {
+bool EventQueue::widen(State& st, std::size_t& widened, std::size_t& widened_shared, double rise) {
   places_.clear();
   for (; widened < cluster_.size(); ++widened) {
     const Candidate& k = cluster_[widened];
     places_.push_back({k.p, k.z, k.corner, k.next, k.next == kNone ? k.edge : kNone});
   }
-  for (; widened_shared_ < shared_heads_.size(); ++widened_shared_) {
-    const auto& [c, s] = shared_heads_[widened_shared_];
+  for (; widened_shared < shared_heads_.size(); ++widened_shared) {
+    const auto& [c, s] = shared_heads_[widened_shared];
     places_.push_back({st.position(c, s.at), s.at, c, kNone, kNone});
   }
   if (places_.empty() || !kt_.hand_around(st, places_, reach(st), rise)) return false;
@@ -630,11 +630,10 @@ const std::vector<Candidate>& EventQueue::pop_cluster(State& st) {
   // the batch is known before any split is dropped for one (closes_here).
   // Triangulated, the pairs that may meet near them are listed too, and
   // those of their splits in the batch are taken in with them.
-  std::size_t widened = 0;
-  widened_shared_ = 0;
+  std::size_t widened = 0, widened_shared = 0;
   for (bool more = true; more;) {
     pop_through(st, through);
-    more = triangulated_ && widen(st, widened, through - lowest);
+    more = triangulated_ && widen(st, widened, widened_shared, through - lowest);
   }
   if (heads_.empty()) return out;
   // Then the rest of each list in the batch, and the candidates in the

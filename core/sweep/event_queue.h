@@ -256,9 +256,10 @@ class EventQueue {
   // the batch (cluster_, heads_, shared_heads_).
   void pop_through(State& st, double through);
   // Triangulated, lists the pairs that may meet near the batch's candidates
-  // from `widened` on (KineticTriangulation::hand_around), which may move
-  // `rise` within it; false where there were none.
-  bool widen(State& st, std::size_t& widened, double rise);
+  // from `widened` on and its shared planes' heads from `widened_shared` on
+  // (KineticTriangulation::hand_around), which may move `rise` within it;
+  // false where there were none.
+  bool widen(State& st, std::size_t& widened, std::size_t& widened_shared, double rise);
   // How far apart a batch's events are one neighbourhood: the sweep's clustering reach.
   static double reach(const State& st);
   // Leaves the triangulation: every live corner lists its splits against
@@ -341,8 +342,7 @@ class EventQueue {
   // pop_cluster's: the heads that are splits with a shared plane (SIZE_MAX in
   // heads_), by corner.
   std::vector<std::pair<int, Split>> shared_heads_;
-  std::vector<KineticTriangulation::Place> places_;  // widen()'s
-  std::size_t widened_shared_ = 0;                   // shared_heads_ widened from
+  std::vector<KineticTriangulation::Place> places_;  // widen()'s and catch_up()'s
   std::vector<std::tuple<int, int, std::size_t>> repeated_;  // drop_repeated_splits': (corner, edge, place)
 };
 

@@ -584,11 +584,13 @@ bool KineticTriangulation::hand_around(const State& st, const std::vector<Place>
     return i;
   };
   const double side = reach / std::numbers::sqrt2;
+  // Far-away coordinates over a fine reach are kept inside the cell type
+  // (clamped cells only join more places, never fewer).
+  const auto cell = [side](double x) {
+    return static_cast<std::int64_t>(std::clamp(std::floor(x / side), -0x1p62, 0x1p62));
+  };
   cells_.clear();
-  for (int i = 0; i < count; ++i)
-    cells_.push_back({{static_cast<std::int64_t>(std::floor(places[i].p.x / side)),
-                       static_cast<std::int64_t>(std::floor(places[i].p.y / side))},
-                      i});
+  for (int i = 0; i < count; ++i) cells_.push_back({{cell(places[i].p.x), cell(places[i].p.y)}, i});
   std::sort(cells_.begin(), cells_.end());
   const auto run_end = [&](auto from) {
     return std::find_if(from, cells_.end(), [&](const auto& e) { return e.first != from->first; });

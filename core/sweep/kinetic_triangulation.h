@@ -189,7 +189,7 @@ class KineticTriangulation {
   std::vector<int> relinked_fan_;  // update()'s (take() fills fan_ as it goes)
   // hand_around's: per triangle, the walk that reached it (by stamp); the
   // places by grid cell and their neighbourhoods (union-find), and what each
-  // place found near it.
+  // neighbourhood found near it.
   std::vector<std::uint32_t> walked_;
   std::uint32_t walk_ = 0;
   std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, int>> cells_;  // (grid cell, place)
@@ -204,7 +204,7 @@ class KineticTriangulation {
   std::vector<char> crowded_;  // by neighbourhood: its walk was cut short
   std::vector<std::pair<int, int>> hood_order_;  // (neighbourhood, place), sorted
   std::vector<int> hood_, walk_tris_;
-  std::vector<std::pair<int, int>> near_corners_, near_edges_;  // (place, corner or edge)
+  std::vector<std::pair<int, int>> near_corners_, near_edges_;  // (neighbourhood, corner or edge)
   std::vector<std::uint32_t> edge_mark_;
   std::uint32_t mark_ = 0;
   Work work_;
